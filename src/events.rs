@@ -1,0 +1,84 @@
+//! What happened during planning, as a flat log of fixed-stride `f64` records.
+//!
+//! Each record is [`STRIDE`] numbers: `[kind, tree, id, parent, x, y, px, py]`, with points already
+//! projected into the workspace (a state's reference point), so the page draws without knowing the
+//! robot. The worker drains the log after each batch and transfers it as a `Float64Array`; the JS
+//! constants in `www/events.js` are checked against [`EventKind`] by a test.
+
+use crate::math::Vec2;
+
+/// Numbers per event record.
+pub const STRIDE: usize = 8;
+
+/// The kinds of event (the record's first number).
+#[repr(u8)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EventKind {
+    /// A sample was drawn (`x, y`: where it is drawn).
+    Sample = 0,
+    /// A sample was rejected before growing (invalid state).
+    SampleRejected = 1,
+    /// A node was added: `id`, `parent`, its point `x, y`, its parent's `px, py`.
+    NodeAdded = 2,
+    /// A motion was found in collision at `x, y`.
+    Collision = 3,
+    /// The two trees met at `x, y` (`id` in `tree`, `parent`: the node in the other tree).
+    TreesConnected = 4,
+    /// A solution was found.
+    Solved = 5,
+}
+
+impl EventKind {
+    /// Every kind with its name, for the JS constant check.
+    pub const ALL: [(EventKind, &'static str); 6] = [
+        (EventKind::Sample, "SAMPLE"),
+        (EventKind::SampleRejected, "SAMPLE_REJECTED"),
+        (EventKind::NodeAdded, "NODE_ADDED"),
+        (EventKind::Collision, "COLLISION"),
+        (EventKind::TreesConnected, "TREES_CONNECTED"),
+        (EventKind::Solved, "SOLVED"),
+    ];
+}
+
+/// The event log. Recording can be switched off for benchmarks.
+#[derive(Clone, Debug, Default)]
+pub struct EventLog {
+    data: Vec<f64>,
+    /// Whether events are recorded.
+    pub enabled: bool,
+}
+
+impl EventLog {
+    /// A log that records (or not).
+    pub fn new(enabled: bool) -> Self {
+        EventLog { data: Vec::new(), enabled }
+    }
+    /// Record one event.
+    #[inline]
+    pub fn push(&mut self, kind: EventKind, tree: usize, id: i64, parent: i64, p: Vec2, q: Vec2) {
+        if self.enabled {
+            self.data.extend_from_slice(&[kind as u8 as f64, tree as f64, id as f64, parent as f64, p.x, p.y, q.x, q.y]);
+        }
+    }
+    /// Record an event at one point.
+    #[inline]
+    pub fn at(&mut self, kind: EventKind, tree: usize, p: Vec2) {
+        self.push(kind, tree, -1, -1, p, p)
+    }
+    /// Number of records waiting.
+    pub fn len(&self) -> usize {
+        self.data.len() / STRIDE
+    }
+    /// Whether no record is waiting.
+    pub fn is_empty(&self) -> bool {
+        self.data.is_empty()
+    }
+    /// Take every waiting record, leaving the log empty.
+    pub fn drain(&mut self) -> Vec<f64> {
+        std::mem::take(&mut self.data)
+    }
+    /// The waiting records.
+    pub fn records(&self) -> &[f64] {
+        &self.data
+    }
+}

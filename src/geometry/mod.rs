@@ -1,0 +1,20 @@
+//! Exact 2-D geometry: obstacle shapes and the predicates that test them.
+//!
+//! The generic entry is [`Workspace`]: bounds plus obstacles, asked whether a point, a segment or a
+//! polygon meets any obstacle. Below it, one file per pair of shapes, parry-style:
+//! [`segment`] (segment/segment, point/segment), [`polygon`] (point/polygon, segment/polygon),
+//! [`circle`] (segment/circle). All obstacles are closed sets: touching is a collision.
+
+mod aabb;
+pub mod circle;
+pub mod polygon;
+pub mod segment;
+mod shape;
+mod workspace;
+
+pub use aabb::Aabb;
+pub use shape::Shape;
+pub use workspace::Workspace;
+
+#[cfg(test)]
+mod tests;

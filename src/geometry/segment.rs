@@ -1,0 +1,49 @@
+//! Segment/segment and point/segment predicates.
+
+use crate::math::{Real, Vec2};
+
+/// Twice the signed area of triangle `a, b, c` (> 0 when counter-clockwise).
+#[inline]
+pub fn orient(a: Vec2, b: Vec2, c: Vec2) -> Real {
+    b.sub(a).cross(c.sub(a))
+}
+
+/// Whether `p`, known to be collinear with `a, b`, lies within their bounding box.
+#[inline]
+fn within(a: Vec2, b: Vec2, p: Vec2) -> bool {
+    p.x >= a.x.min(b.x) && p.x <= a.x.max(b.x) && p.y >= a.y.min(b.y) && p.y <= a.y.max(b.y)
+}
+
+/// Whether point `p` lies on the closed segment `a b`.
+#[inline]
+pub fn contains_segment_point(a: Vec2, b: Vec2, p: Vec2) -> bool {
+    orient(a, b, p) == 0.0 && within(a, b, p)
+}
+
+/// Whether closed segments `p1 p2` and `q1 q2` share a point (touching and overlap count).
+#[inline]
+pub fn intersect_segment_segment(p1: Vec2, p2: Vec2, q1: Vec2, q2: Vec2) -> bool {
+    let d1 = orient(q1, q2, p1);
+    let d2 = orient(q1, q2, p2);
+    let d3 = orient(p1, p2, q1);
+    let d4 = orient(p1, p2, q2);
+    if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0)) {
+        return true;
+    }
+    (d1 == 0.0 && within(q1, q2, p1))
+        || (d2 == 0.0 && within(q1, q2, p2))
+        || (d3 == 0.0 && within(p1, p2, q1))
+        || (d4 == 0.0 && within(p1, p2, q2))
+}
+
+/// Squared distance from `p` to the closed segment `a b`.
+#[inline]
+pub fn distance2_point_segment(p: Vec2, a: Vec2, b: Vec2) -> Real {
+    let ab = b.sub(a);
+    let l2 = ab.norm2();
+    if l2 == 0.0 {
+        return p.sub(a).norm2();
+    }
+    let t = (p.sub(a).dot(ab) / l2).clamp(0.0, 1.0);
+    p.sub(a.add(ab.scale(t))).norm2()
+}

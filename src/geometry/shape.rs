@@ -1,0 +1,83 @@
+use super::circle::intersect_segment_circle;
+use super::polygon::{contains_polygon_point, intersect_segment_polygon};
+use super::segment::{contains_segment_point, intersect_segment_segment};
+use super::Aabb;
+use crate::math::{Real, Vec2};
+
+/// A closed obstacle shape in world coordinates.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Shape {
+    /// Axis-aligned rectangle (its corners normalised: `min <= max`).
+    Rect(Aabb),
+    /// Simple polygon, convex or not, either winding.
+    Polygon(Vec<Vec2>),
+    /// Disc: centre and radius.
+    Circle(Vec2, Real),
+    /// A wall of zero thickness.
+    Segment(Vec2, Vec2),
+}
+
+impl Shape {
+    /// The shape's bounding box.
+    pub fn aabb(&self) -> Aabb {
+        match self {
+            Shape::Rect(b) => *b,
+            Shape::Polygon(p) => Aabb::of_points(p),
+            Shape::Circle(c, r) => Aabb { min: *c, max: *c }.grown(*r),
+            Shape::Segment(a, b) => Aabb::of_points(&[*a, *b]),
+        }
+    }
+
+    /// One point of the shape (used to detect a shape wholly inside another).
+    pub fn some_point(&self) -> Vec2 {
+        match self {
+            Shape::Rect(b) => b.min,
+            Shape::Polygon(p) => p[0],
+            Shape::Circle(c, _) => *c,
+            Shape::Segment(a, _) => *a,
+        }
+    }
+
+    /// Whether the closed shape contains `p`.
+    pub fn contains_point(&self, p: Vec2) -> bool {
+        match self {
+            Shape::Rect(b) => b.contains(p),
+            Shape::Polygon(poly) => contains_polygon_point(poly, p),
+            Shape::Circle(c, r) => p.sub(*c).norm2() <= r * r,
+            Shape::Segment(a, b) => contains_segment_point(*a, *b, p),
+        }
+    }
+
+    /// Whether the closed segment `a b` meets the shape.
+    pub fn intersects_segment(&self, a: Vec2, b: Vec2) -> bool {
+        match self {
+            Shape::Rect(r) => {
+                if r.contains(a) || r.contains(b) {
+                    return true;
+                }
+                let c = [r.min, Vec2::new(r.max.x, r.min.y), r.max, Vec2::new(r.min.x, r.max.y)];
+                (0..4).any(|i| intersect_segment_segment(a, b, c[i], c[(i + 1) % 4]))
+            }
+            Shape::Polygon(poly) => intersect_segment_polygon(a, b, poly),
+            Shape::Circle(c, r) => intersect_segment_circle(a, b, *c, *r),
+            Shape::Segment(p, q) => intersect_segment_segment(a, b, *p, *q),
+        }
+    }
+
+    /// Whether the closed polygon `poly` (with bounding box `bb`) meets the shape.
+    pub fn intersects_polygon(&self, poly: &[Vec2], bb: &Aabb) -> bool {
+        if !bb.intersects(&self.aabb()) {
+            return false;
+        }
+        let n = poly.len();
+        let mut j = n - 1;
+        for i in 0..n {
+            if self.intersects_segment(poly[j], poly[i]) {
+                return true;
+            }
+            j = i;
+        }
+        // No edge of `poly` meets the shape: either disjoint, or the shape is wholly inside `poly`.
+        contains_polygon_point(poly, self.some_point())
+    }
+}

@@ -1,0 +1,37 @@
+use super::{Aabb, Shape};
+use crate::math::Vec2;
+
+/// The world a robot moves in: rectangular bounds and closed obstacles.
+#[derive(Clone, Debug)]
+pub struct Workspace {
+    /// The bounds `[xmin, ymin] .. [xmax, ymax]`.
+    pub bounds: Aabb,
+    /// The obstacles, in scenario order.
+    pub obstacles: Vec<Shape>,
+    boxes: Vec<Aabb>,
+}
+
+impl Workspace {
+    /// A workspace from its bounds and obstacles.
+    pub fn new(bounds: Aabb, obstacles: Vec<Shape>) -> Self {
+        let boxes = obstacles.iter().map(Shape::aabb).collect();
+        Workspace { bounds, obstacles, boxes }
+    }
+
+    /// The index of the first obstacle that contains `p`, if any.
+    pub fn point_hit(&self, p: Vec2) -> Option<usize> {
+        (0..self.obstacles.len()).find(|&i| self.boxes[i].contains(p) && self.obstacles[i].contains_point(p))
+    }
+
+    /// Whether the closed segment `a b` meets an obstacle.
+    pub fn segment_hits(&self, a: Vec2, b: Vec2) -> bool {
+        let bb = Aabb::of_points(&[a, b]);
+        (0..self.obstacles.len()).any(|i| self.boxes[i].intersects(&bb) && self.obstacles[i].intersects_segment(a, b))
+    }
+
+    /// The index of the first obstacle that the closed polygon `poly` meets, if any.
+    pub fn polygon_hit(&self, poly: &[Vec2]) -> Option<usize> {
+        let bb = Aabb::of_points(poly);
+        (0..self.obstacles.len()).find(|&i| self.boxes[i].intersects(&bb) && self.obstacles[i].intersects_polygon(poly, &bb))
+    }
+}

@@ -1,0 +1,194 @@
+use crate::math::Real;
+use crate::space::StateSpace;
+
+const NONE: u32 = u32::MAX;
+/// Below this many points, a linear scan is used and no tree is built.
+const LEAF_SCAN: usize = 32;
+
+/// An incremental k-d tree of states, each with a caller's id (`u32`).
+///
+/// Points are inserted down the tree; each time the size doubles past [`LEAF_SCAN`], the tree is
+/// rebuilt balanced (median splits on the widest dimension), which keeps queries logarithmic on
+/// RRT's spatially correlated insertions at amortised O(log n) per insert.
+#[derive(Clone, Debug, Default)]
+pub struct KdTree {
+    dims: usize,
+    /// Flat point coordinates, `dims` per point, in insertion order.
+    pts: Vec<Real>,
+    ids: Vec<u32>,
+    /// Per point: split dimension, children.
+    split: Vec<u8>,
+    left: Vec<u32>,
+    right: Vec<u32>,
+    /// Per point: bounding box of its subtree (flat, `dims` per point).
+    lo: Vec<Real>,
+    hi: Vec<Real>,
+    root: u32,
+    next_rebuild: usize,
+    stack: Vec<(u32, Real)>,
+}
+
+impl KdTree {
+    /// An empty tree of `dims`-dimensional states.
+    pub fn new(dims: usize) -> Self {
+        KdTree { dims, root: NONE, next_rebuild: LEAF_SCAN, ..Default::default() }
+    }
+    /// Number of points.
+    pub fn len(&self) -> usize {
+        self.ids.len()
+    }
+    /// Whether the tree is empty.
+    pub fn is_empty(&self) -> bool {
+        self.ids.is_empty()
+    }
+    /// Remove every point.
+    pub fn clear(&mut self) {
+        *self = KdTree::new(self.dims);
+    }
+
+    #[inline]
+    fn p(&self, i: usize) -> &[Real] {
+        &self.pts[i * self.dims..(i + 1) * self.dims]
+    }
+
+    /// Insert state `q` under `id`.
+    pub fn add(&mut self, space: &StateSpace, q: &[Real], id: u32) {
+        let n = self.ids.len();
+        self.pts.extend_from_slice(q);
+        self.ids.push(id);
+        self.lo.extend_from_slice(q);
+        self.hi.extend_from_slice(q);
+        self.left.push(NONE);
+        self.right.push(NONE);
+        self.split.push(0);
+        if n + 1 >= self.next_rebuild {
+            self.rebuild(space);
+            self.next_rebuild = (n + 1) * 2;
+            return;
+        }
+        if self.root == NONE {
+            return; // still in linear-scan mode
+        }
+        let d = self.dims;
+        let mut cur = self.root as usize;
+        loop {
+            for k in 0..d {
+                self.lo[cur * d + k] = self.lo[cur * d + k].min(q[k]);
+                self.hi[cur * d + k] = self.hi[cur * d + k].max(q[k]);
+            }
+            let s = self.split[cur] as usize;
+            let go_left = q[s] < self.pts[cur * d + s];
+            let child = if go_left { self.left[cur] } else { self.right[cur] };
+            if child == NONE {
+                self.split[n] = ((s + 1) % d) as u8;
+                if go_left {
+                    self.left[cur] = n as u32;
+                } else {
+                    self.right[cur] = n as u32;
+                }
+                return;
+            }
+            cur = child as usize;
+        }
+    }
+
+    fn rebuild(&mut self, space: &StateSpace) {
+        let mut order: Vec<u32> = (0..self.ids.len() as u32).collect();
+        self.root = self.build(space, &mut order);
+    }
+
+    fn build(&mut self, space: &StateSpace, idx: &mut [u32]) -> u32 {
+        if idx.is_empty() {
+            return NONE;
+        }
+        let d = self.dims;
+        let mut lo = self.p(idx[0] as usize).to_vec();
+        let mut hi = lo.clone();
+        for &i in idx.iter() {
+            for k in 0..d {
+                let v = self.pts[i as usize * d + k];
+                lo[k] = lo[k].min(v);
+                hi[k] = hi[k].max(v);
+            }
+        }
+        // Widest dimension, with the rotation weight of the metric applied to angles.
+        let weight = |k: usize| match space.metric {
+            crate::space::Metric::TranslationRotation { weight } if k == 2 => weight,
+            _ => 1.0,
+        };
+        let s = (0..d).max_by(|&a, &b| ((hi[a] - lo[a]) * weight(a)).total_cmp(&((hi[b] - lo[b]) * weight(b)))).unwrap_or(0);
+        let mid = idx.len() / 2;
+        let pts = &self.pts;
+        idx.select_nth_unstable_by(mid, |&a, &b| pts[a as usize * d + s].total_cmp(&pts[b as usize * d + s]).then(a.cmp(&b)));
+        let m = idx[mid] as usize;
+        let (left, rest) = idx.split_at_mut(mid);
+        let l = self.build(space, left);
+        let r = self.build(space, &mut rest[1..]);
+        self.split[m] = s as u8;
+        self.left[m] = l;
+        self.right[m] = r;
+        self.lo[m * d..(m + 1) * d].copy_from_slice(&lo);
+        self.hi[m * d..(m + 1) * d].copy_from_slice(&hi);
+        m as u32
+    }
+
+    /// The id and distance of the point nearest to `q` (ties: the earliest inserted in scan mode;
+    /// deterministic in either mode), or `None` if empty.
+    pub fn nearest(&mut self, space: &StateSpace, q: &[Real]) -> Option<(u32, Real)> {
+        self.nearest_where(space, q, |_| true)
+    }
+
+    /// Like [`nearest`](Self::nearest), among the points whose id passes `keep`.
+    pub fn nearest_where(&mut self, space: &StateSpace, q: &[Real], keep: impl Fn(u32) -> bool) -> Option<(u32, Real)> {
+        let mut best: Option<(u32, Real)> = None;
+        let mut best_i = usize::MAX;
+        let consider = |i: usize, dist: Real, best: &mut Option<(u32, Real)>, best_i: &mut usize| {
+            let better = match best {
+                None => true,
+                Some((_, bd)) => dist < *bd || (dist == *bd && i < *best_i),
+            };
+            if better {
+                *best = Some((self.ids[i], dist));
+                *best_i = i;
+            }
+        };
+        let d = self.dims;
+        if self.root == NONE {
+            for i in 0..self.ids.len() {
+                if keep(self.ids[i]) {
+                    let dist = space.distance(q, self.p(i));
+                    consider(i, dist, &mut best, &mut best_i);
+                }
+            }
+            return best;
+        }
+        let mut stack = std::mem::take(&mut self.stack);
+        stack.clear();
+        stack.push((self.root, 0.0));
+        while let Some((node, bound)) = stack.pop() {
+            let i = node as usize;
+            if let Some((_, bd)) = best {
+                if bound > bd {
+                    continue;
+                }
+            }
+            if keep(self.ids[i]) {
+                let dist = space.distance(q, self.p(i));
+                consider(i, dist, &mut best, &mut best_i);
+            }
+            let s = self.split[i] as usize;
+            let (near, far) = if q[s] < self.pts[i * d + s] { (self.left[i], self.right[i]) } else { (self.right[i], self.left[i]) };
+            for child in [far, near] {
+                if child != NONE {
+                    let c = child as usize;
+                    let b = space.box_lower_bound(q, &self.lo[c * d..(c + 1) * d], &self.hi[c * d..(c + 1) * d]);
+                    if best.map_or(true, |(_, bd)| b <= bd) {
+                        stack.push((child, b));
+                    }
+                }
+            }
+        }
+        self.stack = stack;
+        best
+    }
+}

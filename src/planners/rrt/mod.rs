@@ -1,0 +1,26 @@
+//! The RRT family: [`rrt`] (single tree, goal bias, extend or connect growth) and
+//! [`rrt_connect`] (two trees, alternating).
+
+pub mod rrt;
+pub mod rrt_connect;
+
+use crate::planners::ParamSpec;
+
+/// The step range: 0 means OMPL's default, 0.2 × the space's largest extent.
+pub const RANGE: ParamSpec = ParamSpec::real(
+    "range",
+    "Range",
+    0.0,
+    1e6,
+    0.0,
+    "Longest motion added in one step, in the robot's metric (0: 0.2 × the space's extent, as OMPL).",
+);
+
+/// The range a planner uses, resolving 0 to OMPL's default.
+pub fn resolve_range(si: &crate::space_info::SpaceInfo, range: f64) -> f64 {
+    if range > 0.0 {
+        range
+    } else {
+        0.2 * si.space.max_extent()
+    }
+}

@@ -1,0 +1,70 @@
+//! Random shortcut smoothing (OMPL's `PathSimplifier::shortcutPath`; report 003's "direct, random
+//! shortcutting"): pick two random points along the path, and if the straight motion between them
+//! is valid and shorter, replace the stretch between them with it. Seeded; `attempts` tries.
+
+use crate::math::Real;
+use crate::motion::MotionValidator;
+use crate::rng::Rng;
+use crate::space_info::SpaceInfo;
+
+/// Length of a path in the space's metric.
+pub fn path_cost(si: &SpaceInfo, path: &[Vec<Real>]) -> Real {
+    path.windows(2).map(|w| si.distance(&w[0], &w[1])).sum()
+}
+
+/// The point at arc length `s` along `path` (with cumulative lengths `cum`): its segment index and state.
+fn point_at(si: &SpaceInfo, path: &[Vec<Real>], cum: &[Real], s: Real) -> (usize, Vec<Real>) {
+    let i = match cum.binary_search_by(|c| c.total_cmp(&s)) {
+        Ok(i) => i.min(path.len() - 2),
+        Err(i) => i.saturating_sub(1).min(path.len() - 2),
+    };
+    let len = cum[i + 1] - cum[i];
+    let t = if len > 0.0 { ((s - cum[i]) / len).clamp(0.0, 1.0) } else { 0.0 };
+    let mut q = vec![0.0; si.dims()];
+    si.interpolate(&path[i], &path[i + 1], t, &mut q);
+    (i, q)
+}
+
+/// Shorten `path` by random shortcuts; the result starts and ends where `path` does, and every
+/// motion in it has been checked.
+pub fn shortcut(si: &SpaceInfo, path: &[Vec<Real>], attempts: usize, rng: &mut Rng) -> Vec<Vec<Real>> {
+    let mut path = path.to_vec();
+    let mut scratch = vec![0.0; si.dims()];
+    for _ in 0..attempts {
+        if path.len() < 3 {
+            break;
+        }
+        let mut cum = vec![0.0];
+        for w in path.windows(2) {
+            cum.push(cum.last().unwrap() + si.distance(&w[0], &w[1]));
+        }
+        let total = *cum.last().unwrap();
+        let (mut s1, mut s2) = (rng.uniform(0.0, total), rng.uniform(0.0, total));
+        if s1 > s2 {
+            std::mem::swap(&mut s1, &mut s2);
+        }
+        let (i, a) = point_at(si, &path, &cum, s1);
+        let (j, b) = point_at(si, &path, &cum, s2);
+        if j <= i {
+            continue; // same segment: already straight
+        }
+        // The stretch a → path[i+1] → ... → path[j] → b must be longer than the shortcut.
+        let along = si.distance(&a, &path[i + 1]) + (cum[j] - cum[i + 1]) + si.distance(&path[j], &b);
+        if si.distance(&a, &b) >= along - 1e-12 {
+            continue;
+        }
+        if si.check_motion(&a, &b, &mut scratch).is_err() {
+            continue;
+        }
+        let mut next: Vec<Vec<Real>> = path[..=i].to_vec();
+        if si.distance(&a, &path[i]) > 0.0 {
+            next.push(a);
+        }
+        if si.distance(&b, &path[j + 1]) > 0.0 {
+            next.push(b);
+        }
+        next.extend_from_slice(&path[j + 1..]);
+        path = next;
+    }
+    path
+}

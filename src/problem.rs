@@ -1,0 +1,87 @@
+//! A planning problem: a scenario turned into a workspace, a robot, a space, a start and a goal.
+
+use crate::geometry::{Aabb, Shape, Workspace};
+use crate::math::{Real, Vec2};
+use crate::robot::{self, Robot, Verdict};
+use crate::scenario::{ObstacleSpec, Scenario, ScenarioError};
+use crate::space_info::SpaceInfo;
+use crate::validity::RobotInWorkspace;
+
+/// Everything a planner run needs.
+pub struct Problem {
+    /// The scenario the problem came from.
+    pub scenario: Scenario,
+    /// Space, validity and motion checking.
+    pub si: SpaceInfo,
+    /// Start state (canonical).
+    pub start: Vec<Real>,
+    /// Goal state (canonical), if the task has one.
+    pub goal: Option<Vec<Real>>,
+    /// Distance within which the goal counts as reached.
+    pub goal_tolerance: Real,
+}
+
+/// An obstacle of the scenario as a shape.
+pub fn shape_of(o: &ObstacleSpec) -> Shape {
+    match o {
+        ObstacleSpec::Rect(r) => Shape::Rect(Aabb::of_points(&[Vec2::new(r[0], r[1]), Vec2::new(r[2], r[3])])),
+        ObstacleSpec::Polygon(p) => Shape::Polygon(p.iter().map(|q| Vec2::new(q[0], q[1])).collect()),
+        ObstacleSpec::Circle(c) => Shape::Circle(Vec2::new(c[0], c[1]), c[2]),
+        ObstacleSpec::Segment(s) => Shape::Segment(Vec2::new(s[0], s[1]), Vec2::new(s[2], s[3])),
+    }
+}
+
+fn obstacle_kind(o: &ObstacleSpec) -> &'static str {
+    match o {
+        ObstacleSpec::Rect(_) => "rect",
+        ObstacleSpec::Polygon(_) => "polygon",
+        ObstacleSpec::Circle(_) => "circle",
+        ObstacleSpec::Segment(_) => "segment",
+    }
+}
+
+impl Problem {
+    /// Build the problem, checking that start and goal have the robot's dimension, lie in bounds
+    /// and are collision-free; errors say which state and why.
+    pub fn from_scenario(sc: &Scenario) -> Result<Problem, ScenarioError> {
+        let b = sc.bounds;
+        let workspace = Workspace::new(
+            Aabb { min: Vec2::new(b[0], b[1]), max: Vec2::new(b[2], b[3]) },
+            sc.obstacles.iter().map(shape_of).collect(),
+        );
+        let robot: Box<dyn Robot> = robot::from_spec(&sc.robot, sc.body_in_bounds);
+        let space = robot.space(&workspace);
+        let check = |name: &str, q: &[Real]| -> Result<Vec<Real>, ScenarioError> {
+            if q.len() != space.dim_count() {
+                return Err(ScenarioError::at(
+                    name,
+                    format!("a {} robot's state has {} numbers, found {}", robot.kind(), space.dim_count(), q.len()),
+                ));
+            }
+            let mut q = q.to_vec();
+            space.enforce(&mut q);
+            match robot.verdict(&workspace, &q) {
+                Verdict::Valid => Ok(q),
+                Verdict::OutOfBounds(d) => {
+                    let axis = ["x", "y"][d.min(1)];
+                    let (lo, hi) = if d == 0 { (b[0], b[2]) } else { (b[1], b[3]) };
+                    Err(ScenarioError::at(name, format!("out of bounds: {axis} must stay within [{lo}, {hi}]")))
+                }
+                Verdict::Collision(i) => Err(ScenarioError::at(
+                    name,
+                    format!("in collision with obstacles[{i}] (a {})", obstacle_kind(&sc.obstacles[i])),
+                )),
+            }
+        };
+        let start = check("start", &sc.start)?;
+        let goal = sc.goal.as_deref().map(|g| check("goal", g)).transpose()?;
+        let validity = RobotInWorkspace { robot, workspace };
+        Ok(Problem {
+            scenario: sc.clone(),
+            si: SpaceInfo::new(space, Box::new(validity), sc.resolution),
+            start,
+            goal,
+            goal_tolerance: sc.goal_tolerance,
+        })
+    }
+}

@@ -1,0 +1,78 @@
+//! Robots: what a state means in the workspace.
+//!
+//! The generic entry is the [`Robot`] trait: a robot knows its state space, whether a state is
+//! valid in a [`Workspace`], where to draw a state (its reference point), and, when it can, an exact
+//! test for a straight motion. [`from_spec`] builds one from the scenario's robot block.
+
+mod point;
+mod rigid;
+
+pub use point::PointRobot;
+pub use rigid::RigidRobot;
+
+use crate::geometry::Workspace;
+use crate::math::{Real, Vec2};
+use crate::scenario::RobotSpec;
+use crate::space::StateSpace;
+
+/// Why a state is or is not valid.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    /// Free and in bounds.
+    Valid,
+    /// State dimension `0` (or a body point) is outside the bounds.
+    OutOfBounds(usize),
+    /// The robot meets obstacle `i` (index into the scenario's `obstacles`).
+    Collision(usize),
+}
+
+/// A robot in a planar workspace.
+pub trait Robot: std::fmt::Debug {
+    /// The `robot.kind` of the scenario format.
+    fn kind(&self) -> &'static str;
+    /// The robot's state space over the workspace's bounds.
+    fn space(&self, ws: &Workspace) -> StateSpace;
+    /// Whether state `q` is valid in `ws`, and if not, why.
+    fn verdict(&self, ws: &Workspace, q: &[Real]) -> Verdict;
+    /// The point of the workspace a state is drawn at (trees are projected onto it).
+    fn project(&self, q: &[Real]) -> Vec2;
+    /// An exact test of the straight motion `a → b`, when the robot has one: `Some(true)` if the
+    /// swept body meets an obstacle. Used on top of the discrete checks so no motion cuts a corner.
+    fn sweep_hits(&self, _ws: &Workspace, _a: &[Real], _b: &[Real]) -> Option<bool> {
+        None
+    }
+    /// The body's outline at state `q`, as closed polygons in world coordinates (for drawing and
+    /// exports); a point robot has none.
+    fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>>;
+}
+
+/// Build the robot a scenario describes.
+pub fn from_spec(spec: &RobotSpec, body_in_bounds: bool) -> Box<dyn Robot> {
+    match spec {
+        RobotSpec::Point => Box::new(PointRobot),
+        RobotSpec::Rigid { footprint, rotation_weight } => {
+            Box::new(RigidRobot::new(footprint.iter().map(|p| Vec2::new(p[0], p[1])).collect(), *rotation_weight, body_in_bounds))
+        }
+    }
+}
+
+/// The translation dimensions over the workspace bounds.
+fn xy_dims(ws: &Workspace) -> [crate::space::Dim; 2] {
+    let b = ws.bounds;
+    [crate::space::Dim { lo: b.min.x, hi: b.max.x, wraps: false }, crate::space::Dim { lo: b.min.y, hi: b.max.y, wraps: false }]
+}
+
+/// Whether the reference point `[x, y]` is inside the bounds (`OutOfBounds` names the dimension).
+fn xy_in_bounds(ws: &Workspace, q: &[Real]) -> Option<Verdict> {
+    let b = ws.bounds;
+    if q[0] < b.min.x || q[0] > b.max.x {
+        Some(Verdict::OutOfBounds(0))
+    } else if q[1] < b.min.y || q[1] > b.max.y {
+        Some(Verdict::OutOfBounds(1))
+    } else {
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,35 @@
+use super::{xy_dims, xy_in_bounds, Robot, Verdict};
+use crate::geometry::Workspace;
+use crate::math::{Real, Vec2};
+use crate::space::{Metric, StateSpace};
+
+/// A point robot; state `[x, y]`.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct PointRobot;
+
+impl Robot for PointRobot {
+    fn kind(&self) -> &'static str {
+        "point"
+    }
+    fn space(&self, ws: &Workspace) -> StateSpace {
+        StateSpace { dims: xy_dims(ws).to_vec(), metric: Metric::Euclidean }
+    }
+    fn verdict(&self, ws: &Workspace, q: &[Real]) -> Verdict {
+        if let Some(v) = xy_in_bounds(ws, q) {
+            return v;
+        }
+        match ws.point_hit(Vec2::new(q[0], q[1])) {
+            Some(i) => Verdict::Collision(i),
+            None => Verdict::Valid,
+        }
+    }
+    fn project(&self, q: &[Real]) -> Vec2 {
+        Vec2::new(q[0], q[1])
+    }
+    fn sweep_hits(&self, ws: &Workspace, a: &[Real], b: &[Real]) -> Option<bool> {
+        Some(ws.segment_hits(Vec2::new(a[0], a[1]), Vec2::new(b[0], b[1])))
+    }
+    fn outline(&self, _q: &[Real]) -> Vec<Vec<Vec2>> {
+        Vec::new()
+    }
+}

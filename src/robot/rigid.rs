@@ -1,0 +1,85 @@
+use super::{xy_dims, xy_in_bounds, Robot, Verdict};
+use crate::geometry::Workspace;
+use crate::math::{Real, Vec2, PI};
+use crate::space::{Dim, Metric, StateSpace};
+
+/// The most footprint vertices transformed on the stack; larger footprints use the heap.
+const STACK_VERTICES: usize = 16;
+
+/// A rigid polygon robot; state `[x, y, θ]`, the footprint rotating about the body origin.
+#[derive(Clone, Debug)]
+pub struct RigidRobot {
+    pub(crate) footprint: Vec<Vec2>,
+    radius: Real,
+    rotation_weight: Real,
+    body_in_bounds: bool,
+}
+
+impl RigidRobot {
+    /// A rigid robot with this body-frame footprint; the rotation weight of the metric defaults to
+    /// the footprint's radius (its farthest vertex from the origin).
+    pub fn new(footprint: Vec<Vec2>, rotation_weight: Option<Real>, body_in_bounds: bool) -> Self {
+        let radius = footprint.iter().map(|p| p.norm()).fold(0.0, Real::max);
+        RigidRobot { footprint, radius, rotation_weight: rotation_weight.unwrap_or(radius), body_in_bounds }
+    }
+
+    /// The footprint's radius.
+    pub fn radius(&self) -> Real {
+        self.radius
+    }
+
+    /// Write the footprint at state `q` into `out`.
+    #[inline]
+    fn place(&self, q: &[Real], out: &mut [Vec2]) {
+        let (s, c) = (libm::sin(q[2]), libm::cos(q[2]));
+        let t = Vec2::new(q[0], q[1]);
+        for (o, p) in out.iter_mut().zip(&self.footprint) {
+            *o = p.rotate(c, s).add(t);
+        }
+    }
+
+    fn verdict_of(&self, ws: &Workspace, body: &[Vec2]) -> Verdict {
+        if self.body_in_bounds {
+            if let Some(p) = body.iter().find(|p| !ws.bounds.contains(**p)) {
+                return Verdict::OutOfBounds(if p.x < ws.bounds.min.x || p.x > ws.bounds.max.x { 0 } else { 1 });
+            }
+        }
+        match ws.polygon_hit(body) {
+            Some(i) => Verdict::Collision(i),
+            None => Verdict::Valid,
+        }
+    }
+}
+
+impl Robot for RigidRobot {
+    fn kind(&self) -> &'static str {
+        "rigid"
+    }
+    fn space(&self, ws: &Workspace) -> StateSpace {
+        let [x, y] = xy_dims(ws);
+        StateSpace { dims: vec![x, y, Dim { lo: -PI, hi: PI, wraps: true }], metric: Metric::TranslationRotation { weight: self.rotation_weight } }
+    }
+    fn verdict(&self, ws: &Workspace, q: &[Real]) -> Verdict {
+        if let Some(v) = xy_in_bounds(ws, q) {
+            return v;
+        }
+        let n = self.footprint.len();
+        if n <= STACK_VERTICES {
+            let mut buf = [Vec2::default(); STACK_VERTICES];
+            self.place(q, &mut buf[..n]);
+            self.verdict_of(ws, &buf[..n])
+        } else {
+            let mut buf = vec![Vec2::default(); n];
+            self.place(q, &mut buf);
+            self.verdict_of(ws, &buf)
+        }
+    }
+    fn project(&self, q: &[Real]) -> Vec2 {
+        Vec2::new(q[0], q[1])
+    }
+    fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>> {
+        let mut body = vec![Vec2::default(); self.footprint.len()];
+        self.place(q, &mut body);
+        vec![body]
+    }
+}

@@ -1,0 +1,15 @@
+//! Running planners: the stepped [`Session`] (limits, timing, batching, events, smoothing), its
+//! [`PlanResult`] in the contract's JSON form, and [`bench`] over seeds.
+//!
+//! The generic entry is [`Session::new`] followed by [`Session::step`] (the worker, a page that
+//! single-steps) or [`Session::run_to_end`] (the CLI, tests, benchmarks).
+
+pub mod bench;
+mod result;
+mod session;
+
+pub use result::{PlanResult, Stats};
+pub use session::{RunConfig, Session};
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,49 @@
+use crate::math::Real;
+use serde::Serialize;
+
+/// Statistics of one run (the contract's `stats`).
+#[derive(Clone, Debug, Default, Serialize, PartialEq)]
+pub struct Stats {
+    /// Planning time, milliseconds (smoothing excluded).
+    pub time_ms: f64,
+    /// Planner iterations.
+    pub iterations: u64,
+    /// Nodes in all trees.
+    pub nodes: u64,
+    /// State validity checks, including those inside motion checks.
+    pub checks: u64,
+    /// Raw path cost in the robot's metric (`null` when unsolved).
+    pub cost: Option<Real>,
+    /// Smoothed path cost (`null` when unsolved).
+    pub smoothed_cost: Option<Real>,
+    /// Smoothing time, milliseconds.
+    pub smoothing_ms: f64,
+}
+
+/// A planning result, as the CLI prints it with `--json` and the worker posts it.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct PlanResult {
+    /// Whether a path was found.
+    pub solved: bool,
+    /// How the run ended.
+    pub status: &'static str,
+    /// The seed.
+    pub seed: u64,
+    /// The planner's name.
+    pub planner: String,
+    /// The parameters set explicitly.
+    pub params: serde_json::Map<String, serde_json::Value>,
+    /// The raw path, start first (empty when unsolved).
+    pub path: Vec<Vec<Real>>,
+    /// The smoothed path (empty when unsolved).
+    pub smoothed: Vec<Vec<Real>>,
+    /// The statistics.
+    pub stats: Stats,
+}
+
+impl PlanResult {
+    /// The result as compact JSON.
+    pub fn to_json(&self) -> String {
+        serde_json::to_string(self).expect("a result always serialises")
+    }
+}

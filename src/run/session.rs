@@ -1,0 +1,200 @@
+use super::{PlanResult, Stats};
+use crate::events::{EventKind, EventLog};
+use crate::math::Real;
+use crate::planners::{self, smoothing, Context, Params, Planner, PlannerData, PlannerSpec, Task};
+use crate::problem::Problem;
+use crate::rng::Rng;
+use crate::status::Status;
+use web_time::Instant;
+
+/// What to run: a planner by name, its parameters (which include smoothing and limits), a seed.
+#[derive(Clone, Debug)]
+pub struct RunConfig {
+    /// Planner name from the registry.
+    pub planner: String,
+    /// Parameters (checked against the planner's specs).
+    pub params: Params,
+    /// Seed of the run's generator.
+    pub seed: u64,
+    /// Whether to record events (off for benchmarks).
+    pub record_events: bool,
+}
+
+/// Seed offset of the smoothing generator, so the tree does not depend on smoothing.
+const SMOOTHING_STREAM: u64 = 0x5EED_5A00_7415_0001;
+
+/// One planning run, advanced in bounded batches.
+pub struct Session {
+    problem: Problem,
+    spec: &'static PlannerSpec,
+    config: RunConfig,
+    planner: Box<dyn Planner>,
+    rng: Rng,
+    events: EventLog,
+    status: Status,
+    iterations: u64,
+    elapsed_ms: f64,
+    smoothing_ms: f64,
+    /// State checks spent planning, frozen when solved (smoothing's checks are not the planner's).
+    planning_checks: Option<u64>,
+    path: Vec<Vec<Real>>,
+    smoothed: Vec<Vec<Real>>,
+}
+
+impl Session {
+    /// A run of `config` on `problem`. Errors name an unknown planner or a task it cannot do.
+    pub fn new(problem: Problem, config: RunConfig) -> Result<Session, String> {
+        let spec = planners::find(&config.planner)
+            .ok_or_else(|| format!("unknown planner \"{}\" (known: {})", config.planner, planners::names().join(", ")))?;
+        let goal = problem.goal.clone().ok_or_else(|| format!("{} needs a goal; this scenario has none", spec.label))?;
+        let task = Task { start: problem.start.clone(), goal, goal_tolerance: problem.goal_tolerance };
+        problem.si.reset_checks();
+        let planner = (spec.make)(&problem.si, &task, &config.params);
+        Ok(Session {
+            rng: Rng::new(config.seed),
+            events: EventLog::new(config.record_events),
+            problem,
+            spec,
+            config,
+            planner,
+            status: Status::Running,
+            iterations: 0,
+            elapsed_ms: 0.0,
+            smoothing_ms: 0.0,
+            planning_checks: None,
+            path: Vec::new(),
+            smoothed: Vec::new(),
+        })
+    }
+
+    /// The problem being solved.
+    pub fn problem(&self) -> &Problem {
+        &self.problem
+    }
+    /// How the run stands.
+    pub fn status(&self) -> Status {
+        self.status
+    }
+    /// The planner's trees.
+    pub fn planner_data(&self) -> PlannerData {
+        self.planner.data()
+    }
+
+    fn limits_status(&self) -> Option<Status> {
+        let p = &self.config.params;
+        if self.elapsed_ms >= p.real("time_limit") * 1000.0 {
+            Some(Status::TimeLimit)
+        } else if self.iterations >= p.real("max_iterations") as u64 {
+            Some(Status::IterationLimit)
+        } else if self.planner.node_count() as f64 >= p.real("max_nodes") {
+            Some(Status::NodeLimit)
+        } else {
+            None
+        }
+    }
+
+    /// Run at most `max_iterations` iterations, for at most about `max_ms` milliseconds, and return
+    /// the status. Limits are checked before every iteration; time spent outside `step` (paused)
+    /// does not count.
+    pub fn step(&mut self, max_iterations: u64, max_ms: f64) -> Status {
+        if self.status.is_finished() {
+            return self.status;
+        }
+        let begin = Instant::now();
+        let base = self.elapsed_ms;
+        let mut done = 0;
+        while done < max_iterations {
+            if let Some(s) = self.limits_status() {
+                self.status = s;
+                break;
+            }
+            let mut cx = Context { si: &self.problem.si, rng: &mut self.rng, events: &mut self.events };
+            let found = self.planner.iterate(&mut cx);
+            self.iterations += 1;
+            done += 1;
+            if let Some(path) = found {
+                self.elapsed_ms = base + begin.elapsed().as_secs_f64() * 1000.0;
+                self.finish_solved(path);
+                return self.status;
+            }
+            // Reading the clock costs more than a cheap iteration: look every 16.
+            if done % 16 == 0 {
+                let spent = begin.elapsed().as_secs_f64() * 1000.0;
+                self.elapsed_ms = base + spent;
+                if spent >= max_ms {
+                    break;
+                }
+            }
+        }
+        self.elapsed_ms = base + begin.elapsed().as_secs_f64() * 1000.0;
+        if self.status == Status::Running {
+            if let Some(s) = self.limits_status() {
+                self.status = s;
+            }
+        }
+        self.status
+    }
+
+    fn finish_solved(&mut self, path: Vec<Vec<Real>>) {
+        self.planning_checks = Some(self.problem.si.checks());
+        let t = Instant::now();
+        let mut rng = Rng::new(self.config.seed ^ SMOOTHING_STREAM);
+        let attempts = self.config.params.real("shortcut_attempts") as usize;
+        self.smoothed = smoothing::shortcut(&self.problem.si, &path, attempts, &mut rng);
+        self.smoothing_ms = t.elapsed().as_secs_f64() * 1000.0;
+        self.path = path;
+        self.status = Status::Solved;
+    }
+
+    /// Stop the run now.
+    pub fn cancel(&mut self) {
+        if !self.status.is_finished() {
+            self.status = Status::Cancelled;
+        }
+    }
+
+    /// Run until solved or a limit is reached.
+    pub fn run_to_end(&mut self) -> Status {
+        while !self.step(u64::MAX, f64::INFINITY).is_finished() {}
+        self.status
+    }
+
+    /// Take the events recorded since the last drain (flat records, see [`crate::events`]).
+    pub fn drain_events(&mut self) -> Vec<f64> {
+        self.events.drain()
+    }
+
+    /// Statistics so far.
+    pub fn stats(&self) -> Stats {
+        let si = &self.problem.si;
+        let solved = self.status == Status::Solved;
+        Stats {
+            time_ms: self.elapsed_ms,
+            iterations: self.iterations,
+            nodes: self.planner.node_count() as u64,
+            checks: self.planning_checks.unwrap_or_else(|| si.checks()),
+            cost: solved.then(|| smoothing::path_cost(si, &self.path)),
+            smoothed_cost: solved.then(|| smoothing::path_cost(si, &self.smoothed)),
+            smoothing_ms: self.smoothing_ms,
+        }
+    }
+
+    /// The result in the contract's form.
+    pub fn result(&self) -> PlanResult {
+        PlanResult {
+            solved: self.status == Status::Solved,
+            status: self.status.name(),
+            seed: self.config.seed,
+            planner: self.spec.name.to_string(),
+            params: self.config.params.values().clone(),
+            path: self.path.clone(),
+            smoothed: self.smoothed.clone(),
+            stats: self.stats(),
+        }
+    }
+
+    /// Whether an event of `kind` is among `records` (helper for tests and tools).
+    pub fn has_event(records: &[f64], kind: EventKind) -> bool {
+        records.chunks(crate::events::STRIDE).any(|r| r[0] == kind as u8 as f64)
+    }
+}

@@ -1,0 +1,56 @@
+use super::*;
+use crate::planners::{self, Params};
+use crate::problem::Problem;
+use crate::scenario::builtin;
+use crate::status::Status;
+
+fn session(scenario: &str, planner: &str, seed: u64, params: serde_json::Value) -> Session {
+    let spec = planners::find(planner).unwrap();
+    let params = Params::from_json(spec, &params).unwrap();
+    let problem = Problem::from_scenario(&builtin(scenario).unwrap()).unwrap();
+    Session::new(problem, RunConfig { planner: planner.into(), params, seed, record_events: true }).unwrap()
+}
+
+#[test]
+fn limits_are_honoured() {
+    let mut s = session("narrow", "rrt", 1, serde_json::json!({"max_iterations": 50, "goal_bias": 0.0}));
+    assert_eq!(s.run_to_end(), Status::IterationLimit);
+    assert_eq!(s.stats().iterations, 50);
+    let mut s = session("narrow", "rrt", 1, serde_json::json!({"max_nodes": 20, "goal_bias": 0.0}));
+    assert_eq!(s.run_to_end(), Status::NodeLimit);
+    assert_eq!(s.stats().nodes, 20);
+    let mut s = session("narrow", "rrt", 1, serde_json::json!({"time_limit": 0.05, "goal_bias": 0.0, "range": 0.001}));
+    assert_eq!(s.run_to_end(), Status::TimeLimit);
+    assert!(s.stats().time_ms < 200.0, "stopped near the limit: {}", s.stats().time_ms);
+}
+
+#[test]
+fn stepping_in_batches_gives_the_same_run_as_one_go() {
+    let mut a = session("slot", "rrt-connect", 3, serde_json::json!({}));
+    let mut b = session("slot", "rrt-connect", 3, serde_json::json!({}));
+    a.run_to_end();
+    let mut events = Vec::new();
+    while !b.step(7, f64::INFINITY).is_finished() {
+        events.extend(b.drain_events());
+    }
+    events.extend(b.drain_events());
+    assert_eq!(a.drain_events(), events);
+    assert_eq!(a.result().path, b.result().path);
+    assert_eq!(a.result().stats.iterations, b.result().stats.iterations);
+}
+
+#[test]
+fn cancel_stops_at_once() {
+    let mut s = session("narrow", "rrt", 1, serde_json::json!({"goal_bias": 0.0}));
+    s.step(10, f64::INFINITY);
+    s.cancel();
+    assert_eq!(s.step(1000, f64::INFINITY), Status::Cancelled);
+    assert_eq!(s.stats().iterations, 10);
+}
+
+#[test]
+fn bench_summary_statistics() {
+    let m = bench::Summary::of(&[3.0, 1.0, 2.0, 4.0]);
+    assert_eq!((m.median, m.mean, m.n), (2.5, 2.5, 4));
+    assert!((m.std - 1.2909944487358056).abs() < 1e-12);
+}

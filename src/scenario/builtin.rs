@@ -1,0 +1,25 @@
+//! The built-in scenarios, one JSON file each under `scenarios/`, embedded in the binary so the
+//! page, the CLI and the tests all see the same documents.
+
+use super::{Scenario, ScenarioError};
+
+/// `(id, JSON text)` of every built-in scenario, in the order the page lists them.
+pub const BUILTINS: &[(&str, &str)] = &[
+    ("open-field", include_str!("../../scenarios/open-field.json")),
+    ("narrow", include_str!("../../scenarios/narrow.json")),
+    ("slot", include_str!("../../scenarios/slot.json")),
+];
+
+/// The ids of the built-in scenarios.
+pub fn builtin_names() -> Vec<&'static str> {
+    BUILTINS.iter().map(|(n, _)| *n).collect()
+}
+
+/// A built-in scenario by id.
+pub fn builtin(id: &str) -> Result<Scenario, ScenarioError> {
+    let (_, text) = BUILTINS
+        .iter()
+        .find(|(n, _)| *n == id)
+        .ok_or_else(|| ScenarioError::at("", format!("no built-in scenario \"{id}\" (known: {})", builtin_names().join(", "))))?;
+    Scenario::from_json(text)
+}

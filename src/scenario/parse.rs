@@ -1,0 +1,316 @@
+//! From JSON text to a validated [`Scenario`], with the JSON path of every error.
+
+use super::types::*;
+use super::ScenarioError;
+use crate::geometry::polygon::is_simple;
+use crate::math::{Real, Vec2};
+use serde_json::{Map, Value};
+
+type Result<T> = std::result::Result<T, ScenarioError>;
+
+/// An object being read: remembers its path and which keys were used, so leftovers are errors.
+struct Obj<'a> {
+    path: String,
+    map: &'a Map<String, Value>,
+    used: Vec<&'static str>,
+}
+
+fn join(path: &str, key: &str) -> String {
+    if path.is_empty() {
+        key.to_string()
+    } else {
+        format!("{path}.{key}")
+    }
+}
+
+fn describe(v: &Value) -> &'static str {
+    match v {
+        Value::Null => "null",
+        Value::Bool(_) => "a boolean",
+        Value::Number(_) => "a number",
+        Value::String(_) => "a string",
+        Value::Array(_) => "an array",
+        Value::Object(_) => "an object",
+    }
+}
+
+impl<'a> Obj<'a> {
+    fn new(path: &str, v: &'a Value) -> Result<Self> {
+        match v {
+            Value::Object(map) => Ok(Obj { path: path.to_string(), map, used: Vec::new() }),
+            other => Err(ScenarioError::at(path, format!("must be an object, found {}", describe(other)))),
+        }
+    }
+    fn get(&mut self, key: &'static str) -> Option<(&'a Value, String)> {
+        self.used.push(key);
+        self.map.get(key).map(|v| (v, join(&self.path, key)))
+    }
+    fn req(&mut self, key: &'static str) -> Result<(&'a Value, String)> {
+        let path = self.path.clone();
+        self.get(key).ok_or_else(|| ScenarioError::at(path, format!("missing required key \"{key}\"")))
+    }
+    /// Every key not read is an unknown key: almost always a typo.
+    fn finish(self) -> Result<()> {
+        for k in self.map.keys() {
+            if !self.used.iter().any(|u| u == k) {
+                let mut known: Vec<&str> = self.used.clone();
+                known.sort_unstable();
+                return Err(ScenarioError::at(
+                    join(&self.path, k),
+                    format!("unknown key (known keys here: {})", known.join(", ")),
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+fn number(v: &Value, path: &str) -> Result<Real> {
+    match v.as_f64() {
+        Some(x) if x.is_finite() => Ok(x),
+        _ => Err(ScenarioError::at(path, format!("must be a number, found {}", describe(v)))),
+    }
+}
+
+fn numbers(v: &Value, path: &str) -> Result<Vec<Real>> {
+    let arr = v.as_array().ok_or_else(|| ScenarioError::at(path, format!("must be an array of numbers, found {}", describe(v))))?;
+    arr.iter().enumerate().map(|(i, x)| number(x, &format!("{path}[{i}]"))).collect()
+}
+
+fn fixed<const N: usize>(v: &Value, path: &str, what: &str) -> Result<[Real; N]> {
+    let xs = numbers(v, path)?;
+    xs.try_into().map_err(|xs: Vec<Real>| ScenarioError::at(path, format!("must be {what} ({N} numbers), found {} numbers", xs.len())))
+}
+
+fn points(v: &Value, path: &str) -> Result<Vec<[Real; 2]>> {
+    let arr = v.as_array().ok_or_else(|| ScenarioError::at(path, format!("must be an array of [x, y] points, found {}", describe(v))))?;
+    arr.iter().enumerate().map(|(i, p)| fixed::<2>(p, &format!("{path}[{i}]"), "a point [x, y]")).collect()
+}
+
+fn string(v: &Value, path: &str) -> Result<String> {
+    v.as_str().map(str::to_string).ok_or_else(|| ScenarioError::at(path, format!("must be a string, found {}", describe(v))))
+}
+
+fn boolean(v: &Value, path: &str) -> Result<bool> {
+    v.as_bool().ok_or_else(|| ScenarioError::at(path, format!("must be true or false, found {}", describe(v))))
+}
+
+fn polygon_check(pts: &[[Real; 2]], path: &str) -> Result<()> {
+    if pts.len() < 3 {
+        return Err(ScenarioError::at(path, format!("needs at least 3 points, found {}", pts.len())));
+    }
+    let poly: Vec<Vec2> = pts.iter().map(|p| Vec2::new(p[0], p[1])).collect();
+    if !is_simple(&poly) {
+        return Err(ScenarioError::at(path, "must be a simple polygon (its edges cross, fold back, or repeat a point)"));
+    }
+    Ok(())
+}
+
+fn obstacle(v: &Value, path: &str) -> Result<ObstacleSpec> {
+    let mut o = Obj::new(path, v)?;
+    if o.map.len() != 1 {
+        return Err(ScenarioError::at(path, "must have exactly one key: rect, polygon, circle or segment"));
+    }
+    let spec = if let Some((v, p)) = o.get("rect") {
+        let r = fixed::<4>(v, &p, "[x0, y0, x1, y1]")?;
+        if r[0] == r[2] || r[1] == r[3] {
+            return Err(ScenarioError::at(p, "has zero width or height (use a segment for a wall)"));
+        }
+        ObstacleSpec::Rect(r)
+    } else if let Some((v, p)) = o.get("polygon") {
+        let pts = points(v, &p)?;
+        polygon_check(&pts, &p)?;
+        ObstacleSpec::Polygon(pts)
+    } else if let Some((v, p)) = o.get("circle") {
+        let c = fixed::<3>(v, &p, "[cx, cy, r]")?;
+        if c[2] <= 0.0 {
+            return Err(ScenarioError::at(format!("{p}[2]"), "radius must be positive"));
+        }
+        ObstacleSpec::Circle(c)
+    } else if let Some((v, p)) = o.get("segment") {
+        let s = fixed::<4>(v, &p, "[x0, y0, x1, y1]")?;
+        if s[0] == s[2] && s[1] == s[3] {
+            return Err(ScenarioError::at(p, "has zero length"));
+        }
+        ObstacleSpec::Segment(s)
+    } else {
+        let k = o.map.keys().next().cloned().unwrap_or_default();
+        return Err(ScenarioError::at(join(path, &k), "unknown obstacle kind (use rect, polygon, circle or segment)"));
+    };
+    o.finish()?;
+    Ok(spec)
+}
+
+fn robot(v: &Value, path: &str) -> Result<RobotSpec> {
+    let mut o = Obj::new(path, v)?;
+    let (kv, kp) = o.req("kind")?;
+    let kind = string(kv, &kp)?;
+    let spec = match kind.as_str() {
+        "point" => RobotSpec::Point,
+        "rigid" => {
+            let (fv, fp) = o.req("footprint")?;
+            let footprint = points(fv, &fp)?;
+            polygon_check(&footprint, &fp)?;
+            let rotation_weight = match o.get("rotation_weight") {
+                Some((v, p)) => {
+                    let w = number(v, &p)?;
+                    if w <= 0.0 {
+                        return Err(ScenarioError::at(p, "must be positive"));
+                    }
+                    Some(w)
+                }
+                None => None,
+            };
+            RobotSpec::Rigid { footprint, rotation_weight }
+        }
+        "arm" | "asv" => {
+            return Err(ScenarioError::at(kp, format!("robot kind \"{kind}\" is part of the format but not supported by this version yet")))
+        }
+        other => return Err(ScenarioError::at(kp, format!("unknown robot kind \"{other}\" (use point or rigid)"))),
+    };
+    o.finish()?;
+    Ok(spec)
+}
+
+fn inspection(v: &Value, path: &str) -> Result<Inspection> {
+    let mut o = Obj::new(path, v)?;
+    let (pv, pp) = o.req("points")?;
+    let points = points(pv, &pp)?;
+    let mut num = |key: &'static str, default: Real| -> Result<Real> {
+        match o.get(key) {
+            Some((v, p)) => number(v, &p),
+            None => Ok(default),
+        }
+    };
+    let fov = num("fov", std::f64::consts::FRAC_PI_3)?;
+    let range = num("range", 60.0)?;
+    let coverage = num("coverage", 0.5)?;
+    if !(0.0..=1.0).contains(&coverage) {
+        return Err(ScenarioError::at(join(path, "coverage"), "must be between 0 and 1"));
+    }
+    o.finish()?;
+    Ok(Inspection { points, fov, range, coverage })
+}
+
+fn planner(v: &Value, path: &str) -> Result<PlannerDefaults> {
+    let map = v.as_object().ok_or_else(|| ScenarioError::at(path, format!("must be an object, found {}", describe(v))))?;
+    let name = string(map.get("name").ok_or_else(|| ScenarioError::at(path, "missing required key \"name\""))?, &join(path, "name"))?;
+    let spec = crate::planners::find(&name)
+        .ok_or_else(|| ScenarioError::at(join(path, "name"), format!("unknown planner \"{name}\" (known: {})", crate::planners::names().join(", "))))?;
+    let seed = match map.get("seed") {
+        Some(s) => Some(s.as_u64().ok_or_else(|| ScenarioError::at(join(path, "seed"), "must be a non-negative integer"))?),
+        None => None,
+    };
+    let mut params = map.clone();
+    params.remove("name");
+    params.remove("seed");
+    crate::planners::Params::from_json(spec, &Value::Object(params.clone()))
+        .map_err(|(key, msg)| ScenarioError::at(join(path, &key), msg))?;
+    Ok(PlannerDefaults { name, seed, params })
+}
+
+impl Scenario {
+    /// Parse and validate a scenario document. Syntax errors carry their line and column; every
+    /// other error names its JSON path. (Start and goal validity are checked when the scenario
+    /// becomes a [`Problem`](crate::problem::Problem).)
+    pub fn from_json(text: &str) -> Result<Scenario> {
+        let value: Value = serde_json::from_str(text).map_err(|e| ScenarioError {
+            path: String::new(),
+            message: format!("invalid JSON: {e}"),
+            line: Some(e.line()),
+            column: Some(e.column()),
+        })?;
+        Scenario::from_value(&value)
+    }
+
+    /// Validate an already parsed JSON value.
+    pub fn from_value(v: &Value) -> Result<Scenario> {
+        let mut o = Obj::new("", v)?;
+        if let Some((f, p)) = o.get("format") {
+            let f = string(f, &p)?;
+            if f != FORMAT {
+                return Err(ScenarioError::at(p, format!("unsupported format \"{f}\" (this version reads \"{FORMAT}\")")));
+            }
+        }
+        let name = match o.get("name") {
+            Some((v, p)) => string(v, &p)?,
+            None => "Untitled".to_string(),
+        };
+        let notes = match o.get("notes") {
+            Some((v, p)) => string(v, &p)?,
+            None => String::new(),
+        };
+        let (bv, bp) = o.req("bounds")?;
+        let bounds = fixed::<4>(bv, &bp, "[xmin, ymin, xmax, ymax]")?;
+        if bounds[0] >= bounds[2] || bounds[1] >= bounds[3] {
+            return Err(ScenarioError::at(bp, "needs xmin < xmax and ymin < ymax"));
+        }
+        let obstacles = match o.get("obstacles") {
+            Some((v, p)) => {
+                let arr = v.as_array().ok_or_else(|| ScenarioError::at(&p, format!("must be an array, found {}", describe(v))))?;
+                arr.iter().enumerate().map(|(i, x)| obstacle(x, &format!("{p}[{i}]"))).collect::<Result<Vec<_>>>()?
+            }
+            None => Vec::new(),
+        };
+        let (rv, rp) = o.req("robot")?;
+        let robot = robot(rv, &rp)?;
+        let (sv, sp) = o.req("start")?;
+        let start = numbers(sv, &sp)?;
+        let goal = match o.get("goal") {
+            Some((v, p)) => Some(numbers(v, &p)?),
+            None => None,
+        };
+        let goal_tolerance = match o.get("goal_tolerance") {
+            Some((v, p)) => {
+                let t = number(v, &p)?;
+                if t < 0.0 {
+                    return Err(ScenarioError::at(p, "must be 0 or more"));
+                }
+                t
+            }
+            None => 0.0,
+        };
+        let extent = (bounds[2] - bounds[0]).max(bounds[3] - bounds[1]);
+        let resolution = match o.get("resolution") {
+            Some((v, p)) => {
+                let r = number(v, &p)?;
+                if r <= 0.0 {
+                    return Err(ScenarioError::at(p, "must be positive"));
+                }
+                r
+            }
+            None => extent * 0.002,
+        };
+        let body_in_bounds = match o.get("body_in_bounds") {
+            Some((v, p)) => boolean(v, &p)?,
+            None => false,
+        };
+        let inspection = match o.get("inspection") {
+            Some((v, p)) => Some(inspection(v, &p)?),
+            None => None,
+        };
+        if goal.is_none() && inspection.is_none() {
+            return Err(ScenarioError::at("", "missing required key \"goal\" (only an inspection task may omit it)"));
+        }
+        let planner = match o.get("planner") {
+            Some((v, p)) => Some(planner(v, &p)?),
+            None => None,
+        };
+        o.finish()?;
+        Ok(Scenario {
+            format: FORMAT.to_string(),
+            name,
+            notes,
+            bounds,
+            obstacles,
+            robot,
+            start,
+            goal,
+            goal_tolerance,
+            resolution,
+            body_in_bounds,
+            inspection,
+            planner,
+        })
+    }
+}

@@ -1,0 +1,105 @@
+use crate::math::Real;
+use serde::Serialize;
+use serde_json::{Map, Value};
+
+/// The format tag of version 1.
+pub const FORMAT: &str = "planarium-scenario/1";
+
+/// A parsed and validated scenario (the contract's document, in Rust types).
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct Scenario {
+    /// Always [`FORMAT`].
+    pub format: String,
+    /// Shown as the scenario's title.
+    pub name: String,
+    /// Plain text shown under the canvas.
+    #[serde(skip_serializing_if = "String::is_empty")]
+    pub notes: String,
+    /// `[xmin, ymin, xmax, ymax]`.
+    pub bounds: [Real; 4],
+    /// Closed obstacles.
+    pub obstacles: Vec<ObstacleSpec>,
+    /// The robot.
+    pub robot: RobotSpec,
+    /// Start state.
+    pub start: Vec<Real>,
+    /// Goal state (absent only for inspection tasks).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub goal: Option<Vec<Real>>,
+    /// Distance in the robot's metric within which the goal counts as reached.
+    pub goal_tolerance: Real,
+    /// Largest step between two checked states along a motion, in the robot's metric.
+    pub resolution: Real,
+    /// Keep the whole body (not only the reference point) inside the bounds.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub body_in_bounds: bool,
+    /// Optional inspection task.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub inspection: Option<Inspection>,
+    /// Planner defaults selected when the scenario opens.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub planner: Option<PlannerDefaults>,
+}
+
+/// One obstacle, as the contract writes it (`{"rect": [...]}` and so on).
+#[derive(Clone, Debug, Serialize, PartialEq)]
+#[serde(rename_all = "lowercase")]
+pub enum ObstacleSpec {
+    /// `[x0, y0, x1, y1]`, corners in any order.
+    Rect([Real; 4]),
+    /// Simple polygon, convex or not.
+    Polygon(Vec<[Real; 2]>),
+    /// `[cx, cy, r]`.
+    Circle([Real; 3]),
+    /// `[x0, y0, x1, y1]`, a wall of zero thickness.
+    Segment([Real; 4]),
+}
+
+/// The robot block.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+#[serde(tag = "kind", rename_all = "lowercase")]
+pub enum RobotSpec {
+    /// A point robot; state `[x, y]`.
+    Point,
+    /// A rigid polygon; state `[x, y, theta]`.
+    Rigid {
+        /// Polygon in the body frame, rotating about the origin.
+        footprint: Vec<[Real; 2]>,
+        /// Weight of rotation in the metric (default: the footprint's radius).
+        #[serde(skip_serializing_if = "Option::is_none")]
+        rotation_weight: Option<Real>,
+    },
+}
+
+/// The optional inspection block.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct Inspection {
+    /// Points of interest.
+    pub points: Vec<[Real; 2]>,
+    /// Field of view, radians, centred on the heading.
+    pub fov: Real,
+    /// Sensor range.
+    pub range: Real,
+    /// Fraction of points to see.
+    pub coverage: Real,
+}
+
+/// The optional planner block: a name, a seed, and parameters by name.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct PlannerDefaults {
+    /// Planner name from the registry.
+    pub name: String,
+    /// Seed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub seed: Option<u64>,
+    /// Parameters by name.
+    #[serde(flatten)]
+    pub params: Map<String, Value>,
+}
+
+impl Scenario {
+    /// The scenario as pretty JSON in the contract's form.
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).expect("a scenario always serialises")
+    }
+}

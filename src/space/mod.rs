@@ -1,0 +1,132 @@
+//! State spaces: the dimensions of a robot's configuration, its metric and its interpolation.
+//!
+//! The generic entry is [`StateSpace`]. Planners see states only as `&[Real]` slices of
+//! [`StateSpace::dims`] numbers; the space says how far apart two of them are, how to move between
+//! them, and which dimensions wrap around (angles).
+
+use crate::math::{angle_diff, wrap_angle, Real};
+use crate::rng::Rng;
+
+/// One dimension of a state space.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Dim {
+    /// Lower bound (for a wrapping dimension: −π).
+    pub lo: Real,
+    /// Upper bound (for a wrapping dimension: π).
+    pub hi: Real,
+    /// Whether the dimension is an angle that wraps around.
+    pub wraps: bool,
+}
+
+/// How distances are measured.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Metric {
+    /// Euclidean over all dimensions (wrapped dimensions by their shortest angle).
+    Euclidean,
+    /// `|Δ(x, y)| + weight · |Δθ|` for states `[x, y, θ]` (rigid bodies).
+    TranslationRotation {
+        /// Weight of the rotation, usually the body's radius.
+        weight: Real,
+    },
+}
+
+/// A state space: its dimensions and metric.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StateSpace {
+    /// The dimensions, in state order.
+    pub dims: Vec<Dim>,
+    /// The metric.
+    pub metric: Metric,
+}
+
+impl StateSpace {
+    /// The number of numbers in a state.
+    #[inline]
+    pub fn dim_count(&self) -> usize {
+        self.dims.len()
+    }
+
+    /// Per-dimension difference `b − a` (the shortest way round for wrapping dimensions).
+    #[inline]
+    fn delta(&self, i: usize, a: Real, b: Real) -> Real {
+        if self.dims[i].wraps {
+            angle_diff(a, b)
+        } else {
+            b - a
+        }
+    }
+
+    /// The distance between two states.
+    #[inline]
+    pub fn distance(&self, a: &[Real], b: &[Real]) -> Real {
+        match self.metric {
+            Metric::Euclidean => (0..a.len()).map(|i| self.delta(i, a[i], b[i]).powi(2)).sum::<Real>().sqrt(),
+            Metric::TranslationRotation { weight } => {
+                let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+                (dx * dx + dy * dy).sqrt() + weight * angle_diff(a[2], b[2]).abs()
+            }
+        }
+    }
+
+    /// Write into `out` the state a fraction `t` of the way from `a` to `b`.
+    #[inline]
+    pub fn interpolate(&self, a: &[Real], b: &[Real], t: Real, out: &mut [Real]) {
+        for i in 0..a.len() {
+            let v = a[i] + t * self.delta(i, a[i], b[i]);
+            out[i] = if self.dims[i].wraps { wrap_angle(v) } else { v };
+        }
+    }
+
+    /// Write a uniform random state into `out`.
+    pub fn sample_uniform(&self, rng: &mut Rng, out: &mut [Real]) {
+        for (o, d) in out.iter_mut().zip(&self.dims) {
+            *o = rng.uniform(d.lo, d.hi);
+        }
+    }
+
+    /// Bring a state into canonical form (wrap angles).
+    pub fn enforce(&self, q: &mut [Real]) {
+        for (v, d) in q.iter_mut().zip(&self.dims) {
+            if d.wraps {
+                *v = wrap_angle(*v);
+            }
+        }
+    }
+
+    /// The largest distance between two states of the space (OMPL's `getMaximumExtent`, used to
+    /// derive the default step range as in OMPL: 0.2 × extent).
+    pub fn max_extent(&self) -> Real {
+        let ext = |d: &Dim| if d.wraps { std::f64::consts::PI } else { d.hi - d.lo };
+        match self.metric {
+            Metric::Euclidean => self.dims.iter().map(|d| ext(d).powi(2)).sum::<Real>().sqrt(),
+            Metric::TranslationRotation { weight } => {
+                (ext(&self.dims[0]).powi(2) + ext(&self.dims[1]).powi(2)).sqrt() + weight * ext(&self.dims[2])
+            }
+        }
+    }
+
+    /// A lower bound on the distance from `q` to any state in the box `lo..=hi` (per dimension,
+    /// with `lo`, `hi` canonical). Used by the nearest-neighbour tree to prune.
+    #[inline]
+    pub fn box_lower_bound(&self, q: &[Real], lo: &[Real], hi: &[Real]) -> Real {
+        let gap = |i: usize| -> Real {
+            let v = q[i];
+            if v >= lo[i] && v <= hi[i] {
+                0.0
+            } else if self.dims[i].wraps {
+                angle_diff(v, lo[i]).abs().min(angle_diff(v, hi[i]).abs())
+            } else if v < lo[i] {
+                lo[i] - v
+            } else {
+                v - hi[i]
+            }
+        };
+        match self.metric {
+            Metric::Euclidean => (0..q.len()).map(|i| gap(i).powi(2)).sum::<Real>().sqrt(),
+            Metric::TranslationRotation { weight } => (gap(0).powi(2) + gap(1).powi(2)).sqrt() + weight * gap(2),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;

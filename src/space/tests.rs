@@ -1,0 +1,51 @@
+use super::*;
+use crate::math::PI;
+
+fn se2(weight: Real) -> StateSpace {
+    StateSpace {
+        dims: vec![Dim { lo: 0.0, hi: 1.0, wraps: false }, Dim { lo: 0.0, hi: 1.0, wraps: false }, Dim { lo: -PI, hi: PI, wraps: true }],
+        metric: Metric::TranslationRotation { weight },
+    }
+}
+
+#[test]
+fn rotation_wraps_the_short_way() {
+    let s = se2(0.5);
+    let a = [0.0, 0.0, PI - 0.1];
+    let b = [0.0, 0.0, -PI + 0.1];
+    assert!((s.distance(&a, &b) - 0.5 * 0.2).abs() < 1e-12);
+    let mut m = [0.0; 3];
+    s.interpolate(&a, &b, 0.5, &mut m);
+    assert!((m[2].abs() - PI).abs() < 1e-12, "midpoint crosses ±π, got {}", m[2]);
+}
+
+#[test]
+fn box_bound_never_exceeds_true_distance() {
+    let s = se2(0.3);
+    let mut rng = crate::rng::Rng::new(5);
+    for _ in 0..2000 {
+        let mut q = [0.0; 3];
+        let mut a = [0.0; 3];
+        let mut b = [0.0; 3];
+        s.sample_uniform(&mut rng, &mut q);
+        s.sample_uniform(&mut rng, &mut a);
+        s.sample_uniform(&mut rng, &mut b);
+        let lo: Vec<Real> = (0..3).map(|i| a[i].min(b[i])).collect();
+        let hi: Vec<Real> = (0..3).map(|i| a[i].max(b[i])).collect();
+        let mut inside = [0.0; 3];
+        for _ in 0..10 {
+            for i in 0..3 {
+                inside[i] = rng.uniform(lo[i], hi[i]);
+            }
+            assert!(s.box_lower_bound(&q, &lo, &hi) <= s.distance(&q, &inside) + 1e-12);
+        }
+    }
+}
+
+#[test]
+fn max_extent_matches_ompl_ranges() {
+    // OMPL's default range is 0.2 × extent: 0.2828 for the unit square, 0.597 for SE(2) with weight 0.5.
+    let r2 = StateSpace { dims: se2(0.5).dims[..2].to_vec(), metric: Metric::Euclidean };
+    assert!((0.2 * r2.max_extent() - 0.2828).abs() < 1e-4);
+    assert!((0.2 * se2(0.5).max_extent() - 0.597).abs() < 1e-3);
+}

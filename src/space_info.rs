@@ -1,0 +1,64 @@
+//! [`SpaceInfo`]: everything a planner may know about the problem's space, in one bundle
+//! (OMPL's `SpaceInformation`). Planners import this, never scenario or robot types.
+
+use crate::math::{Real, Vec2};
+use crate::rng::Rng;
+use crate::space::StateSpace;
+use crate::validity::StateValidity;
+use std::cell::Cell;
+
+/// The state space, validity checker and motion resolution, with the count of state checks.
+pub struct SpaceInfo {
+    /// The state space.
+    pub space: StateSpace,
+    /// Largest step between two checked states along a motion, in the space's metric.
+    pub resolution: Real,
+    pub(crate) validity: Box<dyn StateValidity>,
+    pub(crate) checks: Cell<u64>,
+}
+
+impl SpaceInfo {
+    /// A bundle over a space and validity checker.
+    pub fn new(space: StateSpace, validity: Box<dyn StateValidity>, resolution: Real) -> Self {
+        SpaceInfo { space, resolution, validity, checks: Cell::new(0) }
+    }
+    /// Numbers per state.
+    #[inline]
+    pub fn dims(&self) -> usize {
+        self.space.dim_count()
+    }
+    /// Whether `q` is valid (counted as one state check).
+    #[inline]
+    pub fn is_valid(&self, q: &[Real]) -> bool {
+        self.checks.set(self.checks.get() + 1);
+        self.validity.is_valid(q)
+    }
+    /// State checks so far.
+    pub fn checks(&self) -> u64 {
+        self.checks.get()
+    }
+    /// Reset the check counter.
+    pub fn reset_checks(&self) {
+        self.checks.set(0)
+    }
+    /// Distance between two states.
+    #[inline]
+    pub fn distance(&self, a: &[Real], b: &[Real]) -> Real {
+        self.space.distance(a, b)
+    }
+    /// The state a fraction `t` from `a` to `b`.
+    #[inline]
+    pub fn interpolate(&self, a: &[Real], b: &[Real], t: Real, out: &mut [Real]) {
+        self.space.interpolate(a, b, t, out)
+    }
+    /// A uniform random state.
+    #[inline]
+    pub fn sample_uniform(&self, rng: &mut Rng, out: &mut [Real]) {
+        self.space.sample_uniform(rng, out)
+    }
+    /// Where a state is drawn in the workspace.
+    #[inline]
+    pub fn project(&self, q: &[Real]) -> Vec2 {
+        self.validity.project(q)
+    }
+}

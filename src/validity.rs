@@ -1,0 +1,40 @@
+//! State validity: a robot in a workspace, and the counter of state checks.
+
+use crate::geometry::Workspace;
+use crate::math::{Real, Vec2};
+use crate::robot::{Robot, Verdict};
+
+/// Answers whether states are valid (OMPL's `StateValidityChecker`).
+pub trait StateValidity {
+    /// Whether `q` is valid, and if not, why.
+    fn verdict(&self, q: &[Real]) -> Verdict;
+    /// Whether `q` is valid.
+    fn is_valid(&self, q: &[Real]) -> bool {
+        self.verdict(q) == Verdict::Valid
+    }
+    /// Exact swept test of the straight motion `a → b`, when one exists (`Some(true)`: it hits).
+    fn sweep_hits(&self, a: &[Real], b: &[Real]) -> Option<bool>;
+    /// The workspace point a state is drawn at.
+    fn project(&self, q: &[Real]) -> Vec2;
+}
+
+/// A robot placed in a workspace.
+#[derive(Debug)]
+pub struct RobotInWorkspace {
+    /// The robot.
+    pub robot: Box<dyn Robot>,
+    /// The workspace.
+    pub workspace: Workspace,
+}
+
+impl StateValidity for RobotInWorkspace {
+    fn verdict(&self, q: &[Real]) -> Verdict {
+        self.robot.verdict(&self.workspace, q)
+    }
+    fn sweep_hits(&self, a: &[Real], b: &[Real]) -> Option<bool> {
+        self.robot.sweep_hits(&self.workspace, a, b)
+    }
+    fn project(&self, q: &[Real]) -> Vec2 {
+        self.robot.project(q)
+    }
+}
