@@ -1,9 +1,13 @@
-//! Motion validation: a straight motion in state space is valid when every state along it, at most
-//! [`SpaceInfo::resolution`] apart, is valid (OMPL's `DiscreteMotionValidator`), and, for robots with
-//! an exact swept test (the point), when that test finds nothing either.
+//! Motion validation. A straight motion in state space is checked at every state at most
+//! [`SpaceInfo::resolution`] apart (OMPL's `DiscreteMotionValidator`: the end first, then in
+//! bisection order, coarse to fine, so a collision is found after few checks). On top of that the
+//! motion is *certified*, so no motion can cut an obstacle's corner between two checked states:
 //!
-//! States are checked end first, then in bisection order (coarse to fine), so that a collision is
-//! found after few checks.
+//! - a point robot's motion is a segment, tested exactly against every obstacle;
+//! - a body's motion uses clearances: if no body point moves more than `D` between two checked
+//!   states and their clearances sum to more than `D`, every state between them is free
+//!   (each body point stays within reach of one end); otherwise the interval is bisected, each new
+//!   state counted as a check, until it is certified or a collision is found.
 
 use crate::math::{Real, Vec2};
 use crate::space_info::SpaceInfo;
@@ -15,10 +19,18 @@ pub trait MotionValidator {
     fn check_motion(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Vec2>;
 }
 
-impl MotionValidator for SpaceInfo {
-    fn check_motion(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Vec2> {
-        let d = self.distance(a, b);
-        let n = ((d / self.resolution).ceil() as usize).max(1);
+/// Deepest bisection when certifying one interval (2^-40 of a resolution step).
+const MAX_DEPTH: u32 = 40;
+
+impl SpaceInfo {
+    /// Clearance of `q` capped at `cap`, counted as one state check.
+    #[inline]
+    fn clearance_checked(&self, q: &[Real], cap: Real) -> Real {
+        self.checks.set(self.checks.get() + 1);
+        self.validity.clearance(q, cap).unwrap_or(0.0)
+    }
+
+    fn check_discrete(&self, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real]) -> Result<(), Vec2> {
         if !self.is_valid(b) {
             return Err(self.project(b));
         }
@@ -35,32 +47,86 @@ impl MotionValidator for SpaceInfo {
             }
             step = half;
         }
-        if self.validity.sweep_hits(a, b) == Some(true) {
-            self.interpolate(a, b, 0.5, scratch);
+        Ok(())
+    }
+
+    /// Like the discrete check, but computing each state's clearance (capped at the per-step
+    /// displacement) and then certifying every interval between checked states.
+    fn check_certified(&self, a: &[Real], b: &[Real], n: usize, disp: Real, scratch: &mut [Real]) -> Result<(), Vec2> {
+        let cap = disp / n as Real;
+        let mut clear = self.clearances.take();
+        clear.clear();
+        clear.resize(n + 1, 0.0);
+        let outcome = (|| {
+            clear[n] = self.clearance_checked(b, cap);
+            if clear[n] == 0.0 {
+                return Err(self.project(b));
+            }
+            let mut step = n.next_power_of_two();
+            while step > 1 {
+                let half = step / 2;
+                let mut i = half;
+                while i < n {
+                    self.interpolate(a, b, i as Real / n as Real, scratch);
+                    clear[i] = self.clearance_checked(scratch, cap);
+                    if clear[i] == 0.0 {
+                        return Err(self.project(scratch));
+                    }
+                    i += step;
+                }
+                step = half;
+            }
+            clear[0] = self.clearance_checked(a, cap);
+            for i in 0..n {
+                if clear[i] + clear[i + 1] <= cap {
+                    let (t0, t1) = (i as Real / n as Real, (i + 1) as Real / n as Real);
+                    self.certify(a, b, (t0, clear[i]), (t1, clear[i + 1]), disp, scratch, 0)?;
+                }
+            }
+            Ok(())
+        })();
+        self.clearances.replace(clear);
+        outcome
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn certify(&self, a: &[Real], b: &[Real], lo: (Real, Real), hi: (Real, Real), disp: Real, scratch: &mut [Real], depth: u32) -> Result<(), Vec2> {
+        let span = disp * (hi.0 - lo.0);
+        if lo.1 + hi.1 > span {
+            return Ok(());
+        }
+        let tm = 0.5 * (lo.0 + hi.0);
+        self.interpolate(a, b, tm, scratch);
+        let cm = self.clearance_checked(scratch, span);
+        if cm == 0.0 || depth >= MAX_DEPTH {
             return Err(self.project(scratch));
         }
-        Ok(())
+        self.certify(a, b, lo, (tm, cm), disp, scratch, depth + 1)?;
+        self.certify(a, b, (tm, cm), hi, disp, scratch, depth + 1)
+    }
+}
+
+impl MotionValidator for SpaceInfo {
+    fn check_motion(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Vec2> {
+        let d = self.distance(a, b);
+        let n = ((d / self.resolution).ceil() as usize).max(1);
+        match self.validity.sweep_hits(a, b) {
+            // A robot with an exact swept test: discrete checks (the contract), then the sweep.
+            Some(hit) => {
+                self.check_discrete(a, b, n, scratch)?;
+                if hit {
+                    self.interpolate(a, b, 0.5, scratch);
+                    return Err(self.project(scratch));
+                }
+                Ok(())
+            }
+            None => match self.validity.displacement_factor() {
+                Some(k) => self.check_certified(a, b, n, k * d, scratch),
+                None => self.check_discrete(a, b, n, scratch),
+            },
+        }
     }
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::problem::Problem;
-    use crate::scenario::builtin;
-
-    #[test]
-    fn bisection_order_checks_every_step_once() {
-        let p = Problem::from_scenario(&builtin("narrow").unwrap()).unwrap();
-        let si = &p.si;
-        let (a, b) = ([0.1, 0.1], [0.4, 0.1]);
-        let mut s = [0.0; 2];
-        si.reset_checks();
-        assert!(si.check_motion(&a, &b, &mut s).is_ok());
-        let n = (0.3 / si.resolution).ceil() as u64;
-        assert_eq!(si.checks(), n, "one check per step, end included");
-        // Through the wall: found, and the point reported is inside the wall.
-        let hit = si.check_motion(&a, &[0.9, 0.1], &mut s).unwrap_err();
-        assert!(hit.x >= 0.45 && hit.x <= 0.55);
-    }
-}
+mod tests;

@@ -5,7 +5,7 @@ use crate::math::{Real, Vec2};
 use crate::rng::Rng;
 use crate::space::StateSpace;
 use crate::validity::StateValidity;
-use std::cell::Cell;
+use std::cell::{Cell, RefCell};
 
 /// The state space, validity checker and motion resolution, with the count of state checks.
 pub struct SpaceInfo {
@@ -15,12 +15,14 @@ pub struct SpaceInfo {
     pub resolution: Real,
     pub(crate) validity: Box<dyn StateValidity>,
     pub(crate) checks: Cell<u64>,
+    /// Scratch for the clearances along a motion (reused, so checking does not allocate).
+    pub(crate) clearances: RefCell<Vec<Real>>,
 }
 
 impl SpaceInfo {
     /// A bundle over a space and validity checker.
     pub fn new(space: StateSpace, validity: Box<dyn StateValidity>, resolution: Real) -> Self {
-        SpaceInfo { space, resolution, validity, checks: Cell::new(0) }
+        SpaceInfo { space, resolution, validity, checks: Cell::new(0), clearances: RefCell::new(Vec::new()) }
     }
     /// Numbers per state.
     #[inline]

@@ -16,6 +16,10 @@ pub trait StateValidity {
     fn sweep_hits(&self, a: &[Real], b: &[Real]) -> Option<bool>;
     /// The workspace point a state is drawn at.
     fn project(&self, q: &[Real]) -> Vec2;
+    /// Distance to the nearest obstacle capped at `cap` (0: invalid), when the robot has it.
+    fn clearance(&self, q: &[Real], cap: Real) -> Option<Real>;
+    /// Bound on body-point displacement per unit of the metric, for robots with a clearance.
+    fn displacement_factor(&self) -> Option<Real>;
 }
 
 /// A robot placed in a workspace.
@@ -36,5 +40,11 @@ impl StateValidity for RobotInWorkspace {
     }
     fn project(&self, q: &[Real]) -> Vec2 {
         self.robot.project(q)
+    }
+    fn clearance(&self, q: &[Real], cap: Real) -> Option<Real> {
+        self.robot.clearance(&self.workspace, q, cap)
+    }
+    fn displacement_factor(&self) -> Option<Real> {
+        self.robot.displacement_factor()
     }
 }

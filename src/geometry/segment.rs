@@ -36,6 +36,19 @@ pub fn intersect_segment_segment(p1: Vec2, p2: Vec2, q1: Vec2, q2: Vec2) -> bool
         || (d4 == 0.0 && within(p1, p2, q2))
 }
 
+/// Distance between closed segments `a b` and `c d` (0 when they meet).
+#[inline]
+pub fn distance_segment_segment(a: Vec2, b: Vec2, c: Vec2, d: Vec2) -> Real {
+    if intersect_segment_segment(a, b, c, d) {
+        return 0.0;
+    }
+    distance2_point_segment(a, c, d)
+        .min(distance2_point_segment(b, c, d))
+        .min(distance2_point_segment(c, a, b))
+        .min(distance2_point_segment(d, a, b))
+        .sqrt()
+}
+
 /// Squared distance from `p` to the closed segment `a b`.
 #[inline]
 pub fn distance2_point_segment(p: Vec2, a: Vec2, b: Vec2) -> Real {

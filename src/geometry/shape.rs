@@ -1,6 +1,6 @@
 use super::circle::intersect_segment_circle;
 use super::polygon::{contains_polygon_point, intersect_segment_polygon};
-use super::segment::{contains_segment_point, intersect_segment_segment};
+use super::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment, intersect_segment_segment};
 use super::Aabb;
 use crate::math::{Real, Vec2};
 
@@ -62,6 +62,38 @@ impl Shape {
             Shape::Circle(c, r) => intersect_segment_circle(a, b, *c, *r),
             Shape::Segment(p, q) => intersect_segment_segment(a, b, *p, *q),
         }
+    }
+
+    /// The distance from the closed polygon `poly` (bounding box `bb`) to the shape, or `cap` if
+    /// that is smaller (0 when they meet).
+    pub fn distance_to_polygon(&self, poly: &[Vec2], bb: &Aabb, cap: Real) -> Real {
+        if !bb.grown(cap).intersects(&self.aabb()) {
+            return cap;
+        }
+        if self.intersects_polygon(poly, bb) {
+            return 0.0;
+        }
+        let n = poly.len();
+        let mut best = cap;
+        let mut edge = |a: Vec2, b: Vec2| {
+            for i in 0..n {
+                best = best.min(distance_segment_segment(a, b, poly[i], poly[(i + 1) % n]));
+            }
+        };
+        match self {
+            Shape::Rect(r) => {
+                let c = [r.min, Vec2::new(r.max.x, r.min.y), r.max, Vec2::new(r.min.x, r.max.y)];
+                (0..4).for_each(|i| edge(c[i], c[(i + 1) % 4]));
+            }
+            Shape::Polygon(p) => (0..p.len()).for_each(|i| edge(p[i], p[(i + 1) % p.len()])),
+            Shape::Segment(a, b) => edge(*a, *b),
+            Shape::Circle(c, r) => {
+                for i in 0..n {
+                    best = best.min(distance2_point_segment(*c, poly[i], poly[(i + 1) % n]).sqrt() - r);
+                }
+            }
+        }
+        best.max(0.0)
     }
 
     /// Whether the closed polygon `poly` (with bounding box `bb`) meets the shape.

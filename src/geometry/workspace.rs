@@ -1,5 +1,5 @@
 use super::{Aabb, Shape};
-use crate::math::Vec2;
+use crate::math::{Real, Vec2};
 
 /// The world a robot moves in: rectangular bounds and closed obstacles.
 #[derive(Clone, Debug)]
@@ -27,6 +27,22 @@ impl Workspace {
     pub fn segment_hits(&self, a: Vec2, b: Vec2) -> bool {
         let bb = Aabb::of_points(&[a, b]);
         (0..self.obstacles.len()).any(|i| self.boxes[i].intersects(&bb) && self.obstacles[i].intersects_segment(a, b))
+    }
+
+    /// The distance from the closed polygon `poly` to the nearest obstacle, capped at `cap`
+    /// (0 when it meets one).
+    pub fn polygon_clearance(&self, poly: &[Vec2], cap: Real) -> Real {
+        let bb = Aabb::of_points(poly);
+        let mut best = cap;
+        for (shape, bx) in self.obstacles.iter().zip(&self.boxes) {
+            if bx.intersects(&bb.grown(best)) {
+                best = best.min(shape.distance_to_polygon(poly, &bb, best));
+                if best == 0.0 {
+                    break;
+                }
+            }
+        }
+        best
     }
 
     /// The index of the first obstacle that the closed polygon `poly` meets, if any.

@@ -66,5 +66,24 @@ pub fn shortcut(si: &SpaceInfo, path: &[Vec<Real>], attempts: usize, rng: &mut R
         next.extend_from_slice(&path[j + 1..]);
         path = next;
     }
-    path
+    reduce_vertices(si, &path, &mut scratch)
+}
+
+/// Drop the vertices that a straight valid motion can skip: from each kept vertex, jump to the
+/// farthest later vertex reachable directly (OMPL's `reduceVertices`, done greedily). Never longer.
+pub fn reduce_vertices(si: &SpaceInfo, path: &[Vec<Real>], scratch: &mut [Real]) -> Vec<Vec<Real>> {
+    let mut out = vec![path[0].clone()];
+    let mut i = 0;
+    while i + 1 < path.len() {
+        let mut next = i + 1;
+        for j in (i + 2..path.len()).rev() {
+            if si.check_motion(&path[i], &path[j], scratch).is_ok() {
+                next = j;
+                break;
+            }
+        }
+        out.push(path[next].clone());
+        i = next;
+    }
+    out
 }

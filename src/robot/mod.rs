@@ -41,6 +41,18 @@ pub trait Robot: std::fmt::Debug {
     fn sweep_hits(&self, _ws: &Workspace, _a: &[Real], _b: &[Real]) -> Option<bool> {
         None
     }
+    /// The distance from the body at `q` to the nearest obstacle (and, where the body must stay in
+    /// bounds, to the bounds), capped at `cap`; 0 when `q` is invalid. `None` for robots whose
+    /// motions are checked by [`sweep_hits`](Robot::sweep_hits) instead.
+    fn clearance(&self, _ws: &Workspace, _q: &[Real], _cap: Real) -> Option<Real> {
+        None
+    }
+    /// A bound `k` such that no point of the body moves farther than `k · d` along a straight
+    /// motion of length `d` in the robot's metric (used with [`clearance`](Robot::clearance)).
+    /// `None` when the robot has no [`clearance`](Robot::clearance).
+    fn displacement_factor(&self) -> Option<Real> {
+        None
+    }
     /// The body's outline at state `q`, as closed polygons in world coordinates (for drawing and
     /// exports); a point robot has none.
     fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>>;

@@ -74,6 +74,34 @@ impl Robot for RigidRobot {
             self.verdict_of(ws, &buf)
         }
     }
+    fn clearance(&self, ws: &Workspace, q: &[Real], cap: Real) -> Option<Real> {
+        if xy_in_bounds(ws, q).is_some() {
+            return Some(0.0);
+        }
+        let n = self.footprint.len();
+        let mut heap;
+        let mut stack = [Vec2::default(); STACK_VERTICES];
+        let body: &mut [Vec2] = if n <= STACK_VERTICES {
+            &mut stack[..n]
+        } else {
+            heap = vec![Vec2::default(); n];
+            &mut heap
+        };
+        self.place(q, body);
+        let mut cap = cap;
+        if self.body_in_bounds {
+            let b = ws.bounds;
+            for p in body.iter() {
+                let inside = (p.x - b.min.x).min(b.max.x - p.x).min(p.y - b.min.y).min(b.max.y - p.y);
+                cap = cap.min(inside.max(0.0));
+            }
+        }
+        Some(if cap == 0.0 { 0.0 } else { ws.polygon_clearance(body, cap) })
+    }
+    fn displacement_factor(&self) -> Option<Real> {
+        // A body point at distance ≤ radius from the origin moves at most |Δxy| + radius·|Δθ|.
+        Some((self.radius / self.rotation_weight).max(1.0))
+    }
     fn project(&self, q: &[Real]) -> Vec2 {
         Vec2::new(q[0], q[1])
     }

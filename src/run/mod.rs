@@ -5,9 +5,11 @@
 //! single-steps) or [`Session::run_to_end`] (the CLI, tests, benchmarks).
 
 pub mod bench;
+mod fingerprint;
 mod result;
 mod session;
 
+pub use fingerprint::{fingerprint, fnv1a, Fingerprint, FNV_OFFSET};
 pub use result::{PlanResult, Stats};
 pub use session::{RunConfig, Session};
 

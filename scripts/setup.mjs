@@ -1,0 +1,51 @@
+// Installs whatever is missing, idempotently: the wasm32 target, wasm-bindgen-cli at the exact
+// version in Cargo.lock, wasm-pack, and with --browser also the npm packages and Debian's chromium.
+// Everything comes from the package registries (crates.io, npm, Debian); nothing else is fetched.
+import { execSync, spawnSync } from 'node:child_process';
+import { existsSync, readFileSync } from 'node:fs';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const root = join(dirname(fileURLToPath(import.meta.url)), '..');
+const browser = process.argv.includes('--browser');
+const log = (m) => console.log(`[setup] ${m}`);
+
+function sh(cmd, opts = {}) {
+  log(cmd);
+  execSync(cmd, { stdio: 'inherit', cwd: root, ...opts });
+}
+function out(cmd) {
+  const r = spawnSync('sh', ['-c', cmd], { encoding: 'utf8', cwd: root });
+  return r.status === 0 ? r.stdout.trim() : null;
+}
+
+// Cargo's bin folder on PATH for this process and its children.
+const cargoBin = join(process.env.HOME || '/root', '.cargo', 'bin');
+if (!process.env.PATH.split(':').includes(cargoBin)) process.env.PATH = `${cargoBin}:${process.env.PATH}`;
+
+if (!out('cargo --version')) {
+  console.error('[setup] cargo is missing: install the Rust toolchain with rustup first.');
+  process.exit(1);
+}
+
+const targets = out('rustup target list --installed') || '';
+if (!targets.split('\n').includes('wasm32-unknown-unknown')) sh('rustup target add wasm32-unknown-unknown');
+
+if (!existsSync(join(root, 'Cargo.lock'))) sh('cargo generate-lockfile');
+const lock = readFileSync(join(root, 'Cargo.lock'), 'utf8');
+const m = lock.match(/name = "wasm-bindgen"\nversion = "([^"]+)"/);
+if (!m) { console.error('[setup] wasm-bindgen not found in Cargo.lock'); process.exit(1); }
+const want = m[1];
+const have = (out('wasm-bindgen --version') || '').split(' ')[1];
+if (have !== want) sh(`cargo install wasm-bindgen-cli --version ${want} --force`);
+if (!out('wasm-pack --version')) sh('cargo install wasm-pack');
+
+if (browser) {
+  if (!existsSync(join(root, 'node_modules', 'playwright-core'))) sh('npm install --no-audit --no-fund');
+  if (!existsSync('/usr/bin/chromium')) {
+    const sudo = process.getuid && process.getuid() === 0 ? '' : 'sudo ';
+    sh(`${sudo}apt-get update`);
+    sh(`${sudo}env DEBIAN_FRONTEND=noninteractive apt-get install -y chromium`);
+  }
+}
+log('ready');

@@ -1,0 +1,17 @@
+// Runs every test: native cargo tests, the core compiled to wasm under Node (wasm-pack test --node),
+// and the JavaScript tests (the wasm build in Node, the worker protocol, the page in headless
+// chromium). Set-up first, so a fresh machine needs nothing else.
+import { execSync } from 'node:child_process';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const root = join(dirname(fileURLToPath(import.meta.url)), '..');
+const run = (cmd) => {
+  console.log(`\n[test] ${cmd}`);
+  execSync(cmd, { stdio: 'inherit', cwd: root, env: { ...process.env, PATH: `${join(process.env.HOME || '/root', '.cargo', 'bin')}:${process.env.PATH}` } });
+};
+run('node scripts/setup.mjs --browser');
+run('cargo test --release');
+run('wasm-pack test --node --release -- --no-default-features');
+run('node scripts/build.mjs');
+run('node --test --test-concurrency=1 tests/js/');

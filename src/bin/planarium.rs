@@ -1,0 +1,175 @@
+//! The native command line: `plan`, `bench`, `validate` and `list`.
+//!
+//! Every planner parameter is a flag (`--goal-bias 0.2`, `--extend connect`), generated from the
+//! planner registry, so a new parameter needs no CLI code.
+
+use clap::{Arg, ArgAction, ArgMatches, Command};
+use planarium::planners::{self, Params, PlannerSpec, RUN_PARAMS};
+use planarium::problem::Problem;
+use planarium::run::{bench, RunConfig, Session};
+use planarium::scenario::{self, Scenario};
+use std::process::ExitCode;
+
+fn param_flag(name: &str) -> String {
+    name.replace('_', "-")
+}
+
+/// Every parameter name of every planner and of the run loop, once each.
+fn all_param_specs() -> Vec<&'static planners::ParamSpec> {
+    let mut out: Vec<&'static planners::ParamSpec> = Vec::new();
+    for p in planners::REGISTRY.iter().flat_map(|p| p.params.iter()).chain(RUN_PARAMS) {
+        if !out.iter().any(|q| q.name == p.name) {
+            out.push(p);
+        }
+    }
+    out
+}
+
+fn with_param_flags(mut cmd: Command) -> Command {
+    for p in all_param_specs() {
+        let id: &'static str = p.name;
+        cmd = cmd.arg(
+            Arg::new(id).long(&*Box::leak(param_flag(p.name).into_boxed_str())).value_name("VALUE").help(p.doc).help_heading("Planner parameters"),
+        );
+    }
+    cmd
+}
+
+fn cli() -> Command {
+    let scenario_arg = Arg::new("scenario").required(true).help("Scenario JSON file, or the id of a built-in scenario (see `list`)");
+    Command::new("planarium")
+        .about("Motion-planning playground core: plan, benchmark and validate scenarios")
+        .subcommand_required(true)
+        .subcommand(with_param_flags(
+            Command::new("plan")
+                .about("Plan once and print the result")
+                .arg(scenario_arg.clone())
+                .arg(Arg::new("planner").long("planner").default_value("rrt-connect").help("Planner name"))
+                .arg(Arg::new("seed").long("seed").default_value("1").value_parser(clap::value_parser!(u64)).help("Seed"))
+                .arg(Arg::new("json").long("json").action(ArgAction::SetTrue).help("Print the result JSON of the contract")),
+        ))
+        .subcommand(with_param_flags(
+            Command::new("bench")
+                .about("Run planners for seeds 1..N and summarise")
+                .arg(scenario_arg.clone())
+                .arg(Arg::new("planners").long("planners").default_value("rrt,rrt-connect").help("Comma-separated planner names"))
+                .arg(Arg::new("runs").long("runs").default_value("20").value_parser(clap::value_parser!(u64)).help("Seeds 1..=runs"))
+                .arg(Arg::new("json").long("json").action(ArgAction::SetTrue).help("Print JSON instead of a table")),
+        ))
+        .subcommand(Command::new("validate").about("Check a scenario and print it normalised").arg(scenario_arg))
+        .subcommand(Command::new("list").about("List built-in scenarios and planners"))
+}
+
+fn load(arg: &str) -> Result<Scenario, String> {
+    if std::path::Path::new(arg).exists() {
+        let text = std::fs::read_to_string(arg).map_err(|e| format!("{arg}: {e}"))?;
+        Scenario::from_json(&text).map_err(|e| format!("{arg}: {e}"))
+    } else if scenario::builtin_names().contains(&arg) {
+        scenario::builtin(arg).map_err(|e| e.to_string())
+    } else {
+        Err(format!("{arg}: no such file, and not a built-in scenario (built-ins: {})", scenario::builtin_names().join(", ")))
+    }
+}
+
+fn params_for(spec: &'static PlannerSpec, sc: &Scenario, m: &ArgMatches) -> Result<Params, String> {
+    // Scenario defaults first (when they are for this planner), then flags.
+    let mut params = match &sc.planner {
+        Some(d) if d.name == spec.name => {
+            Params::from_json(spec, &serde_json::Value::Object(d.params.clone())).map_err(|(k, e)| format!("planner.{k}: {e}"))?
+        }
+        _ => Params::default(),
+    };
+    for p in all_param_specs() {
+        if let Some(v) = m.get_one::<String>(p.name) {
+            let own = spec.params.iter().chain(RUN_PARAMS).any(|q| q.name == p.name);
+            if !own {
+                return Err(format!("--{} is not a parameter of {}", param_flag(p.name), spec.name));
+            }
+            params.set_text(spec, p.name, v).map_err(|e| {
+                let why = e.split_once(": ").map_or(e.as_str(), |(_, w)| w);
+                format!("--{} {v}: {why}", param_flag(p.name))
+            })?;
+        }
+    }
+    Ok(params)
+}
+
+fn find_planner(name: &str) -> Result<&'static PlannerSpec, String> {
+    planners::find(name).ok_or_else(|| format!("unknown planner \"{name}\" (known: {})", planners::names().join(", ")))
+}
+
+fn plan(m: &ArgMatches) -> Result<(), String> {
+    let sc = load(m.get_one::<String>("scenario").unwrap())?;
+    let spec = find_planner(m.get_one::<String>("planner").unwrap())?;
+    let params = params_for(spec, &sc, m)?;
+    let problem = Problem::from_scenario(&sc).map_err(|e| e.to_string())?;
+    let seed = *m.get_one::<u64>("seed").unwrap();
+    let mut s = Session::new(problem, RunConfig { planner: spec.name.into(), params, seed, record_events: false })?;
+    s.run_to_end();
+    let r = s.result();
+    if m.get_flag("json") {
+        println!("{}", r.to_json());
+    } else {
+        let st = &r.stats;
+        println!("{} on \"{}\", seed {}: {}", spec.label, sc.name, seed, r.status);
+        println!("  time {:.3} ms, {} iterations, {} nodes, {} checks", st.time_ms, st.iterations, st.nodes, st.checks);
+        if r.solved {
+            println!("  path: {} states, cost {:.4}", r.path.len(), st.cost.unwrap_or(0.0));
+            println!("  smoothed: {} states, cost {:.4}", r.smoothed.len(), st.smoothed_cost.unwrap_or(0.0));
+        }
+    }
+    Ok(())
+}
+
+fn run_bench(m: &ArgMatches) -> Result<(), String> {
+    let sc = load(m.get_one::<String>("scenario").unwrap())?;
+    Problem::from_scenario(&sc).map_err(|e| e.to_string())?;
+    let runs = *m.get_one::<u64>("runs").unwrap();
+    let mut rows = Vec::new();
+    for name in m.get_one::<String>("planners").unwrap().split(',').map(str::trim).filter(|s| !s.is_empty()) {
+        let spec = find_planner(name)?;
+        let params = params_for(spec, &sc, m)?;
+        rows.push(bench::bench_planner(&sc, spec.name, &params, runs)?);
+    }
+    if m.get_flag("json") {
+        let out = serde_json::json!({"scenario": sc.name, "runs": runs, "planners": rows});
+        println!("{}", serde_json::to_string_pretty(&out).unwrap());
+    } else {
+        println!("{} — {} seeded runs per planner (seeds 1..={runs})\n", sc.name, runs);
+        print!("{}", bench::table(&rows));
+    }
+    Ok(())
+}
+
+fn main() -> ExitCode {
+    let m = cli().get_matches();
+    let r = match m.subcommand() {
+        Some(("plan", m)) => plan(m),
+        Some(("bench", m)) => run_bench(m),
+        Some(("validate", m)) => load(m.get_one::<String>("scenario").unwrap()).and_then(|sc| {
+            Problem::from_scenario(&sc).map_err(|e| e.to_string())?;
+            println!("{}", sc.to_json());
+            Ok(())
+        }),
+        Some(("list", _)) => {
+            println!("Built-in scenarios:");
+            for (id, _) in scenario::BUILTINS {
+                let sc = scenario::builtin(id).expect("built-ins are valid");
+                println!("  {id:<12} {}", sc.name);
+            }
+            println!("Planners:");
+            for p in planners::REGISTRY {
+                println!("  {:<12} {}", p.name, p.summary);
+            }
+            Ok(())
+        }
+        _ => unreachable!("clap requires a subcommand"),
+    };
+    match r {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}

@@ -1,0 +1,57 @@
+use super::*;
+use crate::problem::Problem;
+use crate::scenario::{builtin, Scenario};
+
+#[test]
+fn bisection_order_checks_every_step_once() {
+    let p = Problem::from_scenario(&builtin("narrow").unwrap()).unwrap();
+    let si = &p.si;
+    let (a, b) = ([0.1, 0.1], [0.4, 0.1]);
+    let mut s = [0.0; 2];
+    si.reset_checks();
+    assert!(si.check_motion(&a, &b, &mut s).is_ok());
+    let n = (0.3 / si.resolution).ceil() as u64;
+    assert_eq!(si.checks(), n, "one check per step, end included");
+    let hit = si.check_motion(&a, &[0.9, 0.1], &mut s).unwrap_err();
+    assert!(hit.x >= 0.45 && hit.x <= 0.55, "the point reported is inside the wall");
+}
+
+fn coarse_square_past_a_pin(resolution: f64) -> Problem {
+    // A 0.02 square moving along y = 0.5 past a disc of radius 0.01 at (0.45, 0.5); with a coarse
+    // resolution of 0.1 every checked state (x = 0.2, 0.3, ...) is free, the motion is not.
+    let text = format!(
+        r#"{{"bounds": [0,0,1,1], "obstacles": [{{"circle": [0.45, 0.5, 0.01]}}],
+            "robot": {{"kind": "rigid", "footprint": [[-0.01,-0.01],[0.01,-0.01],[0.01,0.01],[-0.01,0.01]], "rotation_weight": 0.1}},
+            "start": [0.2, 0.5, 0], "goal": [0.8, 0.5, 0], "resolution": {resolution}}}"#
+    );
+    Problem::from_scenario(&Scenario::from_json(&text).unwrap()).unwrap()
+}
+
+#[test]
+fn a_body_cannot_jump_over_an_obstacle_between_checked_states() {
+    let p = coarse_square_past_a_pin(0.1);
+    let mut s = [0.0; 3];
+    let (a, b) = ([0.2, 0.5, 0.0], [0.8, 0.5, 0.0]);
+    for k in 0..=6 {
+        assert!(p.si.is_valid(&[0.2 + 0.1 * k as f64, 0.5, 0.0]), "checked state {k} is free");
+    }
+    let hit = p.si.check_motion(&a, &b, &mut s).unwrap_err();
+    assert!((hit.x - 0.45).abs() < 0.03, "collision found near the pin, at {hit:?}");
+    // Passing above the pin with room to spare is certified.
+    assert!(p.si.check_motion(&[0.2, 0.6, 0.0], &[0.8, 0.6, 0.0], &mut s).is_ok());
+}
+
+#[test]
+fn certification_refines_close_to_an_obstacle_without_rejecting_a_free_motion() {
+    let p = coarse_square_past_a_pin(0.1);
+    let mut s = [0.0; 3];
+    // 0.0005 of clearance above the pin: free, but far less than a step's displacement.
+    let y = 0.5 + 0.01 + 0.01 + 0.0005;
+    p.si.reset_checks();
+    assert!(p.si.check_motion(&[0.2, y, 0.0], &[0.8, y, 0.0], &mut s).is_ok());
+    assert!(p.si.checks() > 7, "refined near the pin: {} checks", p.si.checks());
+    // Rotating in place next to the pin: the corners sweep into it.
+    let near = [0.45, 0.5 + 0.01 + 0.0105, 0.0];
+    assert!(p.si.is_valid(&near));
+    assert!(p.si.check_motion(&near, &[0.45, near[1], 0.8], &mut s).is_err());
+}

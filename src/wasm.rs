@@ -1,0 +1,182 @@
+//! The thin binding the Web Worker drives (Rust-and-WebAssembly book style): `Scene` and `Run` hold
+//! core types and translate at the edge (JSON text, flat `Float64Array`s). No DOM work here.
+//!
+//! A panic aborts the wasm instance; the hook below keeps its message so the worker can read it
+//! with [`last_panic`], report it, and be replaced by the page.
+
+use crate::planners::{self, Params};
+use crate::problem::Problem;
+use crate::run::{RunConfig, Session};
+use crate::scenario::{self, Scenario, ScenarioError};
+use std::cell::RefCell;
+use wasm_bindgen::prelude::*;
+
+thread_local! {
+    static PANIC: RefCell<String> = const { RefCell::new(String::new()) };
+}
+
+/// Install the panic hook (called once by the worker after `init`).
+#[wasm_bindgen]
+pub fn install_panic_hook() {
+    std::panic::set_hook(Box::new(|info| {
+        PANIC.with(|p| *p.borrow_mut() = info.to_string());
+    }));
+}
+
+/// The message of the last panic, if any.
+#[wasm_bindgen]
+pub fn last_panic() -> String {
+    PANIC.with(|p| p.borrow().clone())
+}
+
+/// Crash on purpose (tests of the worker's panic handling).
+#[wasm_bindgen]
+pub fn debug_panic(message: &str) {
+    panic!("{message}");
+}
+
+fn error_json(e: &ScenarioError) -> JsError {
+    JsError::new(
+        &serde_json::json!({"path": e.path, "message": e.message, "line": e.line, "column": e.column, "text": e.to_string()})
+            .to_string(),
+    )
+}
+
+/// The built-in scenarios as JSON: `[{id, name, notes, scenario}]`.
+#[wasm_bindgen]
+pub fn builtins() -> String {
+    let list: Vec<serde_json::Value> = scenario::BUILTINS
+        .iter()
+        .map(|(id, text)| {
+            let sc = Scenario::from_json(text).expect("built-ins are valid");
+            serde_json::json!({"id": id, "name": sc.name, "notes": sc.notes, "scenario": serde_json::from_str::<serde_json::Value>(text).unwrap()})
+        })
+        .collect();
+    serde_json::to_string(&list).unwrap()
+}
+
+/// The planner registry as JSON: `{planners: [{name, label, summary, params}], run_params}`.
+#[wasm_bindgen]
+pub fn planners() -> String {
+    let run: Vec<serde_json::Value> = planners::RUN_PARAMS.iter().map(|p| p.to_json()).collect();
+    format!("{{\"planners\": {}, \"run_params\": {}}}", planners::registry_json(), serde_json::to_string(&run).unwrap())
+}
+
+/// The event kinds as JSON `{NAME: number}` and the record stride (checked against `www/events.js`).
+#[wasm_bindgen]
+pub fn event_kinds() -> String {
+    let mut m = serde_json::Map::new();
+    for (k, name) in crate::events::EventKind::ALL {
+        m.insert(name.to_string(), serde_json::json!(k as u8));
+    }
+    serde_json::json!({"kinds": m, "stride": crate::events::STRIDE}).to_string()
+}
+
+/// A validated scenario: its normalised JSON and the robot's outlines.
+#[wasm_bindgen]
+pub struct Scene {
+    inner: Problem,
+}
+
+#[wasm_bindgen]
+impl Scene {
+    /// Parse and check a scenario; errors are JSON `{path, message, line, column, text}`.
+    #[wasm_bindgen(constructor)]
+    pub fn new(text: &str) -> Result<Scene, JsError> {
+        let sc = Scenario::from_json(text).map_err(|e| error_json(&e))?;
+        let inner = Problem::from_scenario(&sc).map_err(|e| error_json(&e))?;
+        Ok(Scene { inner })
+    }
+    /// The scenario in the contract's normalised form.
+    pub fn scenario_json(&self) -> String {
+        self.inner.scenario.to_json()
+    }
+    /// The robot's outline at state `q`, flat: `[n_polygons, n_1, x, y, ..., n_2, ...]`.
+    pub fn outline(&self, q: &[f64]) -> Vec<f64> {
+        flat_outline(&self.inner, q)
+    }
+}
+
+fn flat_outline(p: &Problem, q: &[f64]) -> Vec<f64> {
+    let robot = crate::robot::from_spec(&p.scenario.robot, p.scenario.body_in_bounds);
+    let polys = robot.outline(q);
+    let mut out = vec![polys.len() as f64];
+    for poly in polys {
+        out.push(poly.len() as f64);
+        for v in poly {
+            out.extend_from_slice(&[v.x, v.y]);
+        }
+    }
+    out
+}
+
+/// A planning run, stepped by the worker.
+#[wasm_bindgen]
+pub struct Run {
+    inner: Session,
+}
+
+#[wasm_bindgen]
+impl Run {
+    /// A run of `planner` with parameters `params` (a JSON object) and `seed` on a scenario.
+    #[wasm_bindgen(constructor)]
+    pub fn new(scenario: &str, planner: &str, params: &str, seed: f64) -> Result<Run, JsError> {
+        let sc = Scenario::from_json(scenario).map_err(|e| error_json(&e))?;
+        let problem = Problem::from_scenario(&sc).map_err(|e| error_json(&e))?;
+        let spec = planners::find(planner).ok_or_else(|| JsError::new(&format!("unknown planner \"{planner}\"")))?;
+        let value: serde_json::Value = serde_json::from_str(params).map_err(|e| JsError::new(&format!("parameters: {e}")))?;
+        let params = Params::from_json(spec, &value).map_err(|(k, m)| JsError::new(&format!("{k}: {m}")))?;
+        if !(seed >= 0.0 && seed.fract() == 0.0 && seed < 9007199254740992.0) {
+            return Err(JsError::new("seed: must be a whole number from 0 to 2^53"));
+        }
+        let config = RunConfig { planner: planner.to_string(), params, seed: seed as u64, record_events: true };
+        Ok(Run { inner: Session::new(problem, config).map_err(|e| JsError::new(&e))? })
+    }
+    /// Run at most `iterations` iterations for at most `max_ms` ms; returns the status name.
+    pub fn step(&mut self, iterations: f64, max_ms: f64) -> String {
+        self.inner.step(iterations as u64, max_ms).name().to_string()
+    }
+    /// Take the events recorded since the last call (flat records, see `www/events.js`).
+    pub fn drain_events(&mut self) -> Vec<f64> {
+        self.inner.drain_events()
+    }
+    /// Stop now.
+    pub fn cancel(&mut self) {
+        self.inner.cancel()
+    }
+    /// The statistics so far, as JSON.
+    pub fn stats_json(&self) -> String {
+        serde_json::to_string(&self.inner.stats()).unwrap()
+    }
+    /// The result in the contract's form, as JSON.
+    pub fn result_json(&self) -> String {
+        self.inner.result().to_json()
+    }
+    /// The smoothed path (raw path if `raw`) sampled every `spacing` (robot metric) for animation,
+    /// flat: `[dims, frames, then per frame: state…, outline (as [`Scene::outline`])…]`: each frame
+    /// is `dims` numbers then its outline.
+    pub fn path_frames(&self, raw: bool, spacing: f64) -> Vec<f64> {
+        let p = self.inner.problem();
+        let r = self.inner.result();
+        let path = if raw { &r.path } else { &r.smoothed };
+        let dims = p.si.dims();
+        let mut states: Vec<Vec<f64>> = Vec::new();
+        for w in path.windows(2) {
+            let n = ((p.si.distance(&w[0], &w[1]) / spacing.max(1e-9)).ceil() as usize).clamp(1, 10_000);
+            for i in 0..n {
+                let mut q = vec![0.0; dims];
+                p.si.interpolate(&w[0], &w[1], i as f64 / n as f64, &mut q);
+                states.push(q);
+            }
+        }
+        if let Some(last) = path.last() {
+            states.push(last.clone());
+        }
+        let mut out = vec![dims as f64, states.len() as f64];
+        for q in &states {
+            out.extend_from_slice(q);
+            out.extend(flat_outline(p, q));
+        }
+        out
+    }
+}

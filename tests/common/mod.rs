@@ -1,0 +1,230 @@
+//! An independent checker of paths, written apart from the crate's geometry: its own point and
+//! polygon tests (winding numbers, parametric intersections, Liang–Barsky clipping) on the
+//! scenario's numbers, and motions sampled twice as finely as the planner's resolution; point
+//! robots' motions are also checked exactly.
+#![allow(dead_code)]
+
+use planarium::scenario::{ObstacleSpec, RobotSpec, Scenario};
+
+type P = (f64, f64);
+
+fn cross(o: P, a: P, b: P) -> f64 {
+    (a.0 - o.0) * (b.1 - o.1) - (a.1 - o.1) * (b.0 - o.0)
+}
+
+fn on_segment(a: P, b: P, p: P) -> bool {
+    let len = ((b.0 - a.0).powi(2) + (b.1 - a.1).powi(2)).sqrt();
+    cross(a, b, p).abs() <= 1e-12 * len.max(1.0)
+        && p.0 >= a.0.min(b.0) - 1e-12
+        && p.0 <= a.0.max(b.0) + 1e-12
+        && p.1 >= a.1.min(b.1) - 1e-12
+        && p.1 <= a.1.max(b.1) + 1e-12
+}
+
+/// Winding number of `poly` around `p` (nonzero: inside), boundary counted as inside.
+fn in_polygon(poly: &[P], p: P) -> bool {
+    let n = poly.len();
+    let mut w = 0i32;
+    for i in 0..n {
+        let (a, b) = (poly[i], poly[(i + 1) % n]);
+        if on_segment(a, b, p) {
+            return true;
+        }
+        if a.1 <= p.1 {
+            if b.1 > p.1 && cross(a, b, p) > 0.0 {
+                w += 1;
+            }
+        } else if b.1 <= p.1 && cross(a, b, p) < 0.0 {
+            w -= 1;
+        }
+    }
+    w != 0
+}
+
+/// Parametric intersection of closed segments.
+fn segments_meet(a: P, b: P, c: P, d: P) -> bool {
+    let r = (b.0 - a.0, b.1 - a.1);
+    let s = (d.0 - c.0, d.1 - c.1);
+    let den = r.0 * s.1 - r.1 * s.0;
+    if den.abs() < 1e-15 {
+        return on_segment(a, b, c) || on_segment(a, b, d) || on_segment(c, d, a) || on_segment(c, d, b);
+    }
+    let t = ((c.0 - a.0) * s.1 - (c.1 - a.1) * s.0) / den;
+    let u = ((c.0 - a.0) * r.1 - (c.1 - a.1) * r.0) / den;
+    (-1e-12..=1.0 + 1e-12).contains(&t) && (-1e-12..=1.0 + 1e-12).contains(&u)
+}
+
+fn dist_point_segment(p: P, a: P, b: P) -> f64 {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let l2 = dx * dx + dy * dy;
+    let t = if l2 > 0.0 { (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / l2).clamp(0.0, 1.0) } else { 0.0 };
+    ((p.0 - a.0 - t * dx).powi(2) + (p.1 - a.1 - t * dy).powi(2)).sqrt()
+}
+
+fn obstacle_polygon(o: &ObstacleSpec) -> Option<Vec<P>> {
+    match o {
+        ObstacleSpec::Rect(r) => {
+            let (x0, x1, y0, y1) = (r[0].min(r[2]), r[0].max(r[2]), r[1].min(r[3]), r[1].max(r[3]));
+            Some(vec![(x0, y0), (x1, y0), (x1, y1), (x0, y1)])
+        }
+        ObstacleSpec::Polygon(p) => Some(p.iter().map(|q| (q[0], q[1])).collect()),
+        _ => None,
+    }
+}
+
+fn point_hits(o: &ObstacleSpec, p: P) -> bool {
+    match o {
+        ObstacleSpec::Circle(c) => ((p.0 - c[0]).powi(2) + (p.1 - c[1]).powi(2)).sqrt() <= c[2],
+        ObstacleSpec::Segment(s) => on_segment((s[0], s[1]), (s[2], s[3]), p),
+        _ => in_polygon(&obstacle_polygon(o).unwrap(), p),
+    }
+}
+
+/// Liang–Barsky: does segment a-b meet the closed box?
+fn clip_box(a: P, b: P, x0: f64, y0: f64, x1: f64, y1: f64) -> bool {
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    let d = (b.0 - a.0, b.1 - a.1);
+    for (p, q) in [(-d.0, a.0 - x0), (d.0, x1 - a.0), (-d.1, a.1 - y0), (d.1, y1 - a.1)] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return false;
+            }
+        } else {
+            let r = q / p;
+            if p < 0.0 {
+                t0 = t0.max(r);
+            } else {
+                t1 = t1.min(r);
+            }
+        }
+    }
+    t0 <= t1
+}
+
+fn segment_hits(o: &ObstacleSpec, a: P, b: P) -> bool {
+    match o {
+        ObstacleSpec::Rect(r) => clip_box(a, b, r[0].min(r[2]), r[1].min(r[3]), r[0].max(r[2]), r[1].max(r[3])),
+        ObstacleSpec::Circle(c) => dist_point_segment((c[0], c[1]), a, b) <= c[2],
+        ObstacleSpec::Segment(s) => segments_meet(a, b, (s[0], s[1]), (s[2], s[3])),
+        ObstacleSpec::Polygon(_) => {
+            let poly = obstacle_polygon(o).unwrap();
+            in_polygon(&poly, a) || (0..poly.len()).any(|i| segments_meet(a, b, poly[i], poly[(i + 1) % poly.len()]))
+        }
+    }
+}
+
+/// Whether a body polygon meets an obstacle.
+fn body_hits(o: &ObstacleSpec, body: &[P]) -> bool {
+    let n = body.len();
+    (0..n).any(|i| segment_hits(o, body[i], body[(i + 1) % n]))
+        || match o {
+            ObstacleSpec::Circle(c) => in_polygon(body, (c[0], c[1])),
+            ObstacleSpec::Segment(s) => in_polygon(body, (s[0], s[1])),
+            _ => obstacle_polygon(o).unwrap().iter().any(|&v| in_polygon(body, v)),
+        }
+}
+
+fn body(sc: &Scenario, q: &[f64]) -> Option<Vec<P>> {
+    match &sc.robot {
+        RobotSpec::Point => None,
+        RobotSpec::Rigid { footprint, .. } => {
+            let (s, c) = q[2].sin_cos();
+            Some(footprint.iter().map(|p| (q[0] + c * p[0] - s * p[1], q[1] + s * p[0] + c * p[1])).collect())
+        }
+    }
+}
+
+/// Why state `q` is invalid, or `None`.
+pub fn state_problem(sc: &Scenario, q: &[f64]) -> Option<String> {
+    let b = sc.bounds;
+    if q[0] < b[0] || q[0] > b[2] || q[1] < b[1] || q[1] > b[3] {
+        return Some(format!("{q:?} out of bounds"));
+    }
+    for (i, o) in sc.obstacles.iter().enumerate() {
+        let hit = match body(sc, q) {
+            None => point_hits(o, (q[0], q[1])),
+            Some(poly) => body_hits(o, &poly),
+        };
+        if hit {
+            return Some(format!("{q:?} meets obstacles[{i}]"));
+        }
+    }
+    None
+}
+
+fn angle_diff(a: f64, b: f64) -> f64 {
+    let d = (b - a).rem_euclid(2.0 * std::f64::consts::PI);
+    if d > std::f64::consts::PI {
+        d - 2.0 * std::f64::consts::PI
+    } else {
+        d
+    }
+}
+
+fn metric(sc: &Scenario, a: &[f64], b: &[f64]) -> f64 {
+    match &sc.robot {
+        RobotSpec::Point => ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt(),
+        RobotSpec::Rigid { footprint, rotation_weight } => {
+            let r = rotation_weight.unwrap_or_else(|| footprint.iter().map(|p| p[0].hypot(p[1])).fold(0.0, f64::max));
+            ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt() + r * angle_diff(a[2], b[2]).abs()
+        }
+    }
+}
+
+/// Why the path is not a valid solution from start to goal, or `None`.
+pub fn path_problem(sc: &Scenario, path: &[Vec<f64>]) -> Option<String> {
+    if path.len() < 2 {
+        return Some("fewer than two states".into());
+    }
+    if metric(sc, &path[0], &sc.start) > 1e-9 {
+        return Some(format!("starts at {:?}, not at the start {:?}", path[0], sc.start));
+    }
+    let goal = sc.goal.as_ref().unwrap();
+    if metric(sc, path.last().unwrap(), goal) > sc.goal_tolerance + 1e-9 {
+        return Some(format!("ends at {:?}, not at the goal {:?}", path.last().unwrap(), goal));
+    }
+    for (k, w) in path.windows(2).enumerate() {
+        if let Some(e) = motion_problem(sc, &w[0], &w[1]) {
+            return Some(format!("motion {k}: {e}"));
+        }
+    }
+    None
+}
+
+/// Why the motion a → b is invalid, or `None`: states every resolution/2, and for a point an
+/// exact segment test.
+pub fn motion_problem(sc: &Scenario, a: &[f64], b: &[f64]) -> Option<String> {
+    let n = ((metric(sc, a, b) / (sc.resolution / 2.0)).ceil() as usize).max(1);
+    for i in 0..=n {
+        let t = i as f64 / n as f64;
+        let mut q: Vec<f64> = a.iter().zip(b).map(|(x, y)| x + t * (y - x)).collect();
+        if q.len() == 3 {
+            q[2] = a[2] + t * angle_diff(a[2], b[2]);
+        }
+        if let Some(e) = state_problem(sc, &q) {
+            return Some(e);
+        }
+    }
+    if matches!(sc.robot, RobotSpec::Point) {
+        for (i, o) in sc.obstacles.iter().enumerate() {
+            if segment_hits(o, (a[0], a[1]), (b[0], b[1])) {
+                return Some(format!("segment {a:?} → {b:?} meets obstacles[{i}]"));
+            }
+        }
+    }
+    None
+}
+
+/// Sanity checks of the checker itself: it must reject what is wrong.
+pub fn self_test() {
+    let sc = planarium::scenario::builtin("narrow").unwrap();
+    assert!(state_problem(&sc, &[0.5, 0.2]).is_some());
+    assert!(state_problem(&sc, &[0.5, 0.5]).is_none());
+    assert!(motion_problem(&sc, &[0.1, 0.1], &[0.9, 0.1]).is_some());
+    // Grazing the wall's corner (0.55, 0.49) exactly, both ends free.
+    assert!(motion_problem(&sc, &[0.56, 0.48], &[0.54, 0.50]).is_some());
+    assert!(path_problem(&sc, &[vec![0.1, 0.1], vec![0.9, 0.9]]).is_some());
+    let slot = planarium::scenario::builtin("slot").unwrap();
+    assert!(state_problem(&slot, &[0.5, 0.5, std::f64::consts::FRAC_PI_2]).is_some());
+    assert!(state_problem(&slot, &[0.5, 0.5, 0.0]).is_none());
+}

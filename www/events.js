@@ -1,0 +1,12 @@
+// Event records streamed by the worker: fixed-stride Float64Array records
+// [kind, tree, id, parent, x, y, px, py] (see src/events.rs). A test checks these
+// constants against the wasm module's event_kinds().
+export const STRIDE = 8;
+export const EventKind = Object.freeze({
+  SAMPLE: 0,
+  SAMPLE_REJECTED: 1,
+  NODE_ADDED: 2,
+  COLLISION: 3,
+  TREES_CONNECTED: 4,
+  SOLVED: 5,
+});
