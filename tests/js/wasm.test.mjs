@@ -1,0 +1,118 @@
+// The wasm build (www/pkg, --target web) under Node: stepped in batches exactly as the worker
+// does, it reproduces the native runs bit for bit (event-log fingerprints pinned in
+// tests/golden/runs.json, paths equal to the native CLI's JSON), and its constants match www/.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { execFileSync } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
+import { dirname, join } from 'node:path';
+import { initSync, Run, Scene, builtins, planners, event_kinds } from '../../www/pkg/planarium.js';
+import { EventKind, STRIDE } from '../../www/events.js';
+
+const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
+initSync({ module: readFileSync(join(root, 'www/pkg/planarium_bg.wasm')) });
+const cases = JSON.parse(readFileSync(join(root, 'tests/golden/cases.json'), 'utf8'));
+const golden = JSON.parse(readFileSync(join(root, 'tests/golden/runs.json'), 'utf8'));
+const builtinText = Object.fromEntries(JSON.parse(builtins()).map((b) => [b.id, JSON.stringify(b.scenario)]));
+
+// FNV-1a 64 over the little-endian bytes of the f64s, as src/run/fingerprint.rs.
+function fnv1a(h, f64s) {
+  const bytes = new Uint8Array(f64s.buffer, f64s.byteOffset, f64s.byteLength);
+  for (const b of bytes) {
+    h ^= BigInt(b);
+    h = (h * 0x100000001b3n) & 0xffffffffffffffffn;
+  }
+  return h;
+}
+const OFFSET = 0xcbf29ce484222325n;
+const hex = (h) => h.toString(16).padStart(16, '0');
+
+function runInBatches(c, batch) {
+  const run = new Run(builtinText[c.scenario], c.planner, JSON.stringify(c.params), c.seed);
+  let h = OFFSET;
+  let status;
+  do {
+    status = run.step(batch, 1e9);
+    h = fnv1a(h, run.drain_events());
+  } while (status === 'running');
+  const result = JSON.parse(run.result_json());
+  run.free();
+  return { events: hex(h), result };
+}
+
+test('seeded runs in wasm match the native fingerprints, in any batch size', () => {
+  cases.forEach((c, i) => {
+    for (const batch of [1, 37, 1e9]) {
+      const { events, result } = runInBatches(c, batch);
+      assert.equal(events, golden[i].events, `case ${i} (${c.scenario}/${c.planner}) batch ${batch}`);
+      assert.equal(result.stats.iterations, golden[i].iterations);
+      assert.equal(result.stats.nodes, golden[i].nodes);
+      assert.equal(result.stats.checks, golden[i].checks);
+    }
+  });
+});
+
+test('wasm paths equal the native CLI paths number for number', () => {
+  const cli = join(root, 'target/release/planarium');
+  cases.forEach((c) => {
+    const flags = Object.entries(c.params).flatMap(([k, v]) => [`--${k.replaceAll('_', '-')}`, String(v)]);
+    const native = JSON.parse(execFileSync(cli, ['plan', c.scenario, '--planner', c.planner, '--seed', String(c.seed), '--json', ...flags], { encoding: 'utf8' }));
+    const { result } = runInBatches(c, 1e9);
+    assert.equal(result.solved, true);
+    assert.deepEqual(result.path, native.path);
+    assert.deepEqual(result.smoothed, native.smoothed);
+    assert.equal(result.stats.cost, native.stats.cost);
+  });
+});
+
+test('event constants in www/events.js match the core', () => {
+  const k = JSON.parse(event_kinds());
+  assert.equal(k.stride, STRIDE);
+  assert.deepEqual(k.kinds, { ...EventKind });
+});
+
+test('events stream what the page needs: nodes with parents, collisions, a solution', () => {
+  const run = new Run(builtinText.narrow, 'rrt-connect', '{}', 7);
+  while (run.step(100, 1e9) === 'running');
+  const ev = run.drain_events();
+  const count = (kind) => { let n = 0; for (let i = 0; i < ev.length; i += STRIDE) if (ev[i] === kind) n++; return n; };
+  const stats = JSON.parse(run.stats_json());
+  assert.equal(count(EventKind.NODE_ADDED), stats.nodes - 2, 'one NODE_ADDED per non-root node');
+  assert.ok(count(EventKind.COLLISION) > 0);
+  assert.equal(count(EventKind.TREES_CONNECTED), 1);
+  assert.equal(count(EventKind.SOLVED), 1);
+  // Every node event's parent point is an earlier node of the same tree (or its root).
+  for (let i = 0; i < ev.length; i += STRIDE) {
+    if (ev[i] === EventKind.NODE_ADDED) assert.ok(ev[i + 3] < ev[i + 2], 'parent id precedes the node');
+  }
+  const frames = run.path_frames(false, 0.01);
+  assert.equal(frames[0], 2, 'point states have 2 numbers');
+  assert.ok(frames[1] > 10, 'enough frames to animate');
+  run.free();
+});
+
+test('bad input is an error naming what and where, never a crash', () => {
+  assert.throws(() => new Scene('{"bounds": [0,0,1,1], "obstacles": [{"polygon": [[0,0],[1,1]]}], "robot": {"kind": "point"}, "start": [0.1,0.1], "goal": [0.9,0.9]}'),
+    (e) => JSON.parse(e.message).path === 'obstacles[0].polygon');
+  assert.throws(() => new Scene('{\n"bounds": [0,0,1,1],\n}'), (e) => JSON.parse(e.message).line === 3);
+  assert.throws(() => new Run(builtinText.narrow, 'rrt', '{"goal_bias": 7}', 1), /goal_bias: must be between 0 and 1/);
+  assert.throws(() => new Run(builtinText.narrow, 'prm', '{}', 1), /unknown planner/);
+  assert.throws(() => new Run(builtinText.narrow, 'rrt', '{}', -1), /seed/);
+  const s = new Scene(builtinText.slot);
+  const outline = s.outline(new Float64Array([0.5, 0.5, 0]));
+  assert.deepEqual([...outline.slice(0, 2)], [1, 4], 'one polygon of four corners');
+  assert.ok(JSON.parse(planners()).planners.some((p) => p.name === 'rrt-connect'));
+});
+
+test('time and iteration limits are honoured in wasm', () => {
+  const run = new Run(builtinText.narrow, 'rrt', JSON.stringify({ goal_bias: 0, range: 0.0005, time_limit: 0.2 }), 1);
+  const t0 = performance.now();
+  let status;
+  do status = run.step(1e9, 50); while (status === 'running');
+  assert.equal(status, 'time_limit');
+  assert.ok(performance.now() - t0 < 1000);
+  const r2 = new Run(builtinText.narrow, 'rrt', JSON.stringify({ goal_bias: 0, max_iterations: 123 }), 1);
+  while (r2.step(50, 1e9) === 'running');
+  assert.equal(JSON.parse(r2.stats_json()).iterations, 123);
+});
