@@ -38,6 +38,8 @@ pub struct Context<'a> {
     pub rng: &'a mut Rng,
     /// Where events go.
     pub events: &'a mut EventLog,
+    /// Nodes the planner may still add (the run's node limit, honoured inside an iteration too).
+    pub nodes_left: usize,
 }
 
 /// A planner, advanced one iteration at a time.

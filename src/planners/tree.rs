@@ -23,10 +23,11 @@ pub const ROOT: u32 = u32::MAX;
 
 impl Tree {
     /// A tree rooted at `root`.
-    pub fn new(cx: &Context, root: &[Real], index: usize) -> Tree {
+    pub fn new(cx: &mut Context, root: &[Real], index: usize) -> Tree {
         let dims = root.len();
         let mut t = Tree { dims, states: Vec::new(), parents: Vec::new(), nn: KdTree::new(dims), index };
         t.add(cx, root, ROOT);
+        cx.nodes_left = cx.nodes_left.saturating_sub(1);
         t
     }
     /// Number of nodes.
@@ -77,6 +78,9 @@ impl Tree {
         if d == 0.0 {
             return (Grow::Reached, near);
         }
+        if cx.nodes_left == 0 {
+            return (Grow::Trapped, near);
+        }
         let reached = d <= range;
         if reached {
             new.copy_from_slice(target);
@@ -89,6 +93,7 @@ impl Tree {
             return (Grow::Trapped, near);
         }
         let id = self.add(cx, new, near);
+        cx.nodes_left -= 1;
         let (p, q) = (cx.si.project(new), cx.si.project(self.state(near)));
         cx.events.push(EventKind::NodeAdded, self.index, id as i64, near as i64, p, q);
         (if reached { Grow::Reached } else { Grow::Advanced }, id)

@@ -108,7 +108,9 @@ impl Session {
                 self.status = s;
                 break;
             }
-            let mut cx = Context { si: &self.problem.si, rng: &mut self.rng, events: &mut self.events };
+            let max_nodes = self.config.params.real("max_nodes") as usize;
+            let nodes_left = max_nodes.saturating_sub(self.planner.node_count());
+            let mut cx = Context { si: &self.problem.si, rng: &mut self.rng, events: &mut self.events, nodes_left };
             let found = self.planner.iterate(&mut cx);
             self.iterations += 1;
             done += 1;

@@ -19,6 +19,13 @@ fn limits_are_honoured() {
     let mut s = session("narrow", "rrt", 1, serde_json::json!({"max_nodes": 20, "goal_bias": 0.0}));
     assert_eq!(s.run_to_end(), Status::NodeLimit);
     assert_eq!(s.stats().nodes, 20);
+    // Strict inside an iteration too: connect growth adds many nodes per iteration.
+    for planner in ["rrt", "rrt-connect"] {
+        let params = if planner == "rrt" { serde_json::json!({"max_nodes": 37, "extend": "connect", "range": 0.01}) } else { serde_json::json!({"max_nodes": 37, "range": 0.01}) };
+        let mut s = session("narrow", planner, 2, params);
+        assert_eq!(s.run_to_end(), Status::NodeLimit, "{planner}");
+        assert_eq!(s.stats().nodes, 37, "{planner}");
+    }
     let mut s = session("narrow", "rrt", 1, serde_json::json!({"time_limit": 0.05, "goal_bias": 0.0, "range": 0.001}));
     assert_eq!(s.run_to_end(), Status::TimeLimit);
     assert!(s.stats().time_ms < 200.0, "stopped near the limit: {}", s.stats().time_ms);
