@@ -6,8 +6,7 @@ import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
-import { serve } from '../../scripts/serve.mjs';
+import { startBrowser } from './browser.mjs';
 import { PALETTE } from '../../www/view.js';
 import { TRANSITIONS, toDot } from '../../www/controller.js';
 
@@ -21,19 +20,14 @@ let base;
 let page;
 let pageErrors;
 
+let env;
 before(async () => {
-  server = await serve({ port: 0 });
-  base = `http://127.0.0.1:${server.address().port}/`;
-  browser = await chromium.launch({
-    executablePath: '/usr/bin/chromium',
-    args: ['--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update',
-      '--no-first-run', '--disable-sync'],
-  });
+  env = await startBrowser();
+  ({ server, browser, base } = env);
 });
 
 after(async () => {
-  await browser?.close();
-  await new Promise((resolve) => (server ? server.close(resolve) : resolve()));
+  await env?.close();
 });
 
 beforeEach(async () => {
