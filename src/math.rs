@@ -27,16 +27,6 @@ impl Vec2 {
     pub const fn new(x: Real, y: Real) -> Self {
         Vec2 { x, y }
     }
-    /// `self - o`.
-    #[inline]
-    pub fn sub(self, o: Vec2) -> Vec2 {
-        Vec2::new(self.x - o.x, self.y - o.y)
-    }
-    /// `self + o`.
-    #[inline]
-    pub fn add(self, o: Vec2) -> Vec2 {
-        Vec2::new(self.x + o.x, self.y + o.y)
-    }
     /// `self * s`.
     #[inline]
     pub fn scale(self, s: Real) -> Vec2 {
@@ -66,6 +56,22 @@ impl Vec2 {
     #[inline]
     pub fn rotate(self, c: Real, s: Real) -> Vec2 {
         Vec2::new(c * self.x - s * self.y, s * self.x + c * self.y)
+    }
+}
+
+impl std::ops::Sub for Vec2 {
+    type Output = Vec2;
+    #[inline]
+    fn sub(self, o: Vec2) -> Vec2 {
+        Vec2::new(self.x - o.x, self.y - o.y)
+    }
+}
+
+impl std::ops::Add for Vec2 {
+    type Output = Vec2;
+    #[inline]
+    fn add(self, o: Vec2) -> Vec2 {
+        Vec2::new(self.x + o.x, self.y + o.y)
     }
 }
 

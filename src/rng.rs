@@ -57,7 +57,7 @@ impl Rng {
     /// Uniform integer in `0..n` (`n > 0`), without modulo bias worth noticing for planner use.
     #[inline]
     pub fn below(&mut self, n: usize) -> usize {
-        ((self.next_u64() >> 11) as u128 * n as u128 >> 53) as usize
+        (((self.next_u64() >> 11) as u128 * n as u128) >> 53) as usize
     }
 
     /// A standard normal sample (Box–Muller; deterministic, uses two uniforms).

@@ -89,7 +89,7 @@ pub fn is_simple(poly: &[Vec2]) -> bool {
                 let other_i = if j == i + 1 { a } else { b };
                 let other_j = if j == i + 1 { d } else { c };
                 if super::segment::orient(other_i, shared, other_j) == 0.0
-                    && other_i.sub(shared).dot(other_j.sub(shared)) > 0.0
+                    && (other_i - shared).dot(other_j - shared) > 0.0
                 {
                     return false;
                 }

@@ -5,7 +5,7 @@ use crate::math::{Real, Vec2};
 /// Twice the signed area of triangle `a, b, c` (> 0 when counter-clockwise).
 #[inline]
 pub fn orient(a: Vec2, b: Vec2, c: Vec2) -> Real {
-    b.sub(a).cross(c.sub(a))
+    (b - a).cross(c - a)
 }
 
 /// Whether `p`, known to be collinear with `a, b`, lies within their bounding box.
@@ -52,11 +52,11 @@ pub fn distance_segment_segment(a: Vec2, b: Vec2, c: Vec2, d: Vec2) -> Real {
 /// Squared distance from `p` to the closed segment `a b`.
 #[inline]
 pub fn distance2_point_segment(p: Vec2, a: Vec2, b: Vec2) -> Real {
-    let ab = b.sub(a);
+    let ab = b - a;
     let l2 = ab.norm2();
     if l2 == 0.0 {
-        return p.sub(a).norm2();
+        return (p - a).norm2();
     }
-    let t = (p.sub(a).dot(ab) / l2).clamp(0.0, 1.0);
-    p.sub(a.add(ab.scale(t))).norm2()
+    let t = ((p - a).dot(ab) / l2).clamp(0.0, 1.0);
+    (p - (a + ab.scale(t))).norm2()
 }

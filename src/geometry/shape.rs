@@ -43,7 +43,7 @@ impl Shape {
         match self {
             Shape::Rect(b) => b.contains(p),
             Shape::Polygon(poly) => contains_polygon_point(poly, p),
-            Shape::Circle(c, r) => p.sub(*c).norm2() <= r * r,
+            Shape::Circle(c, r) => (p - *c).norm2() <= r * r,
             Shape::Segment(a, b) => contains_segment_point(*a, *b, p),
         }
     }

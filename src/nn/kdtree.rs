@@ -72,9 +72,9 @@ impl KdTree {
         let d = self.dims;
         let mut cur = self.root as usize;
         loop {
-            for k in 0..d {
-                self.lo[cur * d + k] = self.lo[cur * d + k].min(q[k]);
-                self.hi[cur * d + k] = self.hi[cur * d + k].max(q[k]);
+            for (k, &v) in q.iter().enumerate() {
+                self.lo[cur * d + k] = self.lo[cur * d + k].min(v);
+                self.hi[cur * d + k] = self.hi[cur * d + k].max(v);
             }
             let s = self.split[cur] as usize;
             let go_left = q[s] < self.pts[cur * d + s];
@@ -182,7 +182,7 @@ impl KdTree {
                 if child != NONE {
                     let c = child as usize;
                     let b = space.box_lower_bound(q, &self.lo[c * d..(c + 1) * d], &self.hi[c * d..(c + 1) * d]);
-                    if best.map_or(true, |(_, bd)| b <= bd) {
+                    if best.is_none_or(|(_, bd)| b <= bd) {
                         stack.push((child, b));
                     }
                 }

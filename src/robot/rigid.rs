@@ -34,7 +34,7 @@ impl RigidRobot {
         let (s, c) = (libm::sin(q[2]), libm::cos(q[2]));
         let t = Vec2::new(q[0], q[1]);
         for (o, p) in out.iter_mut().zip(&self.footprint) {
-            *o = p.rotate(c, s).add(t);
+            *o = p.rotate(c, s) + t;
         }
     }
 

@@ -1,6 +1,7 @@
 //! The RRT family: [`rrt`] (single tree, goal bias, extend or connect growth) and
 //! [`rrt_connect`] (two trees, alternating).
 
+#[allow(clippy::module_inception)] // planners/rrt/rrt.rs, one planner per file
 pub mod rrt;
 pub mod rrt_connect;
 
