@@ -7,7 +7,7 @@ const LEAF_SCAN: usize = 32;
 
 /// An incremental k-d tree of states, each with a caller's id (`u32`).
 ///
-/// Points are inserted down the tree; each time the size doubles past [`LEAF_SCAN`], the tree is
+/// Points are inserted down the tree; each time the size doubles past 32 points, the tree is
 /// rebuilt balanced (median splits on the widest dimension), which keeps queries logarithmic on
 /// RRT's spatially correlated insertions at amortised O(log n) per insert.
 #[derive(Clone, Debug, Default)]

@@ -19,7 +19,7 @@ pub struct Tree {
 }
 
 /// Parent of a root.
-pub const ROOT: u32 = u32::MAX;
+pub(crate) const ROOT: u32 = u32::MAX;
 
 impl Tree {
     /// A tree rooted at `root`.
@@ -44,7 +44,7 @@ impl Tree {
         let i = i as usize;
         &self.states[i * self.dims..(i + 1) * self.dims]
     }
-    /// A node's parent ([`ROOT`] for the root).
+    /// A node's parent (`u32::MAX` for the root).
     pub fn parent(&self, i: u32) -> u32 {
         self.parents[i as usize]
     }

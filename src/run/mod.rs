@@ -1,5 +1,5 @@
 //! Running planners: the stepped [`Session`] (limits, timing, batching, events, smoothing), its
-//! [`PlanResult`] in the contract's JSON form, and [`bench`] over seeds.
+//! [`PlanResult`] in the contract's JSON form, and [`bench`](mod@bench) over seeds.
 //!
 //! The generic entry is [`Session::new`] followed by [`Session::step`] (the worker, a page that
 //! single-steps) or [`Session::run_to_end`] (the CLI, tests, benchmarks).
