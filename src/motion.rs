@@ -19,6 +19,22 @@ pub trait MotionValidator {
     fn check_motion(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Vec2>;
 }
 
+/// Visit `1..n` coarse to fine (n/2 first, then n/4 and 3n/4, ...), each index once, stopping at
+/// the first error.
+fn in_bisection_order<E>(n: usize, mut visit: impl FnMut(usize) -> Result<(), E>) -> Result<(), E> {
+    let mut step = n.next_power_of_two();
+    while step > 1 {
+        let half = step / 2;
+        let mut i = half;
+        while i < n {
+            visit(i)?;
+            i += step;
+        }
+        step = half;
+    }
+    Ok(())
+}
+
 /// Deepest bisection when certifying one interval (2^-40 of a resolution step).
 const MAX_DEPTH: u32 = 40;
 
@@ -34,20 +50,14 @@ impl SpaceInfo {
         if !self.is_valid(b) {
             return Err(self.project(b));
         }
-        let mut step = n.next_power_of_two();
-        while step > 1 {
-            let half = step / 2;
-            let mut i = half;
-            while i < n {
-                self.interpolate(a, b, i as Real / n as Real, scratch);
-                if !self.is_valid(scratch) {
-                    return Err(self.project(scratch));
-                }
-                i += step;
+        in_bisection_order(n, |i| {
+            self.interpolate(a, b, i as Real / n as Real, scratch);
+            if self.is_valid(scratch) {
+                Ok(())
+            } else {
+                Err(self.project(scratch))
             }
-            step = half;
-        }
-        Ok(())
+        })
     }
 
     /// Like the discrete check, but computing each state's clearance (capped at the per-step
@@ -62,20 +72,15 @@ impl SpaceInfo {
             if clear[n] == 0.0 {
                 return Err(self.project(b));
             }
-            let mut step = n.next_power_of_two();
-            while step > 1 {
-                let half = step / 2;
-                let mut i = half;
-                while i < n {
-                    self.interpolate(a, b, i as Real / n as Real, scratch);
-                    clear[i] = self.clearance_checked(scratch, cap);
-                    if clear[i] == 0.0 {
-                        return Err(self.project(scratch));
-                    }
-                    i += step;
+            in_bisection_order(n, |i| {
+                self.interpolate(a, b, i as Real / n as Real, scratch);
+                clear[i] = self.clearance_checked(scratch, cap);
+                if clear[i] == 0.0 {
+                    Err(self.project(scratch))
+                } else {
+                    Ok(())
                 }
-                step = half;
-            }
+            })?;
             clear[0] = self.clearance_checked(a, cap);
             for i in 0..n {
                 if clear[i] + clear[i + 1] <= cap {

@@ -55,3 +55,21 @@ fn certification_refines_close_to_an_obstacle_without_rejecting_a_free_motion() 
     assert!(p.si.is_valid(&near));
     assert!(p.si.check_motion(&near, &[0.45, near[1], 0.8], &mut s).is_err());
 }
+
+#[test]
+fn bisection_order_visits_each_index_once_coarse_first() {
+    for n in 1..70 {
+        let mut seen = Vec::new();
+        in_bisection_order::<()>(n, |i| {
+            seen.push(i);
+            Ok(())
+        })
+        .unwrap();
+        let mut sorted = seen.clone();
+        sorted.sort();
+        assert_eq!(sorted, (1..n).collect::<Vec<_>>(), "n = {n}");
+        if n >= 4 {
+            assert_eq!(seen[0], n.next_power_of_two() / 2, "the middle first");
+        }
+    }
+}
