@@ -1,4 +1,4 @@
-// Runs every test: native cargo tests, the core compiled to wasm under Node (wasm-pack test --node),
+// Runs every test: clippy with warnings as errors, native cargo tests, the core compiled to wasm under Node (wasm-pack test --node),
 // and the JavaScript tests (the wasm build in Node, the worker protocol, the page in headless
 // chromium). Set-up first, so a fresh machine needs nothing else.
 import { execSync } from 'node:child_process';
@@ -11,6 +11,7 @@ const run = (cmd) => {
   execSync(cmd, { stdio: 'inherit', cwd: root, env: { ...process.env, PATH: `${join(process.env.HOME || '/root', '.cargo', 'bin')}:${process.env.PATH}` } });
 };
 run('node scripts/setup.mjs --browser');
+run('cargo clippy --all-targets --release -- -D warnings');
 run('cargo test --release');
 run('wasm-pack test --node --release -- --no-default-features');
 run('node scripts/build.mjs');
