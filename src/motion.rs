@@ -4,8 +4,9 @@
 //! motion is *certified*, so no motion can cut an obstacle's corner between two checked states:
 //!
 //! - a point robot's motion is a segment, tested exactly against every obstacle;
-//! - a body's motion uses clearances: if no body point moves more than `D` between two checked
-//!   states and their clearances sum to more than `D`, every state between them is free
+//! - a body's motion uses clearances: the robot bounds how far any body point moves along the
+//!   motion; if no body point moves more than `D` between two checked states and their clearances
+//!   sum to more than `D`, every state between them is free
 //!   (each body point stays within reach of one end); otherwise the interval is bisected, each new
 //!   state counted as a check, until it is certified or a collision is found.
 
@@ -125,8 +126,8 @@ impl MotionValidator for SpaceInfo {
                 }
                 Ok(())
             }
-            None => match self.validity.displacement_factor() {
-                Some(k) => self.check_certified(a, b, n, k * d, scratch),
+            None => match self.validity.displacement_bound(a, b) {
+                Some(disp) => self.check_certified(a, b, n, disp, scratch),
                 None => self.check_discrete(a, b, n, scratch),
             },
         }

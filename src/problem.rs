@@ -13,6 +13,8 @@ pub struct Problem {
     pub scenario: Scenario,
     /// Space, validity and motion checking.
     pub si: SpaceInfo,
+    /// The robot (for outlines and for turning planning states back into scenario states).
+    pub robot: Box<dyn Robot>,
     /// Start state (canonical).
     pub start: Vec<Real>,
     /// Goal state (canonical), if the task has one.
@@ -41,6 +43,11 @@ fn obstacle_kind(o: &ObstacleSpec) -> &'static str {
 }
 
 impl Problem {
+    /// A planning path as scenario states.
+    pub fn decode_path(&self, path: &[Vec<Real>]) -> Vec<Vec<Real>> {
+        path.iter().map(|q| self.robot.decode(q)).collect()
+    }
+
     /// Build the problem, checking that start and goal have the robot's dimension, lie in bounds
     /// and are collision-free; errors say which state and why.
     pub fn from_scenario(sc: &Scenario) -> Result<Problem, ScenarioError> {
@@ -49,19 +56,18 @@ impl Problem {
             Aabb { min: Vec2::new(b[0], b[1]), max: Vec2::new(b[2], b[3]) },
             sc.obstacles.iter().map(shape_of).collect(),
         );
-        let robot: Box<dyn Robot> = robot::from_spec(&sc.robot, sc.body_in_bounds);
+        let robot: Box<dyn Robot> = robot::from_spec(&sc.robot, sc.body_in_bounds).map_err(|e| ScenarioError::at("robot.kind", e))?;
         let space = robot.space(&workspace);
         let check = |name: &str, q: &[Real]| -> Result<Vec<Real>, ScenarioError> {
-            if q.len() != space.dim_count() {
-                return Err(ScenarioError::at(
-                    name,
-                    format!("a {} robot's state has {} numbers, found {}", robot.kind(), space.dim_count(), q.len()),
-                ));
+            let dims = robot.external_dims();
+            if q.len() != dims {
+                return Err(ScenarioError::at(name, format!("a {} robot's state has {dims} numbers, found {}", robot.kind(), q.len())));
             }
-            let mut q = q.to_vec();
+            let mut q = robot.encode(q).map_err(|e| ScenarioError::at(name, e))?;
             space.enforce(&mut q);
             match robot.verdict(&workspace, &q) {
                 Verdict::Valid => Ok(q),
+                Verdict::Invalid(why) => Err(ScenarioError::at(name, why)),
                 Verdict::OutOfBounds(d) => {
                     let axis = ["x", "y"][d.min(1)];
                     let (lo, hi) = if d == 0 { (b[0], b[2]) } else { (b[1], b[3]) };
@@ -76,7 +82,9 @@ impl Problem {
         let start = check("start", &sc.start)?;
         let goal = sc.goal.as_deref().map(|g| check("goal", g)).transpose()?;
         let validity = RobotInWorkspace { robot, workspace };
+        let robot = robot::from_spec(&sc.robot, sc.body_in_bounds).map_err(|e| ScenarioError::at("robot.kind", e))?;
         Ok(Problem {
+            robot,
             scenario: sc.clone(),
             si: SpaceInfo::new(space, Box::new(validity), sc.resolution),
             start,

@@ -18,8 +18,8 @@ pub trait StateValidity {
     fn project(&self, q: &[Real]) -> Vec2;
     /// Distance to the nearest obstacle capped at `cap` (0: invalid), when the robot has it.
     fn clearance(&self, q: &[Real], cap: Real) -> Option<Real>;
-    /// Bound on body-point displacement per unit of the metric, for robots with a clearance.
-    fn displacement_factor(&self) -> Option<Real>;
+    /// Bound on how far any body point moves along `a → b`, for robots with a clearance.
+    fn displacement_bound(&self, a: &[Real], b: &[Real]) -> Option<Real>;
 }
 
 /// A robot placed in a workspace.
@@ -44,7 +44,7 @@ impl StateValidity for RobotInWorkspace {
     fn clearance(&self, q: &[Real], cap: Real) -> Option<Real> {
         self.robot.clearance(&self.workspace, q, cap)
     }
-    fn displacement_factor(&self) -> Option<Real> {
-        self.robot.displacement_factor()
+    fn displacement_bound(&self, a: &[Real], b: &[Real]) -> Option<Real> {
+        self.robot.displacement_bound(a, b)
     }
 }

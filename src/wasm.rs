@@ -91,15 +91,18 @@ impl Scene {
     pub fn scenario_json(&self) -> String {
         self.inner.scenario.to_json()
     }
-    /// The robot's outline at state `q`, flat: `[n_polygons, n_1, x, y, ..., n_2, ...]`.
+    /// The robot's outline at scenario state `q`, flat: `[n_polygons, n_1, x, y, ..., n_2, ...]`
+    /// (empty when `q` is not a state of this robot).
     pub fn outline(&self, q: &[f64]) -> Vec<f64> {
-        flat_outline(&self.inner, q)
+        match self.inner.robot.encode(q) {
+            Ok(internal) => flat_outline(&self.inner, &internal),
+            Err(_) => Vec::new(),
+        }
     }
 }
 
 fn flat_outline(p: &Problem, q: &[f64]) -> Vec<f64> {
-    let robot = crate::robot::from_spec(&p.scenario.robot, p.scenario.body_in_bounds);
-    let polys = robot.outline(q);
+    let polys = p.robot.outline(q);
     let mut out = vec![polys.len() as f64];
     for poly in polys {
         out.push(poly.len() as f64);
@@ -154,11 +157,10 @@ impl Run {
     }
     /// The smoothed path (raw path if `raw`) sampled every `spacing` (robot metric) for animation,
     /// flat: `[dims, frames, then per frame: state…, outline (as [`Scene::outline`])…]`: each frame
-    /// is `dims` numbers then its outline.
+    /// is `dims` numbers (a scenario state) then its outline.
     pub fn path_frames(&self, raw: bool, spacing: f64) -> Vec<f64> {
         let p = self.inner.problem();
-        let r = self.inner.result();
-        let path = if raw { &r.path } else { &r.smoothed };
+        let path = self.inner.planning_path(raw);
         let dims = p.si.dims();
         let mut states: Vec<Vec<f64>> = Vec::new();
         for w in path.windows(2) {
@@ -172,9 +174,10 @@ impl Run {
         if let Some(last) = path.last() {
             states.push(last.clone());
         }
-        let mut out = vec![dims as f64, states.len() as f64];
+        let external = p.robot.external_dims();
+        let mut out = vec![external as f64, states.len() as f64];
         for q in &states {
-            out.extend_from_slice(q);
+            out.extend(p.robot.decode(q));
             out.extend(flat_outline(p, q));
         }
         out

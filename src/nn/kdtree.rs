@@ -112,8 +112,9 @@ impl KdTree {
             }
         }
         // Widest dimension, with the rotation weight of the metric applied to angles.
-        let weight = |k: usize| match space.metric {
-            crate::space::Metric::TranslationRotation { weight } if k == 2 => weight,
+        let weight = |k: usize| match &space.metric {
+            crate::space::Metric::TranslationRotation { weight } if k == 2 => *weight,
+            crate::space::Metric::Weighted { weights } => weights[k],
             _ => 1.0,
         };
         let s = (0..d).max_by(|&a, &b| ((hi[a] - lo[a]) * weight(a)).total_cmp(&((hi[b] - lo[b]) * weight(b)))).unwrap_or(0);

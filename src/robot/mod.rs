@@ -24,6 +24,8 @@ pub enum Verdict {
     OutOfBounds(usize),
     /// The robot meets obstacle `i` (index into the scenario's `obstacles`).
     Collision(usize),
+    /// The robot breaks one of its own rules (self-collision, a joint limit, a broom's length…).
+    Invalid(&'static str),
 }
 
 /// A robot in a planar workspace.
@@ -32,6 +34,17 @@ pub trait Robot: std::fmt::Debug {
     fn kind(&self) -> &'static str;
     /// The robot's state space over the workspace's bounds.
     fn space(&self, ws: &Workspace) -> StateSpace;
+    /// How many numbers a state has in the scenario format (start, goal, path points).
+    fn external_dims(&self) -> usize;
+    /// The planning state of a scenario state (identity unless the robot plans in another
+    /// parameterisation, as the vehicle chain does); an error says why the state is not one.
+    fn encode(&self, external: &[Real]) -> Result<Vec<Real>, String> {
+        Ok(external.to_vec())
+    }
+    /// The scenario state of a planning state (the inverse of [`encode`](Robot::encode)).
+    fn decode(&self, q: &[Real]) -> Vec<Real> {
+        q.to_vec()
+    }
     /// Whether state `q` is valid in `ws`, and if not, why.
     fn verdict(&self, ws: &Workspace, q: &[Real]) -> Verdict;
     /// The point of the workspace a state is drawn at (trees are projected onto it).
@@ -47,10 +60,10 @@ pub trait Robot: std::fmt::Debug {
     fn clearance(&self, _ws: &Workspace, _q: &[Real], _cap: Real) -> Option<Real> {
         None
     }
-    /// A bound `k` such that no point of the body moves farther than `k · d` along a straight
-    /// motion of length `d` in the robot's metric (used with [`clearance`](Robot::clearance)).
-    /// `None` when the robot has no [`clearance`](Robot::clearance).
-    fn displacement_factor(&self) -> Option<Real> {
+    /// A bound on how far any point of the body moves along the straight motion `a → b` (linear
+    /// in the fraction travelled), used with [`clearance`](Robot::clearance) to certify motions.
+    /// `None` when the robot has no clearance.
+    fn displacement_bound(&self, _a: &[Real], _b: &[Real]) -> Option<Real> {
         None
     }
     /// The body's outline at state `q`, as closed polygons in world coordinates (for drawing and
@@ -58,14 +71,17 @@ pub trait Robot: std::fmt::Debug {
     fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>>;
 }
 
-/// Build the robot a scenario describes.
-pub fn from_spec(spec: &RobotSpec, body_in_bounds: bool) -> Box<dyn Robot> {
-    match spec {
+/// Build the robot a scenario describes; an error names a robot this build cannot plan for.
+pub fn from_spec(spec: &RobotSpec, body_in_bounds: bool) -> Result<Box<dyn Robot>, String> {
+    Ok(match spec {
         RobotSpec::Point => Box::new(PointRobot),
         RobotSpec::Rigid { footprint, rotation_weight } => {
             Box::new(RigidRobot::new(footprint.iter().map(|p| Vec2::new(p[0], p[1])).collect(), *rotation_weight, body_in_bounds))
         }
-    }
+        RobotSpec::Arm { .. } | RobotSpec::Asv { .. } => {
+            return Err(format!("robot kind \"{}\" is part of the format but not supported by this build yet", spec.kind()))
+        }
+    })
 }
 
 /// The translation dimensions over the workspace bounds.

@@ -11,6 +11,9 @@ impl Robot for PointRobot {
     fn kind(&self) -> &'static str {
         "point"
     }
+    fn external_dims(&self) -> usize {
+        2
+    }
     fn space(&self, ws: &Workspace) -> StateSpace {
         StateSpace { dims: xy_dims(ws).to_vec(), metric: Metric::Euclidean }
     }

@@ -55,6 +55,9 @@ impl Robot for RigidRobot {
     fn kind(&self) -> &'static str {
         "rigid"
     }
+    fn external_dims(&self) -> usize {
+        3
+    }
     fn space(&self, ws: &Workspace) -> StateSpace {
         let [x, y] = xy_dims(ws);
         StateSpace { dims: vec![x, y, Dim { lo: -PI, hi: PI, wraps: true }], metric: Metric::TranslationRotation { weight: self.rotation_weight } }
@@ -98,9 +101,9 @@ impl Robot for RigidRobot {
         }
         Some(if cap == 0.0 { 0.0 } else { ws.polygon_clearance(body, cap) })
     }
-    fn displacement_factor(&self) -> Option<Real> {
+    fn displacement_bound(&self, a: &[Real], b: &[Real]) -> Option<Real> {
         // A body point at distance ≤ radius from the origin moves at most |Δxy| + radius·|Δθ|.
-        Some((self.radius / self.rotation_weight).max(1.0))
+        Some(((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt() + self.radius * crate::math::angle_diff(a[2], b[2]).abs())
     }
     fn project(&self, q: &[Real]) -> Vec2 {
         Vec2::new(q[0], q[1])

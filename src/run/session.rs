@@ -148,6 +148,15 @@ impl Session {
         self.status = Status::Solved;
     }
 
+    /// The path found, in planning states (`raw`: as the planner returned it; else smoothed).
+    pub fn planning_path(&self, raw: bool) -> &[Vec<Real>] {
+        if raw {
+            &self.path
+        } else {
+            &self.smoothed
+        }
+    }
+
     /// Stop the run now.
     pub fn cancel(&mut self) {
         if !self.status.is_finished() {
@@ -189,8 +198,8 @@ impl Session {
             seed: self.config.seed,
             planner: self.spec.name.to_string(),
             params: self.config.params.values().clone(),
-            path: self.path.clone(),
-            smoothed: self.smoothed.clone(),
+            path: self.problem.decode_path(&self.path),
+            smoothed: self.problem.decode_path(&self.smoothed),
             stats: self.stats(),
         }
     }

@@ -163,13 +163,112 @@ fn robot(v: &Value, path: &str) -> Result<RobotSpec> {
             };
             RobotSpec::Rigid { footprint, rotation_weight }
         }
-        "arm" | "asv" => {
-            return Err(ScenarioError::at(kp, format!("robot kind \"{kind}\" is part of the format but not supported by this version yet")))
-        }
-        other => return Err(ScenarioError::at(kp, format!("unknown robot kind \"{other}\" (use point or rigid)"))),
+        "arm" => arm(&mut o)?,
+        "asv" => asv(&mut o)?,
+        other => return Err(ScenarioError::at(kp, format!("unknown robot kind \"{other}\" (use point, rigid, arm or asv)"))),
     };
     o.finish()?;
     Ok(spec)
+}
+
+fn positive(o: &mut Obj, key: &'static str, default: Option<Real>) -> Result<Real> {
+    match o.get(key) {
+        Some((v, p)) => {
+            let x = number(v, &p)?;
+            if x <= 0.0 {
+                return Err(ScenarioError::at(p, "must be positive"));
+            }
+            Ok(x)
+        }
+        None => default.ok_or_else(|| ScenarioError::at(o.path.clone(), format!("missing required key \"{key}\""))),
+    }
+}
+
+fn arm(o: &mut Obj) -> Result<RobotSpec> {
+    let base = match o.get("base") {
+        Some((v, p)) => fixed::<2>(v, &p, "a point [x, y]")?,
+        None => [0.0, 0.0],
+    };
+    let (lv, lp) = o.req("links")?;
+    let links = numbers(lv, &lp)?;
+    if links.is_empty() {
+        return Err(ScenarioError::at(lp, "needs at least one link"));
+    }
+    if let Some(i) = links.iter().position(|l| *l <= 0.0) {
+        return Err(ScenarioError::at(format!("{lp}[{i}]"), "a link length must be positive"));
+    }
+    let n = links.len();
+    let limits = match o.get("limits") {
+        None => vec![None; n],
+        Some((Value::Null, _)) => vec![None; n],
+        Some((v, p)) => {
+            let arr = v.as_array().ok_or_else(|| ScenarioError::at(&p, "must be an array of [lo, hi] or null per joint, or null"))?;
+            if arr.len() != n {
+                return Err(ScenarioError::at(&p, format!("needs one entry per joint ({n}), found {}", arr.len())));
+            }
+            arr.iter()
+                .enumerate()
+                .map(|(i, x)| {
+                    let path = format!("{p}[{i}]");
+                    if x.is_null() {
+                        return Ok(None);
+                    }
+                    let [lo, hi] = fixed::<2>(x, &path, "[lo, hi] or null")?;
+                    if lo >= hi || hi - lo > 2.0 * std::f64::consts::PI {
+                        return Err(ScenarioError::at(path, "needs lo < hi, at most 2π apart"));
+                    }
+                    Ok(Some([lo, hi]))
+                })
+                .collect::<Result<Vec<_>>>()?
+        }
+    };
+    let self_collision = match o.get("self_collision") {
+        Some((v, p)) => boolean(v, &p)?,
+        None => true,
+    };
+    let metric = match o.get("metric") {
+        Some((v, p)) => {
+            let m = string(v, &p)?;
+            if !["joint", "chain", "max"].contains(&m.as_str()) {
+                return Err(ScenarioError::at(p, "must be joint, chain or max"));
+            }
+            m
+        }
+        None => "chain".to_string(),
+    };
+    let tip = match o.get("tip") {
+        Some((v, p)) => {
+            let t = number(v, &p)?;
+            if t < 0.0 {
+                return Err(ScenarioError::at(p, "must be 0 or more"));
+            }
+            t
+        }
+        None => 0.0,
+    };
+    Ok(RobotSpec::Arm { base, links, limits, self_collision, metric, tip })
+}
+
+fn asv(o: &mut Obj) -> Result<RobotSpec> {
+    let (cv, cp) = o.req("count")?;
+    let count = cv.as_u64().filter(|c| *c >= 2).ok_or_else(|| ScenarioError::at(&cp, "must be a whole number, 2 or more"))? as usize;
+    let broom = positive(o, "broom", Some(0.05))?;
+    let min_area = match o.get("min_area") {
+        Some((v, p)) => {
+            let a = number(v, &p)?;
+            if a < 0.0 {
+                return Err(ScenarioError::at(p, "must be 0 or more"));
+            }
+            a
+        }
+        None => std::f64::consts::PI * (0.007 * (count as Real - 1.0)).powi(2),
+    };
+    let convex = match o.get("convex") {
+        Some((v, p)) => boolean(v, &p)?,
+        None => true,
+    };
+    let max_step = positive(o, "max_step", Some(0.001))?;
+    Ok(RobotSpec::Asv { count, broom, min_area, convex, max_step })
 }
 
 fn inspection(v: &Value, path: &str) -> Result<Inspection> {
@@ -285,6 +384,10 @@ impl Scenario {
             Some((v, p)) => boolean(v, &p)?,
             None => false,
         };
+        let touching_allowed = match o.get("touching_allowed") {
+            Some((v, p)) => boolean(v, &p)?,
+            None => false,
+        };
         let inspection = match o.get("inspection") {
             Some((v, p)) => Some(inspection(v, &p)?),
             None => None,
@@ -309,6 +412,7 @@ impl Scenario {
             goal_tolerance,
             resolution,
             body_in_bounds,
+            touching_allowed,
             inspection,
             planner,
         })

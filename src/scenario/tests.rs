@@ -41,7 +41,7 @@ fn errors_name_their_json_path() {
     assert!(err(&with(r#", "obstacles": [{"polygon": [[0,0],[1,1],[1,0],[0,1]]}]"#)).starts_with("obstacles[0].polygon: must be a simple polygon"));
     assert!(err(&with(r#", "robot2": 1"#)).starts_with("robot2: unknown key"));
     assert_eq!(err(r#"{"bounds": [0,0,1,1], "robot": {"kind": "point", "size": 2}, "start": [0.1,0.1], "goal": [0.2,0.2]}"#).split(':').next().unwrap(), "robot.size");
-    assert_eq!(err(r#"{"bounds": [0,0,1,1], "robot": {"kind": "tank"}, "start": [0.1,0.1], "goal": [0.2,0.2]}"#), "robot.kind: unknown robot kind \"tank\" (use point or rigid)");
+    assert_eq!(err(r#"{"bounds": [0,0,1,1], "robot": {"kind": "tank"}, "start": [0.1,0.1], "goal": [0.2,0.2]}"#), "robot.kind: unknown robot kind \"tank\" (use point, rigid, arm or asv)");
     assert_eq!(err(r#"{"bounds": [1,0,0,1], "robot": {"kind": "point"}, "start": [0.1,0.1], "goal": [0.2,0.2]}"#), "bounds: needs xmin < xmax and ymin < ymax");
     assert_eq!(err(r#"{"bounds": [0,0,1,1], "robot": {"kind": "point"}, "start": [0.1,0.1]}"#), "missing required key \"goal\" (only an inspection task may omit it)");
     assert_eq!(err(&with(r#", "planner": {"name": "rrt", "goal_bias": 2}"#)), "planner.goal_bias: must be between 0 and 1");

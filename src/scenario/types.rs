@@ -33,6 +33,9 @@ pub struct Scenario {
     /// Keep the whole body (not only the reference point) inside the bounds.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub body_in_bounds: bool,
+    /// Obstacles are open sets: touching their boundary is allowed (the Technion and ASV courses).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub touching_allowed: bool,
     /// Optional inspection task.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub inspection: Option<Inspection>,
@@ -69,6 +72,53 @@ pub enum RobotSpec {
         #[serde(skip_serializing_if = "Option::is_none")]
         rotation_weight: Option<Real>,
     },
+    /// A fixed-base planar arm; state `[q1, ..., qn]`, each angle relative to the previous link.
+    Arm {
+        /// Base position.
+        base: [Real; 2],
+        /// Link lengths.
+        links: Vec<Real>,
+        /// Per joint `[lo, hi]`, or `None` for a joint that wraps around.
+        limits: Vec<Option<[Real; 2]>>,
+        /// Whether links may not cross each other (default true).
+        self_collision: bool,
+        /// The metric: `joint` (Euclidean in joint space), `chain` (sum of link-end moves, OMPL's
+        /// kinematic chain) or `max` (the largest joint-point move); default `chain`.
+        metric: String,
+        /// A short extra segment continuing the last link, checked for collisions (OMPL's chain
+        /// benchmark uses 0.001); default 0.
+        #[serde(skip_serializing_if = "is_zero")]
+        tip: Real,
+    },
+    /// A chain of `count` vehicles joined by brooms; state `[x1, y1, ..., xn, yn]`.
+    Asv {
+        /// Number of vehicles.
+        count: usize,
+        /// Length of every broom.
+        broom: Real,
+        /// Smallest area of the closed polygon (default `π·(0.007·(n−1))²`).
+        min_area: Real,
+        /// Whether the closed polygon must be convex (default true).
+        convex: bool,
+        /// Largest move of any vehicle in one primitive step (default 0.001).
+        max_step: Real,
+    },
+}
+
+fn is_zero(x: &Real) -> bool {
+    *x == 0.0
+}
+
+impl RobotSpec {
+    /// The `kind` name.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            RobotSpec::Point => "point",
+            RobotSpec::Rigid { .. } => "rigid",
+            RobotSpec::Arm { .. } => "arm",
+            RobotSpec::Asv { .. } => "asv",
+        }
+    }
 }
 
 /// The optional inspection block.

@@ -19,10 +19,26 @@ pub struct Dim {
 }
 
 /// How distances are measured.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Metric {
     /// Euclidean over all dimensions (wrapped dimensions by their shortest angle).
     Euclidean,
+    /// Euclidean with a weight per dimension: `sqrt(Σ (wᵢ·Δᵢ)²)`.
+    Weighted {
+        /// One weight per dimension.
+        weights: Vec<Real>,
+    },
+    /// For a planar chain of relative joint angles: the sum over links of the distance moved by
+    /// each link's end point (OMPL's kinematic chain metric).
+    ChainSum {
+        /// Link lengths.
+        links: Vec<Real>,
+    },
+    /// For a planar chain: the largest distance any joint point (link end) moves.
+    ChainMax {
+        /// Link lengths.
+        links: Vec<Real>,
+    },
     /// `|Δ(x, y)| + weight · |Δθ|` for states `[x, y, θ]` (rigid bodies).
     TranslationRotation {
         /// Weight of the rotation, usually the body's radius.
@@ -59,12 +75,15 @@ impl StateSpace {
     /// The distance between two states.
     #[inline]
     pub fn distance(&self, a: &[Real], b: &[Real]) -> Real {
-        match self.metric {
+        match &self.metric {
             Metric::Euclidean => (0..a.len()).map(|i| self.delta(i, a[i], b[i]).powi(2)).sum::<Real>().sqrt(),
+            Metric::Weighted { weights } => (0..a.len()).map(|i| (weights[i] * self.delta(i, a[i], b[i])).powi(2)).sum::<Real>().sqrt(),
             Metric::TranslationRotation { weight } => {
                 let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
                 (dx * dx + dy * dy).sqrt() + weight * angle_diff(a[2], b[2]).abs()
             }
+            Metric::ChainSum { links } => chain_moves(links, a, b).sum(),
+            Metric::ChainMax { links } => chain_moves(links, a, b).fold(0.0, Real::max),
         }
     }
 
@@ -97,8 +116,12 @@ impl StateSpace {
     /// derive the default step range as in OMPL: 0.2 × extent).
     pub fn max_extent(&self) -> Real {
         let ext = |d: &Dim| if d.wraps { std::f64::consts::PI } else { d.hi - d.lo };
-        match self.metric {
+        let reach = |links: &[Real], k: usize| -> Real { links[..=k].iter().sum() };
+        match &self.metric {
             Metric::Euclidean => self.dims.iter().map(|d| ext(d).powi(2)).sum::<Real>().sqrt(),
+            Metric::Weighted { weights } => self.dims.iter().zip(weights).map(|(d, w)| (w * ext(d)).powi(2)).sum::<Real>().sqrt(),
+            Metric::ChainSum { links } => (0..links.len()).map(|k| 2.0 * reach(links, k)).sum(),
+            Metric::ChainMax { links } => 2.0 * links.iter().sum::<Real>(),
             Metric::TranslationRotation { weight } => {
                 (ext(&self.dims[0]).powi(2) + ext(&self.dims[1]).powi(2)).sqrt() + weight * ext(&self.dims[2])
             }
@@ -121,11 +144,31 @@ impl StateSpace {
                 v - hi[i]
             }
         };
-        match self.metric {
+        match &self.metric {
             Metric::Euclidean => (0..q.len()).map(|i| gap(i).powi(2)).sum::<Real>().sqrt(),
+            Metric::Weighted { weights } => (0..q.len()).map(|i| (weights[i] * gap(i)).powi(2)).sum::<Real>().sqrt(),
             Metric::TranslationRotation { weight } => (gap(0).powi(2) + gap(1).powi(2)).sqrt() + weight * gap(2),
+            // Both chain metrics are at least the move of the first link's end, 2·l₁·sin(|Δq₁|/2).
+            Metric::ChainSum { links } | Metric::ChainMax { links } => {
+                2.0 * links[0] * libm::sin(0.5 * gap(0).min(std::f64::consts::PI))
+            }
         }
     }
+}
+
+/// For each link of a planar chain (relative angles, base at the origin), the distance its end
+/// point moves between configurations `a` and `b`.
+#[inline]
+pub fn chain_moves<'a>(links: &'a [Real], a: &'a [Real], b: &'a [Real]) -> impl Iterator<Item = Real> + 'a {
+    let (mut ta, mut tb) = (0.0, 0.0);
+    let (mut pa, mut pb) = ((0.0, 0.0), (0.0, 0.0));
+    links.iter().enumerate().map(move |(i, l)| {
+        ta += a[i];
+        tb += b[i];
+        pa = (pa.0 + l * libm::cos(ta), pa.1 + l * libm::sin(ta));
+        pb = (pb.0 + l * libm::cos(tb), pb.1 + l * libm::sin(tb));
+        ((pa.0 - pb.0).powi(2) + (pa.1 - pb.1).powi(2)).sqrt()
+    })
 }
 
 #[cfg(test)]

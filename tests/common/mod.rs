@@ -131,6 +131,7 @@ fn body(sc: &Scenario, q: &[f64]) -> Option<Vec<P>> {
             let (s, c) = q[2].sin_cos();
             Some(footprint.iter().map(|p| (q[0] + c * p[0] - s * p[1], q[1] + s * p[0] + c * p[1])).collect())
         }
+        other => panic!("the independent checker has no {} robot", other.kind()),
     }
 }
 
@@ -168,6 +169,7 @@ fn metric(sc: &Scenario, a: &[f64], b: &[f64]) -> f64 {
             let r = rotation_weight.unwrap_or_else(|| footprint.iter().map(|p| p[0].hypot(p[1])).fold(0.0, f64::max));
             ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt() + r * angle_diff(a[2], b[2]).abs()
         }
+        other => panic!("the independent checker has no {} robot", other.kind()),
     }
 }
 
