@@ -25,6 +25,7 @@
 
 pub mod events;
 pub mod geometry;
+pub mod io;
 pub mod math;
 pub mod motion;
 pub mod nn;

@@ -115,7 +115,7 @@ impl SpaceInfo {
 impl MotionValidator for SpaceInfo {
     fn check_motion(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Vec2> {
         let d = self.distance(a, b);
-        let n = ((d / self.resolution).ceil() as usize).max(1);
+        let n = self.validity.motion_steps(a, b, d, self.resolution).max(1);
         match self.validity.sweep_hits(a, b) {
             // A robot with an exact swept test: discrete checks (the contract), then the sweep.
             Some(hit) => {

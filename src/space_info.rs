@@ -53,10 +53,10 @@ impl SpaceInfo {
     pub fn interpolate(&self, a: &[Real], b: &[Real], t: Real, out: &mut [Real]) {
         self.space.interpolate(a, b, t, out)
     }
-    /// A uniform random state.
+    /// A random state from the robot's sampler (uniform over the space unless the robot knows better).
     #[inline]
     pub fn sample_uniform(&self, rng: &mut Rng, out: &mut [Real]) {
-        self.space.sample_uniform(rng, out)
+        self.validity.sample(&self.space, rng, out)
     }
     /// Where a state is drawn in the workspace.
     #[inline]

@@ -16,6 +16,10 @@ pub trait StateValidity {
     fn sweep_hits(&self, a: &[Real], b: &[Real]) -> Option<bool>;
     /// The workspace point a state is drawn at.
     fn project(&self, q: &[Real]) -> Vec2;
+    /// A random state (the robot's sampler).
+    fn sample(&self, space: &crate::space::StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]);
+    /// Steps a motion of length `d` is checked in.
+    fn motion_steps(&self, a: &[Real], b: &[Real], d: Real, resolution: Real) -> usize;
     /// Distance to the nearest obstacle capped at `cap` (0: invalid), when the robot has it.
     fn clearance(&self, q: &[Real], cap: Real) -> Option<Real>;
     /// Bound on how far any body point moves along `a → b`, for robots with a clearance.
@@ -40,6 +44,12 @@ impl StateValidity for RobotInWorkspace {
     }
     fn project(&self, q: &[Real]) -> Vec2 {
         self.robot.project(q)
+    }
+    fn sample(&self, space: &crate::space::StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) {
+        self.robot.sample(space, rng, out)
+    }
+    fn motion_steps(&self, a: &[Real], b: &[Real], d: Real, resolution: Real) -> usize {
+        self.robot.motion_steps(a, b, d, resolution)
     }
     fn clearance(&self, q: &[Real], cap: Real) -> Option<Real> {
         self.robot.clearance(&self.workspace, q, cap)

@@ -36,7 +36,9 @@ fn with_param_flags(mut cmd: Command) -> Command {
 }
 
 fn cli() -> Command {
-    let scenario_arg = Arg::new("scenario").required(true).help("Scenario JSON file, or the id of a built-in scenario (see `list`)");
+    let scenario_arg = Arg::new("scenario")
+        .required(true)
+        .help("Scenario JSON file, a course file (Technion map JSON, ASV problem text), or the id of a built-in scenario (see `list`)");
     Command::new("planarium")
         .about("Motion-planning playground core: plan, benchmark and validate scenarios")
         .subcommand_required(true)
@@ -63,7 +65,8 @@ fn cli() -> Command {
 fn load(arg: &str) -> Result<Scenario, String> {
     if std::path::Path::new(arg).exists() {
         let text = std::fs::read_to_string(arg).map_err(|e| format!("{arg}: {e}"))?;
-        Scenario::from_json(&text).map_err(|e| format!("{arg}: {e}"))
+        let stem = std::path::Path::new(arg).file_stem().and_then(|s| s.to_str()).unwrap_or(arg);
+        planarium::io::import(&text, stem).map_err(|e| format!("{arg}: {e}"))
     } else if scenario::builtin_names().contains(&arg) {
         scenario::builtin(arg).map_err(|e| e.to_string())
     } else {

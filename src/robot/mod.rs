@@ -4,9 +4,13 @@
 //! valid in a [`Workspace`], where to draw a state (its reference point), and, when it can, an exact
 //! test for a straight motion. [`from_spec`] builds one from the scenario's robot block.
 
+mod arm;
+mod asv;
 mod point;
 mod rigid;
 
+pub use arm::ArmRobot;
+pub use asv::AsvRobot;
 pub use point::PointRobot;
 pub use rigid::RigidRobot;
 
@@ -47,6 +51,16 @@ pub trait Robot: std::fmt::Debug {
     }
     /// Whether state `q` is valid in `ws`, and if not, why.
     fn verdict(&self, ws: &Workspace, q: &[Real]) -> Verdict;
+    /// Write a random state into `out` (default: uniform over the space). Robots whose uniform
+    /// samples are almost never valid (the vehicle chain) sample their own way.
+    fn sample(&self, space: &StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) {
+        space.sample_uniform(rng, out)
+    }
+    /// How many steps a motion `a → b` of length `d` is checked in (default: `ceil(d / resolution)`);
+    /// a robot with its own step rule (no vehicle moves more than `max_step`) overrides it.
+    fn motion_steps(&self, _a: &[Real], _b: &[Real], d: Real, resolution: Real) -> usize {
+        ((d / resolution).ceil() as usize).max(1)
+    }
     /// The point of the workspace a state is drawn at (trees are projected onto it).
     fn project(&self, q: &[Real]) -> Vec2;
     /// An exact test of the straight motion `a → b`, when the robot has one: `Some(true)` if the
@@ -78,9 +92,8 @@ pub fn from_spec(spec: &RobotSpec, body_in_bounds: bool) -> Result<Box<dyn Robot
         RobotSpec::Rigid { footprint, rotation_weight } => {
             Box::new(RigidRobot::new(footprint.iter().map(|p| Vec2::new(p[0], p[1])).collect(), *rotation_weight, body_in_bounds))
         }
-        RobotSpec::Arm { .. } | RobotSpec::Asv { .. } => {
-            return Err(format!("robot kind \"{}\" is part of the format but not supported by this build yet", spec.kind()))
-        }
+        RobotSpec::Arm { .. } => Box::new(ArmRobot::from_spec(spec)?),
+        RobotSpec::Asv { .. } => Box::new(AsvRobot::from_spec(spec)?),
     })
 }
 

@@ -1,0 +1,44 @@
+//! Course file formats, read into scenarios and written from results.
+//!
+//! The generic entry is [`import`]: it recognises a document by its content (a Planarium scenario,
+//! a Technion HW3 map, an ASV problem file) and returns a [`Scenario`]. Each format has its own file.
+
+pub mod asv;
+pub mod technion;
+
+use crate::scenario::{Scenario, ScenarioError};
+
+/// The formats [`import`] recognises.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    /// `planarium-scenario/1` JSON.
+    Scenario,
+    /// The Technion HW3 map JSON (`WIDTH`, `HEIGHT`, `OBSTACLES`, ...).
+    TechnionMap,
+    /// The ASV course's problem text file.
+    AsvProblem,
+}
+
+/// Which format `text` is in, by its content.
+pub fn detect(text: &str) -> Format {
+    let t = text.trim_start();
+    if t.starts_with('{') {
+        if t.contains("\"OBSTACLES\"") || t.contains("\"WIDTH\"") {
+            Format::TechnionMap
+        } else {
+            Format::Scenario
+        }
+    } else {
+        Format::AsvProblem
+    }
+}
+
+/// Read any supported document as a scenario; `name` (a file name) titles scenarios whose format
+/// has no name of its own.
+pub fn import(text: &str, name: &str) -> Result<Scenario, ScenarioError> {
+    match detect(text) {
+        Format::Scenario => Scenario::from_json(text),
+        Format::TechnionMap => technion::import_map(text, name),
+        Format::AsvProblem => asv::import_problem(text, name),
+    }
+}
