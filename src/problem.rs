@@ -52,16 +52,17 @@ impl Problem {
     /// and are collision-free; errors say which state and why.
     pub fn from_scenario(sc: &Scenario) -> Result<Problem, ScenarioError> {
         let b = sc.bounds;
-        let workspace = Workspace::new(
+        let mut workspace = Workspace::new(
             Aabb { min: Vec2::new(b[0], b[1]), max: Vec2::new(b[2], b[3]) },
             sc.obstacles.iter().map(shape_of).collect(),
         );
+        workspace.open = sc.touching_allowed;
         let robot: Box<dyn Robot> = robot::from_spec(&sc.robot, sc.body_in_bounds).map_err(|e| ScenarioError::at("robot.kind", e))?;
         let space = robot.space(&workspace);
         let check = |name: &str, q: &[Real]| -> Result<Vec<Real>, ScenarioError> {
             let dims = robot.external_dims();
             if q.len() != dims {
-                return Err(ScenarioError::at(name, format!("a {} robot's state has {dims} numbers, found {}", robot.kind(), q.len())));
+                return Err(ScenarioError::at(name, format!("{} {} robot's state has {dims} numbers, found {}", if robot.kind().starts_with('a') { "an" } else { "a" }, robot.kind(), q.len())));
             }
             let mut q = robot.encode(q).map_err(|e| ScenarioError::at(name, e))?;
             space.enforce(&mut q);

@@ -38,6 +38,39 @@ pub fn intersect_segment_polygon(a: Vec2, b: Vec2, poly: &[Vec2]) -> bool {
     contains_polygon_point(poly, a)
 }
 
+/// Whether `p` lies strictly inside the polygon (not on its boundary).
+pub fn strictly_contains_polygon_point(poly: &[Vec2], p: Vec2) -> bool {
+    let n = poly.len();
+    (0..n).all(|i| !contains_segment_point(poly[i], poly[(i + 1) % n], p)) && contains_polygon_point(poly, p)
+}
+
+/// Whether the segment `a b` meets the polygon's interior (touching the boundary allowed): the
+/// segment is cut where it meets the boundary, and each piece's midpoint is tested.
+pub fn interior_meets_segment_polygon(poly: &[Vec2], a: Vec2, b: Vec2) -> bool {
+    let n = poly.len();
+    let d = b - a;
+    let mut ts = vec![0.0, 1.0];
+    for i in 0..n {
+        let (c, e) = (poly[i], poly[(i + 1) % n]);
+        if !intersect_segment_segment(a, b, c, e) {
+            continue;
+        }
+        let s = e - c;
+        let den = d.cross(s);
+        if den != 0.0 {
+            ts.push(((c - a).cross(s) / den).clamp(0.0, 1.0));
+        } else {
+            // Collinear overlap: cut at the edge's end points, projected on the segment.
+            let l2 = d.norm2();
+            for p in [c, e] {
+                ts.push(((p - a).dot(d) / l2).clamp(0.0, 1.0));
+            }
+        }
+    }
+    ts.sort_by(f64::total_cmp);
+    ts.windows(2).any(|w| w[1] > w[0] && strictly_contains_polygon_point(poly, a + d.scale(0.5 * (w[0] + w[1]))))
+}
+
 /// Whether the closed polygons `p` and `q` share a point.
 pub fn intersect_polygon_polygon(p: &[Vec2], q: &[Vec2]) -> bool {
     let n = p.len();

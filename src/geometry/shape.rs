@@ -1,6 +1,6 @@
 use super::circle::intersect_segment_circle;
-use super::polygon::{contains_polygon_point, intersect_segment_polygon};
-use super::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment, intersect_segment_segment};
+use super::polygon::{contains_polygon_point, interior_meets_segment_polygon, intersect_segment_polygon};
+use super::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment, intersect_segment_segment, orient};
 use super::Aabb;
 use crate::math::{Real, Vec2};
 
@@ -61,6 +61,58 @@ impl Shape {
             Shape::Polygon(poly) => intersect_segment_polygon(a, b, poly),
             Shape::Circle(c, r) => intersect_segment_circle(a, b, *c, *r),
             Shape::Segment(p, q) => intersect_segment_segment(a, b, *p, *q),
+        }
+    }
+
+    /// The distance from the closed segment `a b` to the shape, or `cap` if that is smaller
+    /// (0 when they meet).
+    pub fn distance_to_segment(&self, a: Vec2, b: Vec2, cap: Real) -> Real {
+        if !Aabb::of_points(&[a, b]).grown(cap).intersects(&self.aabb()) {
+            return cap;
+        }
+        if self.intersects_segment(a, b) {
+            return 0.0;
+        }
+        let mut best = cap;
+        match self {
+            Shape::Rect(r) => {
+                let c = [r.min, Vec2::new(r.max.x, r.min.y), r.max, Vec2::new(r.min.x, r.max.y)];
+                (0..4).for_each(|i| best = best.min(distance_segment_segment(a, b, c[i], c[(i + 1) % 4])));
+            }
+            Shape::Polygon(p) => (0..p.len()).for_each(|i| best = best.min(distance_segment_segment(a, b, p[i], p[(i + 1) % p.len()]))),
+            Shape::Segment(c, d) => best = best.min(distance_segment_segment(a, b, *c, *d)),
+            Shape::Circle(c, r) => best = best.min(distance2_point_segment(*c, a, b).sqrt() - r),
+        }
+        best.max(0.0)
+    }
+
+    /// Whether the segment `a b` meets the shape's *interior* (the shape as an open set: touching
+    /// its boundary is allowed). A segment obstacle has no interior; it is met only by a proper
+    /// crossing.
+    pub fn interior_meets_segment(&self, a: Vec2, b: Vec2) -> bool {
+        match self {
+            Shape::Rect(r) => {
+                let (mut lo, mut hi) = (Real::NEG_INFINITY, Real::INFINITY);
+                for (p, d, min, max) in [(a.x, b.x - a.x, r.min.x, r.max.x), (a.y, b.y - a.y, r.min.y, r.max.y)] {
+                    if d == 0.0 {
+                        if !(p > min && p < max) {
+                            return false;
+                        }
+                    } else {
+                        let (t0, t1) = ((min - p) / d, (max - p) / d);
+                        lo = lo.max(t0.min(t1));
+                        hi = hi.min(t0.max(t1));
+                    }
+                }
+                lo < hi && lo < 1.0 && hi > 0.0
+            }
+            Shape::Polygon(poly) => interior_meets_segment_polygon(poly, a, b),
+            Shape::Circle(c, r) => distance2_point_segment(*c, a, b) < r * r,
+            Shape::Segment(c, d) => {
+                let (d1, d2) = (orient(*c, *d, a), orient(*c, *d, b));
+                let (d3, d4) = (orient(a, b, *c), orient(a, b, *d));
+                d1 * d2 < 0.0 && d3 * d4 < 0.0
+            }
         }
     }
 

@@ -61,3 +61,41 @@ fn polygon_inside_polygon_and_circle() {
     let touching = Shape::Circle(v(5., 2.), 1.0);
     assert!(touching.intersects_polygon(&big, &Aabb::of_points(&big)));
 }
+
+#[test]
+fn open_obstacles_allow_touching_but_not_entering() {
+    let rect = Shape::Rect(Aabb { min: v(0., 0.), max: v(1., 1.) });
+    let tri = Shape::Polygon(vec![v(0., 0.), v(2., 0.), v(0., 2.)]);
+    let wall = Shape::Segment(v(0., 0.), v(0., 2.));
+    let disc = Shape::Circle(v(0., 0.), 1.0);
+    for s in [&rect, &tri] {
+        assert!(!s.interior_meets_segment(v(-1., 0.), v(3., 0.)), "along an edge");
+        assert!(!s.interior_meets_segment(v(-1., -1.), v(0., 0.)), "ending at a vertex");
+        assert!(s.interior_meets_segment(v(-1., 0.5), v(3., 0.5)), "through");
+        assert!(s.interior_meets_segment(v(0.2, 0.2), v(0.3, 0.3)), "inside");
+        assert!(!s.interior_meets_segment(v(-1., 3.), v(-0.5, 5.)), "far");
+    }
+    // Touching the hypotenuse of the triangle at one point from outside.
+    assert!(!tri.interior_meets_segment(v(1., 1.), v(2., 2.)));
+    assert!(tri.interior_meets_segment(v(0.9, 0.9), v(2., 2.)));
+    // A non-convex polygon: a chord between two notch vertices runs outside.
+    let u = Shape::Polygon(vec![v(0., 0.), v(3., 0.), v(3., 3.), v(2., 3.), v(2., 1.), v(1., 1.), v(1., 3.), v(0., 3.)]);
+    assert!(!u.interior_meets_segment(v(1., 3.), v(2., 3.)));
+    assert!(!u.interior_meets_segment(v(1., 1.), v(2., 1.)), "along the notch floor");
+    assert!(u.interior_meets_segment(v(0.5, 3.), v(2.5, 3.)) == false, "along the top edges and across the notch mouth");
+    assert!(u.interior_meets_segment(v(0.5, 2.9), v(2.5, 2.9)));
+    assert!(!wall.interior_meets_segment(v(0., 1.), v(1., 1.)), "touching a wall");
+    assert!(wall.interior_meets_segment(v(-1., 1.), v(1., 1.)), "crossing a wall");
+    assert!(!disc.interior_meets_segment(v(-1., 1.), v(1., 1.)), "tangent");
+    assert!(disc.interior_meets_segment(v(-1., 0.9), v(1., 0.9)));
+}
+
+#[test]
+fn segment_distance_to_shapes() {
+    let rect = Shape::Rect(Aabb { min: v(0., 0.), max: v(1., 1.) });
+    assert!((rect.distance_to_segment(v(2., -1.), v(2., 3.), 10.) - 1.0).abs() < 1e-12);
+    assert_eq!(rect.distance_to_segment(v(2., -1.), v(2., 3.), 0.5), 0.5, "capped");
+    assert_eq!(rect.distance_to_segment(v(0.5, 0.5), v(0.6, 0.6), 1.), 0.0);
+    let disc = Shape::Circle(v(0., 0.), 1.0);
+    assert!((disc.distance_to_segment(v(-1., 2.), v(1., 2.), 5.) - 1.0).abs() < 1e-12);
+}

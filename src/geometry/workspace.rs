@@ -6,6 +6,9 @@ use crate::math::{Real, Vec2};
 pub struct Workspace {
     /// The bounds `[xmin, ymin] .. [xmax, ymax]`.
     pub bounds: Aabb,
+    /// Obstacles are open sets: touching their boundary is allowed (`touching_allowed`). Only
+    /// [`Workspace::segment_hit`] reads it; robots made of segments (arms) use that.
+    pub open: bool,
     /// The obstacles, in scenario order.
     pub obstacles: Vec<Shape>,
     boxes: Vec<Aabb>,
@@ -15,7 +18,7 @@ impl Workspace {
     /// A workspace from its bounds and obstacles.
     pub fn new(bounds: Aabb, obstacles: Vec<Shape>) -> Self {
         let boxes = obstacles.iter().map(Shape::aabb).collect();
-        Workspace { bounds, obstacles, boxes }
+        Workspace { bounds, obstacles, boxes, open: false }
     }
 
     /// The index of the first obstacle that contains `p`, if any.
@@ -37,6 +40,32 @@ impl Workspace {
         for (shape, bx) in self.obstacles.iter().zip(&self.boxes) {
             if bx.intersects(&bb.grown(best)) {
                 best = best.min(shape.distance_to_polygon(poly, &bb, best));
+                if best == 0.0 {
+                    break;
+                }
+            }
+        }
+        best
+    }
+
+    /// The index of the first obstacle that the segment `a b` meets (its interior only when the
+    /// workspace is [`open`](Workspace::open)), if any.
+    pub fn segment_hit(&self, a: Vec2, b: Vec2) -> Option<usize> {
+        let bb = Aabb::of_points(&[a, b]);
+        (0..self.obstacles.len()).find(|&i| {
+            self.boxes[i].intersects(&bb)
+                && if self.open { self.obstacles[i].interior_meets_segment(a, b) } else { self.obstacles[i].intersects_segment(a, b) }
+        })
+    }
+
+    /// The distance from the segment `a b` to the nearest obstacle, capped at `cap` (0 when it
+    /// meets or touches one).
+    pub fn segment_clearance(&self, a: Vec2, b: Vec2, cap: Real) -> Real {
+        let bb = Aabb::of_points(&[a, b]);
+        let mut best = cap;
+        for (shape, bx) in self.obstacles.iter().zip(&self.boxes) {
+            if bx.intersects(&bb.grown(best)) {
+                best = best.min(shape.distance_to_segment(a, b, best));
                 if best == 0.0 {
                     break;
                 }

@@ -9,7 +9,7 @@
 mod params;
 pub mod rrt;
 pub mod smoothing;
-mod tree;
+pub mod tree;
 
 pub use params::{ParamKind, ParamSpec, Params};
 pub use tree::{PlannerData, Tree};

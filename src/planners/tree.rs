@@ -18,6 +18,9 @@ pub struct Tree {
     pub index: usize,
 }
 
+/// The most steps one CONNECT takes (every step makes progress; this bounds an iteration's time).
+pub const MAX_CONNECT_STEPS: usize = 10_000;
+
 /// Parent of a root.
 pub(crate) const ROOT: u32 = u32::MAX;
 
@@ -87,6 +90,11 @@ impl Tree {
         } else {
             cx.si.interpolate(self.state(near), target, range / d, new);
         }
+        // Growth must make progress: under a metric that is not convex along straight lines in
+        // state space (the chain metrics), a step toward the target can end farther from it.
+        if !reached && cx.si.distance(new, target) >= d {
+            return (Grow::Trapped, near);
+        }
         let near_state = &self.states[near as usize * self.dims..(near as usize + 1) * self.dims];
         if let Err(p) = cx.si.check_motion(near_state, new, scratch) {
             cx.events.at(EventKind::Collision, self.index, p);
@@ -97,6 +105,20 @@ impl Tree {
         let (p, q) = (cx.si.project(new), cx.si.project(self.state(near)));
         cx.events.push(EventKind::NodeAdded, self.index, id as i64, near as i64, p, q);
         (if reached { Grow::Reached } else { Grow::Advanced }, id)
+    }
+
+    /// Grow step after step toward `target` (RRT-Connect's CONNECT) until it is reached, a step is
+    /// trapped, or [`MAX_CONNECT_STEPS`] steps were taken. Returns the last outcome and the last
+    /// node reached or added.
+    pub fn connect(&mut self, cx: &mut Context, target: &[Real], range: Real, scratch: &mut [Real], new: &mut [Real]) -> (Grow, u32) {
+        let mut last = (Grow::Trapped, 0);
+        for _ in 0..MAX_CONNECT_STEPS {
+            last = self.extend(cx, target, range, scratch, new);
+            if last.0 != Grow::Advanced {
+                break;
+            }
+        }
+        last
     }
 
     /// Every edge as `(parent state, child state)`.

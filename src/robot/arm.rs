@@ -1,24 +1,116 @@
-//! The fixed-base planar arm (courses.md §4–§6). Work in progress: see issue 3.
+//! A fixed-base planar arm (courses.md §4–§6): `n` revolute links, joint angles relative to the
+//! previous link, each joint limited or wrapping around.
+//!
+//! Valid when every joint is within its limits, every joint point (base and tip included) lies in
+//! the bounds, no link meets an obstacle (the interior only, when touching is allowed), and, with
+//! `self_collision`, no two non-adjacent links meet and no two adjacent links fold onto each other.
+//! An optional `tip` continues the last link (OMPL's chain benchmark checks a 0.001 tip).
+//!
+//! Motions are certified with clearances: along a straight joint-space motion, a point at distance
+//! `R` from joint `i` moves at most `R·|Δqᵢ|` because of that joint, so no point of the arm moves
+//! more than `Σ |Δqᵢ|·Rᵢ`, with `Rᵢ` the reach beyond joint `i`. The clearance is the distance to
+//! obstacles and to the bounds, and half the distance between links (two links approach each other
+//! at most twice as fast).
 
 use super::{Robot, Verdict};
+use crate::geometry::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment, intersect_segment_segment, orient};
 use crate::geometry::Workspace;
-use crate::math::{Real, Vec2};
+use crate::math::{angle_diff, Real, Vec2, PI};
 use crate::scenario::RobotSpec;
-use crate::space::StateSpace;
+use crate::space::{Dim, Metric, StateSpace};
+
+/// The most joint points kept on the stack.
+const STACK_POINTS: usize = 40;
 
 /// A fixed-base planar arm.
 #[derive(Clone, Debug)]
 pub struct ArmRobot {
-    count: usize,
+    base: Vec2,
+    links: Vec<Real>,
+    limits: Vec<Option<[Real; 2]>>,
+    self_collision: bool,
+    metric: Metric,
+    tip: Real,
+    /// `reach[i]`: the arm's length beyond joint `i` (tip included).
+    reach: Vec<Real>,
 }
 
 impl ArmRobot {
-    /// The robot a scenario's `asv` block describes.
+    /// The robot a scenario's `arm` block describes.
     pub fn from_spec(spec: &RobotSpec) -> Result<Self, String> {
-        match spec {
-            RobotSpec::Arm { .. } => Err("robot kind \"arm\" is not supported by this build yet".into()),
-            _ => Err("not an arm".into()),
+        let RobotSpec::Arm { base, links, limits, self_collision, metric, tip } = spec else {
+            return Err("not an arm".into());
+        };
+        let metric = match metric.as_str() {
+            "joint" => Metric::Euclidean,
+            "max" => Metric::ChainMax { links: links.clone() },
+            _ => Metric::ChainSum { links: links.clone() },
+        };
+        let reach = (0..links.len()).map(|i| links[i..].iter().sum::<Real>() + tip).collect();
+        Ok(ArmRobot {
+            base: Vec2::new(base[0], base[1]),
+            links: links.clone(),
+            limits: limits.clone(),
+            self_collision: *self_collision,
+            metric,
+            tip: *tip,
+            reach,
+        })
+    }
+
+    /// Number of points of the arm at a state: base, one per link end, and the tip's end if any.
+    fn point_count(&self) -> usize {
+        self.links.len() + 1 + usize::from(self.tip > 0.0)
+    }
+
+    /// Forward kinematics: write every joint point (base first, tip end last) into `out`.
+    pub fn joint_points(&self, q: &[Real], out: &mut [Vec2]) {
+        let mut p = self.base;
+        let mut theta = 0.0;
+        out[0] = p;
+        for (i, l) in self.links.iter().enumerate() {
+            theta += q[i];
+            p = p + Vec2::new(l * libm::cos(theta), l * libm::sin(theta));
+            out[i + 1] = p;
         }
+        if self.tip > 0.0 {
+            out[self.links.len() + 1] = p + Vec2::new(self.tip * libm::cos(theta), self.tip * libm::sin(theta));
+        }
+    }
+
+    fn with_points<T>(&self, q: &[Real], f: impl FnOnce(&[Vec2]) -> T) -> T {
+        let m = self.point_count();
+        if m <= STACK_POINTS {
+            let mut buf = [Vec2::default(); STACK_POINTS];
+            self.joint_points(q, &mut buf[..m]);
+            f(&buf[..m])
+        } else {
+            let mut buf = vec![Vec2::default(); m];
+            self.joint_points(q, &mut buf);
+            f(&buf)
+        }
+    }
+
+    fn within_limits(&self, q: &[Real]) -> bool {
+        self.limits.iter().zip(q).all(|(l, v)| l.is_none_or(|[lo, hi]| *v >= lo && *v <= hi))
+    }
+
+    /// Why the arm at joint points `pts` breaks its own rules, if it does.
+    fn self_problem(pts: &[Vec2]) -> Option<&'static str> {
+        let segs = pts.len() - 1;
+        for i in 0..segs {
+            for j in i + 1..segs {
+                if j == i + 1 {
+                    let (a, b, c) = (pts[i], pts[i + 1], pts[i + 2]);
+                    if orient(a, b, c) == 0.0 && (a - b).dot(c - b) > 0.0 {
+                        return Some("two adjacent links fold onto each other");
+                    }
+                } else if intersect_segment_segment(pts[i], pts[i + 1], pts[j], pts[j + 1]) {
+                    return Some("the arm crosses itself");
+                }
+            }
+        }
+        None
     }
 }
 
@@ -27,18 +119,98 @@ impl Robot for ArmRobot {
         "arm"
     }
     fn external_dims(&self) -> usize {
-        self.count
+        self.links.len()
     }
     fn space(&self, _ws: &Workspace) -> StateSpace {
-        unreachable!("ArmRobot cannot be built yet")
+        let dims = self
+            .limits
+            .iter()
+            .map(|l| match l {
+                Some([lo, hi]) => Dim { lo: *lo, hi: *hi, wraps: false },
+                None => Dim { lo: -PI, hi: PI, wraps: true },
+            })
+            .collect();
+        StateSpace { dims, metric: self.metric.clone() }
     }
-    fn verdict(&self, _ws: &Workspace, _q: &[Real]) -> Verdict {
-        Verdict::Invalid("not supported yet")
+    fn verdict(&self, ws: &Workspace, q: &[Real]) -> Verdict {
+        if !self.within_limits(q) {
+            return Verdict::Invalid("a joint is outside its limits");
+        }
+        self.with_points(q, |pts| {
+            if let Some(p) = pts.iter().find(|p| !ws.bounds.contains(**p)) {
+                return Verdict::OutOfBounds(if p.x < ws.bounds.min.x || p.x > ws.bounds.max.x { 0 } else { 1 });
+            }
+            for w in pts.windows(2) {
+                if let Some(i) = ws.segment_hit(w[0], w[1]) {
+                    return Verdict::Collision(i);
+                }
+            }
+            match self.self_collision.then(|| Self::self_problem(pts)).flatten() {
+                Some(why) => Verdict::Invalid(why),
+                None => Verdict::Valid,
+            }
+        })
+    }
+    fn clearance(&self, ws: &Workspace, q: &[Real], cap: Real) -> Option<Real> {
+        if !self.within_limits(q) {
+            return Some(0.0);
+        }
+        Some(self.with_points(q, |pts| {
+            let b = ws.bounds;
+            let mut c = cap;
+            // The base never moves: only the other points can leave the bounds (the Technion base
+            // sits on the bounds' corner).
+            for p in &pts[1..] {
+                c = c.min((p.x - b.min.x).min(b.max.x - p.x).min(p.y - b.min.y).min(b.max.y - p.y).max(0.0));
+            }
+            for w in pts.windows(2) {
+                if c == 0.0 {
+                    return 0.0;
+                }
+                c = c.min(ws.segment_clearance(w[0], w[1], c));
+            }
+            if self.self_collision {
+                let segs = pts.len() - 1;
+                for i in 0..segs {
+                    for j in i + 1..segs {
+                        let tip_pair = self.tip > 0.0 && j == segs - 1 && i == segs - 2;
+                        if tip_pair {
+                            continue; // the tip continues the last link by construction
+                        }
+                        let d = if j == i + 1 {
+                            // Adjacent links meet at their joint; they fold when either far end
+                            // reaches the other link.
+                            let (a, m, e) = (pts[i], pts[i + 1], pts[i + 2]);
+                            if contains_segment_point(m, e, a) || contains_segment_point(a, m, e) {
+                                0.0
+                            } else {
+                                distance2_point_segment(a, m, e).min(distance2_point_segment(e, a, m)).sqrt()
+                            }
+                        } else {
+                            distance_segment_segment(pts[i], pts[i + 1], pts[j], pts[j + 1])
+                        };
+                        c = c.min(0.5 * d);
+                    }
+                }
+            }
+            c
+        }))
+    }
+    fn displacement_bound(&self, a: &[Real], b: &[Real]) -> Option<Real> {
+        let mut d = 0.0;
+        for i in 0..self.links.len() {
+            let dq = if self.limits[i].is_some() { b[i] - a[i] } else { angle_diff(a[i], b[i]) };
+            d += dq.abs() * self.reach[i];
+        }
+        Some(d)
     }
     fn project(&self, q: &[Real]) -> Vec2 {
-        Vec2::new(q[0], q[1])
+        // The end effector (the last link's end).
+        self.with_points(q, |pts| pts[self.links.len()])
     }
-    fn outline(&self, _q: &[Real]) -> Vec<Vec<Vec2>> {
-        Vec::new()
+    fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>> {
+        let mut pts = vec![Vec2::default(); self.point_count()];
+        self.joint_points(q, &mut pts);
+        vec![pts]
     }
 }

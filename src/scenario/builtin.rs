@@ -8,6 +8,9 @@ pub const BUILTINS: &[(&str, &str)] = &[
     ("open-field", include_str!("../../scenarios/open-field.json")),
     ("narrow", include_str!("../../scenarios/narrow.json")),
     ("slot", include_str!("../../scenarios/slot.json")),
+    ("arm-3", include_str!("../../scenarios/arm-3.json")),
+    ("horn-10", include_str!("../../scenarios/horn-10.json")),
+    ("horn-20", include_str!("../../scenarios/horn-20.json")),
 ];
 
 /// The ids of the built-in scenarios.

@@ -135,8 +135,61 @@ fn body(sc: &Scenario, q: &[f64]) -> Option<Vec<P>> {
     }
 }
 
+/// An arm's joint points (base first, tip end last), by its own forward kinematics.
+fn arm_points(sc: &Scenario, q: &[f64]) -> Vec<P> {
+    let RobotSpec::Arm { base, links, tip, .. } = &sc.robot else { unreachable!() };
+    let mut pts = vec![(base[0], base[1])];
+    let mut th = 0.0;
+    for (l, a) in links.iter().zip(q) {
+        th += a;
+        let p = *pts.last().unwrap();
+        pts.push((p.0 + l * th.cos(), p.1 + l * th.sin()));
+    }
+    if *tip > 0.0 {
+        let p = *pts.last().unwrap();
+        pts.push((p.0 + tip * th.cos(), p.1 + tip * th.sin()));
+    }
+    pts
+}
+
+fn arm_problem(sc: &Scenario, q: &[f64]) -> Option<String> {
+    let RobotSpec::Arm { limits, self_collision, .. } = &sc.robot else { unreachable!() };
+    for (i, (l, v)) in limits.iter().zip(q).enumerate() {
+        if let Some([lo, hi]) = l {
+            if v < lo || v > hi {
+                return Some(format!("{q:?}: joint {i} outside [{lo}, {hi}]"));
+            }
+        }
+    }
+    let pts = arm_points(sc, q);
+    let b = sc.bounds;
+    if let Some(p) = pts.iter().find(|p| p.0 < b[0] || p.0 > b[2] || p.1 < b[1] || p.1 > b[3]) {
+        return Some(format!("{q:?}: joint point {p:?} out of bounds"));
+    }
+    for w in pts.windows(2) {
+        for (i, o) in sc.obstacles.iter().enumerate() {
+            if segment_hits(o, w[0], w[1]) {
+                return Some(format!("{q:?}: link {:?}-{:?} meets obstacles[{i}]", w[0], w[1]));
+            }
+        }
+    }
+    if *self_collision {
+        for i in 0..pts.len() - 1 {
+            for j in i + 2..pts.len() - 1 {
+                if segments_meet(pts[i], pts[i + 1], pts[j], pts[j + 1]) {
+                    return Some(format!("{q:?}: links {i} and {j} cross"));
+                }
+            }
+        }
+    }
+    None
+}
+
 /// Why state `q` is invalid, or `None`.
 pub fn state_problem(sc: &Scenario, q: &[f64]) -> Option<String> {
+    if matches!(sc.robot, RobotSpec::Arm { .. }) {
+        return arm_problem(sc, q);
+    }
     let b = sc.bounds;
     if q[0] < b[0] || q[0] > b[2] || q[1] < b[1] || q[1] > b[3] {
         return Some(format!("{q:?} out of bounds"));
@@ -164,6 +217,8 @@ fn angle_diff(a: f64, b: f64) -> f64 {
 
 fn metric(sc: &Scenario, a: &[f64], b: &[f64]) -> f64 {
     match &sc.robot {
+        // For arms, the largest joint-space step (wrap-aware): paths must start and end within 1e-9.
+        RobotSpec::Arm { .. } => a.iter().zip(b).map(|(x, y)| angle_diff(*x, *y).abs()).fold(0.0, f64::max),
         RobotSpec::Point => ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt(),
         RobotSpec::Rigid { footprint, rotation_weight } => {
             let r = rotation_weight.unwrap_or_else(|| footprint.iter().map(|p| p[0].hypot(p[1])).fold(0.0, f64::max));
@@ -196,12 +251,30 @@ pub fn path_problem(sc: &Scenario, path: &[Vec<f64>]) -> Option<String> {
 /// Why the motion a → b is invalid, or `None`: states every resolution/2, and for a point an
 /// exact segment test.
 pub fn motion_problem(sc: &Scenario, a: &[f64], b: &[f64]) -> Option<String> {
-    let n = ((metric(sc, a, b) / (sc.resolution / 2.0)).ceil() as usize).max(1);
+    let n = match &sc.robot {
+        RobotSpec::Arm { links, limits, .. } => {
+            // No arm point moves more than 1/1000 of the bounds' size between two checked states.
+            let size = (sc.bounds[2] - sc.bounds[0]).max(sc.bounds[3] - sc.bounds[1]);
+            let total: f64 = links.iter().sum();
+            let moved: f64 = a.iter().zip(b).zip(limits).map(|((x, y), l)| if l.is_some() { (y - x).abs() } else { angle_diff(*x, *y).abs() }).sum();
+            ((moved * total) / (0.001 * size)).ceil() as usize
+        }
+        _ => (metric(sc, a, b) / (sc.resolution / 2.0)).ceil() as usize,
+    }
+    .max(1);
     for i in 0..=n {
         let t = i as f64 / n as f64;
         let mut q: Vec<f64> = a.iter().zip(b).map(|(x, y)| x + t * (y - x)).collect();
-        if q.len() == 3 {
-            q[2] = a[2] + t * angle_diff(a[2], b[2]);
+        match &sc.robot {
+            RobotSpec::Rigid { .. } => q[2] = a[2] + t * angle_diff(a[2], b[2]),
+            RobotSpec::Arm { limits, .. } => {
+                for (k, l) in limits.iter().enumerate() {
+                    if l.is_none() {
+                        q[k] = a[k] + t * angle_diff(a[k], b[k]);
+                    }
+                }
+            }
+            _ => {}
         }
         if let Some(e) = state_problem(sc, &q) {
             return Some(e);
@@ -226,6 +299,13 @@ pub fn self_test() {
     // Grazing the wall's corner (0.55, 0.49) exactly, both ends free.
     assert!(motion_problem(&sc, &[0.56, 0.48], &[0.54, 0.50]).is_some());
     assert!(path_problem(&sc, &[vec![0.1, 0.1], vec![0.9, 0.9]]).is_some());
+    let arm = planarium::scenario::builtin("arm-3").unwrap();
+    assert!(state_problem(&arm, &arm.start).is_none());
+    assert!(state_problem(&arm, &[0.5, 0.0, 0.0]).is_some(), "straight through the block");
+    assert!(state_problem(&arm, &[0.0, 2.0, 0.0]).is_some(), "joint limit");
+    let horn = planarium::scenario::builtin("horn-10").unwrap();
+    assert!(state_problem(&horn, &horn.start).is_none());
+    assert!(state_problem(&horn, &[0.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0]).is_some(), "curled into itself or the horn");
     let slot = planarium::scenario::builtin("slot").unwrap();
     assert!(state_problem(&slot, &[0.5, 0.5, std::f64::consts::FRAC_PI_2]).is_some());
     assert!(state_problem(&slot, &[0.5, 0.5, 0.0]).is_none());

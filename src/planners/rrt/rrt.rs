@@ -11,6 +11,7 @@
 use super::{resolve_range, RANGE};
 use crate::events::EventKind;
 use crate::math::Real;
+use crate::planners::tree::MAX_CONNECT_STEPS;
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, Tree};
 use crate::space_info::SpaceInfo;
 use crate::status::Grow;
@@ -76,7 +77,7 @@ impl Planner for Rrt {
         }
         cx.events.at(EventKind::Sample, 0, cx.si.project(&self.sample));
         let mut first = true;
-        loop {
+        for _ in 0..MAX_CONNECT_STEPS {
             let (grow, id) = tree.extend(cx, &self.sample, self.range, &mut self.scratch, &mut self.new);
             if grow == Grow::Trapped {
                 if first {
@@ -98,6 +99,7 @@ impl Planner for Rrt {
                 return None;
             }
         }
+        None
     }
 
     fn node_count(&self) -> usize {

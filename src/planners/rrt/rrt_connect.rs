@@ -72,22 +72,19 @@ impl Planner for RrtConnect {
             return None;
         }
         self.target.copy_from_slice(self.trees[a].state(added));
-        loop {
-            let (g, reached) = self.trees[b].extend(cx, &self.target, self.range, &mut self.scratch, &mut self.new);
-            match g {
-                Grow::Trapped => return None,
-                Grow::Advanced => continue,
-                Grow::Reached => {
-                    let p = cx.si.project(&self.target);
-                    cx.events.push(EventKind::TreesConnected, a, added as i64, reached as i64, p, p);
-                    cx.events.at(EventKind::Solved, a, cx.si.project(&self.task.goal));
-                    let (from_start, from_goal) = if a == 0 { (added, reached) } else { (reached, added) };
-                    let mut path = self.trees[0].path_to(from_start);
-                    let mut tail = self.trees[1].path_to(from_goal);
-                    tail.reverse();
-                    path.extend(tail.into_iter().skip(1)); // the meeting state is in both
-                    return Some(path);
-                }
+        let (g, reached) = self.trees[b].connect(cx, &self.target, self.range, &mut self.scratch, &mut self.new);
+        match g {
+            Grow::Trapped | Grow::Advanced => None,
+            Grow::Reached => {
+                let p = cx.si.project(&self.target);
+                cx.events.push(EventKind::TreesConnected, a, added as i64, reached as i64, p, p);
+                cx.events.at(EventKind::Solved, a, cx.si.project(&self.task.goal));
+                let (from_start, from_goal) = if a == 0 { (added, reached) } else { (reached, added) };
+                let mut path = self.trees[0].path_to(from_start);
+                let mut tail = self.trees[1].path_to(from_goal);
+                tail.reverse();
+                path.extend(tail.into_iter().skip(1)); // the meeting state is in both
+                Some(path)
             }
         }
     }
