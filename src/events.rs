@@ -1,14 +1,15 @@
 //! What happened during planning, as a flat log of fixed-stride `f64` records.
 //!
-//! Each record is [`STRIDE`] numbers: `[kind, tree, id, parent, x, y, px, py]`, with points already
-//! projected into the workspace (a state's reference point), so the page draws without knowing the
-//! robot. The worker drains the log after each batch and transfers it as a `Float64Array`; the JS
+//! Each record is [`STRIDE`] numbers: `[kind, tree, id, parent, x, y, px, py, c0, c1, pc0, pc1]`:
+//! the point and its parent's, projected into the workspace (a state's reference point), so the
+//! page draws without knowing the robot; then the first two planning coordinates of the state and
+//! its parent's, for a configuration-space view of two-dimensional spaces (a 2-joint arm). The worker drains the log after each batch and transfers it as a `Float64Array`; the JS
 //! constants in `www/events.js` are checked against [`EventKind`] by a test.
 
-use crate::math::Vec2;
+use crate::math::{Real, Vec2};
 
 /// Numbers per event record.
-pub const STRIDE: usize = 8;
+pub const STRIDE: usize = 12;
 
 /// The kinds of event (the record's first number).
 #[repr(u8)]
@@ -53,17 +54,33 @@ impl EventLog {
     pub fn new(enabled: bool) -> Self {
         EventLog { data: Vec::new(), enabled }
     }
-    /// Record one event.
+    /// Record one event: ids, workspace points of the state and its parent, and the first two
+    /// coordinates of each state.
+    #[allow(clippy::too_many_arguments)]
     #[inline]
-    pub fn push(&mut self, kind: EventKind, tree: usize, id: i64, parent: i64, p: Vec2, q: Vec2) {
+    pub fn push(&mut self, kind: EventKind, tree: usize, id: i64, parent: i64, p: Vec2, pp: Vec2, q: &[Real], pq: &[Real]) {
         if self.enabled {
-            self.data.extend_from_slice(&[kind as u8 as f64, tree as f64, id as f64, parent as f64, p.x, p.y, q.x, q.y]);
+            let c = |s: &[Real], i: usize| s.get(i).copied().unwrap_or(0.0);
+            self.data.extend_from_slice(&[
+                kind as u8 as f64,
+                tree as f64,
+                id as f64,
+                parent as f64,
+                p.x,
+                p.y,
+                pp.x,
+                pp.y,
+                c(q, 0),
+                c(q, 1),
+                c(pq, 0),
+                c(pq, 1),
+            ]);
         }
     }
-    /// Record an event at one point.
+    /// Record an event at one state (drawn at `p`).
     #[inline]
-    pub fn at(&mut self, kind: EventKind, tree: usize, p: Vec2) {
-        self.push(kind, tree, -1, -1, p, p)
+    pub fn at(&mut self, kind: EventKind, tree: usize, p: Vec2, q: &[Real]) {
+        self.push(kind, tree, -1, -1, p, p, q, q)
     }
     /// Number of records waiting.
     pub fn len(&self) -> usize {

@@ -10,14 +10,18 @@
 //!   (each body point stays within reach of one end); otherwise the interval is bisected, each new
 //!   state counted as a check, until it is certified or a collision is found.
 
-use crate::math::{Real, Vec2};
+use crate::math::Real;
 use crate::space_info::SpaceInfo;
+
+/// A motion was found invalid (the state found is in the caller's scratch buffer).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Invalid;
 
 /// Checks straight motions between states.
 pub trait MotionValidator {
-    /// `Ok(())` if the motion `a → b` is valid (`a` is assumed valid); otherwise the workspace point
-    /// of the collision found. `scratch` holds one state.
-    fn check_motion(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Vec2>;
+    /// `Ok(())` if the motion `a → b` is valid (`a` is assumed valid). On `Err`, `scratch` (room for
+    /// one state) holds the invalid state that was found.
+    fn check_motion(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Invalid>;
 }
 
 /// Visit `1..n` coarse to fine (n/2 first, then n/4 and 3n/4, ...), each index once, stopping at
@@ -47,23 +51,24 @@ impl SpaceInfo {
         self.validity.clearance(q, cap).unwrap_or(0.0)
     }
 
-    fn check_discrete(&self, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real]) -> Result<(), Vec2> {
+    fn check_discrete(&self, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real]) -> Result<(), Invalid> {
         if !self.is_valid(b) {
-            return Err(self.project(b));
+            scratch.copy_from_slice(b);
+            return Err(Invalid);
         }
         in_bisection_order(n, |i| {
             self.interpolate(a, b, i as Real / n as Real, scratch);
             if self.is_valid(scratch) {
                 Ok(())
             } else {
-                Err(self.project(scratch))
+                Err(Invalid)
             }
         })
     }
 
     /// Like the discrete check, but computing each state's clearance (capped at the per-step
     /// displacement) and then certifying every interval between checked states.
-    fn check_certified(&self, a: &[Real], b: &[Real], n: usize, disp: Real, scratch: &mut [Real]) -> Result<(), Vec2> {
+    fn check_certified(&self, a: &[Real], b: &[Real], n: usize, disp: Real, scratch: &mut [Real]) -> Result<(), Invalid> {
         let cap = disp / n as Real;
         let mut clear = self.clearances.take();
         clear.clear();
@@ -71,13 +76,14 @@ impl SpaceInfo {
         let outcome = (|| {
             clear[n] = self.clearance_checked(b, cap);
             if clear[n] == 0.0 {
-                return Err(self.project(b));
+                scratch.copy_from_slice(b);
+                return Err(Invalid);
             }
             in_bisection_order(n, |i| {
                 self.interpolate(a, b, i as Real / n as Real, scratch);
                 clear[i] = self.clearance_checked(scratch, cap);
                 if clear[i] == 0.0 {
-                    Err(self.project(scratch))
+                    Err(Invalid)
                 } else {
                     Ok(())
                 }
@@ -96,7 +102,7 @@ impl SpaceInfo {
     }
 
     #[allow(clippy::too_many_arguments)]
-    fn certify(&self, a: &[Real], b: &[Real], lo: (Real, Real), hi: (Real, Real), disp: Real, scratch: &mut [Real], depth: u32) -> Result<(), Vec2> {
+    fn certify(&self, a: &[Real], b: &[Real], lo: (Real, Real), hi: (Real, Real), disp: Real, scratch: &mut [Real], depth: u32) -> Result<(), Invalid> {
         let span = disp * (hi.0 - lo.0);
         if lo.1 + hi.1 > span {
             return Ok(());
@@ -105,7 +111,7 @@ impl SpaceInfo {
         self.interpolate(a, b, tm, scratch);
         let cm = self.clearance_checked(scratch, span);
         if cm == 0.0 || depth >= MAX_DEPTH {
-            return Err(self.project(scratch));
+            return Err(Invalid);
         }
         self.certify(a, b, lo, (tm, cm), disp, scratch, depth + 1)?;
         self.certify(a, b, (tm, cm), hi, disp, scratch, depth + 1)
@@ -113,7 +119,7 @@ impl SpaceInfo {
 }
 
 impl MotionValidator for SpaceInfo {
-    fn check_motion(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Vec2> {
+    fn check_motion(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Invalid> {
         let d = self.distance(a, b);
         let n = self.validity.motion_steps(a, b, d, self.resolution).max(1);
         match self.validity.sweep_hits(a, b) {
@@ -122,7 +128,7 @@ impl MotionValidator for SpaceInfo {
                 self.check_discrete(a, b, n, scratch)?;
                 if hit {
                     self.interpolate(a, b, 0.5, scratch);
-                    return Err(self.project(scratch));
+                    return Err(Invalid);
                 }
                 Ok(())
             }

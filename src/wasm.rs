@@ -42,14 +42,15 @@ fn error_json(e: &ScenarioError) -> JsError {
     )
 }
 
-/// The built-in scenarios as JSON: `[{id, name, notes, scenario}]`.
+/// The built-in scenarios as JSON: `[{id, course, name, notes, scenario}]`, grouped by course.
 #[wasm_bindgen]
 pub fn builtins() -> String {
     let list: Vec<serde_json::Value> = scenario::BUILTINS
         .iter()
         .map(|(id, text)| {
             let sc = Scenario::from_json(text).expect("built-ins are valid");
-            serde_json::json!({"id": id, "name": sc.name, "notes": sc.notes, "scenario": serde_json::from_str::<serde_json::Value>(text).unwrap()})
+            serde_json::json!({"id": id, "course": scenario::course_of(id), "name": sc.name, "notes": sc.notes,
+                               "scenario": serde_json::from_str::<serde_json::Value>(text).unwrap()})
         })
         .collect();
     serde_json::to_string(&list).unwrap()
@@ -72,6 +73,14 @@ pub fn event_kinds() -> String {
     serde_json::json!({"kinds": m, "stride": crate::events::STRIDE}).to_string()
 }
 
+/// Read any supported file (a scenario, a Technion map, an ASV problem) and return it as scenario
+/// JSON; errors are JSON `{path, message, line, column, text}`.
+#[wasm_bindgen]
+pub fn import_file(text: &str, name: &str) -> Result<String, JsError> {
+    let sc = crate::io::import(text, name).map_err(|e| error_json(&e))?;
+    Ok(sc.to_json())
+}
+
 /// A validated scenario: its normalised JSON and the robot's outlines.
 #[wasm_bindgen]
 pub struct Scene {
@@ -90,6 +99,33 @@ impl Scene {
     /// The scenario in the contract's normalised form.
     pub fn scenario_json(&self) -> String {
         self.inner.scenario.to_json()
+    }
+    /// For a two-dimensional planning space (a 2-joint arm, a point): whether each cell centre of an
+    /// `n × n` grid over the space is valid (1) or not (0), row by row from the lowest second
+    /// coordinate; empty for other spaces. State checks made here are not counted.
+    pub fn cspace_grid(&self, n: usize) -> Vec<u8> {
+        let si = &self.inner.si;
+        if si.dims() != 2 || n == 0 || n > 1024 {
+            return Vec::new();
+        }
+        let d = &si.space.dims;
+        let mut out = Vec::with_capacity(n * n);
+        for j in 0..n {
+            for i in 0..n {
+                let q = [
+                    d[0].lo + (i as f64 + 0.5) / n as f64 * (d[0].hi - d[0].lo),
+                    d[1].lo + (j as f64 + 0.5) / n as f64 * (d[1].hi - d[1].lo),
+                ];
+                out.push(u8::from(si.validity.is_valid(&q)));
+            }
+        }
+        out
+    }
+    /// The planning space's dimensions as JSON `[{lo, hi, wraps}]`.
+    pub fn space_json(&self) -> String {
+        let dims: Vec<serde_json::Value> =
+            self.inner.si.space.dims.iter().map(|d| serde_json::json!({"lo": d.lo, "hi": d.hi, "wraps": d.wraps})).collect();
+        serde_json::Value::Array(dims).to_string()
     }
     /// The robot's outline at scenario state `q`, flat: `[n_polygons, n_1, x, y, ..., n_2, ...]`
     /// (empty when `q` is not a state of this robot).

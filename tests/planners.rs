@@ -29,9 +29,18 @@ fn the_checker_rejects_bad_paths() {
 
 #[test]
 fn every_planner_solves_every_builtin_with_valid_paths() {
-    // horn-20 is a benchmark (OMPL solves it in a third of its runs within 30 s), not a test case.
+    // horn-20 is a benchmark (OMPL solves it in a third of its runs within 30 s), not a test case;
+    // an inspection task has no goal for these planners.
     for name in builtin_names().into_iter().filter(|n| *n != "horn-20") {
         let sc = builtin(name).unwrap();
+        if sc.goal.is_none() {
+            continue;
+        }
+        // The vehicle chain's paths are re-checked in tests/asv.rs, in primitive steps, against
+        // the course's own rules (io::asv::check_solution).
+        if matches!(sc.robot, planarium::scenario::RobotSpec::Asv { .. }) {
+            continue;
+        }
         for (planner, params) in setups() {
             let spec = planners::find(planner).unwrap();
             let extent = Problem::from_scenario(&sc).unwrap().si.space.max_extent();

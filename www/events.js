@@ -1,7 +1,7 @@
 // Event records streamed by the worker: fixed-stride Float64Array records
-// [kind, tree, id, parent, x, y, px, py] (see src/events.rs). A test checks these
+// [kind, tree, id, parent, x, y, px, py, c0, c1, pc0, pc1] (see src/events.rs). A test checks these
 // constants against the wasm module's event_kinds().
-export const STRIDE = 8;
+export const STRIDE = 12;
 export const EventKind = Object.freeze({
   SAMPLE: 0,
   SAMPLE_REJECTED: 1,

@@ -82,7 +82,7 @@ fn open_obstacles_allow_touching_but_not_entering() {
     let u = Shape::Polygon(vec![v(0., 0.), v(3., 0.), v(3., 3.), v(2., 3.), v(2., 1.), v(1., 1.), v(1., 3.), v(0., 3.)]);
     assert!(!u.interior_meets_segment(v(1., 3.), v(2., 3.)));
     assert!(!u.interior_meets_segment(v(1., 1.), v(2., 1.)), "along the notch floor");
-    assert!(u.interior_meets_segment(v(0.5, 3.), v(2.5, 3.)) == false, "along the top edges and across the notch mouth");
+    assert!(!u.interior_meets_segment(v(0.5, 3.), v(2.5, 3.)), "along the top edges and across the notch mouth");
     assert!(u.interior_meets_segment(v(0.5, 2.9), v(2.5, 2.9)));
     assert!(!wall.interior_meets_segment(v(0., 1.), v(1., 1.)), "touching a wall");
     assert!(wall.interior_meets_segment(v(-1., 1.), v(1., 1.)), "crossing a wall");

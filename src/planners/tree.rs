@@ -96,14 +96,14 @@ impl Tree {
             return (Grow::Trapped, near);
         }
         let near_state = &self.states[near as usize * self.dims..(near as usize + 1) * self.dims];
-        if let Err(p) = cx.si.check_motion(near_state, new, scratch) {
-            cx.events.at(EventKind::Collision, self.index, p);
+        if cx.si.check_motion(near_state, new, scratch).is_err() {
+            cx.events.at(EventKind::Collision, self.index, cx.si.project(scratch), scratch);
             return (Grow::Trapped, near);
         }
         let id = self.add(cx, new, near);
         cx.nodes_left -= 1;
         let (p, q) = (cx.si.project(new), cx.si.project(self.state(near)));
-        cx.events.push(EventKind::NodeAdded, self.index, id as i64, near as i64, p, q);
+        cx.events.push(EventKind::NodeAdded, self.index, id as i64, near as i64, p, q, new, self.state(near));
         (if reached { Grow::Reached } else { Grow::Advanced }, id)
     }
 

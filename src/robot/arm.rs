@@ -13,11 +13,14 @@
 //! at most twice as fast).
 
 use super::{Robot, Verdict};
-use crate::geometry::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment, intersect_segment_segment, orient};
+use crate::geometry::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment, intersect_segment_segment};
 use crate::geometry::Workspace;
 use crate::math::{angle_diff, Real, Vec2, PI};
 use crate::scenario::RobotSpec;
 use crate::space::{Dim, Metric, StateSpace};
+
+/// How close to ±π a joint's angle may come before its links count as folded.
+const FOLD_TOLERANCE: Real = 1e-9;
 
 /// The most joint points kept on the stack.
 const STACK_POINTS: usize = 40;
@@ -95,17 +98,17 @@ impl ArmRobot {
         self.limits.iter().zip(q).all(|(l, v)| l.is_none_or(|[lo, hi]| *v >= lo && *v <= hi))
     }
 
-    /// Why the arm at joint points `pts` breaks its own rules, if it does.
-    fn self_problem(pts: &[Vec2]) -> Option<&'static str> {
+    /// Why the arm at state `q` (joint points `pts`) breaks its own rules, if it does.
+    fn self_problem(q: &[Real], pts: &[Vec2]) -> Option<&'static str> {
+        // Adjacent links fold onto each other when the joint between them turns by ±π (judged on
+        // the angle: forward kinematics in floating point never makes them exactly collinear).
+        if q[1..].iter().any(|a| (PI - crate::math::wrap_angle(*a).abs()).abs() < FOLD_TOLERANCE) {
+            return Some("two adjacent links fold onto each other");
+        }
         let segs = pts.len() - 1;
         for i in 0..segs {
-            for j in i + 1..segs {
-                if j == i + 1 {
-                    let (a, b, c) = (pts[i], pts[i + 1], pts[i + 2]);
-                    if orient(a, b, c) == 0.0 && (a - b).dot(c - b) > 0.0 {
-                        return Some("two adjacent links fold onto each other");
-                    }
-                } else if intersect_segment_segment(pts[i], pts[i + 1], pts[j], pts[j + 1]) {
+            for j in i + 2..segs {
+                if intersect_segment_segment(pts[i], pts[i + 1], pts[j], pts[j + 1]) {
                     return Some("the arm crosses itself");
                 }
             }
@@ -145,7 +148,7 @@ impl Robot for ArmRobot {
                     return Verdict::Collision(i);
                 }
             }
-            match self.self_collision.then(|| Self::self_problem(pts)).flatten() {
+            match self.self_collision.then(|| Self::self_problem(q, pts)).flatten() {
                 Some(why) => Verdict::Invalid(why),
                 None => Verdict::Valid,
             }

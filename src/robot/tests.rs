@@ -52,3 +52,83 @@ fn point_sweep_catches_a_corner_between_samples() {
     assert_eq!(p.sweep_hits(&w, &a, &b), Some(true), "grazes the corner (0.625, 0.5)");
     assert_eq!(p.sweep_hits(&w, &[0.75, 0.376], &[0.5, 0.626]), Some(false));
 }
+
+mod arm {
+    use super::super::*;
+    use crate::math::PI;
+    use crate::motion::MotionValidator;
+    use crate::problem::Problem;
+    use crate::scenario::Scenario;
+
+    /// A 3-link arm (0.3, 0.2, 0.1) at (0.5, 0.5) beside a wall; `robot_extra` adds robot keys.
+    fn problem(robot_extra: &str) -> Problem {
+        let text = format!(
+            r#"{{"bounds": [0, 0, 1, 1], "obstacles": [{{"rect": [0.85, 0.0, 0.95, 0.4]}}],
+                "robot": {{"kind": "arm", "base": [0.5, 0.5], "links": [0.3, 0.2, 0.1]{robot_extra}}},
+                "start": [1.5, 1.5, 0], "goal": [1.5, 1.5, 0], "resolution": 0.01}}"#
+        );
+        Problem::from_scenario(&Scenario::from_json(&text).unwrap()).unwrap()
+    }
+
+    #[test]
+    fn forward_kinematics_uses_relative_angles() {
+        let RobotSpec::Arm { .. } = &problem("").scenario.robot else { panic!() };
+        let arm = ArmRobot::from_spec(&problem("").scenario.robot).unwrap();
+        let mut pts = [Vec2::default(); 4];
+        arm.joint_points(&[PI / 2.0, -PI / 2.0, 0.0], &mut pts);
+        let want = [(0.5, 0.5), (0.5, 0.8), (0.7, 0.8), (0.8, 0.8)];
+        for (p, w) in pts.iter().zip(want) {
+            assert!((p.x - w.0).abs() < 1e-12 && (p.y - w.1).abs() < 1e-12, "{pts:?}");
+        }
+    }
+
+    #[test]
+    fn every_rule_with_hand_made_states() {
+        let p = problem("");
+        let si = &p.si;
+        assert!(!si.is_valid(&[0.0, 0.0, 0.0]), "straight right ends at x = 1.1: out of bounds");
+        assert!(!si.is_valid(&[PI, 0.0, 0.0]), "straight left ends at x = -0.1: out of bounds");
+        assert!(si.is_valid(&[PI / 2.0, PI / 2.0, 0.0]), "up, then left: inside and free");
+        assert!(!si.is_valid(&[-0.6, 0.0, 0.0]), "down and right, into the wall");
+        assert!(!si.is_valid(&[PI / 2.0, PI, 0.0]), "the second link folded back onto the first");
+        assert!(!si.is_valid(&[PI / 2.0, 2.8, 2.5]), "the third link crosses the first");
+        assert!(problem(r#", "self_collision": false"#).si.is_valid(&[PI / 2.0, 2.8, 2.5]), "allowed without self-collision");
+        let limited = problem(r#", "limits": [[-1, 2], [-1.5, 1.5], [-1.5, 1.5]]"#);
+        assert!(limited.si.is_valid(&[PI / 2.0, 1.0, 0.5]));
+        assert!(!limited.si.is_valid(&[PI / 2.0, 1.6, 0.0]), "second joint past its limit");
+        assert!(!limited.si.is_valid(&[2.1, 0.0, 0.0]), "first joint past its limit");
+    }
+
+    #[test]
+    fn touching_an_obstacle_is_allowed_only_when_the_scenario_says_so() {
+        let text = |top: &str| {
+            format!(
+                r#"{{"bounds": [0, 0, 1, 1], "obstacles": [{{"rect": [0.0, 0.0, 1.0, 0.25]}}],
+                    "robot": {{"kind": "arm", "base": [0.5, 0.5], "links": [0.25]}},
+                    "start": [0], "goal": [0], "resolution": 0.01{top}}}"#
+            )
+        };
+        let closed = Problem::from_scenario(&Scenario::from_json(&text("")).unwrap()).unwrap();
+        let open = Problem::from_scenario(&Scenario::from_json(&text(r#", "touching_allowed": true"#)).unwrap()).unwrap();
+        let down = [-PI / 2.0]; // the link's end at (0.5, 0.25), on the obstacle's top edge
+        assert!(!closed.si.is_valid(&down), "closed obstacles: touching collides");
+        assert!(open.si.is_valid(&down), "open obstacles: touching is allowed");
+    }
+
+    #[test]
+    fn an_arm_cannot_sweep_through_a_thin_post_between_checked_states() {
+        // One link of 0.4 from (0.5, 0.5); a post of radius 0.005 at angle 0.3. At a resolution of
+        // 0.25 rad the checked states (0.2, 0.4, 0.6) all miss it; certification must not.
+        let text = r#"{"bounds": [0, 0, 1, 1], "obstacles": [{"circle": [0.8821, 0.6182, 0.005]}],
+            "robot": {"kind": "arm", "base": [0.5, 0.5], "links": [0.4], "metric": "joint"},
+            "start": [0], "goal": [0.6], "resolution": 0.25}"#;
+        let p = Problem::from_scenario(&Scenario::from_json(text).unwrap()).unwrap();
+        let mut s = [0.0];
+        for q in [0.0, 0.2, 0.4, 0.6] {
+            assert!(p.si.is_valid(&[q]), "checked state {q} is free");
+        }
+        assert!(p.si.check_motion(&[0.0], &[0.6], &mut s).is_err());
+        assert!((s[0] - 0.3).abs() < 0.05, "found near the post: {s:?}");
+        assert!(p.si.check_motion(&[0.0], &[0.2], &mut s).is_ok(), "stopping short of it is fine");
+    }
+}

@@ -8,10 +8,29 @@ pub const BUILTINS: &[(&str, &str)] = &[
     ("open-field", include_str!("../../scenarios/open-field.json")),
     ("narrow", include_str!("../../scenarios/narrow.json")),
     ("slot", include_str!("../../scenarios/slot.json")),
+    ("arm-2", include_str!("../../scenarios/arm-2.json")),
     ("arm-3", include_str!("../../scenarios/arm-3.json")),
     ("horn-10", include_str!("../../scenarios/horn-10.json")),
     ("horn-20", include_str!("../../scenarios/horn-20.json")),
+    ("technion-mp", include_str!("../../scenarios/technion-mp.json")),
+    ("technion-ip", include_str!("../../scenarios/technion-ip.json")),
+    ("asv-3-easy", include_str!("../../scenarios/asv-3-easy.json")),
+    ("asv-3", include_str!("../../scenarios/asv-3.json")),
+    ("asv-7-easy", include_str!("../../scenarios/asv-7-easy.json")),
+    ("asv-7", include_str!("../../scenarios/asv-7.json")),
 ];
+
+/// The course (or source) a built-in scenario comes from, for grouping them in the page.
+pub fn course_of(id: &str) -> &'static str {
+    match id {
+        "slot" | "arm-3" => "Polygon robot and chain (report 003)",
+        "arm-2" => "Configuration space",
+        _ if id.starts_with("horn-") => "OMPL benchmark: kinematic chain",
+        _ if id.starts_with("technion-") => "Technion manipulator and inspection (report 004)",
+        _ if id.starts_with("asv-") => "Vehicles joined by brooms (report 000)",
+        _ => "First steps",
+    }
+}
 
 /// The ids of the built-in scenarios.
 pub fn builtin_names() -> Vec<&'static str> {

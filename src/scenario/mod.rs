@@ -10,7 +10,7 @@ mod error;
 mod parse;
 mod types;
 
-pub use builtin::{builtin, builtin_names, BUILTINS};
+pub use builtin::{builtin, builtin_names, course_of, BUILTINS};
 pub use error::ScenarioError;
 pub use types::{Inspection, ObstacleSpec, PlannerDefaults, RobotSpec, Scenario, FORMAT};
 

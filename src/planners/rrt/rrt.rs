@@ -75,13 +75,13 @@ impl Planner for Rrt {
         } else {
             cx.si.sample_uniform(cx.rng, &mut self.sample);
         }
-        cx.events.at(EventKind::Sample, 0, cx.si.project(&self.sample));
+        cx.events.at(EventKind::Sample, 0, cx.si.project(&self.sample), &self.sample);
         let mut first = true;
         for _ in 0..MAX_CONNECT_STEPS {
             let (grow, id) = tree.extend(cx, &self.sample, self.range, &mut self.scratch, &mut self.new);
             if grow == Grow::Trapped {
                 if first {
-                    cx.events.at(EventKind::SampleRejected, 0, cx.si.project(&self.sample));
+                    cx.events.at(EventKind::SampleRejected, 0, cx.si.project(&self.sample), &self.sample);
                 }
                 return None;
             }
@@ -92,7 +92,7 @@ impl Planner for Rrt {
                 if to_goal > 0.0 {
                     path.push(self.task.goal.clone());
                 }
-                cx.events.at(EventKind::Solved, 0, cx.si.project(&self.task.goal));
+                cx.events.at(EventKind::Solved, 0, cx.si.project(&self.task.goal), &self.task.goal);
                 return Some(path);
             }
             if grow == Grow::Reached || !self.connect {

@@ -65,10 +65,10 @@ impl Planner for RrtConnect {
         let (a, b) = (self.turn, 1 - self.turn);
         self.turn = b;
         cx.si.sample_uniform(cx.rng, &mut self.sample);
-        cx.events.at(EventKind::Sample, a, cx.si.project(&self.sample));
+        cx.events.at(EventKind::Sample, a, cx.si.project(&self.sample), &self.sample);
         let (grow, added) = self.trees[a].extend(cx, &self.sample, self.range, &mut self.scratch, &mut self.new);
         if grow == Grow::Trapped {
-            cx.events.at(EventKind::SampleRejected, a, cx.si.project(&self.sample));
+            cx.events.at(EventKind::SampleRejected, a, cx.si.project(&self.sample), &self.sample);
             return None;
         }
         self.target.copy_from_slice(self.trees[a].state(added));
@@ -77,8 +77,8 @@ impl Planner for RrtConnect {
             Grow::Trapped | Grow::Advanced => None,
             Grow::Reached => {
                 let p = cx.si.project(&self.target);
-                cx.events.push(EventKind::TreesConnected, a, added as i64, reached as i64, p, p);
-                cx.events.at(EventKind::Solved, a, cx.si.project(&self.task.goal));
+                cx.events.push(EventKind::TreesConnected, a, added as i64, reached as i64, p, p, &self.target, &self.target);
+                cx.events.at(EventKind::Solved, a, cx.si.project(&self.task.goal), &self.task.goal);
                 let (from_start, from_goal) = if a == 0 { (added, reached) } else { (reached, added) };
                 let mut path = self.trees[0].path_to(from_start);
                 let mut tail = self.trees[1].path_to(from_goal);
