@@ -191,6 +191,14 @@ impl Run {
     pub fn result_json(&self) -> String {
         self.inner.result().to_json()
     }
+    /// For a solved vehicle-chain (asv) run: the course's solution file for the smoothed path, in
+    /// primitive steps of at most `max_step`. An error for other robots or an unsolved run.
+    pub fn asv_solution(&self) -> Result<String, JsError> {
+        if self.inner.status() != crate::status::Status::Solved {
+            return Err(JsError::new("the run is not solved"));
+        }
+        crate::io::asv::solution_text(self.inner.problem(), self.inner.planning_path(false)).map_err(|e| JsError::new(&e))
+    }
     /// The smoothed path (raw path if `raw`) sampled every `spacing` (robot metric) for animation,
     /// flat: `[dims, frames, then per frame: state…, outline (as [`Scene::outline`])…]`: each frame
     /// is `dims` numbers (a scenario state) then its outline.

@@ -2,14 +2,18 @@
 // Read-only state for tests is exposed as window.planarium (nothing else is global).
 
 import { Controller, BUTTONS } from './controller.js';
-import { View } from './view.js';
+import { View, PALETTE } from './view.js';
+import { CSpaceView } from './cspace.js';
+import { Editor } from './editor.js';
+import { fitViews, downloadText } from './stage.js';
 import { createPanel } from './panel.js';
 import { Playback } from './playback.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
   scenario: $('scenario'), file: $('file'), error: $('error'), errorText: $('error-text'), errorClose: $('error-close'),
-  stage: $('stage'), canvas: $('canvas'), name: $('scenario-name'), notes: $('scenario-notes'), legend: $('legend'),
+  stage: $('stage'), canvas: $('canvas'), cspace: $('cspace'), course: $('scenario-course'), name: $('scenario-name'),
+  notes: $('scenario-notes'), legend: $('legend'), endpoints: $('endpoints'), download: $('download-solution'),
   panel: $('panel'), stepSize: $('step-size'), speed: $('speed'), speedOut: $('speed-out'),
   animSpeed: $('anim-speed'), animOut: $('anim-speed-out'), showRejected: $('show-rejected'),
   showCollisions: $('show-collisions'), animRaw: $('anim-raw'), status: $('status'), stats: $('stats'),
@@ -18,6 +22,7 @@ const ui = {
 const controller = new Controller('loading');
 const playback = new Playback();
 const view = new View(ui.canvas, playback.store);
+const cspace = new CSpaceView(ui.cspace, playback.store, PALETTE);
 
 // Worker session
 let worker = null;
@@ -28,7 +33,10 @@ let registry = null;     // {planners, run_params} from the first `ready`
 let panel = null;
 let builtins = [];
 let scenarioText = null; // the last valid scenario (reloaded after a crash)
-let sentText = null;     // the text of the latest `load`
+let sentEdit = false;    // the latest `load` is a start/goal edit
+let course = '';         // the course of the scenario being loaded
+let canWriteAsv = false; // the core writes ASV solution files
+let loaded = null;       // the latest `loaded` message's scenario
 let applyDefaults = false;
 let crashes = [];
 
@@ -79,8 +87,8 @@ function onMessage(msg) {
       latestRun = msg.run;
       bumpsPending = Math.max(0, bumpsPending - 1);
       if (--loadsPending > 0) return; // a newer load is on its way
-      scenarioText = sentText;
-      showScenario(msg.scenario, msg.start, msg.goal);
+      scenarioText = JSON.stringify(msg.scenario);
+      showScenario(msg);
       if (applyDefaults) panel.apply(msg.scenario.planner);
       applyDefaults = false;
       configure(); // fires 'configure' only from states that allow it; then 'loaded' below
@@ -91,7 +99,7 @@ function onMessage(msg) {
       latestRun = msg.run;
       bumpsPending = Math.max(0, bumpsPending - 1);
       if (--loadsPending > 0) return;
-      showInvalid(msg.error);
+      showInvalid(msg.error, sentEdit);
       return;
     }
     case 'status':
@@ -113,6 +121,7 @@ function onMessage(msg) {
       result = msg.result;
       workerDone = true;
       view.setResult(msg.result, msg.frames, msg.rawFrames);
+      cspace.setResult(msg.result);
       maybeFinish();
       updateStats();
       return;
@@ -120,6 +129,9 @@ function onMessage(msg) {
       showError(msg.message);
       stepPending = revealOnePending = false;
       if (!workerDone && controller.fire('fail')) clearRun();
+      return;
+    case 'asv-solution':
+      if (msg.run === latestRun) downloadText(msg.text, `${(loaded?.name || 'solution').replace(/[^\w.-]+/g, '_')}-solution.txt`);
       return;
     case 'crashed':
       recover(msg.message);
@@ -134,25 +146,38 @@ function onReady(msg) {
     registry = msg.planners;
     builtins = msg.builtins;
     panel = createPanel(ui.panel, registry, () => { configure(); clearError(); });
-    for (const b of builtins) ui.scenario.append(new Option(b.name, b.id));
+    canWriteAsv = !!msg.asvSolution;
+    const groups = new Map(); // course → optgroup, in the order given
+    for (const b of builtins) {
+      if (!groups.has(b.course)) {
+        const g = document.createElement('optgroup');
+        g.label = b.course || 'Other';
+        groups.set(b.course, g);
+        ui.scenario.append(g);
+      }
+      groups.get(b.course).append(new Option(b.name, b.id));
+    }
     const first = builtins.find((b) => b.id === new URLSearchParams(location.search).get('scenario')) || builtins[0];
     ui.scenario.value = first.id;
-    load(JSON.stringify(first.scenario), true);
+    load(JSON.stringify(first.scenario), true, { course: first.course });
   } else if (scenarioText) {
-    load(scenarioText, false); // after a crash: same scenario, same configuration
+    load(scenarioText, false, { course }); // after a crash: same scenario, same configuration
   }
 }
 
 // Requests
 
-function load(text, defaults) {
-  sentText = text;
+/** Send a scenario (or, with `file`, any file the core imports) to the worker. */
+function load(text, defaults, { course: c = course, edit = false, file = null } = {}) {
+  sentEdit = edit;
+  course = c;
   applyDefaults = defaults;
   loadsPending++;
   bumpsPending++;
+  if (!edit) editor.loading();
   clearRun();
   controller.fire('load');
-  send({ type: 'load', text });
+  send(file ? { type: 'import', text, name: file } : { type: 'load', text });
 }
 
 function configure() {
@@ -216,6 +241,7 @@ function resetRun() {
 function clearRun() {
   playback.clear();
   view.clearRun();
+  cspace.clearRun();
   workerStats = null;
   finalStatus = null;
   result = null;
@@ -223,18 +249,20 @@ function clearRun() {
   stepPending = false;
   revealOnePending = false;
   updateStats();
+  syncDownload();
 }
 
 function reveal([from, to]) {
-  if (to > from) view.drawRecords(from, to);
+  if (to > from) { view.drawRecords(from, to); cspace.drawRecords(from, to); }
   maybeFinish();
 }
 
 function maybeFinish() {
   if (workerDone && playback.pending === 0 && controller.fire('finish')) updateStats();
   if (controller.state === 'finished' && result && !view.showResult) {
-    view.showResult = true;
-    view.dirty = true;
+    view.showResult = cspace.showResult = true;
+    view.dirty = cspace.dirty = true;
+    syncDownload();
   }
 }
 
@@ -250,25 +278,49 @@ function frame(time) {
   if (controller.state === 'running' && playback.pending > 0) reveal(playback.tick(speedRate(), dt));
   else if (controller.state === 'running') maybeFinish();
   view.render(time, animFps());
+  cspace.render(view.robotState);
   requestAnimationFrame(frame);
 }
 
 // Display
 
-function showScenario(scenario, start, goal) {
+function showScenario({ scenario, start, goal, space, cspace: grid }) {
+  loaded = scenario;
+  ui.course.textContent = course;
   ui.name.textContent = scenario.name || 'Untitled scenario';
   ui.notes.textContent = scenario.notes || '';
   view.setScenario(scenario, start, goal);
+  cspace.setSpace(grid || null, scenario.start, scenario.goal);
+  editor.setScenario(scenario, space, sentEdit);
+  ui.cspace.hidden = !cspace.active;
+  ui.stage.classList.toggle('dual', cspace.active);
+  buildLegend();
+  onResize();
 }
 
-function showInvalid(error) {
+function showInvalid(error, edit) {
   const where = [error.path, error.line != null ? `line ${error.line}` : null,
     error.column != null ? `column ${error.column}` : null].filter(Boolean).join(', ');
-  showError(`This scenario has an error${where ? ` at ${where}` : ''}: ${error.message || error.text}`);
-  ui.name.textContent = 'No valid scenario';
-  ui.notes.textContent = 'Fix the file and open it again, or pick a built-in scenario.';
-  view.setScenario(null);
+  if (edit) {
+    const which = /^(start|goal)\b/.exec(error.path || '')?.[1] || 'start or goal';
+    showError(`The new ${which} is not valid${/^(start|goal)$/.test(error.path) ? '' : ` at ${where}`}: ` +
+      `${error.message || error.text}\nMove it back to a free place, restore it, or pick another scenario.`);
+  } else {
+    showError(`This scenario has an error${where ? ` at ${where}` : ''}: ${error.message || error.text}`);
+  }
   clearRun();
+  if (!edit) { // an edit keeps the scene on screen, so the start or goal can be dragged back
+    loaded = null;
+    ui.course.textContent = '';
+    ui.name.textContent = 'No valid scenario';
+    ui.notes.textContent = 'Fix the file and open it again, or pick a built-in scenario.';
+    view.setScenario(null);
+    cspace.setSpace(null);
+    editor.setScenario(null, null, false);
+    ui.cspace.hidden = true;
+    ui.stage.classList.remove('dual');
+    onResize();
+  }
   controller.fire('invalid');
 }
 
@@ -334,6 +386,27 @@ function buildLegend() {
   }));
 }
 
+// Start / goal editing and the solution file
+
+const editor = new Editor({
+  canvas: ui.canvas, view, root: ui.endpoints, palette: PALETTE,
+  onPreview(which, state) {
+    view.preview[which] = state.slice();
+    view.dirty = true;
+    cspace.setStartGoal(view.stateOf('start'), view.stateOf('goal'));
+  },
+  onCommit(scenario) {
+    clearError();
+    load(JSON.stringify(scenario), false, { edit: true });
+  },
+});
+
+function syncDownload() {
+  ui.download.hidden = !(canWriteAsv && loaded?.robot?.kind === 'asv' && result?.solved && controller.state === 'finished');
+}
+
+ui.download.addEventListener('click', () => { if (worker && result?.solved) send({ type: 'asv-solution' }); });
+
 // Inputs
 
 for (const [id, event] of Object.entries(BUTTONS)) $(id).addEventListener('click', () => actions[event]());
@@ -344,7 +417,7 @@ ui.scenario.addEventListener('change', () => {
   if (!b) return;
   clearError();
   for (const o of [...ui.scenario.options]) if (o.dataset.file) o.remove();
-  load(JSON.stringify(b.scenario), true);
+  load(JSON.stringify(b.scenario), true, { course: b.course });
 });
 
 ui.file.addEventListener('change', async () => {
@@ -361,7 +434,7 @@ ui.file.addEventListener('change', async () => {
   ui.scenario.append(opt);
   ui.scenario.value = '';
   opt.selected = true;
-  load(text, true);
+  load(text, true, { course: 'Opened file', file: file.name });
 });
 
 function updateOutputs() {
@@ -371,9 +444,10 @@ function updateOutputs() {
 }
 ui.speed.addEventListener('input', updateOutputs);
 ui.animSpeed.addEventListener('input', updateOutputs);
-const syncOptions = () => view.setOptions({
-  showRejected: ui.showRejected.checked, showCollisions: ui.showCollisions.checked, animateRaw: ui.animRaw.checked,
-});
+const syncOptions = () => {
+  view.setOptions({ showRejected: ui.showRejected.checked, showCollisions: ui.showCollisions.checked, animateRaw: ui.animRaw.checked });
+  cspace.setOptions({ showRejected: ui.showRejected.checked, showCollisions: ui.showCollisions.checked });
+};
 for (const box of [ui.showRejected, ui.showCollisions, ui.animRaw]) box.addEventListener('change', syncOptions);
 
 document.addEventListener('keydown', (e) => {
@@ -391,30 +465,15 @@ document.addEventListener('keydown', (e) => {
   }
 });
 
-// Size: keep the bounds' aspect ratio inside the stage, in device pixels.
-let dprQuery = null;
-function onResize() {
-  const r = ui.stage.getBoundingClientRect();
-  const cs = getComputedStyle(ui.stage);
-  const w = r.width - parseFloat(cs.paddingLeft) - parseFloat(cs.paddingRight);
-  const h = r.height - parseFloat(cs.paddingTop) - parseFloat(cs.paddingBottom);
-  view.resize(Math.max(40, w), Math.max(40, h), window.devicePixelRatio || 1);
-}
-function watchDpr() {
-  dprQuery?.removeEventListener('change', onDprChange);
-  dprQuery = matchMedia(`(resolution: ${window.devicePixelRatio || 1}dppx)`);
-  dprQuery.addEventListener('change', onDprChange);
-}
-function onDprChange() { watchDpr(); onResize(); }
-new ResizeObserver(onResize).observe(ui.stage);
-watchDpr();
-onResize();
+// Size: the views follow the stage (and the device pixel ratio).
+const onResize = fitViews(ui.stage, view, cspace);
 
 Object.defineProperty(window, 'planarium', {
   value: Object.freeze({
     state: () => controller.state,
     stats: () => currentStats(),
     result: () => (result ? structuredClone(result) : null),
+    scenario: () => (editor.scenario ? structuredClone(editor.scenario) : null),
     nodeCount: () => playback.nodeCount,
   }),
   writable: false,

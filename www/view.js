@@ -9,6 +9,7 @@
 // distinguishable with the common colour-vision deficiencies (they also differ in lightness).
 
 import { EventKind, STRIDE } from './events.js';
+import { drawRobotShape, drawInspection, robotStyle, outlineOf, footprintRadius } from './robots.js';
 
 export const PALETTE = Object.freeze({
   background: '#eef0f3',
@@ -29,6 +30,8 @@ export const PALETTE = Object.freeze({
   pathCasing: '#3d2f00',
   robot: 'rgba(48, 52, 59, 0.55)',
   robotEdge: '#111111',
+  inspection: '#56b4e9',
+  handle: '#ffffff',
 });
 
 // How each event kind is drawn. `layer`: 'tree' (persistent, incremental) or 'marker' (top layer).
@@ -123,6 +126,9 @@ export class View {
     this.start = [];
     this.goal = [];
     this.options = { showRejected: false, showCollisions: true, animateRaw: false };
+    this.preview = { start: null, goal: null }; // states being edited (drawn instead of start/goal)
+    this.editable = false;                       // draw the rotation handles of a rigid body
+    this.robotState = null;                      // the animated robot's state, after render()
     this.clearRun();
   }
 
@@ -144,6 +150,7 @@ export class View {
     this.scenario = scenario;
     this.start = scenario ? parseOutline(start).polys : [];
     this.goal = scenario && goal && goal.length ? parseOutline(goal).polys : [];
+    this.preview = { start: null, goal: null };
     this.clearRun();
     this.relayout();
   }
@@ -182,11 +189,28 @@ export class View {
 
   /** Paths and animation frames of a finished run; shown once `showResult` is set. */
   setResult(result, frames, rawFrames) {
-    const xy = (states) => (states || []).map((s) => [s[0], s[1]]);
-    this.path = result && result.solved ? xy(result.path) : null;
-    this.smoothed = result && result.solved ? xy(result.smoothed) : null;
     this.frames = parseFrames(frames);
     this.rawFrames = parseFrames(rawFrames);
+    const solved = !!(result && result.solved);
+    if (this.scenario?.robot?.kind === 'arm') {
+      // the path as the end effector traces it (the last point of the arm's polyline)
+      const tip = (list) => list.filter((f) => f.polys.length && f.polys[0].length >= 2)
+        .map(({ polys: [p] }) => [p[p.length - 2], p[p.length - 1]]);
+      this.path = solved ? tip(this.rawFrames) : null;
+      this.smoothed = solved ? tip(this.frames) : null;
+    } else if (this.scenario?.robot?.kind === 'asv') { // the chain's centroid, where its tree is drawn
+      const mid = (states) => (states || []).map((s) => {
+        let x = 0, y = 0;
+        for (let i = 0; i + 1 < s.length; i += 2) { x += s[i]; y += s[i + 1]; }
+        return [x / (s.length / 2), y / (s.length / 2)];
+      });
+      this.path = solved ? mid(result.path) : null;
+      this.smoothed = solved ? mid(result.smoothed) : null;
+    } else {
+      const xy = (states) => (states || []).map((s) => [s[0], s[1]]);
+      this.path = solved ? xy(result.path) : null;
+      this.smoothed = solved ? xy(result.smoothed) : null;
+    }
     this.dirty = true;
   }
 
@@ -276,10 +300,14 @@ export class View {
     this.dirty = true;
   }
 
-  /** Composite the layers and draw the top layer. `time` in ms drives the robot animation. */
+  /**
+   * Composite the layers and draw the top layer. `time` in ms drives the robot animation; the
+   * animated robot's state is left in `robotState` (null when there is none).
+   */
   render(time, animFps) {
     if (!this.layout) return;
     const animating = this.showResult && this.frames.length > 0;
+    if (!animating) this.robotState = null;
     if (!this.dirty && !animating) return;
     this.dirty = false;
     const { ctx } = this;
@@ -288,8 +316,14 @@ export class View {
     ctx.drawImage(this.sceneLayer.canvas, 0, 0);
     ctx.drawImage(this.treeLayer.canvas, 0, 0);
     if (!this.scenario) return;
-    drawFootprint(ctx, L, this.start, this.scenario.start, PALETTE.start);
-    if (this.scenario.goal) drawFootprint(ctx, L, this.goal, this.scenario.goal, PALETTE.goal);
+    drawInspection(ctx, L, this.scenario.inspection?.points, PALETTE.inspection, PALETTE.robotEdge);
+    for (const which of ['start', 'goal']) {
+      const state = this.stateOf(which);
+      if (!state) continue;
+      const polys = this.preview[which] ? outlineOf(this.scenario.robot, state) : this[which];
+      drawRobotShape(ctx, L, this.scenario.robot, polys, state, robotStyle(PALETTE[which], which, PALETTE));
+      if (this.editable) this.drawHandle(ctx, which);
+    }
     for (const [kind, x, y] of this.markers) drawMarker(ctx, L, STYLE[kind], x, y);
     if (!this.showResult && this.lastSample) drawMarker(ctx, L, STYLE[EventKind.SAMPLE], ...this.lastSample);
     if (this.showResult && this.path) {
@@ -299,16 +333,47 @@ export class View {
       drawPolyline(ctx, L, this.smoothed, PALETTE.pathCasing, L.px(6));
       drawPolyline(ctx, L, this.smoothed, PALETTE.smoothPath, L.px(4));
     }
-    if (animating) {
-      const frames = this.options.animateRaw && this.rawFrames.length ? this.rawFrames : this.frames;
-      const k = Math.floor((time / 1000) * animFps) % frames.length;
-      drawRobot(ctx, L, frames[k]);
-    }
+    if (!animating) return;
+    const frames = this.options.animateRaw && this.rawFrames.length ? this.rawFrames : this.frames;
+    const frame = frames[Math.floor((time / 1000) * animFps) % frames.length];
+    drawRobotShape(ctx, L, this.scenario.robot, frame.polys, frame.state, robotStyle(null, 'robot', PALETTE));
+    this.robotState = frame.state;
+  }
+
+  /** The start or goal state shown: the one being edited, else the scenario's. */
+  stateOf(which) {
+    return this.preview[which] || (this.scenario && this.scenario[which]) || null;
+  }
+
+  /** Screen position (device px) of a rigid body's rotation handle, or null. */
+  handlePoint(which) {
+    const q = this.stateOf(which);
+    if (!this.layout || !q || this.scenario.robot?.kind !== 'rigid') return null;
+    const L = this.layout;
+    const r = footprintRadius(this.scenario.robot) * L.scale + L.px(14);
+    return { x: L.sx(q[0]) + r * Math.cos(q[2]), y: L.sy(q[1]) - r * Math.sin(q[2]), cx: L.sx(q[0]), cy: L.sy(q[1]) };
+  }
+
+  drawHandle(ctx, which) {
+    const h = this.handlePoint(which);
+    if (!h) return;
+    const L = this.layout;
+    ctx.beginPath();
+    ctx.moveTo(h.cx, h.cy);
+    ctx.lineTo(h.x, h.y);
+    ctx.strokeStyle = PALETTE[which];
+    ctx.lineWidth = L.px(1.5);
+    ctx.stroke();
+    ctx.beginPath();
+    ctx.arc(h.x, h.y, L.px(5), 0, 2 * Math.PI);
+    ctx.fillStyle = PALETTE.handle;
+    ctx.fill();
+    ctx.stroke();
   }
 
   /** [{label, color, shape}] for the legend under the canvas, from the palette and style table. */
   legend() {
-    return [
+    const items = [
       { label: 'obstacle', color: PALETTE.obstacle, shape: 'box' },
       { label: 'start', color: PALETTE.start, shape: 'box' },
       { label: 'goal', color: PALETTE.goal, shape: 'box' },
@@ -320,6 +385,10 @@ export class View {
       { label: 'smoothed path', color: PALETTE.smoothPath, shape: 'thick' },
       { label: 'robot', color: PALETTE.robot, shape: 'box' },
     ];
+    if (this.scenario?.inspection?.points?.length) {
+      items.push({ label: 'inspection point', color: PALETTE.inspection, shape: 'box' });
+    }
+    return items;
   }
 }
 
@@ -365,27 +434,6 @@ function drawObstacle(ctx, L, ob) {
   ctx.stroke();
 }
 
-function drawFootprint(ctx, L, polys, state, color) {
-  ctx.strokeStyle = color;
-  ctx.fillStyle = color;
-  ctx.lineWidth = L.px(2);
-  if (!polys.length) { // a point robot: a dot at the state's (x, y)
-    ctx.beginPath();
-    ctx.arc(L.sx(state[0]), L.sy(state[1]), L.px(6), 0, 2 * Math.PI);
-    ctx.fill();
-    ctx.strokeStyle = PALETTE.robotEdge;
-    ctx.lineWidth = L.px(1);
-    ctx.stroke();
-    return;
-  }
-  ctx.globalAlpha = 0.45;
-  ctx.beginPath();
-  for (const p of polys) tracePoly(ctx, L, p);
-  ctx.fill();
-  ctx.globalAlpha = 1;
-  ctx.stroke();
-}
-
 function drawMarker(ctx, L, style, x, y) {
   const r = L.px(style.size);
   ctx.beginPath();
@@ -413,19 +461,4 @@ function drawPolyline(ctx, L, pts, color, width, dash = []) {
   ctx.stroke();
   ctx.setLineDash([]);
   ctx.lineCap = 'butt';
-}
-
-function drawRobot(ctx, L, frame) {
-  if (!frame) return;
-  ctx.fillStyle = PALETTE.robot;
-  ctx.strokeStyle = PALETTE.robotEdge;
-  ctx.lineWidth = L.px(1.5);
-  ctx.beginPath();
-  if (frame.polys.length) {
-    for (const p of frame.polys) tracePoly(ctx, L, p);
-  } else {
-    ctx.arc(L.sx(frame.state[0]), L.sy(frame.state[1]), L.px(5), 0, 2 * Math.PI);
-  }
-  ctx.fill();
-  ctx.stroke();
 }

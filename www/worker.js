@@ -2,28 +2,36 @@
 //
 // Messages in  {type, ...}:
 //   load      {text}                         validate a scenario (JSON text) and keep it
+//   import    {text, name}                   read any supported file (scenario, Technion map, ASV
+//                                            problem .txt) and proceed as `load` with the scenario
 //   configure {planner, params, seed}        choose the planner set-up for the next run
 //   run       {}                             start (or resume) planning; streams events
 //   pause     {}                             stop stepping, keep the run
 //   step      {iterations}                   run exactly that many iterations, then pause
 //   reset     {}                             drop the run (the next run starts from the seed)
 //   cancel    {}                             stop the run now; it is finished
+//   asv-solution {}                          the finished run's path as an ASV solution file
 // Messages out {type, run, ...}:
-//   ready     {builtins, planners, eventKinds}
-//   loaded    {scenario, start, goal}        normalised scenario; start/goal outlines (flat)
+//   ready     {builtins, planners, eventKinds, asvSolution}   asvSolution: the core can write one
+//   loaded    {scenario, start, goal, space, cspace?}  normalised scenario; start/goal outlines
+//                                            (flat); space: the planning space [{lo, hi, wraps}];
+//                                            cspace {n, grid: Uint8Array (transferred), dims} for a
+//                                            2-D arm: n×n validity, rows from the lowest 2nd coordinate
 //   invalid   {error: {path, message, line, column, text}}
 //   events    {data: Float64Array, stats, status}   transferred, once per batch
 //   result    {result, frames: Float64Array, rawFrames: Float64Array}
 //   status    {status}
+//   asv-solution {text}
 //   error     {message}                      a bad request; the worker stays usable
 //   crashed   {message}                      the core panicked; the page must replace this worker
 // `run` is a counter bumped on every run/reset/load, so the page can drop stale replies.
 
-import init, { Scene, Run, builtins, planners, event_kinds, install_panic_hook, last_panic, debug_panic }
+import init, { Scene, Run, builtins, import_file, planners, event_kinds, install_panic_hook, last_panic, debug_panic }
   from './pkg/planarium.js';
 
 const BATCH_MS = 12;          // one batch of planning, then yield to the message queue
 const FRAME_SPACING = 0.004;  // animation frames along the path, in the robot's metric
+const CSPACE_N = 128;         // cells per side of the configuration-space grid
 
 let scene = null;       // current Scene
 let scenarioText = null;
@@ -36,7 +44,7 @@ let dead = false;
 const ready = init().then(() => {
   install_panic_hook();
   post({ type: 'ready', builtins: JSON.parse(builtins()), planners: JSON.parse(planners()),
-         eventKinds: JSON.parse(event_kinds()) });
+         eventKinds: JSON.parse(event_kinds()), asvSolution: typeof Run.prototype.asv_solution === 'function' });
 });
 
 function post(msg, transfer = []) {
@@ -81,25 +89,51 @@ function parseError(e) {
   try { return JSON.parse(e.message); } catch { return { message: String(e.message || e), text: String(e.message || e) }; }
 }
 
+function load(text) {
+  freeRun();
+  runId++;
+  let next;
+  try {
+    next = new Scene(text);
+  } catch (e) {
+    post({ type: 'invalid', run: runId, error: parseError(e) });
+    return;
+  }
+  if (scene) scene.free();
+  scene = next;
+  scenarioText = scene.scenario_json();
+  const sc = JSON.parse(scenarioText);
+  const start = scene.outline(new Float64Array(sc.start));
+  const goal = sc.goal ? scene.outline(new Float64Array(sc.goal)) : new Float64Array(0);
+  const space = JSON.parse(scene.space_json());
+  const msg = { type: 'loaded', run: runId, scenario: sc, start, goal, space };
+  const transfer = [];
+  if (space.length === 2 && sc.robot && sc.robot.kind === 'arm') {
+    const grid = scene.cspace_grid(CSPACE_N);
+    if (grid.length === CSPACE_N * CSPACE_N) {
+      msg.cspace = { n: CSPACE_N, grid, dims: space };
+      transfer.push(grid.buffer);
+    }
+  }
+  post(msg, transfer);
+}
+
 function handle(msg) {
   switch (msg.type) {
-    case 'load': {
-      freeRun();
-      runId++;
-      let next;
+    case 'load':
+      load(msg.text);
+      return;
+    case 'import': {
+      let text;
       try {
-        next = new Scene(msg.text);
+        text = import_file(String(msg.text), String(msg.name || ''));
       } catch (e) {
+        freeRun();
+        runId++;
         post({ type: 'invalid', run: runId, error: parseError(e) });
         return;
       }
-      if (scene) scene.free();
-      scene = next;
-      scenarioText = scene.scenario_json();
-      const sc = JSON.parse(scenarioText);
-      const start = scene.outline(new Float64Array(sc.start));
-      const goal = sc.goal ? scene.outline(new Float64Array(sc.goal)) : new Float64Array(0);
-      post({ type: 'loaded', run: runId, scenario: sc, start, goal });
+      load(text);
       return;
     }
     case 'configure':
@@ -134,6 +168,13 @@ function handle(msg) {
       return;
     case 'cancel':
       if (run) { run.cancel(); running = false; flush('cancelled'); }
+      return;
+    case 'asv-solution':
+      if (!run || typeof run.asv_solution !== 'function') {
+        post({ type: 'error', run: runId, message: 'no solution file can be written for this run' });
+        return;
+      }
+      post({ type: 'asv-solution', run: runId, text: run.asv_solution() });
       return;
     case 'debug-panic':
       debug_panic(msg.message || 'debug panic requested');

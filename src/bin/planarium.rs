@@ -48,7 +48,13 @@ fn cli() -> Command {
                 .arg(scenario_arg.clone())
                 .arg(Arg::new("planner").long("planner").default_value("rrt-connect").help("Planner name"))
                 .arg(Arg::new("seed").long("seed").default_value("1").value_parser(clap::value_parser!(u64)).help("Seed"))
-                .arg(Arg::new("json").long("json").action(ArgAction::SetTrue).help("Print the result JSON of the contract")),
+                .arg(Arg::new("json").long("json").action(ArgAction::SetTrue).help("Print the result JSON of the contract"))
+                .arg(
+                    Arg::new("asv-solution")
+                        .long("asv-solution")
+                        .value_name("FILE")
+                        .help("For an ASV problem: write the smoothed path as the course's solution file (primitive steps of at most max_step)"),
+                ),
         ))
         .subcommand(with_param_flags(
             Command::new("bench")
@@ -110,6 +116,15 @@ fn plan(m: &ArgMatches) -> Result<(), String> {
     let mut s = Session::new(problem, RunConfig { planner: spec.name.into(), params, seed, record_events: false })?;
     s.run_to_end();
     let r = s.result();
+    if let Some(file) = m.get_one::<String>("asv-solution") {
+        if !r.solved {
+            return Err(format!("{}: not solved ({}), so no solution written to {file}", sc.name, r.status));
+        }
+        let text = planarium::io::asv::solution_text(s.problem(), s.planning_path(false))?;
+        std::fs::write(file, &text).map_err(|e| format!("{file}: {e}"))?;
+        let steps = text.split_whitespace().next().unwrap_or("0");
+        eprintln!("wrote {file}: {steps} primitive steps");
+    }
     if m.get_flag("json") {
         println!("{}", r.to_json());
     } else {

@@ -14,6 +14,10 @@ pub const BUILTINS: &[(&str, &str)] = &[
     ("horn-20", include_str!("../../scenarios/horn-20.json")),
     ("technion-mp", include_str!("../../scenarios/technion-mp.json")),
     ("technion-ip", include_str!("../../scenarios/technion-ip.json")),
+    ("asv-3-easy", include_str!("../../scenarios/asv-3-easy.json")),
+    ("asv-3", include_str!("../../scenarios/asv-3.json")),
+    ("asv-7-easy", include_str!("../../scenarios/asv-7-easy.json")),
+    ("asv-7", include_str!("../../scenarios/asv-7.json")),
 ];
 
 /// The course (or source) a built-in scenario comes from, for grouping them in the page.
@@ -23,6 +27,7 @@ pub fn course_of(id: &str) -> &'static str {
         "arm-2" => "Configuration space",
         _ if id.starts_with("horn-") => "OMPL benchmark: kinematic chain",
         _ if id.starts_with("technion-") => "Technion manipulator and inspection (report 004)",
+        _ if id.starts_with("asv-") => "Vehicles joined by brooms (report 000)",
         _ => "First steps",
     }
 }

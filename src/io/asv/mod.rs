@@ -1,0 +1,252 @@
+//! The ASV course's problem and solution files (courses.md §1).
+//!
+//! - [`import_problem`] reads a problem file (vehicle count, initial and goal positions, obstacle
+//!   rectangles as four corners each) into a scenario with the course's settings.
+//! - [`solution_text`] writes a planned path as the course's solution file: every motion cut into
+//!   primitive steps in which no vehicle moves more than `max_step` (exactly the states the planner
+//!   checked), first and last line the problem's own initial and goal positions.
+//! - [`read_solution`] reads a solution file back, and [`check_solution`] re-checks it against the
+//!   course's rules, independently of the robot's code (positions, not planning states; the
+//!   course's own turning-angle test of convexity; parametric clipping against the rectangles).
+
+mod check;
+
+pub use check::{check_configuration, check_solution, max_move, path_cost};
+
+use crate::math::Real;
+use crate::problem::Problem;
+use crate::scenario::{ObstacleSpec, PlannerDefaults, RobotSpec, Scenario, ScenarioError, FORMAT};
+
+/// The course's tolerance `e` on every rule.
+pub const TOLERANCE: Real = 1e-5;
+/// The course's broom length.
+pub const BROOM: Real = 0.05;
+/// The course's primitive step: the most any vehicle moves between two configurations.
+pub const MAX_STEP: Real = 0.001;
+
+/// The smallest area the course allows a chain of `n` vehicles: `π·(0.007·(n−1))²`.
+pub fn min_area(n: usize) -> Real {
+    std::f64::consts::PI * (0.007 * (n as Real - 1.0)).powi(2)
+}
+
+/// An error at a line and column (both 1-based) of a text file.
+fn at(line: usize, column: usize, message: impl Into<String>) -> ScenarioError {
+    ScenarioError { path: String::new(), message: message.into(), line: Some(line), column: Some(column) }
+}
+
+/// The whitespace-separated words of a line with their 1-based columns.
+fn words(line: &str) -> Vec<(usize, &str)> {
+    let mut out = Vec::new();
+    let mut start = None;
+    for (i, ch) in line.char_indices().chain(std::iter::once((line.len(), ' '))) {
+        match (ch.is_whitespace(), start) {
+            (false, None) => start = Some(i),
+            (true, Some(s)) => {
+                out.push((line[..s].chars().count() + 1, &line[s..i]));
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
+/// A line's number (1-based) and its words with their columns.
+type Line<'a> = (usize, Vec<(usize, &'a str)>);
+
+/// The non-blank lines of a text, with their 1-based numbers.
+struct Lines<'a> {
+    inner: std::iter::Enumerate<std::str::Lines<'a>>,
+    total: usize,
+}
+
+impl<'a> Lines<'a> {
+    fn new(text: &'a str) -> Self {
+        Lines { inner: text.lines().enumerate(), total: text.lines().count() }
+    }
+    /// The next non-blank line, or an error naming what was expected at the end of the file.
+    fn next(&mut self, what: &str) -> Result<Line<'a>, ScenarioError> {
+        for (i, l) in self.inner.by_ref() {
+            let w = words(l);
+            if !w.is_empty() {
+                return Ok((i + 1, w));
+            }
+        }
+        Err(at(self.total + 1, 1, format!("expected {what}, found the end of the file")))
+    }
+}
+
+/// The first `count` numbers of a line (more are ignored), or an error at the word that is not one
+/// or at the end of a line that is too short.
+fn numbers(line: usize, words: &[(usize, &str)], count: usize, what: &str) -> Result<Vec<Real>, ScenarioError> {
+    if words.len() < count {
+        let end = words.last().map_or(1, |(c, w)| c + w.chars().count());
+        return Err(at(line, end, format!("{what} needs {count} numbers, found {}", words.len())));
+    }
+    words[..count]
+        .iter()
+        .map(|(c, w)| match w.parse::<Real>() {
+            Ok(x) if x.is_finite() => Ok(x),
+            _ => Err(at(line, *c, format!("{what}: expected a number, found \"{w}\""))),
+        })
+        .collect()
+}
+
+/// A whole number on its own at the start of a line.
+fn count(line: usize, words: &[(usize, &str)], what: &str, least: usize) -> Result<usize, ScenarioError> {
+    let (c, w) = words[0];
+    match w.parse::<usize>() {
+        Ok(k) if k >= least => Ok(k),
+        _ => Err(at(line, c, format!("{what} must be a whole number, {least} or more, found \"{w}\""))),
+    }
+}
+
+/// Read an ASV problem file as a scenario: bounds `[0, 0, 1, 1]`, brooms 0.05 long, the default
+/// minimum area, convex, steps of 0.001 (also the motion resolution), touching allowed, and
+/// RRT-Connect selected. `name` (the file's stem) titles it. Errors name the line and column.
+///
+/// Each rectangle is the bounding box of its four corners (the official files repeat a corner now
+/// and then); numbers after the `2n` of a configuration line, or the 8 of an obstacle line, are
+/// ignored.
+pub fn import_problem(text: &str, name: &str) -> Result<Scenario, ScenarioError> {
+    let mut lines = Lines::new(text);
+    let (l, w) = lines.next("the number of vehicles")?;
+    let n = count(l, &w, "the number of vehicles", 3)?;
+    let (l, w) = lines.next("the initial positions")?;
+    let start = numbers(l, &w, 2 * n, "the initial positions")?;
+    let (l, w) = lines.next("the goal positions")?;
+    let goal = numbers(l, &w, 2 * n, "the goal positions")?;
+    let (l, w) = lines.next("the number of obstacles")?;
+    let k = count(l, &w, "the number of obstacles", 0)?;
+    let mut obstacles = Vec::with_capacity(k);
+    for i in 0..k {
+        let what = format!("obstacle {} of {k}", i + 1);
+        let (l, w) = lines.next(&format!("{what} (four corners)"))?;
+        let c = numbers(l, &w, 8, &what)?;
+        let xs = [c[0], c[2], c[4], c[6]];
+        let ys = [c[1], c[3], c[5], c[7]];
+        let min = |v: [Real; 4]| v.iter().copied().fold(Real::INFINITY, Real::min);
+        let max = |v: [Real; 4]| v.iter().copied().fold(Real::NEG_INFINITY, Real::max);
+        obstacles.push(ObstacleSpec::Rect([min(xs), min(ys), max(xs), max(ys)]));
+    }
+    let title = if name.trim().is_empty() { "ASV problem".to_string() } else { name.to_string() };
+    let area = min_area(n);
+    let mut params = serde_json::Map::new();
+    params.insert("range".into(), serde_json::json!(DEFAULT_RANGE));
+    Ok(Scenario {
+        format: FORMAT.to_string(),
+        name: title.clone(),
+        notes: format!(
+            "{title}: {n} vehicles in a chain joined by brooms {BROOM} long, from an ASV problem file (UQ COMP3702). \
+             The chain must stay convex with an area of at least {area:.6}, keep its brooms off the obstacles \
+             (touching allowed), and move no vehicle more than {MAX_STEP} per step. The planner searches the \
+             centroid, the first broom's heading and the chain's turns; the tree is drawn at the centroid."
+        ),
+        bounds: [0.0, 0.0, 1.0, 1.0],
+        obstacles,
+        robot: RobotSpec::Asv { count: n, broom: BROOM, min_area: area, convex: true, max_step: MAX_STEP },
+        start,
+        goal: Some(goal),
+        goal_tolerance: 0.0,
+        resolution: MAX_STEP,
+        body_in_bounds: false,
+        touching_allowed: true,
+        inspection: None,
+        planner: Some(PlannerDefaults { name: "rrt-connect".into(), seed: None, params }),
+    })
+}
+
+/// RRT-Connect's step range for imported problems (in the chain's metric; see `robot::AsvRobot`).
+pub const DEFAULT_RANGE: Real = 0.1;
+
+/// The course's solution file for `path`, a path of planning states from `problem`'s start to its
+/// goal (as `Session::planning_path` returns it). Every motion is cut into the primitive steps the
+/// planner checked (no vehicle moves more than `max_step` in one), each decoded to positions; the
+/// first and last lines are the problem's own initial and goal positions. First line `m cost`: the
+/// number of steps and the sum over steps of the distances moved by all vehicles. Errors when the
+/// problem is not an ASV one, or the path does not join start and goal with valid states.
+pub fn solution_text(problem: &Problem, path: &[Vec<Real>]) -> Result<String, String> {
+    let sc = &problem.scenario;
+    let max_step = match sc.robot {
+        RobotSpec::Asv { max_step, .. } => max_step,
+        _ => return Err(format!("a solution file is for an ASV problem; this robot is a {} robot", sc.robot.kind())),
+    };
+    let goal = sc.goal.as_ref().ok_or("the scenario has no goal")?;
+    if path.len() < 2 {
+        return Err("the path needs at least two states".into());
+    }
+    let robot = &problem.robot;
+    let si = &problem.si;
+    let check = |q: &[Real]| -> Result<(), String> {
+        match si.validity.verdict(q) {
+            crate::robot::Verdict::Valid => Ok(()),
+            v => Err(format!("the path has an invalid state ({v:?}) at {:?}", robot.decode(q))),
+        }
+    };
+    let mut configs = vec![robot.decode(&path[0])];
+    check(&path[0])?;
+    let mut q = vec![0.0; si.dims()];
+    for w in path.windows(2) {
+        let (a, b) = (&w[0], &w[1]);
+        // The same states `SpaceInfo::check_motion` checked: i/n of the way for i in 1..n, then b.
+        let n = robot.motion_steps(a, b, si.distance(a, b), si.resolution).max(1);
+        for i in 1..n {
+            si.interpolate(a, b, i as Real / n as Real, &mut q);
+            check(&q)?;
+            configs.push(robot.decode(&q));
+        }
+        check(b)?;
+        configs.push(robot.decode(b));
+    }
+    // The problem's own numbers first and last: in place of the decoded ones when they are that
+    // close, else as one more (tiny) step.
+    for (end, exact) in [(0, &sc.start), (configs.len() - 1, goal)] {
+        let gap = max_move(&configs[end], exact);
+        if gap > max_step {
+            let which = if end == 0 { "start" } else { "goal" };
+            return Err(format!("the path's {which} is {gap} away from the problem's"));
+        }
+        if gap <= TOLERANCE / 2.0 {
+            configs[end] = exact.clone();
+        } else if end == 0 {
+            configs.insert(0, exact.clone());
+        } else {
+            configs.push(exact.clone());
+        }
+    }
+    let mut out = format!("{} {}\n", configs.len() - 1, path_cost(&configs));
+    for c in &configs {
+        let line: Vec<String> = c.iter().map(|x| x.to_string()).collect();
+        out.push_str(&line.join(" "));
+        out.push('\n');
+    }
+    Ok(out)
+}
+
+/// Read a solution file: `m cost`, then `m + 1` lines of positions. Errors name the line.
+pub fn read_solution(text: &str) -> Result<Vec<Vec<Real>>, String> {
+    let mut lines = Lines::new(text);
+    let (l, w) = lines.next("the line \"m cost\"").map_err(|e| e.to_string())?;
+    let m = count(l, &w, "the number of steps", 0).map_err(|e| e.to_string())?;
+    let mut configs: Vec<Vec<Real>> = Vec::with_capacity(m + 1);
+    for i in 0..=m {
+        let (l, w) = lines.next(&format!("configuration {i} of {m} steps")).map_err(|e| e.to_string())?;
+        let c = numbers(l, &w, w.len(), &format!("configuration {i}")).map_err(|e| e.to_string())?;
+        if c.len() % 2 == 1 || c.is_empty() {
+            return Err(format!("line {l}: configuration {i} has {} numbers, not x y pairs", c.len()));
+        }
+        if let Some(first) = configs.first() {
+            if first.len() != c.len() {
+                return Err(format!("line {l}: configuration {i} has {} numbers, the first has {}", c.len(), first.len()));
+            }
+        }
+        configs.push(c);
+    }
+    if let Ok((l, _)) = lines.next("") {
+        return Err(format!("line {l}: more configurations than the {m} steps of the first line"));
+    }
+    Ok(configs)
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,199 @@
+//! The chain's sampler. Uniform samples of `[cx, cy, θ1, φ...]` are almost never valid (report 000
+//! found a handful in a million), so a sample is built the way a valid chain looks:
+//!
+//! - **shape**: the `n` exterior angles of a convex polygon are positive and sum to 2π, so the
+//!   chain's turns are drawn as `n − 2` of `n` random shares of 2π, all of the chain's winding
+//!   (each share a uniform number raised to a random power, so some shapes are round and some have
+//!   long straight runs with sharp corners);
+//! - **place**: a random vehicle (not always the first) is put at a random point, uniform over the
+//!   bounds; or, most of the time when the workspace has narrow gaps, at a point of a gap (report
+//!   000's "corridor" sampling, found here without knowing the map: see [`Gaps`]) with the broom
+//!   leaving that vehicle turned along the gap and the turns next to it made small, the straight
+//!   run that threads a gap (report 000's "enlarge the angles" to squeeze through passages);
+//! - **keep**: the first valid candidate of a few tries, else the last one (RRT-Connect only needs
+//!   a direction to grow in).
+
+use super::{AsvRobot, STACK};
+use crate::geometry::Workspace;
+use crate::math::{wrap_angle, Real, Vec2, PI};
+use crate::rng::Rng;
+use crate::robot::{Robot, Verdict};
+use crate::space::StateSpace;
+
+/// Candidates tried per sample before settling for an invalid one.
+const TRIES: usize = 24;
+/// Fraction of candidates placed in a narrow gap, when the workspace has one.
+const GAP_FRACTION: Real = 0.7;
+/// Turns next to the broom along a gap are scaled by a uniform factor below this…
+const FLAT: Real = 0.3;
+/// …for this many vehicles either side of it.
+const FLAT_REACH: usize = 2;
+/// How far (radians) the broom along a gap may deviate from the gap's direction.
+const ALONG_SPREAD: Real = 0.15;
+
+/// Points in narrow gaps of a workspace, with each gap's direction.
+///
+/// Found once per workspace by a bridge test (Hsu et al., "The bridge test for sampling narrow
+/// passages with probabilistic roadmap planners", ICRA 2003) done in the plane: the midpoint of a
+/// short random segment whose two ends are blocked (in an obstacle or out of bounds) and which is
+/// itself free lies in a gap narrower than the segment. The gap's direction at that point is
+/// across the narrowest of several probed widths. Seeded on its own, so runs stay reproducible and
+/// the run's generator is not disturbed.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Gaps {
+    points: Vec<(Vec2, Real)>,
+}
+
+/// Bridge tests tried when building the gap list, and the most points kept.
+const BRIDGE_TRIES: usize = 60_000;
+const BRIDGE_KEEP: usize = 768;
+/// Half the longest bridge, as a fraction of the workspace's size (gaps up to twice this wide).
+const GAP_REACH: Real = 0.06;
+/// Directions probed for a gap's width.
+const PROBES: usize = 16;
+
+impl Gaps {
+    /// The gaps of `ws`.
+    pub(super) fn find(ws: &Workspace) -> Gaps {
+        let mut rng = Rng::new(0xA5_6A95);
+        let b = ws.bounds;
+        let reach = GAP_REACH * (b.max.x - b.min.x).max(b.max.y - b.min.y);
+        let mut points = Vec::new();
+        if ws.obstacles.is_empty() {
+            return Gaps { points };
+        }
+        for _ in 0..BRIDGE_TRIES {
+            let m = Vec2::new(rng.uniform(b.min.x, b.max.x), rng.uniform(b.min.y, b.max.y));
+            let beta = rng.uniform(0.0, PI);
+            let (s, c) = libm::sincos(beta);
+            let d = Vec2::new(c, s).scale(rng.uniform(0.0, reach));
+            if blocked(ws, m + d) && blocked(ws, m - d) && !blocked(ws, m) {
+                let Some(beta) = across(ws, m, reach) else { continue };
+                points.push((m, beta + 0.5 * PI));
+                if points.len() == BRIDGE_KEEP {
+                    break;
+                }
+            }
+        }
+        Gaps { points }
+    }
+
+    /// The gap points and directions found.
+    #[cfg(test)]
+    pub(super) fn points(&self) -> &[(Vec2, Real)] {
+        &self.points
+    }
+
+    /// A random gap point and direction, if there are any.
+    fn pick(&self, rng: &mut Rng) -> Option<(Vec2, Real)> {
+        if self.points.is_empty() {
+            None
+        } else {
+            Some(self.points[rng.below(self.points.len())])
+        }
+    }
+}
+
+/// Whether `p` is blocked: outside the bounds or inside an obstacle.
+fn blocked(ws: &Workspace, p: Vec2) -> bool {
+    !ws.bounds.contains(p) || ws.obstacles.iter().any(|o| o.contains_point(p))
+}
+
+/// The direction (in `[0, π)`) across the gap at free point `m`: the narrowest of `PROBES`
+/// widths, each found by marching both ways from `m` until blocked (up to `2·reach`). `None` when
+/// the way along the gap (at right angles) is blocked close by on either side: `m` is then in an
+/// inner corner of the free space (where a wall meets another or the bounds), not in a passage.
+fn across(ws: &Workspace, m: Vec2, reach: Real) -> Option<Real> {
+    let step = reach / 16.0;
+    let free = |beta: Real, sign: Real| {
+        let (s, c) = libm::sincos(beta);
+        let u = Vec2::new(c, s).scale(sign);
+        let mut t = step;
+        while t < 2.0 * reach && !blocked(ws, m + u.scale(t)) {
+            t += step;
+        }
+        t
+    };
+    let widths: Vec<(Real, Real)> = (0..PROBES).map(|i| PI * i as Real / PROBES as Real).map(|b| (b, free(b, 1.0) + free(b, -1.0))).collect();
+    let (beta, _) = widths.iter().copied().fold((0.0, Real::INFINITY), |best, w| if w.1 < best.1 { w } else { best });
+    let along = beta + 0.5 * PI;
+    (free(along, 1.0) >= 0.5 * reach && free(along, -1.0) >= 0.5 * reach).then_some(beta)
+}
+
+/// Write a sample into `out` (see the module documentation).
+pub(super) fn sample(robot: &AsvRobot, space: &StateSpace, rng: &mut Rng, out: &mut [Real]) {
+    let ws = robot.workspace.borrow();
+    let mut gaps = robot.gaps.borrow_mut();
+    if gaps.is_none() {
+        *gaps = Some(ws.as_ref().map(Gaps::find).unwrap_or_default());
+    }
+    let gaps = gaps.as_ref().expect("just set");
+    let n = robot.n;
+    let mut rel = [Vec2::default(); STACK];
+    let mut heap;
+    let rel: &mut [Vec2] = if n <= STACK {
+        &mut rel[..n]
+    } else {
+        heap = vec![Vec2::default(); n];
+        &mut heap
+    };
+    let (xd, yd) = (space.dims[0], space.dims[1]);
+    for _ in 0..TRIES {
+        let winding = match robot.orientation() {
+            0.0 if rng.uniform01() < 0.5 => 1.0,
+            0.0 => -1.0,
+            w => w,
+        };
+        shape(robot, rng, winding, &mut out[2..]);
+        let k = rng.below(n);
+        let gap = if rng.uniform01() < GAP_FRACTION { gaps.pick(rng) } else { None };
+        let target = match gap {
+            Some((p, along)) => {
+                // Broom k (k−1 for the last vehicle) along the gap, the turns near it small.
+                let broom = k.min(n - 2);
+                for j in broom.saturating_sub(FLAT_REACH)..(broom + FLAT_REACH + 1).min(n - 2) {
+                    out[3 + j] *= rng.uniform(0.0, FLAT);
+                }
+                let before: Real = out[3..3 + broom].iter().sum();
+                let dir = along + rng.uniform(-ALONG_SPREAD, ALONG_SPREAD) + if rng.uniform01() < 0.5 { 0.0 } else { PI };
+                out[2] = wrap_angle(dir - before);
+                p
+            }
+            None => Vec2::new(rng.uniform(xd.lo, xd.hi), rng.uniform(yd.lo, yd.hi)),
+        };
+        super::offsets(robot.broom, &out[2..], rel);
+        let mean = rel.iter().fold(Vec2::default(), |s, p| s + *p).scale(1.0 / n as Real);
+        let c = target - (rel[k] - mean);
+        out[0] = c.x;
+        out[1] = c.y;
+        match ws.as_ref() {
+            Some(ws) if robot.verdict(ws, out) != Verdict::Valid => continue,
+            _ => return,
+        }
+    }
+}
+
+/// Draw the chain's shape into `angles` (`θ1`, then the `n − 2` turns) with the given winding.
+fn shape(robot: &AsvRobot, rng: &mut Rng, winding: Real, angles: &mut [Real]) {
+    let n = robot.n;
+    let power = [1.0, 2.0, 4.0][rng.below(3)];
+    let mut shares = [0.0; STACK];
+    let mut heap;
+    let shares: &mut [Real] = if n <= STACK {
+        &mut shares[..n]
+    } else {
+        heap = vec![0.0; n];
+        &mut heap
+    };
+    let mut total = 0.0;
+    for s in shares.iter_mut() {
+        *s = libm::pow(rng.uniform01(), power) + 1e-9;
+        total += *s;
+    }
+    angles[0] = rng.uniform(-PI, PI);
+    for k in 0..n - 2 {
+        let t = 2.0 * PI * shares[k] / total;
+        angles[1 + k] = winding * t.min(PI - 1e-6);
+    }
+}
+

@@ -1,0 +1,340 @@
+// The course robots in the page (headless chromium): the arm drawn as itself, the configuration
+// space of a 2-joint arm beside the workspace, the Technion maps (built in and imported), the
+// inspection map that no planner of this version can run, dragging a start or goal, and the
+// picker grouped by course. Screenshots go to target/page-*.png.
+import { test, before, after, beforeEach, afterEach } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync, readFileSync } from 'node:fs';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { startBrowser } from './browser.mjs';
+import { PALETTE } from '../../www/view.js';
+import { wrapSegments, wrapInto, formatTick } from '../../www/cspace.js';
+
+const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
+const shots = join(root, 'target');
+mkdirSync(shots, { recursive: true });
+
+let env;
+let page;
+let pageErrors;
+
+before(async () => { env = await startBrowser(); });
+after(async () => { await env?.close(); });
+
+beforeEach(async () => {
+  pageErrors = [];
+  page = await env.browser.newPage({ viewport: { width: 1280, height: 800 } });
+  page.on('console', (m) => {
+    if (m.type() === 'error' || m.type() === 'warning') console.log(`[page ${m.type()}] ${m.text()}`);
+  });
+  page.on('pageerror', (e) => {
+    console.log(`[page error] ${e.stack || e}`);
+    pageErrors.push(e);
+  });
+  await page.goto(env.base);
+  await waitState('idle', 30000);
+});
+
+afterEach(async () => {
+  await page?.close();
+  assert.deepEqual(pageErrors.map(String), [], 'the page threw');
+});
+
+const waitState = (state, timeout = 20000) =>
+  page.waitForFunction((s) => window.planarium?.state() === s, state, { timeout });
+
+const waitStatus = (word, timeout = 60000) =>
+  page.waitForFunction((w) => document.getElementById('status')?.textContent === w, word, { timeout });
+
+async function pickScenario(id, name) {
+  await page.selectOption('#scenario', id);
+  await page.waitForFunction((n) => document.getElementById('scenario-name').textContent === n, name);
+  await waitState('idle');
+}
+
+async function fastPlayback() {
+  await page.$eval('#speed', (el) => {
+    el.value = el.max;
+    el.dispatchEvent(new Event('input', { bubbles: true }));
+  });
+}
+
+const nextFrames = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+
+/** How many pixels of canvas `id` are within `tol` (per channel) of each colour. */
+async function countColours(id, colours, tol = 6) {
+  return page.evaluate(({ id, colours, tol }) => {
+    const c = document.getElementById(id);
+    const px = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    const rgb = colours.map((h) => [1, 3, 5].map((i) => parseInt(h.slice(i, i + 2), 16)));
+    const counts = rgb.map(() => 0);
+    for (let i = 0; i < px.length; i += 4) {
+      rgb.forEach(([r, g, b], k) => {
+        if (Math.abs(px[i] - r) <= tol && Math.abs(px[i + 1] - g) <= tol && Math.abs(px[i + 2] - b) <= tol) counts[k]++;
+      });
+    }
+    return counts;
+  }, { id, colours, tol });
+}
+
+/** The page position (css px) of world point (x, y) on the workspace canvas (as view.js Layout). */
+async function toPage(x, y) {
+  const box = await page.locator('#canvas').boundingBox();
+  const [x0, y0, x1, y1] = (await page.evaluate(() => window.planarium.scenario())).bounds;
+  const margin = 10;
+  const scale = Math.min((box.width - 2 * margin) / (x1 - x0), (box.height - 2 * margin) / (y1 - y0));
+  const ox = (box.width - scale * (x1 - x0)) / 2 - scale * x0;
+  const oy = (box.height + scale * (y1 - y0)) / 2 + scale * y0;
+  return [box.x + ox + x * scale, box.y + oy - y * scale];
+}
+
+async function drag(from, to) {
+  await page.mouse.move(...from);
+  await page.mouse.down();
+  const steps = 8;
+  for (let i = 1; i <= steps; i++) {
+    await page.mouse.move(from[0] + ((to[0] - from[0]) * i) / steps, from[1] + ((to[1] - from[1]) * i) / steps);
+  }
+  await page.mouse.up();
+}
+
+test('C-space geometry: wrapping edges are split at the border, ticks are named', () => {
+  const torus = [{ lo: -Math.PI, hi: Math.PI, wraps: true }, { lo: -Math.PI, hi: Math.PI, wraps: true }];
+  const r = 2 * Math.PI;
+  // a short edge stays one piece
+  assert.deepEqual(wrapSegments(torus, 0, 0, 1, -1), [[0, 0, 1, -1]]);
+  // 3 → -3 in q1 is a short motion across π: two pieces, each leaving the square on its side
+  const pieces = wrapSegments(torus, 3, 0.5, -3, 0.5);
+  assert.equal(pieces.length, 2);
+  const [[a0, , b0], [c0, , d0]] = pieces;
+  assert.equal(a0, 3);
+  assert.ok(Math.abs(b0 - (r - 3)) < 1e-12 && b0 > Math.PI, 'the first piece leaves through q1 = π');
+  assert.ok(Math.abs(c0 - (3 - r)) < 1e-12 && c0 < -Math.PI, 'the second enters through q1 = −π');
+  assert.equal(d0, -3);
+  // both coordinates wrapping
+  assert.equal(wrapSegments(torus, 3, 3, -3, -3).length, 2);
+  // a limited joint never wraps, however long the edge
+  const limited = [{ lo: -1.5, hi: 1.5, wraps: false }, { lo: -1.5, hi: 1.5, wraps: false }];
+  assert.deepEqual(wrapSegments(limited, -1.4, 0, 1.4, 0), [[-1.4, 0, 1.4, 0]]);
+  assert.ok(Math.abs(wrapInto(4, torus[0]) - (4 - r)) < 1e-12);
+  assert.deepEqual([-Math.PI, -Math.PI / 2, 0, Math.PI].map(formatTick), ['−π', '−π/2', '0', 'π']);
+  assert.equal(formatTick(-1.5), '−1.5');
+});
+
+test('the picker groups the built-in scenarios by course', async () => {
+  const groups = await page.$$eval('#scenario optgroup', (gs) => gs.map((g) => ({
+    label: g.label, ids: [...g.querySelectorAll('option')].map((o) => o.value),
+  })));
+  const labels = groups.map((g) => g.label);
+  assert.ok(labels.includes('First steps'), labels.join(' | '));
+  assert.ok(labels.some((l) => /Technion/.test(l)), labels.join(' | '));
+  assert.ok(labels.some((l) => /OMPL/.test(l)), labels.join(' | '));
+  assert.equal(new Set(labels).size, labels.length, 'one group per course');
+  const technion = groups.find((g) => /Technion/.test(g.label));
+  assert.deepEqual(technion.ids, ['technion-mp', 'technion-ip']);
+  assert.ok(groups.find((g) => g.label === 'First steps').ids.includes('narrow'));
+  // the course is shown above the scenario's name
+  await pickScenario('technion-mp', 'Technion HW3: reach the goal');
+  assert.match(await page.textContent('#scenario-course'), /Technion/);
+});
+
+test('arm-2: the configuration space shows the C-obstacles, then the trees after a run', async () => {
+  await pickScenario('arm-2', 'Two-link arm and its configuration space');
+  assert.equal(await page.isVisible('#cspace'), true, 'the C-space canvas is shown');
+  await nextFrames();
+  const [obstacle, start, goal] = await countColours('cspace', [PALETTE.obstacle, PALETTE.start, PALETTE.goal], 4);
+  console.log(`C-space before the run: obstacle ${obstacle}, start ${start}, goal ${goal}`);
+  assert.ok(obstacle > 2000, `C-obstacle pixels: ${obstacle}`);
+  assert.ok(start > 20 && goal > 20, `start ${start}, goal ${goal} dots`);
+  // joint sliders for both endpoints
+  assert.equal(await page.locator('#start-joints input[type=range]').count(), 2);
+  assert.equal(await page.locator('#goal-joints input[type=range]').count(), 2);
+
+  await fastPlayback();
+  await page.click('#run');
+  await waitStatus('solved');
+  await page.waitForTimeout(300);
+  const [tree0, tree1, path] = await countColours('cspace', [PALETTE.tree0, PALETTE.tree1, PALETTE.smoothPath], 6);
+  console.log(`C-space after the run: tree 0 ${tree0}, tree 1 ${tree1}, smoothed path ${path}`);
+  assert.ok(tree0 + tree1 > 50, `tree pixels: ${tree0} + ${tree1}`);
+  assert.ok(path > 100, `smoothed path pixels: ${path}`);
+  const [wsPath] = await countColours('canvas', [PALETTE.smoothPath], 6);
+  assert.ok(wsPath > 100, `the end effector's path in the workspace: ${wsPath}`);
+  await page.screenshot({ path: join(shots, 'page-arm2.png') });
+});
+
+test('arm-2: a joint slider moves the goal and the run ends there', async () => {
+  await pickScenario('arm-2', 'Two-link arm and its configuration space');
+  await page.$eval('#goal-q2', (el) => {
+    el.value = '1.5';
+    el.dispatchEvent(new Event('input', { bubbles: true }));
+    el.dispatchEvent(new Event('change', { bubbles: true }));
+  });
+  await page.waitForFunction(() => window.planarium.state() === 'idle' && window.planarium.scenario().goal[1] === 1.5);
+  await fastPlayback();
+  await page.click('#run');
+  await waitStatus('solved');
+  const { path } = await page.evaluate(() => window.planarium.result());
+  assert.deepEqual(path.at(-1).map((v) => Number(v.toFixed(9))), [3, 1.5]);
+});
+
+test('technion-mp: solves with the default planner and the arm is drawn as links', async () => {
+  await pickScenario('technion-mp', 'Technion HW3: reach the goal');
+  await nextFrames();
+  assert.equal(await page.isVisible('#cspace'), false, 'no C-space view for a 4-link arm');
+  // the start arm: pixels of the start colour along its links
+  const sc = await page.evaluate(() => window.planarium.scenario());
+  const points = [];
+  let [x, y] = sc.robot.base;
+  let a = 0;
+  sc.robot.links.forEach((len, i) => {
+    a += sc.start[i];
+    const nx = x + len * Math.cos(a), ny = y + len * Math.sin(a);
+    for (const t of [0.3, 0.5, 0.7]) points.push([x + (nx - x) * t, y + (ny - y) * t]);
+    x = nx; y = ny;
+  });
+  const onArm = async () => {
+    const box = await page.locator('#canvas').boundingBox();
+    const screen = [];
+    for (const [wx, wy] of points) {
+      const [px, py] = await toPage(wx, wy);
+      screen.push([px - box.x, py - box.y]);
+    }
+    return page.evaluate(({ screen, colour }) => {
+      const c = document.getElementById('canvas');
+      const dpr = c.width / c.getBoundingClientRect().width;
+      const px = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      const rgb = [1, 3, 5].map((i) => parseInt(colour.slice(i, i + 2), 16));
+      return screen.filter(([x, y]) => {
+        const o = (Math.round(y * dpr) * c.width + Math.round(x * dpr)) * 4;
+        return rgb.every((v, k) => Math.abs(px[o + k] - v) <= 8);
+      }).length;
+    }, { screen, colour: PALETTE.start });
+  };
+  // (the goal arm, drawn after the start, crosses it once)
+  const before = await onArm();
+  assert.ok(before >= points.length - 2, `start-coloured pixels along the links: ${before} of ${points.length}`);
+
+  await fastPlayback();
+  await page.click('#run');
+  await waitStatus('solved', 90000);
+  const result = await page.evaluate(() => window.planarium.result());
+  assert.equal(result.solved, true);
+  await page.waitForTimeout(300);
+  const after = await onArm();
+  assert.ok(after >= points.length - 3, `start-coloured pixels along the links after the run: ${after}`);
+  await page.screenshot({ path: join(shots, 'page-technion.png') });
+});
+
+test('technion-ip: inspection points drawn; Run reports that there is no goal and the page stays usable', async () => {
+  await pickScenario('technion-ip', 'Technion HW3: inspect the room');
+  await nextFrames();
+  const [marks] = await countColours('canvas', [PALETTE.inspection], 6);
+  assert.ok(marks > 28 * 10, `inspection marker pixels: ${marks}`);
+  await page.click('#run');
+  await page.waitForSelector('#error', { state: 'visible' });
+  assert.match(await page.textContent('#error-text'), /goal/);
+  await waitState('idle');
+  assert.equal(await page.isDisabled('#scenario'), false);
+  await page.screenshot({ path: join(shots, 'page-technion-ip.png') });
+
+  await pickScenario('narrow', 'Narrow passage');
+  await fastPlayback();
+  await page.click('#run');
+  await waitStatus('solved');
+});
+
+test('open file: a Technion map is imported', async () => {
+  const text = readFileSync('/work/shared/data/technion-hw3/map_mp.json');
+  await page.setInputFiles('#file', { name: 'map_mp.json', mimeType: 'application/json', buffer: text });
+  await page.waitForFunction(() => /map_mp/.test(document.getElementById('scenario-name').textContent));
+  await waitState('idle');
+  const sc = await page.evaluate(() => window.planarium.scenario());
+  assert.equal(sc.robot.kind, 'arm');
+  assert.deepEqual(sc.robot.links, [80, 70, 40, 40]);
+  assert.equal(await page.isVisible('#error'), false);
+  assert.match(await page.$eval('#scenario', (s) => s.selectedOptions[0].textContent), /map_mp\.json/);
+});
+
+test('narrow: drag the goal to a free place and the path ends there; into the wall names the goal', async () => {
+  await pickScenario('narrow', 'Narrow passage');
+  const [gx, gy] = (await page.evaluate(() => window.planarium.scenario())).goal;
+  await drag(await toPage(gx, gy), await toPage(0.8, 0.3));
+  await page.waitForFunction(() => window.planarium.state() === 'idle' && window.planarium.scenario().goal[1] < 0.5);
+  const goal = (await page.evaluate(() => window.planarium.scenario())).goal;
+  assert.ok(Math.abs(goal[0] - 0.8) < 0.01 && Math.abs(goal[1] - 0.3) < 0.01, `goal moved to ${goal}`);
+  await fastPlayback();
+  await page.click('#run');
+  await waitStatus('solved');
+  const { path } = await page.evaluate(() => window.planarium.result());
+  assert.deepEqual(path.at(-1), goal);
+  await page.screenshot({ path: join(shots, 'page-drag.png') });
+
+  // into the wall: the core refuses it and says it is the goal
+  await drag(await toPage(...goal), await toPage(0.5, 0.8));
+  await waitState('invalid');
+  assert.match(await page.textContent('#error-text'), /goal/);
+  assert.equal(await page.isDisabled('#run'), true);
+  await page.screenshot({ path: join(shots, 'page-drag-invalid.png') });
+  // drag it back out: valid again
+  await drag(await toPage(0.5, 0.8), await toPage(0.7, 0.8));
+  await waitState('idle');
+  assert.equal(await page.isVisible('#error'), false);
+  await page.click('#run');
+  await waitStatus('solved');
+  const last = (await page.evaluate(() => window.planarium.result())).path.at(-1);
+  assert.ok(Math.abs(last[0] - 0.7) < 0.01 && Math.abs(last[1] - 0.8) < 0.01, `path ends at ${last}`);
+});
+
+test('slot: shift-drag turns the rigid start', async () => {
+  await pickScenario('slot', 'Turn to pass the slot');
+  const sc = await page.evaluate(() => window.planarium.scenario());
+  const [sx, sy, th] = sc.start;
+  // press on the body a little along its long axis, then turn it by a quarter
+  const r = 0.06;
+  const from = await toPage(sx + r * Math.cos(th), sy + r * Math.sin(th));
+  const to = await toPage(sx + r * Math.cos(th - Math.PI / 2), sy + r * Math.sin(th - Math.PI / 2));
+  await page.keyboard.down('Shift');
+  await drag(from, to);
+  await page.keyboard.up('Shift');
+  await page.waitForFunction((t) => window.planarium.state() === 'idle' && window.planarium.scenario().start[2] !== t, th);
+  const q = (await page.evaluate(() => window.planarium.scenario())).start;
+  assert.ok(Math.abs(q[0] - sx) < 1e-9 && Math.abs(q[1] - sy) < 1e-9, 'turning keeps the position');
+  assert.ok(Math.abs(q[2] - (th - Math.PI / 2)) < 0.05, `turned to ${q[2]}`);
+});
+
+test('narrow screens stack the C-space view under the workspace', async () => {
+  await page.setViewportSize({ width: 600, height: 900 });
+  await pickScenario('arm-2', 'Two-link arm and its configuration space');
+  await nextFrames();
+  const ws = await page.locator('#canvas').boundingBox();
+  const cs = await page.locator('#cspace').boundingBox();
+  assert.ok(cs.y >= ws.y + ws.height - 1, `C-space (y ${cs.y}) below the workspace (bottom ${ws.y + ws.height})`);
+  assert.ok(ws.width > 250 && cs.width > 250, `sizes ${ws.width}, ${cs.width}`);
+  await page.screenshot({ path: join(shots, 'page-arm2-narrow.png'), fullPage: true });
+});
+
+test('open file: an ASV problem is drawn as a chain of vehicles; its solution downloads when the core writes one', async () => {
+  const text = readFileSync('/work/shared/data/asv/3ASV-easy.txt');
+  await page.setInputFiles('#file', { name: '3ASV-easy.txt', mimeType: 'text/plain', buffer: text });
+  await page.waitForFunction(() => /3ASV/.test(document.getElementById('scenario-name').textContent));
+  await waitState('idle');
+  const sc = await page.evaluate(() => window.planarium.scenario());
+  assert.equal(sc.robot.kind, 'asv');
+  await nextFrames();
+  const [start, goal] = await countColours('canvas', [PALETTE.start, PALETTE.goal], 6);
+  assert.ok(start > 30 && goal > 30, `vehicles and brooms drawn: start ${start}, goal ${goal}`);
+  assert.equal(await page.isVisible('#download-solution'), false);
+  await fastPlayback();
+  await page.click('#run');
+  await waitStatus('solved', 90000);
+  const writes = await page.evaluate(async () => typeof (await import('/pkg/planarium.js')).Run.prototype.asv_solution === 'function');
+  await page.waitForTimeout(200);
+  assert.equal(await page.isVisible('#download-solution'), writes, `the core ${writes ? 'writes' : 'does not write'} solution files`);
+  await page.screenshot({ path: join(shots, 'page-asv.png') });
+  if (writes) {
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download-solution')]);
+    assert.match(download.suggestedFilename(), /\.txt$/);
+  }
+});

@@ -1,0 +1,173 @@
+// Each robot kind drawn as itself, from the outlines the core sends (a flat list of polygons or
+// polylines, see view.js parseOutline) and the scenario state:
+//   point  a dot at (x, y) (no outline);
+//   rigid  closed polygons, filled;
+//   arm    ONE open polyline: base, every joint, then the end effector (and, for the horn chain, a
+//          tiny tip point): thick segments, joint dots, the base as a small square;
+//   asv    ONE polyline of the vehicles in chain order: brooms solid, the closing edge (last
+//          vehicle back to the first) dashed, vehicles as dots.
+// outlineOf() computes the same outlines in JS, only to preview a start or goal being dragged
+// (the core's outline replaces it once the edited scenario has loaded).
+
+/** How a robot is drawn: the start, the goal, or the animated robot. */
+export function robotStyle(color, role, palette) {
+  if (role === 'robot') {
+    return { line: palette.robot, fill: palette.robot, alpha: 1, stroke: palette.robotEdge, strokeWidth: 1.5,
+             edge: palette.robotEdge, width: 4, dot: 5 };
+  }
+  return { line: color, fill: color, alpha: 0.45, stroke: color, strokeWidth: 2, edge: palette.robotEdge, width: 5, dot: 6 };
+}
+
+/** Draw a robot of `robot.kind` with outline `polys` (arrays of x, y, x, y, ...) at `state`. */
+export function drawRobotShape(ctx, L, robot, polys, state, st) {
+  const kind = robot ? robot.kind : 'point';
+  if (!polys || !polys.length) {
+    if (!state || state.length < 2) return;
+    ctx.beginPath();
+    ctx.arc(L.sx(state[0]), L.sy(state[1]), L.px(st.dot), 0, 2 * Math.PI);
+    ctx.fillStyle = st.fill;
+    ctx.fill();
+    ctx.strokeStyle = st.edge;
+    ctx.lineWidth = L.px(1);
+    ctx.stroke();
+    return;
+  }
+  if (kind === 'arm') drawArm(ctx, L, polys[0], st);
+  else if (kind === 'asv') drawChain(ctx, L, polys[0], st);
+  else drawPolygons(ctx, L, polys, st);
+}
+
+function drawPolygons(ctx, L, polys, st) {
+  ctx.beginPath();
+  for (const p of polys) {
+    for (let i = 0; i < p.length; i += 2) {
+      if (i) ctx.lineTo(L.sx(p[i]), L.sy(p[i + 1])); else ctx.moveTo(L.sx(p[i]), L.sy(p[i + 1]));
+    }
+    ctx.closePath();
+  }
+  ctx.globalAlpha = st.alpha;
+  ctx.fillStyle = st.fill;
+  ctx.fill();
+  ctx.globalAlpha = 1;
+  ctx.strokeStyle = st.stroke;
+  ctx.lineWidth = L.px(st.strokeWidth);
+  ctx.stroke();
+}
+
+function drawArm(ctx, L, p, st) {
+  if (p.length < 4) return;
+  ctx.beginPath();
+  for (let i = 0; i < p.length; i += 2) {
+    if (i) ctx.lineTo(L.sx(p[i]), L.sy(p[i + 1])); else ctx.moveTo(L.sx(p[i]), L.sy(p[i + 1]));
+  }
+  ctx.lineJoin = 'round';
+  ctx.lineCap = 'round';
+  ctx.strokeStyle = st.line;
+  ctx.lineWidth = L.px(st.width);
+  ctx.stroke();
+  ctx.lineCap = 'butt';
+  // joints (every vertex after the base; smaller on a chain of short links), then the base
+  let len = 0;
+  for (let i = 2; i < p.length; i += 2) len += Math.hypot(p[i] - p[i - 2], p[i + 1] - p[i - 1]);
+  const avg = (len * L.scale) / L.px(1) / Math.max(1, p.length / 2 - 1); // css px per link
+  const r = L.px(Math.max(1.2, Math.min(3, st.width * 0.6, avg * 0.12)));
+  ctx.beginPath();
+  for (let i = 2; i < p.length; i += 2) {
+    const x = L.sx(p[i]), y = L.sy(p[i + 1]);
+    ctx.moveTo(x + r, y);
+    ctx.arc(x, y, r, 0, 2 * Math.PI);
+  }
+  ctx.fillStyle = st.edge;
+  ctx.fill();
+  const b = L.px(9);
+  ctx.fillStyle = st.edge;
+  ctx.fillRect(L.sx(p[0]) - b / 2, L.sy(p[1]) - b / 2, b, b);
+}
+
+function drawChain(ctx, L, p, st) {
+  const n = p.length / 2;
+  if (n < 1) return;
+  ctx.lineCap = 'round';
+  ctx.strokeStyle = st.stroke;
+  if (n >= 2) {
+    ctx.beginPath();
+    for (let i = 0; i < n; i++) {
+      if (i) ctx.lineTo(L.sx(p[2 * i]), L.sy(p[2 * i + 1])); else ctx.moveTo(L.sx(p[0]), L.sy(p[1]));
+    }
+    ctx.lineWidth = L.px(2.5);
+    ctx.stroke();
+  }
+  if (n >= 3) { // the closing edge
+    ctx.beginPath();
+    ctx.moveTo(L.sx(p[2 * n - 2]), L.sy(p[2 * n - 1]));
+    ctx.lineTo(L.sx(p[0]), L.sy(p[1]));
+    ctx.setLineDash([L.px(4), L.px(3)]);
+    ctx.lineWidth = L.px(1.5);
+    ctx.stroke();
+    ctx.setLineDash([]);
+  }
+  ctx.lineCap = 'butt';
+  const r = L.px(st.dot * 0.6);
+  ctx.beginPath();
+  for (let i = 0; i < n; i++) {
+    const x = L.sx(p[2 * i]), y = L.sy(p[2 * i + 1]);
+    ctx.moveTo(x + r, y);
+    ctx.arc(x, y, r, 0, 2 * Math.PI);
+  }
+  ctx.fillStyle = st.fill;
+  ctx.fill();
+  ctx.strokeStyle = st.edge;
+  ctx.lineWidth = L.px(1);
+  ctx.stroke();
+}
+
+/** Inspection points: small diamonds. */
+export function drawInspection(ctx, L, points, fill, edge) {
+  if (!points || !points.length) return;
+  const r = L.px(4);
+  ctx.beginPath();
+  for (const [x, y] of points) {
+    const sx = L.sx(x), sy = L.sy(y);
+    ctx.moveTo(sx, sy - r); ctx.lineTo(sx + r, sy); ctx.lineTo(sx, sy + r); ctx.lineTo(sx - r, sy);
+    ctx.closePath();
+  }
+  ctx.fillStyle = fill;
+  ctx.fill();
+  ctx.strokeStyle = edge;
+  ctx.lineWidth = L.px(1);
+  ctx.stroke();
+}
+
+/** The outline of `robot` at scenario state `q`, as the core would give it (for previews). */
+export function outlineOf(robot, q) {
+  if (!robot || !q) return [];
+  switch (robot.kind) {
+    case 'rigid': {
+      const [x, y, th] = q;
+      const c = Math.cos(th), s = Math.sin(th);
+      return [robot.footprint.flatMap(([u, v]) => [x + c * u - s * v, y + s * u + c * v])];
+    }
+    case 'arm': {
+      let [x, y] = robot.base;
+      let a = 0;
+      const out = [x, y];
+      robot.links.forEach((len, i) => {
+        a += q[i];
+        x += len * Math.cos(a);
+        y += len * Math.sin(a);
+        out.push(x, y);
+      });
+      return [out];
+    }
+    case 'asv':
+      return [Array.from(q)];
+    default:
+      return [];
+  }
+}
+
+/** The farthest footprint vertex from the reference point (a rigid body's radius). */
+export function footprintRadius(robot) {
+  if (!robot || robot.kind !== 'rigid') return 0;
+  return Math.max(0, ...robot.footprint.map(([u, v]) => Math.hypot(u, v)));
+}
