@@ -201,10 +201,23 @@ impl Run {
     }
     /// The smoothed path (raw path if `raw`) sampled every `spacing` (robot metric) for animation,
     /// flat: `[dims, frames, then per frame: state…, outline (as [`Scene::outline`])…]`: each frame
-    /// is `dims` numbers (a scenario state) then its outline.
+    /// is `dims` numbers (a scenario state) then its outline. A vehicle chain's frames are its
+    /// primitive steps (no vehicle moves more than `max_step` between two).
     pub fn path_frames(&self, raw: bool, spacing: f64) -> Vec<f64> {
         let p = self.inner.problem();
         let path = self.inner.planning_path(raw);
+        // A vehicle chain is shown in the course's primitive steps, exactly as its solution file.
+        if p.robot.kind() == "asv" {
+            if let Ok(steps) = crate::io::asv::primitive_steps(p, path) {
+                let mut out = vec![p.robot.external_dims() as f64, steps.len() as f64];
+                for c in &steps {
+                    out.extend_from_slice(c);
+                    let internal = p.robot.encode(c).unwrap_or_default();
+                    out.extend(if internal.is_empty() { vec![0.0] } else { flat_outline(p, &internal) });
+                }
+                return out;
+            }
+        }
         let dims = p.si.dims();
         let mut states: Vec<Vec<f64>> = Vec::new();
         for w in path.windows(2) {

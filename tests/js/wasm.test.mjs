@@ -116,3 +116,32 @@ test('time and iteration limits are honoured in wasm', () => {
   while (r2.step(50, 1e9) === 'running');
   assert.equal(JSON.parse(r2.stats_json()).iterations, 123);
 });
+
+test('a vehicle chain is animated in primitive steps, from the exact start to the exact goal', () => {
+  const sc = JSON.parse(builtinText['asv-3-easy']);
+  const run = new Run(builtinText['asv-3-easy'], 'rrt-connect', '{}', 1);
+  while (run.step(1e9, 1e9) === 'running');
+  const frames = run.path_frames(false, 0.004);
+  const dims = frames[0], count = frames[1];
+  assert.equal(dims, 2 * sc.robot.count);
+  const states = [];
+  let o = 2;
+  for (let k = 0; k < count; k++) {
+    states.push(Array.from(frames.subarray(o, o + dims)));
+    o += dims;
+    const polys = frames[o++];
+    for (let p = 0; p < polys; p++) o += 1 + 2 * frames[o];
+  }
+  assert.equal(o, frames.length, 'the frame layout is consistent');
+  assert.deepEqual(states[0], sc.start);
+  assert.deepEqual(states[states.length - 1], sc.goal);
+  for (let k = 1; k < states.length; k++) {
+    for (let v = 0; v < dims; v += 2) {
+      const d = Math.hypot(states[k][v] - states[k - 1][v], states[k][v + 1] - states[k - 1][v + 1]);
+      assert.ok(d <= 0.001 + 1e-5, `step ${k}, vehicle ${v / 2} moves ${d}`);
+    }
+  }
+  const text = run.asv_solution();
+  assert.equal(Number(text.split(/\s+/)[0]), count - 1, 'the solution file has the same steps');
+  run.free();
+});

@@ -166,6 +166,19 @@ pub const DEFAULT_RANGE: Real = 0.1;
 /// number of steps and the sum over steps of the distances moved by all vehicles. Errors when the
 /// problem is not an ASV one, or the path does not join start and goal with valid states.
 pub fn solution_text(problem: &Problem, path: &[Vec<Real>]) -> Result<String, String> {
+    let configs = primitive_steps(problem, path)?;
+    let mut out = format!("{} {}\n", configs.len() - 1, path_cost(&configs));
+    for c in &configs {
+        let line: Vec<String> = c.iter().map(|x| x.to_string()).collect();
+        out.push_str(&line.join(" "));
+        out.push('\n');
+    }
+    Ok(out)
+}
+
+/// The configurations of [`solution_text`], as positions: `path` cut into the primitive steps the
+/// planner checked, the problem's own start and goal first and last. The page animates these.
+pub fn primitive_steps(problem: &Problem, path: &[Vec<Real>]) -> Result<Vec<Vec<Real>>, String> {
     let sc = &problem.scenario;
     let max_step = match sc.robot {
         RobotSpec::Asv { max_step, .. } => max_step,
@@ -214,13 +227,7 @@ pub fn solution_text(problem: &Problem, path: &[Vec<Real>]) -> Result<String, St
             configs.push(exact.clone());
         }
     }
-    let mut out = format!("{} {}\n", configs.len() - 1, path_cost(&configs));
-    for c in &configs {
-        let line: Vec<String> = c.iter().map(|x| x.to_string()).collect();
-        out.push_str(&line.join(" "));
-        out.push('\n');
-    }
-    Ok(out)
+    Ok(configs)
 }
 
 /// Read a solution file: `m cost`, then `m + 1` lines of positions. Errors name the line.
