@@ -4,16 +4,7 @@
 // is handed to `onCommit(scenario)`, which reloads it through the worker (the core validates it: an
 // invalid start or goal is reported there, and dragging back fixes it).
 
-const el = (tag, props = {}, ...children) => {
-  const node = document.createElement(tag);
-  for (const [k, v] of Object.entries(props)) {
-    if (k === 'text') node.textContent = v;
-    else if (k in node) node[k] = v;
-    else node.setAttribute(k, v);
-  }
-  for (const c of children) if (c) node.append(c);
-  return node;
-};
+import { el } from './dom.js';
 
 const HIT = 10; // css px: how near a start/goal dot or handle a press must be
 

@@ -6,16 +6,7 @@
 // Only values the user set (or the scenario's `planner` block supplied) are sent; the rest keep
 // the core's defaults.
 
-const el = (tag, props = {}, ...children) => {
-  const node = document.createElement(tag);
-  for (const [k, v] of Object.entries(props)) {
-    if (k === 'text') node.textContent = v;
-    else if (k in node) node[k] = v;
-    else node.setAttribute(k, v);
-  }
-  for (const c of children) if (c) node.append(c);
-  return node;
-};
+import { el } from './dom.js';
 
 /** Parse an input's text for `spec`: {ok, value} or {ok: false, why}. Empty text: {ok, value: undefined}. */
 export function parseParam(spec, text) {

@@ -17,3 +17,43 @@ export async function startBrowser() {
   };
   return { server, browser, base, close };
 }
+
+/**
+ * Register the hooks of a page test file: one browser and server for the file, a fresh page on
+ * the playground (waited until idle) for each test, page errors failing the test. Returns the
+ * fixture: `fx.page` (the current page) and helpers that wait on it.
+ */
+export async function pageFixture() {
+  const { before, after, beforeEach, afterEach } = await import('node:test');
+  const assert = (await import('node:assert/strict')).default;
+  const fx = { env: null, page: null, errors: [] };
+  fx.waitState = (state, timeout = 20000) =>
+    fx.page.waitForFunction((s) => window.planarium?.state() === s, state, { timeout });
+  fx.waitStatus = (word, timeout = 60000) =>
+    fx.page.waitForFunction((w) => document.getElementById('status')?.textContent === w, word, { timeout });
+  fx.pickScenario = async (id, name) => {
+    await fx.page.selectOption('#scenario', id);
+    await fx.page.waitForFunction((n) => document.getElementById('scenario-name').textContent === n, name);
+    await fx.waitState('idle');
+  };
+  before(async () => { fx.env = await startBrowser(); });
+  after(async () => { await fx.env?.close(); });
+  beforeEach(async () => {
+    fx.errors = [];
+    fx.page = await fx.env.browser.newPage({ viewport: { width: 1280, height: 800 } });
+    fx.page.on('console', (m) => {
+      if (m.type() === 'error' || m.type() === 'warning') console.log(`[page ${m.type()}] ${m.text()}`);
+    });
+    fx.page.on('pageerror', (e) => {
+      console.log(`[page error] ${e.stack || e}`);
+      fx.errors.push(e);
+    });
+    await fx.page.goto(fx.env.base);
+    await fx.waitState('idle', 30000);
+  });
+  afterEach(async () => {
+    await fx.page?.close();
+    assert.deepEqual(fx.errors.map(String), [], 'the page threw');
+  });
+  return fx;
+}

@@ -2,12 +2,12 @@
 // space of a 2-joint arm beside the workspace, the Technion maps (built in and imported), the
 // inspection map that no planner of this version can run, dragging a start or goal, and the
 // picker grouped by course. Screenshots go to target/page-*.png.
-import { test, before, after, beforeEach, afterEach } from 'node:test';
+import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { startBrowser } from './browser.mjs';
+import { pageFixture } from './browser.mjs';
 import { PALETTE } from '../../www/view.js';
 import { wrapSegments, wrapInto, formatTick } from '../../www/cspace.js';
 
@@ -15,43 +15,10 @@ const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
 const shots = join(root, 'target');
 mkdirSync(shots, { recursive: true });
 
-let env;
+const fx = await pageFixture();
 let page;
-let pageErrors;
-
-before(async () => { env = await startBrowser(); });
-after(async () => { await env?.close(); });
-
-beforeEach(async () => {
-  pageErrors = [];
-  page = await env.browser.newPage({ viewport: { width: 1280, height: 800 } });
-  page.on('console', (m) => {
-    if (m.type() === 'error' || m.type() === 'warning') console.log(`[page ${m.type()}] ${m.text()}`);
-  });
-  page.on('pageerror', (e) => {
-    console.log(`[page error] ${e.stack || e}`);
-    pageErrors.push(e);
-  });
-  await page.goto(env.base);
-  await waitState('idle', 30000);
-});
-
-afterEach(async () => {
-  await page?.close();
-  assert.deepEqual(pageErrors.map(String), [], 'the page threw');
-});
-
-const waitState = (state, timeout = 20000) =>
-  page.waitForFunction((s) => window.planarium?.state() === s, state, { timeout });
-
-const waitStatus = (word, timeout = 60000) =>
-  page.waitForFunction((w) => document.getElementById('status')?.textContent === w, word, { timeout });
-
-async function pickScenario(id, name) {
-  await page.selectOption('#scenario', id);
-  await page.waitForFunction((n) => document.getElementById('scenario-name').textContent === n, name);
-  await waitState('idle');
-}
+beforeEach(() => { page = fx.page; });
+const { waitState, waitStatus, pickScenario } = fx;
 
 async function fastPlayback() {
   await page.$eval('#speed', (el) => {

@@ -1,12 +1,12 @@
 // The page in headless chromium: built-in scenarios run to a solution and are drawn, invalid files
 // are reported with their JSON path, playback controls and keys work, and a crashed worker is
 // replaced. Screenshots go to target/page-*.png.
-import { test, before, after, beforeEach, afterEach } from 'node:test';
+import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { startBrowser } from './browser.mjs';
+import { pageFixture } from './browser.mjs';
 import { PALETTE } from '../../www/view.js';
 import { TRANSITIONS, toDot } from '../../www/controller.js';
 
@@ -14,52 +14,10 @@ const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
 const shots = join(root, 'target');
 mkdirSync(shots, { recursive: true });
 
-let server;
-let browser;
-let base;
+const fx = await pageFixture();
 let page;
-let pageErrors;
-
-let env;
-before(async () => {
-  env = await startBrowser();
-  ({ server, browser, base } = env);
-});
-
-after(async () => {
-  await env?.close();
-});
-
-beforeEach(async () => {
-  pageErrors = [];
-  page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
-  page.on('console', (m) => {
-    if (m.type() === 'error' || m.type() === 'warning') console.log(`[page ${m.type()}] ${m.text()}`);
-  });
-  page.on('pageerror', (e) => {
-    console.log(`[page error] ${e.stack || e}`);
-    pageErrors.push(e);
-  });
-  await page.goto(base);
-  await waitState('idle', 30000);
-});
-
-afterEach(async () => {
-  await page?.close();
-  assert.deepEqual(pageErrors.map(String), [], 'the page threw');
-});
-
-const waitState = (state, timeout = 20000) =>
-  page.waitForFunction((s) => window.planarium?.state() === s, state, { timeout });
-
-const waitStatus = (word, timeout = 60000) =>
-  page.waitForFunction((w) => document.getElementById('status')?.textContent === w, word, { timeout });
-
-async function pickScenario(id, name) {
-  await page.selectOption('#scenario', id);
-  await page.waitForFunction((n) => document.getElementById('scenario-name').textContent === n, name);
-  await waitState('idle');
-}
+beforeEach(() => { page = fx.page; });
+const { waitState, waitStatus, pickScenario } = fx;
 
 async function setRange(id, value) {
   await page.$eval(`#${id}`, (el, v) => {
