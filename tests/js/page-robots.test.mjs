@@ -296,12 +296,15 @@ test('open file: an ASV problem is drawn as a chain of vehicles; its solution do
   await fastPlayback();
   await page.click('#run');
   await waitStatus('solved', 90000);
-  const writes = await page.evaluate(async () => typeof (await import('/pkg/planarium.js')).Run.prototype.asv_solution === 'function');
-  await page.waitForTimeout(200);
-  assert.equal(await page.isVisible('#download-solution'), writes, `the core ${writes ? 'writes' : 'does not write'} solution files`);
+  await page.waitForSelector('#download-solution', { state: 'visible' });
   await page.screenshot({ path: join(shots, 'page-asv.png') });
-  if (writes) {
-    const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download-solution')]);
-    assert.match(download.suggestedFilename(), /\.txt$/);
-  }
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download-solution')]);
+  assert.match(download.suggestedFilename(), /\.txt$/);
+  // Read the file back: `m cost`, then m + 1 configurations, the first the problem's start.
+  const lines = readFileSync(await download.path(), 'utf8').trim().split('\n');
+  const [m, cost] = lines[0].trim().split(/\s+/).map(Number);
+  assert.equal(lines.length, m + 2, 'one line per configuration');
+  assert.ok(m > 10 && cost > 0);
+  const problemStart = (await page.evaluate(() => window.planarium.scenario())).start;
+  assert.deepEqual(lines[1].trim().split(/\s+/).map(Number), problemStart);
 });
