@@ -36,6 +36,20 @@ export async function pageFixture() {
     await fx.page.waitForFunction((n) => document.getElementById('scenario-name').textContent === n, name);
     await fx.waitState('idle');
   };
+  /** How many pixels of canvas `id` are within `tol` (per channel) of each `#rrggbb` colour. */
+  fx.countColours = (id, colours, tol = 6) =>
+    fx.page.evaluate(({ id, colours, tol }) => {
+      const c = document.getElementById(id);
+      const px = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      const rgb = colours.map((h) => [1, 3, 5].map((i) => parseInt(h.slice(i, i + 2), 16)));
+      const counts = rgb.map(() => 0);
+      for (let i = 0; i < px.length; i += 4) {
+        rgb.forEach(([r, g, b], k) => {
+          if (Math.abs(px[i] - r) <= tol && Math.abs(px[i + 1] - g) <= tol && Math.abs(px[i + 2] - b) <= tol) counts[k]++;
+        });
+      }
+      return counts;
+    }, { id, colours, tol });
   before(async () => { fx.env = await startBrowser(); });
   after(async () => { await fx.env?.close(); });
   beforeEach(async () => {

@@ -18,7 +18,7 @@ mkdirSync(shots, { recursive: true });
 const fx = await pageFixture();
 let page;
 beforeEach(() => { page = fx.page; });
-const { waitState, waitStatus, pickScenario } = fx;
+const { waitState, waitStatus, pickScenario, countColours } = fx;
 
 async function fastPlayback() {
   await page.$eval('#speed', (el) => {
@@ -29,21 +29,6 @@ async function fastPlayback() {
 
 const nextFrames = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
 
-/** How many pixels of canvas `id` are within `tol` (per channel) of each colour. */
-async function countColours(id, colours, tol = 6) {
-  return page.evaluate(({ id, colours, tol }) => {
-    const c = document.getElementById(id);
-    const px = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-    const rgb = colours.map((h) => [1, 3, 5].map((i) => parseInt(h.slice(i, i + 2), 16)));
-    const counts = rgb.map(() => 0);
-    for (let i = 0; i < px.length; i += 4) {
-      rgb.forEach(([r, g, b], k) => {
-        if (Math.abs(px[i] - r) <= tol && Math.abs(px[i + 1] - g) <= tol && Math.abs(px[i + 2] - b) <= tol) counts[k]++;
-      });
-    }
-    return counts;
-  }, { id, colours, tol });
-}
 
 /** The page position (css px) of world point (x, y) on the workspace canvas (as view.js Layout). */
 async function toPage(x, y) {

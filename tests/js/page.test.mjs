@@ -17,7 +17,7 @@ mkdirSync(shots, { recursive: true });
 const fx = await pageFixture();
 let page;
 beforeEach(() => { page = fx.page; });
-const { waitState, waitStatus, pickScenario } = fx;
+const { waitState, waitStatus, pickScenario, countColours } = fx;
 
 async function setRange(id, value) {
   await page.$eval(`#${id}`, (el, v) => {
@@ -28,21 +28,6 @@ async function setRange(id, value) {
 
 const nextFrames = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
 
-/** How many canvas pixels are within `tol` (per channel) of each colour. */
-async function countColours(colours, tol) {
-  return page.evaluate(({ colours, tol }) => {
-    const c = document.getElementById('canvas');
-    const px = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-    const rgb = colours.map((h) => [1, 3, 5].map((i) => parseInt(h.slice(i, i + 2), 16)));
-    const counts = rgb.map(() => 0);
-    for (let i = 0; i < px.length; i += 4) {
-      rgb.forEach(([r, g, b], k) => {
-        if (Math.abs(px[i] - r) <= tol && Math.abs(px[i + 1] - g) <= tol && Math.abs(px[i + 2] - b) <= tol) counts[k]++;
-      });
-    }
-    return counts;
-  }, { colours, tol });
-}
 
 test('narrow passage: RRT-Connect solves and the canvas shows the trees and the smoothed path', async () => {
   await pickScenario('narrow', 'Narrow passage');
@@ -57,7 +42,7 @@ test('narrow passage: RRT-Connect solves and the canvas shows the trees and the 
   const drawn = await page.evaluate(() => window.planarium.nodeCount());
   assert.ok(drawn > 0, 'tree nodes were revealed');
   await nextFrames();
-  const [path, tree0, tree1] = await countColours([PALETTE.smoothPath, PALETTE.tree0, PALETTE.tree1], 6);
+  const [path, tree0, tree1] = await countColours('canvas', [PALETTE.smoothPath, PALETTE.tree0, PALETTE.tree1], 6);
   console.log(`pixels: smoothed path ${path}, tree 0 ${tree0}, tree 1 ${tree1}; nodes shown ${drawn}`);
   assert.ok(path > 200, `smoothed path pixels: ${path}`);
   assert.ok(tree0 > 20, `tree 0 pixels: ${tree0}`);
