@@ -6,6 +6,7 @@ use crate::robot::{self, Robot, Verdict};
 use crate::scenario::{ObstacleSpec, Scenario, ScenarioError};
 use crate::space_info::SpaceInfo;
 use crate::validity::RobotInWorkspace;
+use std::rc::Rc;
 
 /// Everything a planner run needs.
 pub struct Problem {
@@ -13,8 +14,9 @@ pub struct Problem {
     pub scenario: Scenario,
     /// Space, validity and motion checking.
     pub si: SpaceInfo,
-    /// The robot (for outlines and for turning planning states back into scenario states).
-    pub robot: Box<dyn Robot>,
+    /// The robot (for outlines and for turning planning states back into scenario states): the
+    /// same instance the validity checker uses, so state it learns (a chain's winding) is shared.
+    pub robot: Rc<dyn Robot>,
     /// Start state (canonical).
     pub start: Vec<Real>,
     /// Goal state (canonical), if the task has one.
@@ -57,7 +59,7 @@ impl Problem {
             sc.obstacles.iter().map(shape_of).collect(),
         );
         workspace.open = sc.touching_allowed;
-        let robot: Box<dyn Robot> = robot::from_spec(&sc.robot, sc.body_in_bounds).map_err(|e| ScenarioError::at("robot.kind", e))?;
+        let robot: Rc<dyn Robot> = robot::from_spec(&sc.robot, sc.body_in_bounds).map_err(|e| ScenarioError::at("robot.kind", e))?.into();
         let space = robot.space(&workspace);
         let check = |name: &str, q: &[Real]| -> Result<Vec<Real>, ScenarioError> {
             let dims = robot.external_dims();
@@ -82,8 +84,7 @@ impl Problem {
         };
         let start = check("start", &sc.start)?;
         let goal = sc.goal.as_deref().map(|g| check("goal", g)).transpose()?;
-        let validity = RobotInWorkspace { robot, workspace };
-        let robot = robot::from_spec(&sc.robot, sc.body_in_bounds).map_err(|e| ScenarioError::at("robot.kind", e))?;
+        let validity = RobotInWorkspace { robot: Rc::clone(&robot), workspace };
         Ok(Problem {
             robot,
             scenario: sc.clone(),

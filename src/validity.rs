@@ -29,8 +29,8 @@ pub trait StateValidity {
 /// A robot placed in a workspace.
 #[derive(Debug)]
 pub struct RobotInWorkspace {
-    /// The robot.
-    pub robot: Box<dyn Robot>,
+    /// The robot (shared with the [`Problem`](crate::problem::Problem)).
+    pub robot: std::rc::Rc<dyn Robot>,
     /// The workspace.
     pub workspace: Workspace,
 }

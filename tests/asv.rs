@@ -30,12 +30,14 @@ fn scenario(n: usize, min_area: Option<f64>) -> Scenario {
 }
 
 /// Both checkers' opinion of configuration `c`: the independent one's error, and whether the
-/// planner's robot accepts it (after turning it into a planning state).
+/// planner's robot accepts it. The robot judges `c` as the start and goal of a problem, so the
+/// chain's winding is learnt from `c` itself (a problem refuses states winding against its start).
 fn judge(sc: &Scenario, c: &[f64]) -> (Result<(), String>, bool) {
-    // The start in the scenario is only a placeholder; build the problem around a valid one.
-    let problem = Problem::from_scenario(sc).unwrap_or_else(|e| panic!("{e}"));
-    let robot = match problem.robot.encode(c) {
-        Ok(q) => problem.si.is_valid(&q),
+    let mut own = sc.clone();
+    own.start = c.to_vec();
+    own.goal = Some(c.to_vec());
+    let robot = match Problem::from_scenario(&own) {
+        Ok(p) => p.si.is_valid(&p.start),
         Err(_) => false,
     };
     (check_configuration(sc, c), robot)
