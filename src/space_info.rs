@@ -55,7 +55,7 @@ impl SpaceInfo {
     }
     /// A random state from the robot's sampler (uniform over the space unless the robot knows better).
     #[inline]
-    pub fn sample_uniform(&self, rng: &mut Rng, out: &mut [Real]) {
+    pub fn sample(&self, rng: &mut Rng, out: &mut [Real]) {
         self.validity.sample(&self.space, rng, out)
     }
     /// Where a state is drawn in the workspace.

@@ -19,17 +19,16 @@ pub enum Format {
     AsvProblem,
 }
 
-/// Which format `text` is in, by its content.
+/// Which format `text` is in, by its content: JSON whose top level has the Technion keys
+/// (`OBSTACLES`, `WIDTH`) is a map, other JSON a scenario (which reports its own syntax errors),
+/// anything else an ASV problem file.
 pub fn detect(text: &str) -> Format {
-    let t = text.trim_start();
-    if t.starts_with('{') {
-        if t.contains("\"OBSTACLES\"") || t.contains("\"WIDTH\"") {
-            Format::TechnionMap
-        } else {
-            Format::Scenario
-        }
-    } else {
-        Format::AsvProblem
+    if !text.trim_start().starts_with('{') {
+        return Format::AsvProblem;
+    }
+    match serde_json::from_str::<serde_json::Value>(text) {
+        Ok(serde_json::Value::Object(m)) if m.contains_key("OBSTACLES") || m.contains_key("WIDTH") => Format::TechnionMap,
+        _ => Format::Scenario,
     }
 }
 

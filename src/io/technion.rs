@@ -20,12 +20,7 @@ fn key<'a>(map: &'a serde_json::Map<String, Value>, k: &str) -> Result<&'a Value
 
 /// Read a Technion map as a scenario; `name` (the file's name) becomes part of its title.
 pub fn import_map(text: &str, name: &str) -> Result<Scenario, ScenarioError> {
-    let v: Value = serde_json::from_str(text).map_err(|e| ScenarioError {
-        path: String::new(),
-        message: format!("invalid JSON: {e}"),
-        line: Some(e.line()),
-        column: Some(e.column()),
-    })?;
+    let v: Value = serde_json::from_str(text).map_err(|e| ScenarioError::syntax(&e))?;
     let map = v.as_object().ok_or_else(|| ScenarioError::at("", "a Technion map is a JSON object"))?;
     for k in map.keys() {
         if !["WIDTH", "HEIGHT", "OBSTACLES", "START", "GOAL", "INSPECTION_POINTS"].contains(&k.as_str()) {
@@ -99,6 +94,16 @@ mod tests {
         assert!(sc.touching_allowed);
         let p = Problem::from_scenario(&sc).unwrap();
         assert_eq!(p.si.dims(), 4);
+    }
+
+    #[test]
+    fn a_scenario_mentioning_the_map_keys_is_still_a_scenario() {
+        let sc = crate::scenario::builtin("narrow").unwrap();
+        let mut text = sc.to_json();
+        text = text.replacen("\"notes\": \"", "\"notes\": \"Unlike a Technion map it has no \\\"WIDTH\\\" or \\\"OBSTACLES\\\" key. ", 1);
+        assert_eq!(crate::io::detect(&text), crate::io::Format::Scenario);
+        assert_eq!(crate::io::detect(MP), crate::io::Format::TechnionMap);
+        assert_eq!(crate::io::detect("3\n0.1 0.1 ..."), crate::io::Format::AsvProblem);
     }
 
     #[test]

@@ -72,7 +72,6 @@ mod arm {
 
     #[test]
     fn forward_kinematics_uses_relative_angles() {
-        let RobotSpec::Arm { .. } = &problem("").scenario.robot else { panic!() };
         let arm = ArmRobot::from_spec(&problem("").scenario.robot).unwrap();
         let mut pts = [Vec2::default(); 4];
         arm.joint_points(&[PI / 2.0, -PI / 2.0, 0.0], &mut pts);

@@ -1,5 +1,5 @@
 use super::{PlanResult, Stats};
-use crate::events::{EventKind, EventLog};
+use crate::events::EventLog;
 use crate::math::Real;
 use crate::planners::{self, smoothing, Context, Params, Planner, PlannerData, PlannerSpec, Task};
 use crate::problem::Problem;
@@ -202,10 +202,5 @@ impl Session {
             smoothed: self.problem.decode_path(&self.smoothed),
             stats: self.stats(),
         }
-    }
-
-    /// Whether an event of `kind` is among `records` (helper for tests and tools).
-    pub fn has_event(records: &[f64], kind: EventKind) -> bool {
-        records.chunks(crate::events::STRIDE).any(|r| r[0] == kind as u8 as f64)
     }
 }

@@ -14,6 +14,10 @@ pub struct ScenarioError {
 }
 
 impl ScenarioError {
+    /// A JSON syntax error, with its line and column.
+    pub fn syntax(e: &serde_json::Error) -> Self {
+        ScenarioError { path: String::new(), message: format!("invalid JSON: {e}"), line: Some(e.line()), column: Some(e.column()) }
+    }
     /// An error at a JSON path.
     pub fn at(path: impl Into<String>, message: impl Into<String>) -> Self {
         ScenarioError { path: path.into(), message: message.into(), line: None, column: None }

@@ -313,12 +313,7 @@ impl Scenario {
     /// other error names its JSON path. (Start and goal validity are checked when the scenario
     /// becomes a [`Problem`](crate::problem::Problem).)
     pub fn from_json(text: &str) -> Result<Scenario> {
-        let value: Value = serde_json::from_str(text).map_err(|e| ScenarioError {
-            path: String::new(),
-            message: format!("invalid JSON: {e}"),
-            line: Some(e.line()),
-            column: Some(e.column()),
-        })?;
+        let value: Value = serde_json::from_str(text).map_err(|e| ScenarioError::syntax(&e))?;
         Scenario::from_value(&value)
     }
 

@@ -73,7 +73,7 @@ impl Planner for Rrt {
         if cx.rng.uniform01() < self.goal_bias {
             self.sample.copy_from_slice(&self.task.goal);
         } else {
-            cx.si.sample_uniform(cx.rng, &mut self.sample);
+            cx.si.sample(cx.rng, &mut self.sample);
         }
         cx.events.at(EventKind::Sample, 0, cx.si.project(&self.sample), &self.sample);
         let mut first = true;

@@ -64,7 +64,7 @@ impl Planner for RrtConnect {
         }
         let (a, b) = (self.turn, 1 - self.turn);
         self.turn = b;
-        cx.si.sample_uniform(cx.rng, &mut self.sample);
+        cx.si.sample(cx.rng, &mut self.sample);
         cx.events.at(EventKind::Sample, a, cx.si.project(&self.sample), &self.sample);
         let (grow, added) = self.trees[a].extend(cx, &self.sample, self.range, &mut self.scratch, &mut self.new);
         if grow == Grow::Trapped {
