@@ -35,7 +35,6 @@ let builtins = [];
 let scenarioText = null; // the last valid scenario (reloaded after a crash)
 let sentEdit = false;    // the latest `load` is a start/goal edit
 let course = '';         // the course of the scenario being loaded
-let canWriteAsv = false; // the core writes ASV solution files
 let loaded = null;       // the latest `loaded` message's scenario
 let applyDefaults = false;
 let crashes = [];
@@ -146,7 +145,6 @@ function onReady(msg) {
     registry = msg.planners;
     builtins = msg.builtins;
     panel = createPanel(ui.panel, registry, () => { configure(); clearError(); });
-    canWriteAsv = !!msg.asvSolution;
     const groups = new Map(); // course → optgroup, in the order given
     for (const b of builtins) {
       if (!groups.has(b.course)) {
@@ -402,7 +400,7 @@ const editor = new Editor({
 });
 
 function syncDownload() {
-  ui.download.hidden = !(canWriteAsv && loaded?.robot?.kind === 'asv' && result?.solved && controller.state === 'finished');
+  ui.download.hidden = !(loaded?.robot?.kind === 'asv' && result?.solved && controller.state === 'finished');
 }
 
 ui.download.addEventListener('click', () => { if (worker && result?.solved) send({ type: 'asv-solution' }); });

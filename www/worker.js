@@ -12,7 +12,7 @@
 //   cancel    {}                             stop the run now; it is finished
 //   asv-solution {}                          the finished run's path as an ASV solution file
 // Messages out {type, run, ...}:
-//   ready     {builtins, planners, eventKinds, asvSolution}   asvSolution: the core can write one
+//   ready     {builtins, planners, eventKinds}
 //   loaded    {scenario, start, goal, space, cspace?}  normalised scenario; start/goal outlines
 //                                            (flat); space: the planning space [{lo, hi, wraps}];
 //                                            cspace {n, grid: Uint8Array (transferred), dims} for a
@@ -44,7 +44,7 @@ let dead = false;
 const ready = init().then(() => {
   install_panic_hook();
   post({ type: 'ready', builtins: JSON.parse(builtins()), planners: JSON.parse(planners()),
-         eventKinds: JSON.parse(event_kinds()), asvSolution: typeof Run.prototype.asv_solution === 'function' });
+         eventKinds: JSON.parse(event_kinds()) });
 });
 
 function post(msg, transfer = []) {
@@ -170,8 +170,8 @@ function handle(msg) {
       if (run) { run.cancel(); running = false; flush('cancelled'); }
       return;
     case 'asv-solution':
-      if (!run || typeof run.asv_solution !== 'function') {
-        post({ type: 'error', run: runId, message: 'no solution file can be written for this run' });
+      if (!run) {
+        post({ type: 'error', run: runId, message: 'no run to write a solution file for' });
         return;
       }
       post({ type: 'asv-solution', run: runId, text: run.asv_solution() });

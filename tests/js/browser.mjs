@@ -1,7 +1,15 @@
 // Shared by the browser tests: serve www/ on a free port and launch Debian's chromium headless
 // (playwright-core, a fresh profile per launch, no network beyond loopback).
+import { mkdirSync } from 'node:fs';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 import { serve } from '../../scripts/serve.mjs';
+
+/** The project's root, and the folder screenshots are saved in (`target/`). */
+export const ROOT = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
+export const SHOTS = join(ROOT, 'target');
+mkdirSync(SHOTS, { recursive: true });
 
 export const CHROMIUM_ARGS = ['--no-sandbox', '--disable-gpu', '--disable-background-networking',
   '--disable-component-update', '--no-first-run', '--disable-sync'];

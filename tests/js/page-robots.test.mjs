@@ -4,16 +4,12 @@
 // picker grouped by course. Screenshots go to target/page-*.png.
 import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdirSync, readFileSync } from 'node:fs';
-import { dirname, join } from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { pageFixture } from './browser.mjs';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { pageFixture, ROOT as root, SHOTS as shots } from './browser.mjs';
 import { PALETTE } from '../../www/view.js';
 import { wrapSegments, wrapInto, formatTick } from '../../www/cspace.js';
 
-const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
-const shots = join(root, 'target');
-mkdirSync(shots, { recursive: true });
 
 const fx = await pageFixture();
 let page;

@@ -3,16 +3,12 @@
 // replaced. Screenshots go to target/page-*.png.
 import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdirSync, readFileSync } from 'node:fs';
-import { dirname, join } from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { pageFixture } from './browser.mjs';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { pageFixture, ROOT as root, SHOTS as shots } from './browser.mjs';
 import { PALETTE } from '../../www/view.js';
 import { TRANSITIONS, toDot } from '../../www/controller.js';
 
-const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
-const shots = join(root, 'target');
-mkdirSync(shots, { recursive: true });
 
 const fx = await pageFixture();
 let page;
