@@ -27,17 +27,39 @@ pub enum EventKind {
     TreesConnected = 4,
     /// A solution was found.
     Solved = 5,
+    /// A raw draw of the sampler, checked (`id`: 1 free, 0 occupied) at `x, y`.
+    SampleTry = 6,
+    /// Node `id` got a dynamic domain: radius `px` (∞: none) around its point `x, y`.
+    Domain = 7,
+    /// Node `id` is exhausted (dropped from nearest-neighbour selection), at `x, y`.
+    Exhausted = 8,
+    /// Node `id` (at `x, y`) was rewired to parent `parent` (at `px, py`).
+    Rewire = 9,
+    /// The best solution improved: it ends at node `id`; `parent`: the iteration; `px`: its cost.
+    Cost = 10,
+    /// Coverage grew: the best branch ends at node `id`; `parent`: the iteration; `px`: the
+    /// fraction covered; `py`: points seen.
+    Coverage = 11,
+    /// Inspection point `id` (at `x, y`) was seen for the first time.
+    PointSeen = 12,
 }
 
 impl EventKind {
     /// Every kind with its name, for the JS constant check.
-    pub const ALL: [(EventKind, &'static str); 6] = [
+    pub const ALL: [(EventKind, &'static str); 13] = [
         (EventKind::Sample, "SAMPLE"),
         (EventKind::SampleRejected, "SAMPLE_REJECTED"),
         (EventKind::NodeAdded, "NODE_ADDED"),
         (EventKind::Collision, "COLLISION"),
         (EventKind::TreesConnected, "TREES_CONNECTED"),
         (EventKind::Solved, "SOLVED"),
+        (EventKind::SampleTry, "SAMPLE_TRY"),
+        (EventKind::Domain, "DOMAIN"),
+        (EventKind::Exhausted, "EXHAUSTED"),
+        (EventKind::Rewire, "REWIRE"),
+        (EventKind::Cost, "COST"),
+        (EventKind::Coverage, "COVERAGE"),
+        (EventKind::PointSeen, "POINT_SEEN"),
     ];
 }
 
@@ -81,6 +103,15 @@ impl EventLog {
     #[inline]
     pub fn at(&mut self, kind: EventKind, tree: usize, p: Vec2, q: &[Real]) {
         self.push(kind, tree, -1, -1, p, p, q, q)
+    }
+    /// Record an event that carries values rather than a parent state:
+    /// `[kind, tree, id, parent, x, y, a, b, 0, 0, 0, 0]` (see each [`EventKind`] for the meaning).
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    pub fn mark(&mut self, kind: EventKind, tree: usize, id: i64, parent: f64, p: Vec2, a: f64, b: f64) {
+        if self.enabled {
+            self.data.extend_from_slice(&[kind as u8 as f64, tree as f64, id as f64, parent, p.x, p.y, a, b, 0.0, 0.0, 0.0, 0.0]);
+        }
     }
     /// Number of records waiting.
     pub fn len(&self) -> usize {

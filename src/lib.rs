@@ -32,6 +32,7 @@ pub mod nn;
 pub mod planners;
 pub mod problem;
 pub mod rng;
+pub mod sampler;
 pub mod robot;
 pub mod run;
 pub mod scenario;

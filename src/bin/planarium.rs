@@ -4,7 +4,7 @@
 //! planner registry, so a new parameter needs no CLI code.
 
 use clap::{Arg, ArgAction, ArgMatches, Command};
-use planarium::planners::{self, Params, PlannerSpec, RUN_PARAMS};
+use planarium::planners::{self, Params, PlannerSpec};
 use planarium::problem::Problem;
 use planarium::run::{bench, RunConfig, Session};
 use planarium::scenario::{self, Scenario};
@@ -17,7 +17,7 @@ fn param_flag(name: &str) -> String {
 /// Every parameter name of every planner and of the run loop, once each.
 fn all_param_specs() -> Vec<&'static planners::ParamSpec> {
     let mut out: Vec<&'static planners::ParamSpec> = Vec::new();
-    for p in planners::REGISTRY.iter().flat_map(|p| p.params.iter()).chain(RUN_PARAMS) {
+    for p in planners::REGISTRY.iter().flat_map(|p| p.all_params()) {
         if !out.iter().any(|q| q.name == p.name) {
             out.push(p);
         }
@@ -86,12 +86,11 @@ fn params_for(spec: &'static PlannerSpec, sc: &Scenario, m: &ArgMatches) -> Resu
         Some(d) if d.name == spec.name => {
             Params::from_json(spec, &serde_json::Value::Object(d.params.clone())).map_err(|(k, e)| format!("planner.{k}: {e}"))?
         }
-        _ => Params::default(),
+        _ => Params::defaults(spec),
     };
     for p in all_param_specs() {
         if let Some(v) = m.get_one::<String>(p.name) {
-            let own = spec.params.iter().chain(RUN_PARAMS).any(|q| q.name == p.name);
-            if !own {
+            if spec.param(p.name).is_none() {
                 return Err(format!("--{} is not a parameter of {}", param_flag(p.name), spec.name));
             }
             params.set_text(spec, p.name, v).map_err(|e| {

@@ -192,4 +192,59 @@ impl KdTree {
         self.stack = stack;
         best
     }
+
+    /// The `k` points nearest to `q` as `(id, distance)`, nearest first (ties: insertion order).
+    pub fn k_nearest(&mut self, space: &StateSpace, q: &[Real], k: usize) -> Vec<(u32, Real)> {
+        self.collect(space, q, k, Real::INFINITY)
+    }
+
+    /// Every point within distance `r` of `q` (inclusive) as `(id, distance)`, nearest first.
+    pub fn within(&mut self, space: &StateSpace, q: &[Real], r: Real) -> Vec<(u32, Real)> {
+        self.collect(space, q, usize::MAX, r)
+    }
+
+    /// At most `k` points within `r`, nearest first; ties broken by insertion order.
+    fn collect(&mut self, space: &StateSpace, q: &[Real], k: usize, r: Real) -> Vec<(u32, Real)> {
+        if k == 0 {
+            return Vec::new();
+        }
+        // (distance, insertion index), kept sorted; the bound is the k-th distance once full.
+        let mut found: Vec<(Real, usize)> = Vec::new();
+        let bound = |found: &Vec<(Real, usize)>| if found.len() >= k { found[k - 1].0 } else { r };
+        let offer = |dist: Real, i: usize, found: &mut Vec<(Real, usize)>| {
+            if dist <= r && (found.len() < k || (dist, i) < found[k - 1]) {
+                let at = found.partition_point(|e| *e < (dist, i));
+                found.insert(at, (dist, i));
+                found.truncate(k);
+            }
+        };
+        let d = self.dims;
+        if self.root == NONE {
+            for i in 0..self.ids.len() {
+                offer(space.distance(q, self.p(i)), i, &mut found);
+            }
+        } else {
+            let mut stack = std::mem::take(&mut self.stack);
+            stack.clear();
+            stack.push((self.root, 0.0));
+            while let Some((node, b)) = stack.pop() {
+                if b > bound(&found) {
+                    continue;
+                }
+                let i = node as usize;
+                offer(space.distance(q, self.p(i)), i, &mut found);
+                for child in [self.left[i], self.right[i]] {
+                    if child != NONE {
+                        let c = child as usize;
+                        let cb = space.box_lower_bound(q, &self.lo[c * d..(c + 1) * d], &self.hi[c * d..(c + 1) * d]);
+                        if cb <= bound(&found) {
+                            stack.push((child, cb));
+                        }
+                    }
+                }
+            }
+            self.stack = stack;
+        }
+        found.into_iter().map(|(dist, i)| (self.ids[i], dist)).collect()
+    }
 }

@@ -55,3 +55,27 @@ fn filtered_nearest_skips_excluded_ids() {
     assert_eq!(t.nearest(&s, &[0.5, 0.5]).unwrap().0, 50);
     assert_eq!(t.nearest_where(&s, &[0.5, 0.5], |id| id % 2 == 1).unwrap().0, 49);
 }
+
+#[test]
+fn k_nearest_and_within_match_a_sorted_scan() {
+    let dims = vec![Dim { lo: 0.0, hi: 1.0, wraps: false }, Dim { lo: 0.0, hi: 1.0, wraps: false }, Dim { lo: -PI, hi: PI, wraps: true }];
+    let s = StateSpace { dims, metric: Metric::TranslationRotation { weight: 0.3 } };
+    let mut rng = Rng::new(5);
+    let mut t = KdTree::new(3);
+    let mut pts = Vec::new();
+    for i in 0..500u32 {
+        let mut q = vec![0.0; 3];
+        s.sample_uniform(&mut rng, &mut q);
+        t.add(&s, &q, i);
+        pts.push(q);
+        if i % 50 == 0 || i == 499 {
+            let mut query = vec![0.0; 3];
+            s.sample_uniform(&mut rng, &mut query);
+            let mut all: Vec<(u32, Real)> = pts.iter().enumerate().map(|(j, p)| (j as u32, s.distance(&query, p))).collect();
+            all.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
+            assert_eq!(t.k_nearest(&s, &query, 7), all.iter().take(7).copied().collect::<Vec<_>>());
+            let r = 0.4;
+            assert_eq!(t.within(&s, &query, r), all.iter().filter(|e| e.1 <= r).copied().collect::<Vec<_>>());
+        }
+    }
+}

@@ -6,6 +6,7 @@
 //! [`REGISTRY`] lists every planner with its [`ParamSpec`]s; the page builds its parameter panel
 //! from that list.
 
+pub mod inspection;
 mod params;
 pub mod rrt;
 pub mod smoothing;
@@ -14,7 +15,8 @@ pub mod tree;
 pub use params::{ParamKind, ParamSpec, Params};
 pub use tree::{PlannerData, Tree};
 
-use crate::events::EventLog;
+use crate::events::{EventKind, EventLog};
+use crate::sampler::{Draw, Sampler};
 use crate::math::Real;
 use crate::rng::Rng;
 use crate::space_info::SpaceInfo;
@@ -24,10 +26,41 @@ use crate::space_info::SpaceInfo;
 pub struct Task {
     /// Start state.
     pub start: Vec<Real>,
-    /// Goal state.
-    pub goal: Vec<Real>,
+    /// Goal state (absent for an inspection task).
+    pub goal: Option<Vec<Real>>,
     /// Distance within which the goal counts as reached (0: exactly).
     pub goal_tolerance: Real,
+    /// The points to inspect, for an inspection task.
+    pub inspection: Option<InspectionTask>,
+}
+
+impl Task {
+    /// The goal, for planners that need one (the session refuses goal-less tasks to them).
+    pub fn goal(&self) -> &[Real] {
+        self.goal.as_deref().expect("the session gives goal planners a goal")
+    }
+}
+
+/// Points of interest and the sensor that must see them.
+#[derive(Clone, Debug)]
+pub struct InspectionTask {
+    /// Points to see, in the workspace.
+    pub points: Vec<crate::math::Vec2>,
+    /// Sensor field of view, radians (centred on the sensor's heading).
+    pub fov: Real,
+    /// Sensor range.
+    pub range: Real,
+    /// The scenario's coverage target (fraction of points), the default of the planner's own.
+    pub coverage: Real,
+}
+
+/// What kind of task a planner solves.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TaskKind {
+    /// Reach the goal.
+    Goal,
+    /// See the inspection points.
+    Inspection,
 }
 
 /// What an iteration may touch.
@@ -40,6 +73,23 @@ pub struct Context<'a> {
     pub events: &'a mut EventLog,
     /// Nodes the planner may still add (the run's node limit, honoured inside an iteration too).
     pub nodes_left: usize,
+    /// The run's sampler.
+    pub sampler: &'a mut Sampler,
+    /// The iteration being run (0 first).
+    pub iteration: u64,
+}
+
+impl Context<'_> {
+    /// Draw a sample for tree `tree` from the run's sampler; `false` when the sampler gave up.
+    /// Logs a `Sample` event when it succeeds.
+    pub fn sample(&mut self, tree: usize, out: &mut [Real]) -> bool {
+        let mut d = Draw { si: self.si, rng: self.rng, events: self.events, tree };
+        let ok = self.sampler.sample(&mut d, out);
+        if ok {
+            self.events.at(EventKind::Sample, tree, self.si.project(out), out);
+        }
+        ok
+    }
 }
 
 /// A planner, advanced one iteration at a time.
@@ -50,6 +100,11 @@ pub trait Planner {
     fn node_count(&self) -> usize;
     /// The trees, for drawing and checking.
     fn data(&self) -> PlannerData;
+    /// For planners that keep improving after a first solution (RRT*, inspection): the best
+    /// path so far, which the session returns when a limit stops the run.
+    fn best_so_far(&self) -> Option<Vec<Vec<Real>>> {
+        None
+    }
 }
 
 /// A registered planner: its name, what it is, its parameters, and how to make one.
@@ -60,14 +115,41 @@ pub struct PlannerSpec {
     pub label: &'static str,
     /// One line on what it does.
     pub summary: &'static str,
-    /// Its parameters.
+    /// Its own parameters.
     pub params: &'static [ParamSpec],
+    /// The shared groups of parameters it also takes (sampler, tree variants), between its own
+    /// and the run parameters. Its own take precedence (a planner may change a default).
+    pub groups: &'static [ParamGroup],
+    /// The task it solves.
+    pub task: TaskKind,
     /// Construct it for a task.
     pub make: fn(&SpaceInfo, &Task, &Params) -> Box<dyn Planner>,
 }
 
+/// A named group of parameters shared by several planners.
+#[derive(Clone, Copy, Debug)]
+pub struct ParamGroup {
+    /// Name (JSON).
+    pub name: &'static str,
+    /// Title in the page.
+    pub label: &'static str,
+    /// The parameters.
+    pub params: &'static [ParamSpec],
+}
+
+impl PlannerSpec {
+    /// Every parameter the planner takes, in lookup order: its own, its groups', the run's.
+    pub fn all_params(&self) -> impl Iterator<Item = &'static ParamSpec> + '_ {
+        self.params.iter().chain(self.groups.iter().flat_map(|g| g.params.iter())).chain(RUN_PARAMS.iter())
+    }
+    /// The spec of one of its parameters.
+    pub fn param(&self, name: &str) -> Option<&'static ParamSpec> {
+        self.all_params().find(|p| p.name == name)
+    }
+}
+
 /// Every planner.
-pub static REGISTRY: &[PlannerSpec] = &[rrt::rrt::SPEC, rrt::rrt_connect::SPEC];
+pub static REGISTRY: &[PlannerSpec] = &[rrt::rrt::SPEC, rrt::rrt_connect::SPEC, rrt::rrt_star::SPEC, inspection::SPEC];
 
 /// A planner by name.
 pub fn find(name: &str) -> Option<&'static PlannerSpec> {
@@ -87,6 +169,12 @@ pub fn registry_json() -> String {
             serde_json::json!({
                 "name": p.name, "label": p.label, "summary": p.summary,
                 "params": p.params.iter().map(ParamSpec::to_json).collect::<Vec<_>>(),
+                "groups": p.groups.iter().map(|g| serde_json::json!({
+                    "name": g.name, "label": g.label,
+                    // A planner's own parameter of the same name replaces the group's.
+                    "params": g.params.iter().filter(|s| !p.params.iter().any(|o| o.name == s.name)).map(ParamSpec::to_json).collect::<Vec<_>>(),
+                })).collect::<Vec<_>>(),
+                "task": match p.task { TaskKind::Goal => "goal", TaskKind::Inspection => "inspection" },
             })
         })
         .collect();

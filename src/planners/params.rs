@@ -77,29 +77,36 @@ impl ParamSpec {
     }
 }
 
-/// Parameter values, checked against a planner's specs (and the run parameters).
+/// Parameter values, checked against a planner's specs (its own, its groups', the run's).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Params {
     values: Map<String, Value>,
+    /// The planner the values were checked for (its defaults apply); none: the first declaration.
+    planner: Option<&'static str>,
 }
 
 impl Params {
     /// Check a JSON object of parameters against `spec`'s and the run loop's parameters. Unknown
     /// names and bad values are errors `(name, message)`.
-    pub fn from_json(spec: &super::PlannerSpec, v: &Value) -> Result<Params, (String, String)> {
+    pub fn from_json(spec: &'static super::PlannerSpec, v: &Value) -> Result<Params, (String, String)> {
         let map = v.as_object().ok_or_else(|| (String::new(), "parameters must be an object".to_string()))?;
         let mut values = Map::new();
         for (k, val) in map {
-            let ps = spec.params.iter().chain(super::RUN_PARAMS).find(|p| p.name == k).ok_or_else(|| {
-                let known: Vec<&str> = spec.params.iter().chain(super::RUN_PARAMS).map(|p| p.name).collect();
+            let ps = spec.param(k).ok_or_else(|| {
+                let mut known: Vec<&str> = spec.all_params().map(|p| p.name).collect();
+                known.dedup();
                 (k.clone(), format!("unknown parameter of {} (known: {})", spec.name, known.join(", ")))
             })?;
             values.insert(k.clone(), ps.check(val).map_err(|m| (k.clone(), m))?);
         }
-        Ok(Params { values })
+        Ok(Params { values, planner: Some(spec.name) })
+    }
+    /// No values set, for `spec` (its defaults apply).
+    pub fn defaults(spec: &'static super::PlannerSpec) -> Params {
+        Params { values: Map::new(), planner: Some(spec.name) }
     }
     /// Set one value from text (the CLI): numbers or choice names. Checked like JSON.
-    pub fn set_text(&mut self, spec: &super::PlannerSpec, name: &str, text: &str) -> Result<(), String> {
+    pub fn set_text(&mut self, spec: &'static super::PlannerSpec, name: &str, text: &str) -> Result<(), String> {
         let v = text.parse::<f64>().map(|x| json!(x)).unwrap_or_else(|_| json!(text));
         let mut m = self.values.clone();
         m.insert(name.to_string(), v);
@@ -107,7 +114,8 @@ impl Params {
         Ok(())
     }
     fn lookup(&self, name: &str) -> (Option<&Value>, &'static ParamSpec) {
-        (self.values.get(name), find_spec(name))
+        let spec = self.planner.and_then(super::find).and_then(|p| p.param(name));
+        (self.values.get(name), spec.unwrap_or_else(|| find_spec(name)))
     }
     /// A number parameter (its default when unset).
     pub fn real(&self, name: &str) -> f64 {
@@ -133,8 +141,7 @@ impl Params {
 fn find_spec(name: &str) -> &'static ParamSpec {
     super::REGISTRY
         .iter()
-        .flat_map(|p| p.params.iter())
-        .chain(super::RUN_PARAMS)
+        .flat_map(|p| p.all_params())
         .find(|p| p.name == name)
         .unwrap_or_else(|| panic!("parameter {name} is not declared by any planner"))
 }

@@ -1,11 +1,63 @@
-//! The search tree shared by the RRT family, and its one growth step.
+//! The search tree shared by the RRT family, and its one growth step, with the variants that
+//! change how a node is chosen to grow ([`TreeOptions`]):
+//!
+//! - **Dynamic domain** (A. Yershova, L. Jaillet, T. Siméon, S. M. LaValle, "Dynamic-Domain RRTs",
+//!   ICRA 2005): a node whose expansion fails gets a domain radius `dd_radius`; a sample farther
+//!   from its nearest node than that node's radius is rejected before any check. The adaptive
+//!   variant (L. Jaillet et al., IROS 2005) grows a radius by `1 + dd_adaptive` when the node
+//!   expands and shrinks it by `1 − dd_adaptive` when it fails, never below `dd_min_radius`.
+//! - **Exhausted nodes** (report 001): each node counts its failed expansions; with the `drop`
+//!   policy a node that failed `exhausted` times leaves nearest-neighbour selection; with
+//!   `weighted` every node stays and the lowest `H = (d − dmin)/(dmax − dmin) + (n − nmin)/(nmax −
+//!   nmin)` is chosen (d: distance to the sample, n: failures).
 
-use super::Context;
+use super::{Context, ParamGroup, ParamSpec, Params};
 use crate::events::EventKind;
 use crate::math::Real;
 use crate::motion::MotionValidator;
 use crate::nn::KdTree;
 use crate::status::Grow;
+
+/// The tree variants' parameters, shared by RRT and RRT-Connect.
+pub static TREE_PARAMS: &[ParamSpec] = &[
+    ParamSpec::real("dd_radius", "Domain radius", 0.0, 1e6, 0.0, "Dynamic-Domain RRT: radius given to a node whose expansion fails; samples beyond their nearest node's radius are rejected unchecked (0: off)."),
+    ParamSpec::real("dd_adaptive", "Domain adaptation", 0.0, 0.99, 0.0, "Adaptive Dynamic-Domain: a radius grows by this fraction on success and shrinks by it on failure (0: fixed radius)."),
+    ParamSpec::real("dd_min_radius", "Smallest domain", 0.0, 1e6, 0.0, "Adaptive Dynamic-Domain: the smallest radius (0: the motion resolution)."),
+    ParamSpec::int("exhausted", "Exhausted after", 0.0, 1e6, 0.0, "Exhausted nodes: failed expansions after which a node is exhausted (0: off)."),
+    ParamSpec::choice("exhausted_policy", "Exhausted policy", &["drop", "weighted"], 0, "drop: exhausted nodes leave nearest-neighbour selection; weighted: pick the lowest distance-plus-failures score H."),
+];
+
+/// The tree variants as a group of the page's parameter panel.
+pub const TREE_GROUP: ParamGroup = ParamGroup { name: "tree", label: "Tree variants", params: TREE_PARAMS };
+
+/// How a tree chooses the node to grow, from [`TREE_PARAMS`].
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct TreeOptions {
+    /// Dynamic-domain radius (0: off).
+    pub dd_radius: Real,
+    /// Adaptive factor (0: fixed).
+    pub dd_adaptive: Real,
+    /// Smallest adaptive radius.
+    pub dd_min_radius: Real,
+    /// Failures that exhaust a node (0: off).
+    pub exhausted: u32,
+    /// Weighted (history-based) selection instead of dropping.
+    pub weighted: bool,
+}
+
+impl TreeOptions {
+    /// The options `params` set (resolution: the default smallest domain).
+    pub fn from_params(params: &Params, resolution: Real) -> TreeOptions {
+        let min = params.real("dd_min_radius");
+        TreeOptions {
+            dd_radius: params.real("dd_radius"),
+            dd_adaptive: params.real("dd_adaptive"),
+            dd_min_radius: if min > 0.0 { min } else { resolution },
+            exhausted: params.real("exhausted") as u32,
+            weighted: params.choice("exhausted_policy") == "weighted",
+        }
+    }
+}
 
 /// A tree of states: flat coordinates, parent links, and a nearest-neighbour index.
 #[derive(Clone, Debug)]
@@ -16,6 +68,13 @@ pub struct Tree {
     nn: KdTree,
     /// Which tree this is (0: rooted at the start, 1: at the goal), for events.
     pub index: usize,
+    opts: TreeOptions,
+    /// Dynamic-domain radius per node (∞: unbounded), when dynamic domains are on.
+    radius: Vec<Real>,
+    /// Failed expansions per node, when exhausted nodes are on.
+    fails: Vec<u32>,
+    /// Samples rejected by a dynamic domain, or because every node was exhausted.
+    pub rejected: u64,
 }
 
 /// The most steps one CONNECT takes (every step makes progress; this bounds an iteration's time).
@@ -27,8 +86,13 @@ pub(crate) const ROOT: u32 = u32::MAX;
 impl Tree {
     /// A tree rooted at `root`.
     pub fn new(cx: &mut Context, root: &[Real], index: usize) -> Tree {
+        Tree::with_options(cx, root, index, TreeOptions::default())
+    }
+    /// A tree rooted at `root` that grows with the variants of `opts`.
+    pub fn with_options(cx: &mut Context, root: &[Real], index: usize, opts: TreeOptions) -> Tree {
         let dims = root.len();
-        let mut t = Tree { dims, states: Vec::new(), parents: Vec::new(), nn: KdTree::new(dims), index };
+        let (radius, fails) = (Vec::new(), Vec::new());
+        let mut t = Tree { dims, states: Vec::new(), parents: Vec::new(), nn: KdTree::new(dims), index, opts, radius, fails, rejected: 0 };
         t.add(cx, root, ROOT);
         cx.nodes_left = cx.nodes_left.saturating_sub(1);
         t
@@ -57,11 +121,85 @@ impl Tree {
         self.states.extend_from_slice(q);
         self.parents.push(parent);
         self.nn.add(&cx.si.space, q, id);
+        if self.opts.dd_radius > 0.0 {
+            self.radius.push(Real::INFINITY);
+        }
+        if self.opts.exhausted > 0 {
+            self.fails.push(0);
+        }
         id
     }
     /// The node nearest to `q`.
     pub fn nearest(&mut self, cx: &Context, q: &[Real]) -> (u32, Real) {
         self.nn.nearest(&cx.si.space, q).expect("a tree always has its root")
+    }
+    /// The node to grow toward `q` under the exhausted-node policy (the nearest when it is off),
+    /// or `None` when every node is exhausted.
+    pub fn select(&mut self, cx: &Context, q: &[Real]) -> Option<(u32, Real)> {
+        let limit = self.opts.exhausted;
+        if limit == 0 {
+            return Some(self.nearest(cx, q));
+        }
+        if !self.opts.weighted {
+            let fails = &self.fails;
+            return self.nn.nearest_where(&cx.si.space, q, |i| fails[i as usize] < limit);
+        }
+        // History-weighted: two passes, as report 001 describes.
+        let n = self.len();
+        let dist: Vec<Real> = (0..n as u32).map(|i| cx.si.distance(self.state(i), q)).collect();
+        let (mut dmin, mut dmax) = (Real::INFINITY, Real::NEG_INFINITY);
+        for &d in &dist {
+            dmin = dmin.min(d);
+            dmax = dmax.max(d);
+        }
+        let nmin = *self.fails.iter().min().expect("a root") as Real;
+        let nmax = *self.fails.iter().max().expect("a root") as Real;
+        let norm = |v: Real, lo: Real, hi: Real| if hi > lo { (v - lo) / (hi - lo) } else { 0.0 };
+        let mut best = (0u32, Real::INFINITY);
+        for (i, &d) in dist.iter().enumerate() {
+            let h = norm(d, dmin, dmax) + norm(self.fails[i] as Real, nmin, nmax);
+            if h < best.1 {
+                best = (i as u32, h);
+            }
+        }
+        Some((best.0, dist[best.0 as usize]))
+    }
+    /// A node's dynamic-domain radius (∞ when it has none or domains are off).
+    pub fn domain(&self, i: u32) -> Real {
+        self.radius.get(i as usize).copied().unwrap_or(Real::INFINITY)
+    }
+    /// A node's failed expansions (0 when exhausted nodes are off).
+    pub fn failures(&self, i: u32) -> u32 {
+        self.fails.get(i as usize).copied().unwrap_or(0)
+    }
+    /// Whether a node is exhausted.
+    pub fn is_exhausted(&self, i: u32) -> bool {
+        self.opts.exhausted > 0 && self.failures(i) >= self.opts.exhausted
+    }
+
+    /// Book an expansion of `near`: its failure count and dynamic domain.
+    fn record(&mut self, cx: &mut Context, near: u32, failed: bool) {
+        let o = self.opts;
+        let i = near as usize;
+        if o.exhausted > 0 && failed {
+            self.fails[i] += 1;
+            if self.fails[i] == o.exhausted {
+                cx.events.mark(EventKind::Exhausted, self.index, near as i64, -1.0, cx.si.project(self.state(near)), 0.0, 0.0);
+            }
+        }
+        if o.dd_radius > 0.0 {
+            let r = self.radius[i];
+            let next = match (failed, r.is_finite()) {
+                (true, false) => o.dd_radius,
+                (true, true) if o.dd_adaptive > 0.0 => (r * (1.0 - o.dd_adaptive)).max(o.dd_min_radius),
+                (false, true) if o.dd_adaptive > 0.0 => r * (1.0 + o.dd_adaptive),
+                _ => r,
+            };
+            if next != r {
+                self.radius[i] = next;
+                cx.events.mark(EventKind::Domain, self.index, near as i64, -1.0, cx.si.project(self.state(near)), next, 0.0);
+            }
+        }
     }
     /// States from the root to node `i`.
     pub fn path_to(&self, mut i: u32) -> Vec<Vec<Real>> {
@@ -74,12 +212,31 @@ impl Tree {
         out
     }
 
-    /// Grow one step of at most `range` from the node nearest `target` toward it (RRT's EXTEND).
-    /// Returns the outcome and the node reached or added (the nearest node when trapped).
+    /// Grow one step of at most `range` toward a sample (RRT's EXTEND), from the node
+    /// [`select`](Self::select) picks; a sample outside that node's dynamic domain is rejected
+    /// unchecked. Returns the outcome and the node reached or added (the selected node when
+    /// trapped or rejected).
+    pub fn extend_sample(&mut self, cx: &mut Context, target: &[Real], range: Real, scratch: &mut [Real], new: &mut [Real]) -> (Grow, u32) {
+        self.grow(cx, target, range, scratch, new, true)
+    }
+
+    /// Grow one step of at most `range` toward `target` (a state of the other tree, or the next
+    /// step of a CONNECT), from the node [`select`](Self::select) picks; no domain applies.
     pub fn extend(&mut self, cx: &mut Context, target: &[Real], range: Real, scratch: &mut [Real], new: &mut [Real]) -> (Grow, u32) {
-        let (near, d) = self.nearest(cx, target);
+        self.grow(cx, target, range, scratch, new, false)
+    }
+
+    fn grow(&mut self, cx: &mut Context, target: &[Real], range: Real, scratch: &mut [Real], new: &mut [Real], sample: bool) -> (Grow, u32) {
+        let Some((near, d)) = self.select(cx, target) else {
+            self.rejected += 1;
+            return (Grow::Rejected, 0);
+        };
         if d == 0.0 {
             return (Grow::Reached, near);
+        }
+        if sample && d > self.domain(near) {
+            self.rejected += 1;
+            return (Grow::Rejected, near);
         }
         if cx.nodes_left == 0 {
             return (Grow::Trapped, near);
@@ -98,8 +255,11 @@ impl Tree {
         let near_state = &self.states[near as usize * self.dims..(near as usize + 1) * self.dims];
         if cx.si.check_motion(near_state, new, scratch).is_err() {
             cx.events.at(EventKind::Collision, self.index, cx.si.project(scratch), scratch);
+            cx.sampler.note_collision(scratch);
+            self.record(cx, near, true);
             return (Grow::Trapped, near);
         }
+        self.record(cx, near, false);
         let id = self.add(cx, new, near);
         cx.nodes_left -= 1;
         let (p, q) = (cx.si.project(new), cx.si.project(self.state(near)));

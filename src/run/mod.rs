@@ -10,7 +10,7 @@ mod result;
 mod session;
 
 pub use fingerprint::{fingerprint, fnv1a, Fingerprint, FNV_OFFSET};
-pub use result::{PlanResult, Stats};
+pub use result::{PlanResult, SamplerSummary, Stats};
 pub use session::{RunConfig, Session};
 
 #[cfg(test)]

@@ -18,6 +18,42 @@ pub struct Stats {
     pub smoothed_cost: Option<Real>,
     /// Smoothing time, milliseconds.
     pub smoothing_ms: f64,
+    /// What the sampler spent.
+    pub sampler: SamplerSummary,
+}
+
+/// What the sampler spent (the contract's `stats.sampler`).
+#[derive(Clone, Debug, Default, Serialize, PartialEq)]
+pub struct SamplerSummary {
+    /// The sampler's name.
+    pub name: &'static str,
+    /// Samples handed to the planner.
+    pub accepted: u64,
+    /// Samples given up after `sampler_tries` raw draws.
+    pub failed: u64,
+    /// Raw states drawn.
+    pub draws: u64,
+    /// State checks the sampler spent (part of `checks`).
+    pub checks: u64,
+    /// Raw draws per accepted sample.
+    pub draws_per_sample: Real,
+    /// State checks per accepted sample.
+    pub checks_per_sample: Real,
+}
+
+impl SamplerSummary {
+    /// The summary of a sampler's statistics.
+    pub fn of(name: &'static str, s: crate::sampler::SamplerStats) -> SamplerSummary {
+        SamplerSummary {
+            name,
+            accepted: s.accepted,
+            failed: s.failed,
+            draws: s.draws,
+            checks: s.checks,
+            draws_per_sample: s.draws_per_sample(),
+            checks_per_sample: s.checks_per_sample(),
+        }
+    }
 }
 
 /// A planning result, as the CLI prints it with `--json` and the worker posts it.

@@ -1,7 +1,8 @@
-use super::{PlanResult, Stats};
+use super::{PlanResult, SamplerSummary, Stats};
 use crate::events::EventLog;
 use crate::math::Real;
-use crate::planners::{self, smoothing, Context, Params, Planner, PlannerData, PlannerSpec, Task};
+use crate::planners::{self, smoothing, Context, InspectionTask, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind};
+use crate::sampler::Sampler;
 use crate::problem::Problem;
 use crate::rng::Rng;
 use crate::status::Status;
@@ -29,6 +30,7 @@ pub struct Session {
     spec: &'static PlannerSpec,
     config: RunConfig,
     planner: Box<dyn Planner>,
+    sampler: Sampler,
     rng: Rng,
     events: EventLog,
     status: Status,
@@ -43,14 +45,30 @@ pub struct Session {
 
 impl Session {
     /// A run of `config` on `problem`. Errors name an unknown planner or a task it cannot do.
-    pub fn new(problem: Problem, config: RunConfig) -> Result<Session, String> {
+    pub fn new(problem: Problem, mut config: RunConfig) -> Result<Session, String> {
         let spec = planners::find(&config.planner)
             .ok_or_else(|| format!("unknown planner \"{}\" (known: {})", config.planner, planners::names().join(", ")))?;
-        let goal = problem.goal.clone().ok_or_else(|| format!("{} needs a goal; this scenario has none", spec.label))?;
-        let task = Task { start: problem.start.clone(), goal, goal_tolerance: problem.goal_tolerance };
+        // Re-check the values against this planner, so its own defaults apply.
+        config.params = Params::from_json(spec, &serde_json::Value::Object(config.params.values().clone())).map_err(|(k, e)| format!("{k}: {e}"))?;
+        let inspection = problem.scenario.inspection.as_ref().map(|i| InspectionTask {
+            points: i.points.iter().map(|p| crate::math::Vec2::new(p[0], p[1])).collect(),
+            fov: i.fov,
+            range: i.range,
+            coverage: i.coverage,
+        });
+        match spec.task {
+            TaskKind::Goal if problem.goal.is_none() => return Err(format!("{} needs a goal; this scenario has none", spec.label)),
+            TaskKind::Inspection if inspection.is_none() => {
+                return Err(format!("{} needs inspection points; this scenario has none", spec.label))
+            }
+            _ => {}
+        }
+        let task = Task { start: problem.start.clone(), goal: problem.goal.clone(), goal_tolerance: problem.goal_tolerance, inspection };
         problem.si.reset_checks();
         let planner = (spec.make)(&problem.si, &task, &config.params);
+        let sampler = Sampler::from_params(&problem.si, task.goal.as_deref(), &config.params);
         Ok(Session {
+            sampler,
             rng: Rng::new(config.seed),
             events: EventLog::new(config.record_events),
             problem,
@@ -105,12 +123,19 @@ impl Session {
         let mut done = 0;
         while done < max_iterations {
             if let Some(s) = self.limits_status() {
-                self.status = s;
+                self.stop(s);
                 break;
             }
             let max_nodes = self.config.params.real("max_nodes") as usize;
             let nodes_left = max_nodes.saturating_sub(self.planner.node_count());
-            let mut cx = Context { si: &self.problem.si, rng: &mut self.rng, events: &mut self.events, nodes_left };
+            let mut cx = Context {
+                si: &self.problem.si,
+                rng: &mut self.rng,
+                events: &mut self.events,
+                nodes_left,
+                sampler: &mut self.sampler,
+                iteration: self.iterations,
+            };
             let found = self.planner.iterate(&mut cx);
             self.iterations += 1;
             done += 1;
@@ -131,10 +156,18 @@ impl Session {
         self.elapsed_ms = base + begin.elapsed().as_secs_f64() * 1000.0;
         if self.status == Status::Running {
             if let Some(s) = self.limits_status() {
-                self.status = s;
+                self.stop(s);
             }
         }
         self.status
+    }
+
+    /// A limit was reached: an anytime planner's best path so far still solves the task.
+    fn stop(&mut self, limit: Status) {
+        match self.planner.best_so_far() {
+            Some(path) => self.finish_solved(path),
+            None => self.status = limit,
+        }
     }
 
     fn finish_solved(&mut self, path: Vec<Vec<Real>>) {
@@ -187,6 +220,7 @@ impl Session {
             cost: solved.then(|| smoothing::path_cost(si, &self.path)),
             smoothed_cost: solved.then(|| smoothing::path_cost(si, &self.smoothed)),
             smoothing_ms: self.smoothing_ms,
+            sampler: SamplerSummary::of(self.sampler.name(), self.sampler.stats()),
         }
     }
 

@@ -1,9 +1,10 @@
-//! The RRT family: [`rrt`] (single tree, goal bias, extend or connect growth) and
-//! [`rrt_connect`] (two trees, alternating).
+//! The RRT family: [`rrt`] (single tree, goal bias, extend or connect growth),
+//! [`rrt_connect`] (two trees, alternating) and [`rrt_star`] (rewiring toward shorter paths).
 
 #[allow(clippy::module_inception)] // planners/rrt/rrt.rs, one planner per file
 pub mod rrt;
 pub mod rrt_connect;
+pub mod rrt_star;
 
 use crate::planners::ParamSpec;
 

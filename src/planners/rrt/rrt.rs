@@ -12,7 +12,9 @@ use super::{resolve_range, RANGE};
 use crate::events::EventKind;
 use crate::math::Real;
 use crate::planners::tree::MAX_CONNECT_STEPS;
-use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, Tree};
+use crate::planners::tree::{TreeOptions, TREE_GROUP};
+use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
+use crate::sampler::SAMPLER_GROUP;
 use crate::space_info::SpaceInfo;
 use crate::status::Grow;
 
@@ -22,13 +24,15 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     label: "RRT",
     summary: "One tree from the start, grown toward random samples, biased to the goal.",
     params: PARAMS,
+    groups: &[SAMPLER_GROUP, TREE_GROUP],
+    task: TaskKind::Goal,
     make: |si, task, params| Box::new(Rrt::new(si, task, params)),
 };
 
 /// RRT's parameters.
 pub const PARAMS: &[ParamSpec] = &[
     RANGE,
-    ParamSpec::real("goal_bias", "Goal bias", 0.0, 1.0, 0.05, "Probability of sampling the goal itself."),
+    ParamSpec::real("goal_bias", "Goal bias", 0.0, 1.0, 0.05, "Probability of sampling the goal itself (any sampler)."),
     ParamSpec::choice(
         "extend",
         "Growth",
@@ -42,8 +46,8 @@ pub const PARAMS: &[ParamSpec] = &[
 pub struct Rrt {
     task: Task,
     range: Real,
-    goal_bias: Real,
     connect: bool,
+    opts: TreeOptions,
     tree: Option<Tree>,
     sample: Vec<Real>,
     scratch: Vec<Real>,
@@ -57,8 +61,8 @@ impl Rrt {
         Rrt {
             task: task.clone(),
             range: resolve_range(si, params.real("range")),
-            goal_bias: params.real("goal_bias"),
             connect: params.choice("extend") == "connect",
+            opts: TreeOptions::from_params(params, si.resolution),
             tree: None,
             sample: vec![0.0; n],
             scratch: vec![0.0; n],
@@ -69,30 +73,33 @@ impl Rrt {
 
 impl Planner for Rrt {
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
-        let tree = self.tree.get_or_insert_with(|| Tree::new(cx, &self.task.start, 0));
-        if cx.rng.uniform01() < self.goal_bias {
-            self.sample.copy_from_slice(&self.task.goal);
-        } else {
-            cx.si.sample(cx.rng, &mut self.sample);
+        let opts = self.opts;
+        let tree = self.tree.get_or_insert_with(|| Tree::with_options(cx, &self.task.start, 0, opts));
+        if !cx.sample(0, &mut self.sample) {
+            return None;
         }
-        cx.events.at(EventKind::Sample, 0, cx.si.project(&self.sample), &self.sample);
+        let goal = self.task.goal();
         let mut first = true;
         for _ in 0..MAX_CONNECT_STEPS {
-            let (grow, id) = tree.extend(cx, &self.sample, self.range, &mut self.scratch, &mut self.new);
-            if grow == Grow::Trapped {
+            let (grow, id) = if first {
+                tree.extend_sample(cx, &self.sample, self.range, &mut self.scratch, &mut self.new)
+            } else {
+                tree.extend(cx, &self.sample, self.range, &mut self.scratch, &mut self.new)
+            };
+            if matches!(grow, Grow::Trapped | Grow::Rejected) {
                 if first {
                     cx.events.at(EventKind::SampleRejected, 0, cx.si.project(&self.sample), &self.sample);
                 }
                 return None;
             }
             first = false;
-            let to_goal = cx.si.distance(tree.state(id), &self.task.goal);
+            let to_goal = cx.si.distance(tree.state(id), goal);
             if to_goal <= self.task.goal_tolerance {
                 let mut path = tree.path_to(id);
                 if to_goal > 0.0 {
-                    path.push(self.task.goal.clone());
+                    path.push(goal.to_vec());
                 }
-                cx.events.at(EventKind::Solved, 0, cx.si.project(&self.task.goal), &self.task.goal);
+                cx.events.at(EventKind::Solved, 0, cx.si.project(goal), goal);
                 return Some(path);
             }
             if grow == Grow::Reached || !self.connect {

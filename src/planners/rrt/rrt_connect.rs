@@ -11,7 +11,9 @@
 use super::{resolve_range, RANGE};
 use crate::events::EventKind;
 use crate::math::Real;
-use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, Tree};
+use crate::planners::tree::{TreeOptions, TREE_GROUP};
+use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
+use crate::sampler::SAMPLER_GROUP;
 use crate::space_info::SpaceInfo;
 use crate::status::Grow;
 
@@ -21,6 +23,8 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     label: "RRT-Connect",
     summary: "Two trees, from start and goal, taking turns to grow toward each other.",
     params: PARAMS,
+    groups: &[SAMPLER_GROUP, TREE_GROUP],
+    task: TaskKind::Goal,
     make: |si, task, params| Box::new(RrtConnect::new(si, task, params)),
 };
 
@@ -31,6 +35,7 @@ pub const PARAMS: &[ParamSpec] = &[RANGE];
 pub struct RrtConnect {
     task: Task,
     range: Real,
+    opts: TreeOptions,
     trees: Vec<Tree>,
     /// The tree that extends toward the sample this iteration.
     turn: usize,
@@ -47,6 +52,7 @@ impl RrtConnect {
         RrtConnect {
             task: task.clone(),
             range: resolve_range(si, params.real("range")),
+            opts: TreeOptions::from_params(params, si.resolution),
             trees: Vec::new(),
             turn: 0,
             sample: vec![0.0; n],
@@ -60,25 +66,28 @@ impl RrtConnect {
 impl Planner for RrtConnect {
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         if self.trees.is_empty() {
-            self.trees = vec![Tree::new(cx, &self.task.start, 0), Tree::new(cx, &self.task.goal, 1)];
+            let o = self.opts;
+            self.trees = vec![Tree::with_options(cx, &self.task.start, 0, o), Tree::with_options(cx, self.task.goal(), 1, o)];
         }
         let (a, b) = (self.turn, 1 - self.turn);
         self.turn = b;
-        cx.si.sample(cx.rng, &mut self.sample);
-        cx.events.at(EventKind::Sample, a, cx.si.project(&self.sample), &self.sample);
-        let (grow, added) = self.trees[a].extend(cx, &self.sample, self.range, &mut self.scratch, &mut self.new);
-        if grow == Grow::Trapped {
+        if !cx.sample(a, &mut self.sample) {
+            return None;
+        }
+        let (grow, added) = self.trees[a].extend_sample(cx, &self.sample, self.range, &mut self.scratch, &mut self.new);
+        if matches!(grow, Grow::Trapped | Grow::Rejected) {
             cx.events.at(EventKind::SampleRejected, a, cx.si.project(&self.sample), &self.sample);
             return None;
         }
         self.target.copy_from_slice(self.trees[a].state(added));
         let (g, reached) = self.trees[b].connect(cx, &self.target, self.range, &mut self.scratch, &mut self.new);
         match g {
-            Grow::Trapped | Grow::Advanced => None,
+            Grow::Trapped | Grow::Advanced | Grow::Rejected => None,
             Grow::Reached => {
                 let p = cx.si.project(&self.target);
                 cx.events.push(EventKind::TreesConnected, a, added as i64, reached as i64, p, p, &self.target, &self.target);
-                cx.events.at(EventKind::Solved, a, cx.si.project(&self.task.goal), &self.task.goal);
+                let goal = self.task.goal();
+                cx.events.at(EventKind::Solved, a, cx.si.project(goal), goal);
                 let (from_start, from_goal) = if a == 0 { (added, reached) } else { (reached, added) };
                 let mut path = self.trees[0].path_to(from_start);
                 let mut tail = self.trees[1].path_to(from_goal);

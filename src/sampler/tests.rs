@@ -1,0 +1,1 @@
+//! Tests of the samplers: each one's defining property.
