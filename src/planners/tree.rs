@@ -164,6 +164,18 @@ impl Tree {
         }
         Some((best.0, dist[best.0 as usize]))
     }
+    /// The `k` nodes nearest to `q` as `(id, distance)`, nearest first.
+    pub fn k_nearest(&mut self, cx: &Context, q: &[Real], k: usize) -> Vec<(u32, Real)> {
+        self.nn.k_nearest(&cx.si.space, q, k)
+    }
+    /// The nodes within `r` of `q` as `(id, distance)`, nearest first.
+    pub fn within(&mut self, cx: &Context, q: &[Real], r: Real) -> Vec<(u32, Real)> {
+        self.nn.within(&cx.si.space, q, r)
+    }
+    /// Re-attach node `i` under `parent` (rewiring; the caller keeps the tree acyclic).
+    pub fn set_parent(&mut self, i: u32, parent: u32) {
+        self.parents[i as usize] = parent;
+    }
     /// A node's dynamic-domain radius (∞ when it has none or domains are off).
     pub fn domain(&self, i: u32) -> Real {
         self.radius.get(i as usize).copied().unwrap_or(Real::INFINITY)
