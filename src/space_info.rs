@@ -1,6 +1,7 @@
 //! [`SpaceInfo`]: everything a planner may know about the problem's space, in one bundle
 //! (OMPL's `SpaceInformation`). Planners import this, never scenario or robot types.
 
+use crate::geometry::SensorPose;
 use crate::math::{Real, Vec2};
 use crate::rng::Rng;
 use crate::space::StateSpace;
@@ -55,12 +56,27 @@ impl SpaceInfo {
     }
     /// A random state from the robot's sampler (uniform over the space unless the robot knows better).
     #[inline]
+    /// The checks the robot's sampler spends count as state checks.
     pub fn sample(&self, rng: &mut Rng, out: &mut [Real]) {
-        self.validity.sample(&self.space, rng, out)
+        let spent = self.validity.sample(&self.space, rng, out);
+        self.checks.set(self.checks.get() + spent);
     }
     /// Where a state is drawn in the workspace.
     #[inline]
     pub fn project(&self, q: &[Real]) -> Vec2 {
         self.validity.project(q)
+    }
+    /// The robot's sensor at `q`: where it is and which way it looks (inspection tasks).
+    #[inline]
+    pub fn sensor(&self, q: &[Real]) -> SensorPose {
+        self.validity.sensor(q)
+    }
+    /// Whether a sensor at `pose` sees the workspace point `p`: within `range`, within `fov / 2`
+    /// of its heading, and with a sight line through no obstacle's interior (touching an obstacle
+    /// does not block; see [`crate::geometry::sight`]). Exact: no sampling along the sight line.
+    /// Not counted as a state check.
+    #[inline]
+    pub fn sees(&self, pose: &SensorPose, p: Vec2, fov: Real, range: Real) -> bool {
+        pose.in_view(p, fov, range) && self.validity.sight_clear(pose.at, p)
     }
 }

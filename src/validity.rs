@@ -1,6 +1,6 @@
 //! State validity: a robot in a workspace, and the counter of state checks.
 
-use crate::geometry::Workspace;
+use crate::geometry::{SensorPose, Workspace};
 use crate::math::{Real, Vec2};
 use crate::robot::{Robot, Verdict};
 
@@ -17,13 +17,18 @@ pub trait StateValidity {
     /// The workspace point a state is drawn at.
     fn project(&self, q: &[Real]) -> Vec2;
     /// A random state (the robot's sampler).
-    fn sample(&self, space: &crate::space::StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]);
+    fn sample(&self, space: &crate::space::StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) -> u64;
     /// Steps a motion of length `d` is checked in.
     fn motion_steps(&self, a: &[Real], b: &[Real], d: Real, resolution: Real) -> usize;
     /// Distance to the nearest obstacle capped at `cap` (0: invalid), when the robot has it.
     fn clearance(&self, q: &[Real], cap: Real) -> Option<Real>;
     /// Bound on how far any body point moves along `a → b`, for robots with a clearance.
     fn displacement_bound(&self, a: &[Real], b: &[Real]) -> Option<Real>;
+    /// The robot's sensor at `q` (inspection tasks).
+    fn sensor(&self, q: &[Real]) -> SensorPose;
+    /// Whether the sight line `a → b` passes through no obstacle's interior (touching allowed; see
+    /// [`crate::geometry::sight`]).
+    fn sight_clear(&self, a: Vec2, b: Vec2) -> bool;
 }
 
 /// A robot placed in a workspace.
@@ -45,7 +50,7 @@ impl StateValidity for RobotInWorkspace {
     fn project(&self, q: &[Real]) -> Vec2 {
         self.robot.project(q)
     }
-    fn sample(&self, space: &crate::space::StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) {
+    fn sample(&self, space: &crate::space::StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) -> u64 {
         self.robot.sample(space, rng, out)
     }
     fn motion_steps(&self, a: &[Real], b: &[Real], d: Real, resolution: Real) -> usize {
@@ -56,5 +61,11 @@ impl StateValidity for RobotInWorkspace {
     }
     fn displacement_bound(&self, a: &[Real], b: &[Real]) -> Option<Real> {
         self.robot.displacement_bound(a, b)
+    }
+    fn sensor(&self, q: &[Real]) -> SensorPose {
+        self.robot.sensor(q)
+    }
+    fn sight_clear(&self, a: Vec2, b: Vec2) -> bool {
+        self.workspace.sight_clear(a, b)
     }
 }

@@ -60,7 +60,15 @@ fn cli() -> Command {
             Command::new("bench")
                 .about("Run planners for seeds 1..N and summarise")
                 .arg(scenario_arg.clone())
-                .arg(Arg::new("planners").long("planners").default_value("rrt,rrt-connect").help("Comma-separated planner names"))
+                .arg(Arg::new("planners").long("planners").default_value("rrt,rrt-connect").help("Comma-separated planner names (ignored when --setup is given)"))
+                .arg(
+                    Arg::new("setup")
+                        .long("setup")
+                        .action(ArgAction::Append)
+                        .value_name("SETUP")
+                        .help("A planner set-up to compare, repeatable: \"[label:] planner [--param value ...]\", e.g. \"bridge: rrt-connect --sampler bridge --sigma 0.02\"; the other flags apply to every set-up"),
+                )
+                .arg(Arg::new("report").long("report").action(ArgAction::SetTrue).help("Print report 001's table (avg and std of time, avg nodes, avg and median checks) as Markdown"))
                 .arg(Arg::new("runs").long("runs").default_value("20").value_parser(clap::value_parser!(u64)).help("Seeds 1..=runs"))
                 .arg(Arg::new("json").long("json").action(ArgAction::SetTrue).help("Print JSON instead of a table")),
         ))
@@ -130,6 +138,14 @@ fn plan(m: &ArgMatches) -> Result<(), String> {
         let st = &r.stats;
         println!("{} on \"{}\", seed {}: {}", spec.label, sc.name, seed, r.status);
         println!("  time {:.3} ms, {} iterations, {} nodes, {} checks", st.time_ms, st.iterations, st.nodes, st.checks);
+        let sm = &st.sampler;
+        println!(
+            "  sampler {}: {} samples ({} given up), {:.2} draws and {:.2} checks per sample",
+            sm.name, sm.accepted, sm.failed, sm.draws_per_sample, sm.checks_per_sample
+        );
+        if let Some(c) = st.coverage {
+            println!("  coverage {:.1}% (smoothed path: {:.1}%)", c * 100.0, st.smoothed_coverage.unwrap_or(0.0) * 100.0);
+        }
         if r.solved {
             println!("  path: {} states, cost {:.4}", r.path.len(), st.cost.unwrap_or(0.0));
             println!("  smoothed: {} states, cost {:.4}", r.smoothed.len(), st.smoothed_cost.unwrap_or(0.0));
@@ -143,12 +159,36 @@ fn run_bench(m: &ArgMatches) -> Result<(), String> {
     Problem::from_scenario(&sc).map_err(|e| e.to_string())?;
     let runs = *m.get_one::<u64>("runs").unwrap();
     let mut rows = Vec::new();
-    for name in m.get_one::<String>("planners").unwrap().split(',').map(str::trim).filter(|s| !s.is_empty()) {
+    let setups: Vec<String> = match m.get_many::<String>("setup") {
+        Some(v) => v.cloned().collect(),
+        None => m.get_one::<String>("planners").unwrap().split(',').map(str::trim).filter(|s| !s.is_empty()).map(String::from).collect(),
+    };
+    for setup in &setups {
+        let (label, rest) = match setup.split_once(':') {
+            Some((l, r)) => (Some(l.trim()), r),
+            None => (None, setup.as_str()),
+        };
+        let mut words = rest.split_whitespace();
+        let name = words.next().ok_or_else(|| format!("--setup \"{setup}\": no planner name"))?;
         let spec = find_planner(name)?;
-        let params = params_for(spec, &sc, m)?;
-        rows.push(bench::bench_planner(&sc, spec.name, &params, runs)?);
+        let mut params = params_for(spec, &sc, m)?;
+        while let Some(flag) = words.next() {
+            let key = flag.strip_prefix("--").ok_or_else(|| format!("--setup \"{setup}\": expected --param, found \"{flag}\""))?.replace('-', "_");
+            let value = words.next().ok_or_else(|| format!("--setup \"{setup}\": {flag} needs a value"))?;
+            if spec.param(&key).is_none() {
+                return Err(format!("--setup \"{setup}\": {flag} is not a parameter of {}", spec.name));
+            }
+            params.set_text(spec, &key, value).map_err(|e| format!("--setup \"{setup}\": {e}"))?;
+        }
+        let mut row = bench::bench_planner(&sc, spec.name, &params, runs)?;
+        row.label = label.map_or_else(|| rest.trim().to_string(), String::from);
+        eprintln!("{}: {:.0}% solved, median {:.0} checks", row.label, row.success_rate * 100.0, row.checks.median);
+        rows.push(row);
     }
-    if m.get_flag("json") {
+    if m.get_flag("report") {
+        println!("{} — {} seeded runs per set-up (seeds 1..={runs})\n", sc.name, runs);
+        print!("{}", bench::report_table(&rows));
+    } else if m.get_flag("json") {
         let out = serde_json::json!({"scenario": sc.name, "runs": runs, "planners": rows});
         println!("{}", serde_json::to_string_pretty(&out).unwrap());
     } else {

@@ -10,10 +10,12 @@ pub mod circle;
 pub mod polygon;
 pub mod segment;
 mod shape;
+pub mod sight;
 mod workspace;
 
 pub use aabb::Aabb;
 pub use shape::Shape;
+pub use sight::SensorPose;
 pub use workspace::Workspace;
 
 #[cfg(test)]

@@ -74,6 +74,14 @@ impl Workspace {
         best
     }
 
+    /// Whether a sensor at `a` has a clear sight line to `b`: the segment `a b` passes through no
+    /// obstacle's interior. Touching (grazing a vertex, running along an edge, ending on the
+    /// boundary) does not block, whatever [`open`](Workspace::open) says (see [`super::sight`]).
+    pub fn sight_clear(&self, a: Vec2, b: Vec2) -> bool {
+        let bb = Aabb::of_points(&[a, b]);
+        !(0..self.obstacles.len()).any(|i| self.boxes[i].intersects(&bb) && self.obstacles[i].interior_meets_segment(a, b))
+    }
+
     /// The index of the first obstacle that the closed polygon `poly` meets, if any.
     pub fn polygon_hit(&self, poly: &[Vec2]) -> Option<usize> {
         let bb = Aabb::of_points(poly);

@@ -105,6 +105,10 @@ pub trait Planner {
     fn best_so_far(&self) -> Option<Vec<Vec<Real>>> {
         None
     }
+    /// For inspection planners: the best branch's coverage so far (fraction of points seen).
+    fn coverage(&self) -> Option<Real> {
+        None
+    }
 }
 
 /// A registered planner: its name, what it is, its parameters, and how to make one.

@@ -7,7 +7,8 @@
 //!   variant (L. Jaillet et al., IROS 2005) grows a radius by `1 + dd_adaptive` when the node
 //!   expands and shrinks it by `1 − dd_adaptive` when it fails, never below `dd_min_radius`.
 //! - **Exhausted nodes** (report 001): each node counts its failed expansions; with the `drop`
-//!   policy a node that failed `exhausted` times leaves nearest-neighbour selection; with
+//!   policy a node that failed `exhausted` times leaves nearest-neighbour selection (until every
+//!   node is exhausted: then the nearest grows again rather than the tree dying); with
 //!   `weighted` every node stays and the lowest `H = (d − dmin)/(dmax − dmin) + (n − nmin)/(nmax −
 //!   nmin)` is chosen (d: distance to the sample, n: failures).
 
@@ -133,8 +134,8 @@ impl Tree {
     pub fn nearest(&mut self, cx: &Context, q: &[Real]) -> (u32, Real) {
         self.nn.nearest(&cx.si.space, q).expect("a tree always has its root")
     }
-    /// The node to grow toward `q` under the exhausted-node policy (the nearest when it is off),
-    /// or `None` when every node is exhausted.
+    /// The node to grow toward `q` under the exhausted-node policy (the nearest when it is off, or
+    /// when every node is exhausted).
     pub fn select(&mut self, cx: &Context, q: &[Real]) -> Option<(u32, Real)> {
         let limit = self.opts.exhausted;
         if limit == 0 {
@@ -142,7 +143,8 @@ impl Tree {
         }
         if !self.opts.weighted {
             let fails = &self.fails;
-            return self.nn.nearest_where(&cx.si.space, q, |i| fails[i as usize] < limit);
+            // When every node is exhausted the tree would be dead: the nearest grows again.
+            return self.nn.nearest_where(&cx.si.space, q, |i| fails[i as usize] < limit).or_else(|| Some(self.nearest(cx, q)));
         }
         // History-weighted: two passes, as report 001 describes.
         let n = self.len();

@@ -14,7 +14,7 @@
 
 use super::{Robot, Verdict};
 use crate::geometry::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment, intersect_segment_segment};
-use crate::geometry::Workspace;
+use crate::geometry::{SensorPose, Workspace};
 use crate::math::{angle_diff, Real, Vec2, PI};
 use crate::scenario::RobotSpec;
 use crate::space::{Dim, Metric, StateSpace};
@@ -210,6 +210,12 @@ impl Robot for ArmRobot {
     fn project(&self, q: &[Real]) -> Vec2 {
         // The end effector (the last link's end).
         self.with_points(q, |pts| pts[self.links.len()])
+    }
+    /// The end effector (the last link's end, before any tip), looking along the last link: its
+    /// heading is the sum of the (relative) joint angles, as in the Technion course.
+    fn sensor(&self, q: &[Real]) -> SensorPose {
+        let heading = q[..self.links.len()].iter().sum();
+        SensorPose { at: self.project(q), heading: Some(heading) }
     }
     fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>> {
         let mut pts = vec![Vec2::default(); self.point_count()];

@@ -14,7 +14,7 @@ pub use asv::AsvRobot;
 pub use point::PointRobot;
 pub use rigid::RigidRobot;
 
-use crate::geometry::Workspace;
+use crate::geometry::{SensorPose, Workspace};
 use crate::math::{Real, Vec2};
 use crate::scenario::RobotSpec;
 use crate::space::StateSpace;
@@ -51,10 +51,12 @@ pub trait Robot: std::fmt::Debug {
     }
     /// Whether state `q` is valid in `ws`, and if not, why.
     fn verdict(&self, ws: &Workspace, q: &[Real]) -> Verdict;
-    /// Write a random state into `out` (default: uniform over the space). Robots whose uniform
-    /// samples are almost never valid (the vehicle chain) sample their own way.
-    fn sample(&self, space: &StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) {
-        space.sample_uniform(rng, out)
+    /// Write a random state into `out` (default: uniform over the space) and return the state
+    /// checks it spent (counted like the planner's). Robots whose uniform samples are almost never
+    /// valid (the vehicle chain) sample their own way.
+    fn sample(&self, space: &StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) -> u64 {
+        space.sample_uniform(rng, out);
+        0
     }
     /// How many steps a motion `a → b` of length `d` is checked in (default: `ceil(d / resolution)`);
     /// a robot with its own step rule (no vehicle moves more than `max_step`) overrides it.
@@ -83,6 +85,12 @@ pub trait Robot: std::fmt::Debug {
     /// The body's outline at state `q`, as closed polygons in world coordinates (for drawing and
     /// exports); a point robot has none.
     fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>>;
+    /// Where the robot's sensor is at state `q` and which way it looks (inspection tasks; see
+    /// [`crate::geometry::sight`] for what it sees). Default: at the reference point
+    /// ([`project`](Robot::project)), seeing all around.
+    fn sensor(&self, q: &[Real]) -> SensorPose {
+        SensorPose { at: self.project(q), heading: None }
+    }
 }
 
 /// Build the robot a scenario describes; an error names a robot this build cannot plan for.

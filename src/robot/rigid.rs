@@ -1,5 +1,5 @@
 use super::{xy_dims, xy_in_bounds, Robot, Verdict};
-use crate::geometry::Workspace;
+use crate::geometry::{SensorPose, Workspace};
 use crate::math::{Real, Vec2, PI};
 use crate::space::{Dim, Metric, StateSpace};
 
@@ -104,6 +104,10 @@ impl Robot for RigidRobot {
     fn displacement_bound(&self, a: &[Real], b: &[Real]) -> Option<Real> {
         // A body point at distance ≤ radius from the origin moves at most |Δxy| + radius·|Δθ|.
         Some(((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt() + self.radius * crate::math::angle_diff(a[2], b[2]).abs())
+    }
+    /// At the body origin, looking along the body's x axis (heading θ).
+    fn sensor(&self, q: &[Real]) -> SensorPose {
+        SensorPose { at: Vec2::new(q[0], q[1]), heading: Some(q[2]) }
     }
     fn project(&self, q: &[Real]) -> Vec2 {
         Vec2::new(q[0], q[1])

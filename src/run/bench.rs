@@ -40,8 +40,12 @@ impl Summary {
 /// One planner set-up's results over the seeds.
 #[derive(Clone, Debug, Serialize)]
 pub struct PlannerBench {
+    /// The set-up's label (the planner name unless given).
+    pub label: String,
     /// Planner name.
     pub planner: String,
+    /// Parameters set explicitly.
+    pub params: serde_json::Map<String, serde_json::Value>,
     /// Runs.
     pub runs: usize,
     /// Fraction solved.
@@ -73,7 +77,9 @@ pub fn bench_planner(scenario: &Scenario, planner: &str, params: &Params, runs: 
     let all = |f: fn(&Stats) -> f64| Summary::of(&per_run.iter().map(|r| f(&r.2)).collect::<Vec<_>>());
     let solved = |f: fn(&Stats) -> Option<f64>| Summary::of(&per_run.iter().filter_map(|r| f(&r.2)).collect::<Vec<_>>());
     Ok(PlannerBench {
+        label: planner.to_string(),
         planner: planner.to_string(),
+        params: params.values().clone(),
         runs: runs as usize,
         success_rate: per_run.iter().filter(|r| r.1).count() as f64 / runs.max(1) as f64,
         time_ms: all(|s| s.time_ms),
@@ -93,9 +99,28 @@ pub fn table(rows: &[PlannerBench]) -> String {
         let metrics: [(&str, &Summary); 5] =
             [("time_ms", &r.time_ms), ("nodes", &r.nodes), ("checks", &r.checks), ("cost", &r.cost), ("smoothed_cost", &r.smoothed_cost)];
         for (k, (name, m)) in metrics.iter().enumerate() {
-            let (p, sr) = if k == 0 { (r.planner.as_str(), format!("{:.0}%", r.success_rate * 100.0)) } else { ("", String::new()) };
+            let (p, sr) = if k == 0 { (r.label.as_str(), format!("{:.0}%", r.success_rate * 100.0)) } else { ("", String::new()) };
             out.push_str(&format!("{:<16} {:>8}  {:<14} {:>12.4} {:>12.4} {:>12.4}\n", p, sr, name, m.median, m.mean, m.std));
         }
+    }
+    out
+}
+
+/// A Markdown table in the form of report 001's (one row per set-up): success, mean and standard
+/// deviation of time, mean nodes, mean and median state checks ("queries").
+pub fn report_table(rows: &[PlannerBench]) -> String {
+    let mut out = String::from("| set-up | solved | avgT (ms) | stdT (ms) | avgNodes | avgQueries | median queries |\n|---|---|---|---|---|---|---|\n");
+    for r in rows {
+        out.push_str(&format!(
+            "| {} | {:.0}% | {:.2} | {:.2} | {:.1} | {:.0} | {:.0} |\n",
+            r.label,
+            r.success_rate * 100.0,
+            r.time_ms.mean,
+            r.time_ms.std,
+            r.nodes.mean,
+            r.checks.mean,
+            r.checks.median
+        ));
     }
     out
 }

@@ -18,6 +18,11 @@ pub struct Stats {
     pub smoothed_cost: Option<Real>,
     /// Smoothing time, milliseconds.
     pub smoothing_ms: f64,
+    /// Inspection: the fraction of points the raw path sees (before a path exists: the best
+    /// branch's so far); `null` for other tasks.
+    pub coverage: Option<Real>,
+    /// Inspection: the fraction of points the smoothed path sees.
+    pub smoothed_coverage: Option<Real>,
     /// What the sampler spent.
     pub sampler: SamplerSummary,
 }

@@ -31,6 +31,7 @@ pub struct Session {
     config: RunConfig,
     planner: Box<dyn Planner>,
     sampler: Sampler,
+    task: Task,
     rng: Rng,
     events: EventLog,
     status: Status,
@@ -69,6 +70,7 @@ impl Session {
         let sampler = Sampler::from_params(&problem.si, task.goal.as_deref(), &config.params);
         Ok(Session {
             sampler,
+            task,
             rng: Rng::new(config.seed),
             events: EventLog::new(config.record_events),
             problem,
@@ -175,7 +177,12 @@ impl Session {
         let t = Instant::now();
         let mut rng = Rng::new(self.config.seed ^ SMOOTHING_STREAM);
         let attempts = self.config.params.real("shortcut_attempts") as usize;
-        self.smoothed = smoothing::shortcut(&self.problem.si, &path, attempts, &mut rng);
+        // An inspection path's detours are what it is for: only shortcuts that keep every point
+        // it sees are taken.
+        self.smoothed = match (&self.task.inspection, self.spec.task) {
+            (Some(i), TaskKind::Inspection) => planners::inspection::shortcut(&self.problem.si, i, &path, attempts, &mut rng),
+            _ => smoothing::shortcut(&self.problem.si, &path, attempts, &mut rng),
+        };
         self.smoothing_ms = t.elapsed().as_secs_f64() * 1000.0;
         self.path = path;
         self.status = Status::Solved;
@@ -220,7 +227,18 @@ impl Session {
             cost: solved.then(|| smoothing::path_cost(si, &self.path)),
             smoothed_cost: solved.then(|| smoothing::path_cost(si, &self.smoothed)),
             smoothing_ms: self.smoothing_ms,
+            coverage: self.coverage(&self.path).or_else(|| self.planner.coverage()),
+            smoothed_coverage: self.coverage(&self.smoothed),
             sampler: SamplerSummary::of(self.sampler.name(), self.sampler.stats()),
+        }
+    }
+
+    /// The fraction of inspection points a path sees (inspection planners only; `None` before a
+    /// path exists).
+    fn coverage(&self, path: &[Vec<Real>]) -> Option<Real> {
+        match (&self.task.inspection, self.spec.task) {
+            (Some(i), TaskKind::Inspection) if !path.is_empty() => Some(planners::inspection::path_coverage(&self.problem.si, i, path)),
+            _ => None,
         }
     }
 

@@ -282,7 +282,7 @@ impl Robot for AsvRobot {
     fn verdict(&self, ws: &Workspace, q: &[Real]) -> Verdict {
         self.with_chain(q, |pts| self.verdict_of(ws, &q[3..], pts))
     }
-    fn sample(&self, space: &StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) {
+    fn sample(&self, space: &StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) -> u64 {
         sampler::sample(self, space, rng, out)
     }
     fn motion_steps(&self, a: &[Real], b: &[Real], _d: Real, _resolution: Real) -> usize {

@@ -120,8 +120,8 @@ fn across(ws: &Workspace, m: Vec2, reach: Real) -> Option<Real> {
     (free(along, 1.0) >= 0.5 * reach && free(along, -1.0) >= 0.5 * reach).then_some(beta)
 }
 
-/// Write a sample into `out` (see the module documentation).
-pub(super) fn sample(robot: &AsvRobot, space: &StateSpace, rng: &mut Rng, out: &mut [Real]) {
+/// Write a sample into `out` (see the module documentation); returns the state checks spent.
+pub(super) fn sample(robot: &AsvRobot, space: &StateSpace, rng: &mut Rng, out: &mut [Real]) -> u64 {
     let ws = robot.workspace.borrow();
     let mut gaps = robot.gaps.borrow_mut();
     if gaps.is_none() {
@@ -138,6 +138,7 @@ pub(super) fn sample(robot: &AsvRobot, space: &StateSpace, rng: &mut Rng, out: &
         &mut heap
     };
     let (xd, yd) = (space.dims[0], space.dims[1]);
+    let mut checks = 0;
     for _ in 0..TRIES {
         let winding = match robot.orientation() {
             0.0 if rng.uniform01() < 0.5 => 1.0,
@@ -167,10 +168,16 @@ pub(super) fn sample(robot: &AsvRobot, space: &StateSpace, rng: &mut Rng, out: &
         out[0] = c.x;
         out[1] = c.y;
         match ws.as_ref() {
-            Some(ws) if robot.verdict(ws, out) != Verdict::Valid => continue,
-            _ => return,
+            Some(ws) => {
+                checks += 1;
+                if robot.verdict(ws, out) == Verdict::Valid {
+                    return checks;
+                }
+            }
+            None => return checks,
         }
     }
+    checks
 }
 
 /// Draw the chain's shape into `angles` (`θ1`, then the `n − 2` turns) with the given winding.
