@@ -54,12 +54,18 @@ impl SpaceInfo {
     pub fn interpolate(&self, a: &[Real], b: &[Real], t: Real, out: &mut [Real]) {
         self.space.interpolate(a, b, t, out)
     }
-    /// A random state from the robot's sampler (uniform over the space unless the robot knows better).
+    /// A random state from the robot's sampler (uniform over the space unless the robot knows
+    /// better). The checks the robot's sampler spends count as state checks.
     #[inline]
-    /// The checks the robot's sampler spends count as state checks.
     pub fn sample(&self, rng: &mut Rng, out: &mut [Real]) {
         let spent = self.validity.sample(&self.space, rng, out);
         self.checks.set(self.checks.get() + spent);
+    }
+    /// A Gaussian neighbour of `centre` (spread `sigma` × each coordinate's range) drawn the
+    /// robot's own way, when it has one (OMPL's `StateSampler::sampleGaussian`); `false`: the
+    /// generic per-coordinate neighbour applies.
+    pub fn sample_gaussian(&self, rng: &mut Rng, centre: &[Real], sigma: Real, out: &mut [Real]) -> bool {
+        self.validity.sample_gaussian(&self.space, rng, centre, sigma, out)
     }
     /// Where a state is drawn in the workspace.
     #[inline]

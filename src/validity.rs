@@ -18,6 +18,8 @@ pub trait StateValidity {
     fn project(&self, q: &[Real]) -> Vec2;
     /// A random state (the robot's sampler).
     fn sample(&self, space: &crate::space::StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) -> u64;
+    /// A Gaussian neighbour drawn the robot's own way, if it has one (`false`: it has none).
+    fn sample_gaussian(&self, space: &crate::space::StateSpace, rng: &mut crate::rng::Rng, centre: &[Real], sigma: Real, out: &mut [Real]) -> bool;
     /// Steps a motion of length `d` is checked in.
     fn motion_steps(&self, a: &[Real], b: &[Real], d: Real, resolution: Real) -> usize;
     /// Distance to the nearest obstacle capped at `cap` (0: invalid), when the robot has it.
@@ -52,6 +54,9 @@ impl StateValidity for RobotInWorkspace {
     }
     fn sample(&self, space: &crate::space::StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) -> u64 {
         self.robot.sample(space, rng, out)
+    }
+    fn sample_gaussian(&self, space: &crate::space::StateSpace, rng: &mut crate::rng::Rng, centre: &[Real], sigma: Real, out: &mut [Real]) -> bool {
+        self.robot.sample_gaussian(space, rng, centre, sigma, out)
     }
     fn motion_steps(&self, a: &[Real], b: &[Real], d: Real, resolution: Real) -> usize {
         self.robot.motion_steps(a, b, d, resolution)

@@ -2,7 +2,8 @@
 // (q1, q2) square, a torus when both joints wrap. Layers as in view.js:
 //   scene (offscreen): the C-obstacle grid from the core (n × n validity, rows from the lowest q2),
 //          axes, labels and the range; redrawn on load and resize;
-//   tree  (offscreen): edges (c0, c1)–(pc0, pc1) of the event records, drawn incrementally;
+//   tree  (offscreen): edges (c0, c1)–(pc0, pc1) of the event records, drawn incrementally; after
+//          a REWIRE (an edge moved) redrawn from the run model's node/parent mirror;
 //   top   (the visible canvas): both layers, start, goal, paths and the robot's current state.
 // An edge or path segment that wraps (|Δ| > half the range in a wrapping dimension) is drawn as
 // two pieces, each leaving the square on its side, clipped to the square.
@@ -55,10 +56,11 @@ export function wrapSegments(dims, a0, a1, b0, b1) {
 }
 
 export class CSpaceView {
-  constructor(canvas, store, palette) {
+  constructor(canvas, store, palette, model = null) {
     this.canvas = canvas;
     this.ctx = canvas.getContext('2d');
     this.store = store;
+    this.model = model; // playback.js RunModel (its tree mirror), or null: edges from the records only
     this.palette = palette;
     this.sceneLayer = makeLayer();
     this.treeLayer = makeLayer();
@@ -79,6 +81,7 @@ export class CSpaceView {
     this.smoothed = null;
     this.showResult = false;
     this.state = null;
+    this.treeSeen = this.model ? this.model.treeVersion : 0;
     if (this.width) this.treeLayer.ctx.clearRect(0, 0, this.width, this.height);
     this.dirty = true;
   }
@@ -203,7 +206,7 @@ export class CSpaceView {
   }
 
   /** Draw stored records [from, to) onto the tree layer. */
-  drawRecords(from, to) {
+  drawRecords(from, to, edges = true) {
     if (!this.space || !this.width || to <= from) return;
     const { ctx } = this.treeLayer;
     const d = this.store.data;
@@ -212,7 +215,7 @@ export class CSpaceView {
     const node = Math.max(1, Math.round(this.px(2)));
     ctx.save();
     this.clipToPlot(ctx);
-    for (let tree = 0; tree < 2; tree++) {
+    for (let tree = 0; tree < 2 && edges; tree++) {
       const color = tree ? P.tree1 : P.tree0;
       ctx.beginPath();
       ctx.fillStyle = color;
@@ -259,10 +262,42 @@ export class CSpaceView {
     this.dirty = true;
   }
 
+  /** The edges and nodes of the model's tree mirror (after a rewire moved an edge). */
+  drawMirror() {
+    const { ctx } = this.treeLayer;
+    const dims = this.space.dims;
+    const P = this.palette;
+    const node = Math.max(1, Math.round(this.px(2)));
+    ctx.save();
+    this.clipToPlot(ctx);
+    this.model.trees.forEach((t, k) => {
+      const color = k ? P.tree1 : P.tree0;
+      ctx.beginPath();
+      ctx.fillStyle = color;
+      for (let i = 0; i < t.n; i++) {
+        const p = t.parent[i];
+        if (!t.known(i) || !(p >= 0) || !t.known(p)) continue;
+        for (const [a0, a1, b0, b1] of wrapSegments(dims, t.c0[p], t.c1[p], t.c0[i], t.c1[i])) {
+          ctx.moveTo(this.sx(a0), this.sy(a1));
+          ctx.lineTo(this.sx(b0), this.sy(b1));
+        }
+        const x = this.sx(wrapInto(t.c0[i], dims[0])), y = this.sy(wrapInto(t.c1[i], dims[1]));
+        ctx.fillRect(Math.round(x - node / 2), Math.round(y - node / 2), node, node);
+      }
+      ctx.strokeStyle = color;
+      ctx.lineWidth = this.px(1);
+      ctx.stroke();
+    });
+    ctx.restore();
+  }
+
   redrawTree() {
     if (!this.space || !this.width) return;
     this.treeLayer.ctx.clearRect(0, 0, this.width, this.height);
-    this.drawRecords(0, this.store.length);
+    const rewired = this.model && this.model.treeVersion > 0;
+    if (rewired) this.drawMirror();
+    this.drawRecords(0, this.store.length, !rewired);
+    this.treeSeen = this.model ? this.model.treeVersion : 0;
     this.dirty = true;
   }
 
@@ -276,6 +311,7 @@ export class CSpaceView {
   /** Composite and draw the top layer; `state` is the animated robot's state (or null). */
   render(state) {
     if (!this.space || !this.width) return;
+    if (this.model && this.model.treeVersion !== this.treeSeen) this.redrawTree();
     const moved = state ? !this.state || state[0] !== this.state[0] || state[1] !== this.state[1] : !!this.state;
     if (!this.dirty && !moved) return;
     this.dirty = false;

@@ -1,4 +1,5 @@
-// Wiring: the worker session, the controller's table, the panel, playback and the view.
+// Wiring: one lane (the worker session, its playback, the views and the chart: lane.js), the
+// controller's table, the panel, the overlay box and the stats.
 // Read-only state for tests is exposed as window.planarium (nothing else is global).
 
 import { Controller, BUTTONS } from './controller.js';
@@ -6,8 +7,13 @@ import { View, PALETTE } from './view.js';
 import { CSpaceView } from './cspace.js';
 import { Editor } from './editor.js';
 import { fitViews, downloadText } from './stage.js';
-import { createPanel } from './panel.js';
+import { createPanel, taskOf } from './panel.js';
 import { Playback } from './playback.js';
+import { Chart } from './chart.js';
+import { Lane } from './lane.js';
+import { createStats } from './stats.js';
+import { createOverlays } from './overlays.js';
+import { chartKind, speedRate, animFps, describeSpeed, modelSummary } from './shared.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
@@ -15,20 +21,17 @@ const ui = {
   stage: $('stage'), canvas: $('canvas'), cspace: $('cspace'), course: $('scenario-course'), name: $('scenario-name'),
   notes: $('scenario-notes'), legend: $('legend'), endpoints: $('endpoints'), download: $('download-solution'),
   panel: $('panel'), stepSize: $('step-size'), speed: $('speed'), speedOut: $('speed-out'),
-  animSpeed: $('anim-speed'), animOut: $('anim-speed-out'), showRejected: $('show-rejected'),
-  showCollisions: $('show-collisions'), animRaw: $('anim-raw'), status: $('status'), stats: $('stats'),
+  animSpeed: $('anim-speed'), animOut: $('anim-speed-out'), animRaw: $('anim-raw'), overlays: $('overlays'),
+  stats: $('stats'), chartBox: $('chart-box'), chart: $('chart'), chartTitle: $('chart-title'), compare: $('to-compare'),
 };
 
 const controller = new Controller('loading');
 const playback = new Playback();
-const view = new View(ui.canvas, playback.store);
-const cspace = new CSpaceView(ui.cspace, playback.store, PALETTE);
+const view = new View(ui.canvas, playback.store, playback.model);
+const cspace = new CSpaceView(ui.cspace, playback.store, PALETTE, playback.model);
+const chart = new Chart(ui.chart, playback.model, PALETTE);
+const updateStatsList = createStats(ui.stats);
 
-// Worker session
-let worker = null;
-let latestRun = -1;      // `run` of the latest status/loaded/invalid message
-let bumpsPending = 0;    // load/configure/reset sent, not yet answered: drop events until answered
-let loadsPending = 0;
 let registry = null;     // {planners, run_params} from the first `ready`
 let panel = null;
 let builtins = [];
@@ -37,114 +40,45 @@ let sentEdit = false;    // the latest `load` is a start/goal edit
 let course = '';         // the course of the scenario being loaded
 let loaded = null;       // the latest `loaded` message's scenario
 let applyDefaults = false;
-let crashes = [];
-
-// The current run, as the page sees it
-let workerStats = null;
-let finalStatus = null;  // the planner's terminal status word
-let result = null;
-let workerDone = false;  // the `result` message arrived
-let stepPending = false; // reveal the answer to a step at once
-let revealOnePending = false;
 let lastFrame = 0;
 
-function send(msg) { worker.postMessage(msg); }
-
-function startWorker() {
-  const w = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
-  worker = w;
-  latestRun = -1;
-  bumpsPending = 0;
-  loadsPending = 0;
-  w.onmessage = (e) => { if (w === worker) onMessage(e.data); };
-  w.onerror = (e) => {
-    e.preventDefault();
-    if (w === worker) recover(e.message || 'the worker failed to start');
-  };
-  w.onmessageerror = () => { if (w === worker) recover('a message from the worker could not be read'); };
-}
-
-function recover(message) {
-  showError(`The planning worker stopped: ${message}`);
-  worker.terminate();
-  worker = null;
-  const now = performance.now();
-  crashes = crashes.filter((t) => now - t < 10000).concat(now);
-  clearRun();
-  if (crashes.length > 3) {
-    showError(`The planning worker keeps stopping (${message}). Reload the page to try again.`);
-    return;
-  }
-  controller.fire('load');
-  startWorker(); // its `ready` reloads the current scenario and configuration
-}
-
-function onMessage(msg) {
-  switch (msg.type) {
-    case 'ready': return onReady(msg);
-    case 'loaded': {
-      latestRun = msg.run;
-      bumpsPending = Math.max(0, bumpsPending - 1);
-      if (--loadsPending > 0) return; // a newer load is on its way
+const lane = new Lane({
+  playback,
+  views: [view, cspace],
+  chart,
+  hooks: {
+    ready: onReady,
+    loaded(msg) {
       scenarioText = JSON.stringify(msg.scenario);
       showScenario(msg);
+      panel.setTask(taskOf(msg.scenario));
       if (applyDefaults) panel.apply(msg.scenario.planner);
       applyDefaults = false;
       configure(); // fires 'configure' only from states that allow it; then 'loaded' below
       controller.fire('loaded');
-      return;
-    }
-    case 'invalid': {
-      latestRun = msg.run;
-      bumpsPending = Math.max(0, bumpsPending - 1);
-      if (--loadsPending > 0) return;
-      showInvalid(msg.error, sentEdit);
-      return;
-    }
-    case 'status':
-      latestRun = msg.run;
-      if (msg.status === 'idle') bumpsPending = Math.max(0, bumpsPending - 1);
-      return;
-    case 'events':
-      // one run, one result: drop replies for other runs and anything after the result
-      if (msg.run !== latestRun || bumpsPending || workerDone) return;
-      playback.push(msg.data);
-      workerStats = msg.stats;
-      if (msg.status !== 'running') finalStatus = msg.status;
-      if (stepPending || controller.state === 'finished') { stepPending = false; reveal(playback.revealAll()); }
-      if (revealOnePending) { revealOnePending = false; reveal(playback.reveal(1)); }
-      updateStats();
-      return;
-    case 'result':
-      if (msg.run !== latestRun || bumpsPending || workerDone) return;
-      result = msg.result;
-      workerDone = true;
-      view.setResult(msg.result, msg.frames, msg.rawFrames);
-      cspace.setResult(msg.result);
-      maybeFinish();
-      updateStats();
-      return;
-    case 'error':
-      showError(msg.message);
-      stepPending = revealOnePending = false;
-      if (!workerDone && controller.fire('fail')) clearRun();
-      return;
-    case 'asv-solution':
-      if (msg.run === latestRun) downloadText(msg.text, `${(loaded?.name || 'solution').replace(/[^\w.-]+/g, '_')}-solution.txt`);
-      return;
-    case 'crashed':
-      recover(msg.message);
-      return;
-    default:
-      console.warn('unknown message from the worker', msg.type);
-  }
-}
+    },
+    invalid(error) { showInvalid(error, sentEdit); },
+    error(message) {
+      showError(message);
+      if (!lane.done && controller.fire('fail')) lane.clearRun();
+    },
+    asv(text) { downloadText(text, `${(loaded?.name || 'solution').replace(/[^\w.-]+/g, '_')}-solution.txt`); },
+    stopped(message, fatal) {
+      showError(fatal ? `The planning worker keeps stopping (${message}). Reload the page to try again.`
+        : `The planning worker stopped: ${message}`);
+      if (!fatal) controller.fire('load');
+    },
+    revealed: () => maybeFinish(),
+    finished: () => controller.state === 'finished',
+    changed: () => { updateStats(); syncDownload(); },
+  },
+});
 
 function onReady(msg) {
   if (!registry) {
     registry = msg.planners;
     builtins = msg.builtins;
-    panel = createPanel(ui.panel, registry, () => { configure(); clearError(); });
+    panel = createPanel(ui.panel, registry, () => { configure(); clearError(); syncChart(); });
     const groups = new Map(); // course → optgroup, in the order given
     for (const b of builtins) {
       if (!groups.has(b.course)) {
@@ -170,19 +104,16 @@ function load(text, defaults, { course: c = course, edit = false, file = null } 
   sentEdit = edit;
   course = c;
   applyDefaults = defaults;
-  loadsPending++;
-  bumpsPending++;
   if (!edit) editor.loading();
-  clearRun();
+  lane.load(text, file);
   controller.fire('load');
-  send(file ? { type: 'import', text, name: file } : { type: 'load', text });
 }
 
 function configure() {
-  if (!panel || !worker) return;
-  bumpsPending++;
-  send({ type: 'configure', ...panel.config() });
-  clearRun();
+  if (!panel || !lane.session.alive) return;
+  lane.configure(panel.config());
+  syncChart();
+  syncOptions();
   controller.fire('configure');
 }
 
@@ -190,93 +121,51 @@ const actions = {
   run() {
     if (!controller.can('run')) return;
     clearError();
-    if (controller.state === 'finished') resetRun();
+    if (controller.state === 'finished') lane.resetRun();
     controller.fire('run');
-    if (!workerDone) send({ type: 'run' });
+    lane.run();
   },
   pause() {
     if (!controller.fire('pause')) return;
-    if (!workerDone) send({ type: 'pause' });
+    lane.pause();
   },
   step() {
     if (!controller.fire('step')) return;
-    if (workerDone) { reveal(playback.revealAll()); return; }
-    stepPending = true;
-    send({ type: 'step', iterations: Math.max(1, Math.floor(Number(ui.stepSize.value)) || 1) });
+    lane.step(Math.max(1, Math.floor(Number(ui.stepSize.value)) || 1));
   },
   stepEvent() {
     if (!controller.fire('stepEvent')) return;
-    if (playback.pending > 0) reveal(playback.reveal(1));
-    else if (!workerDone) { revealOnePending = true; send({ type: 'step', iterations: 1 }); }
+    lane.stepEvent();
   },
   reset() {
     if (!controller.can('reset')) return;
-    resetRun();
+    lane.resetRun();
     controller.fire('reset');
   },
   cancel() {
     if (!controller.can('cancel')) return;
-    if (workerDone) { // the planner already stopped: show the rest now
-      reveal(playback.revealAll());
-      maybeFinish();
-      return;
-    }
-    send({ type: 'cancel' });
-    finalStatus = 'cancelled';
-    reveal(playback.revealAll());
-    controller.fire('cancel');
+    const stopped = lane.done; // the planner already stopped: show the rest now
+    lane.cancel();
+    if (!stopped) controller.fire('cancel');
   },
 };
 
-function resetRun() {
-  bumpsPending++;
-  send({ type: 'reset' });
-  clearRun();
-}
-
 // Run state and playback
 
-function clearRun() {
-  playback.clear();
-  view.clearRun();
-  cspace.clearRun();
-  workerStats = null;
-  finalStatus = null;
-  result = null;
-  workerDone = false;
-  stepPending = false;
-  revealOnePending = false;
-  updateStats();
-  syncDownload();
-}
-
-function reveal([from, to]) {
-  if (to > from) { view.drawRecords(from, to); cspace.drawRecords(from, to); }
-  maybeFinish();
-}
-
 function maybeFinish() {
-  if (workerDone && playback.pending === 0 && controller.fire('finish')) updateStats();
-  if (controller.state === 'finished' && result && !view.showResult) {
-    view.showResult = cspace.showResult = true;
-    view.dirty = cspace.dirty = true;
-    syncDownload();
-  }
+  if (lane.caughtUp && controller.fire('finish')) updateStats();
+  if (controller.state === 'finished' && lane.showResult()) syncDownload();
 }
-
-function speedRate() {
-  const v = Number(ui.speed.value);
-  return v >= Number(ui.speed.max) ? Infinity : Math.round(10 ** (1 + (4 * v) / 100));
-}
-function animFps() { return 10 ** (0.5 + (2.5 * Number(ui.animSpeed.value)) / 100); }
 
 function frame(time) {
   const dt = Math.min(0.25, (time - (lastFrame || time)) / 1000);
   lastFrame = time;
-  if (controller.state === 'running' && playback.pending > 0) reveal(playback.tick(speedRate(), dt));
+  if (controller.state === 'running' && playback.pending > 0) lane.tick(speedRate(ui.speed), dt);
   else if (controller.state === 'running') maybeFinish();
-  view.render(time, animFps());
+  if (!chart.kind && playback.model.costs.length) syncChart(); // a planner that reports costs
+  view.render(time, animFps(ui.animSpeed));
   cspace.render(view.robotState);
+  chart.render(lane.iterationNow);
   requestAnimationFrame(frame);
 }
 
@@ -306,7 +195,7 @@ function showInvalid(error, edit) {
   } else {
     showError(`This scenario has an error${where ? ` at ${where}` : ''}: ${error.message || error.text}`);
   }
-  clearRun();
+  lane.clearRun();
   if (!edit) { // an edit keeps the scene on screen, so the start or goal can be dragged back
     loaded = null;
     ui.course.textContent = '';
@@ -331,33 +220,23 @@ function clearError() {
   ui.errorText.textContent = '';
 }
 
-const STAT_FIELDS = [
-  ['time', (s) => s.time_ms?.toFixed(1)],
-  ['iterations', (s) => s.iterations],
-  ['nodes', (s) => s.nodes],
-  ['checks', (s) => s.checks],
-  ['cost', (s) => s.cost?.toFixed(4)],
-  ['smoothed-cost', (s) => s.smoothed_cost?.toFixed(4)],
-];
-
 function statusWord() {
-  return controller.state === 'finished' ? (finalStatus || (result?.solved ? 'solved' : 'finished')) : controller.state;
+  return controller.state === 'finished'
+    ? (lane.finalStatus || (lane.result?.solved ? 'solved' : 'finished')) : controller.state;
 }
 
-function currentStats() {
-  const s = (controller.state === 'finished' && result?.stats) || workerStats || {};
-  return { ...s, status: statusWord(), shown_nodes: playback.nodeCount, shown_events: playback.store.length, queued_events: playback.pending };
-}
+function currentStats() { return lane.statsFor(statusWord(), controller.state === 'finished'); }
 
-function updateStats() {
-  const s = currentStats();
-  ui.status.textContent = s.status;
-  ui.status.dataset.status = s.status;
-  for (const [key, fmt] of STAT_FIELDS) {
-    const v = fmt(s);
-    $(`stat-${key}`).textContent = v === undefined || v === null || Number.isNaN(v) ? '–' : String(v);
-  }
-  $('stat-shown').textContent = `${s.shown_nodes} (${s.queued_events} events queued)`;
+function updateStats() { updateStatsList(currentStats()); }
+
+/** The chart that fits the chosen planner: best cost, coverage, or none. */
+function syncChart() {
+  const kind = panel ? chartKind(panel.planner(), playback.model) : null;
+  chart.setKind(kind, { target: loaded?.inspection?.coverage ?? null });
+  ui.chartBox.hidden = !kind;
+  ui.chartTitle.textContent = kind === 'cost' ? 'Best cost against iterations'
+    : kind === 'coverage' ? 'Coverage of the best branch against iterations' : '';
+  ui.chart.setAttribute('aria-label', ui.chartTitle.textContent);
 }
 
 function syncButtons() {
@@ -400,10 +279,10 @@ const editor = new Editor({
 });
 
 function syncDownload() {
-  ui.download.hidden = !(loaded?.robot?.kind === 'asv' && result?.solved && controller.state === 'finished');
+  ui.download.hidden = !(loaded?.robot?.kind === 'asv' && lane.result?.solved && controller.state === 'finished');
 }
 
-ui.download.addEventListener('click', () => { if (worker && result?.solved) send({ type: 'asv-solution' }); });
+ui.download.addEventListener('click', () => { if (lane.session.alive && lane.result?.solved) lane.session.send({ type: 'asv-solution' }); });
 
 // Inputs
 
@@ -435,18 +314,26 @@ ui.file.addEventListener('change', async () => {
   load(text, true, { course: 'Opened file', file: file.name });
 });
 
+// the compare page opens on the scenario shown here
+ui.compare.addEventListener('click', () => {
+  const b = builtins.find((x) => x.id === ui.scenario.value);
+  ui.compare.href = b ? `compare.html?scenario=${encodeURIComponent(b.id)}` : 'compare.html';
+});
+
 function updateOutputs() {
-  const r = speedRate();
-  ui.speedOut.textContent = Number.isFinite(r) ? `${r.toLocaleString('en')} events/s` : 'all at once';
-  ui.animOut.textContent = `${Math.round(animFps())} frames/s`;
+  ui.speedOut.textContent = describeSpeed(ui.speed);
+  ui.animOut.textContent = `${Math.round(animFps(ui.animSpeed))} frames/s`;
 }
 ui.speed.addEventListener('input', updateOutputs);
 ui.animSpeed.addEventListener('input', updateOutputs);
+const overlayOptions = createOverlays(ui.overlays, () => syncOptions());
+// An inspection planner's smoothed path need not see what its branch saw: its robot follows the raw path.
 const syncOptions = () => {
-  view.setOptions({ showRejected: ui.showRejected.checked, showCollisions: ui.showCollisions.checked, animateRaw: ui.animRaw.checked });
-  cspace.setOptions({ showRejected: ui.showRejected.checked, showCollisions: ui.showCollisions.checked });
+  const o = overlayOptions();
+  view.setOptions({ ...o, animateRaw: ui.animRaw.checked || panel?.planner().task === 'inspection' });
+  cspace.setOptions({ showRejected: o.showRejected, showCollisions: o.showCollisions });
 };
-for (const box of [ui.showRejected, ui.showCollisions, ui.animRaw]) box.addEventListener('change', syncOptions);
+ui.animRaw.addEventListener('change', syncOptions);
 
 document.addEventListener('keydown', (e) => {
   if (e.ctrlKey || e.metaKey || e.altKey || e.repeat && e.key !== 'ArrowRight') return;
@@ -470,9 +357,10 @@ Object.defineProperty(window, 'planarium', {
   value: Object.freeze({
     state: () => controller.state,
     stats: () => currentStats(),
-    result: () => (result ? structuredClone(result) : null),
+    result: () => (lane.result ? structuredClone(lane.result) : null),
     scenario: () => (editor.scenario ? structuredClone(editor.scenario) : null),
     nodeCount: () => playback.nodeCount,
+    model: () => modelSummary(playback.model, chart),
   }),
   writable: false,
   configurable: false,
@@ -483,5 +371,5 @@ updateOutputs();
 syncOptions();
 syncButtons();
 updateStats();
-startWorker();
+lane.start();
 requestAnimationFrame(frame);

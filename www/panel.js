@@ -1,10 +1,17 @@
 // The planner panel, generated from the registry the worker posts in `ready`
-// ({planners: [{name, label, summary, params: [ParamSpec]}], run_params: [ParamSpec]}), as OMPL
-// generates parameter UIs from declareParam. No planner is named in this file.
+// ({planners: [{name, label, summary, params: [ParamSpec], groups: [{name, label, params}],
+// task: 'goal' | 'inspection'}], run_params: [ParamSpec]}), as OMPL generates parameter UIs from
+// declareParam. No planner is named in this file.
 //
 // ParamSpec: {name, label, kind: 'real' | 'int' | 'choice', min, max, default, options, doc}.
+// A planner's own parameters come first, then one fieldset per shared group (the sampler, the tree
+// variants), then the run's limits. Values set in a group are shared by every planner that has
+// the group (a planner's own parameter of the same name is already left out of its group).
 // Only values the user set (or the scenario's `planner` block supplied) are sent; the rest keep
 // the core's defaults.
+//
+// Planners are offered by task: goal planners only when the scenario has a goal, inspection
+// planners only when it has inspection points (setTask); a note says what is left out and why.
 
 import { el } from './dom.js';
 
@@ -21,60 +28,87 @@ export function parseParam(spec, text) {
   return { ok: true, value: v };
 }
 
+/** What a scenario offers planners: {goal, inspection}. */
+export function taskOf(scenario) {
+  return { goal: !!(scenario && scenario.goal), inspection: !!(scenario?.inspection?.points?.length) };
+}
+
+/** Whether planner spec `p` can run on a scenario offering `task` ({goal, inspection}). */
+export function plannerFits(p, task) {
+  return (p.task || 'goal') === 'inspection' ? task.inspection : task.goal;
+}
+
 /**
  * Build the panel into `root`. `onChange(config)` is called after every valid change, with
- * config = {planner, params, seed}. Returns {config(), apply(block), setDisabled(bool)}.
+ * config = {planner, params, seed}. Options: `prefix` for every element id (two panels on one
+ * page), `seed: false` to leave the seed out (the caller supplies it), `title` for the planner
+ * picker's label. Returns {config(), apply(block), setTask(task), planner(), setDisabled(bool)}.
  */
-export function createPanel(root, registry, onChange) {
+export function createPanel(root, registry, onChange, { prefix = '', seed: withSeed = true, title = 'Planner' } = {}) {
   const planners = registry.planners;
   const runParams = registry.run_params || [];
+  const groupsOf = (p) => p.groups || [];
   const state = {
     planner: planners[0].name,
     seed: 1,
+    task: { goal: true, inspection: true },
     set: Object.fromEntries(planners.map((p) => [p.name, {}])), // per-planner values the user set
+    groups: {},                                                 // per-group values, shared
     run: {},                                                    // run-level values the user set
   };
+  for (const p of planners) for (const g of groupsOf(p)) state.groups[g.name] ||= {};
   const controls = [];
+  const id = (name) => `${prefix}${name}`;
 
-  const plannerSelect = el('select', { id: 'planner' });
-  for (const p of planners) plannerSelect.append(el('option', { value: p.name, text: p.label }));
-  const summary = el('p', { className: 'summary', id: 'planner-summary' });
-  const params = el('fieldset', { className: 'params', id: 'planner-params' });
-  const limits = el('fieldset', { className: 'params', id: 'run-params' });
-  const seed = el('input', { id: 'seed', type: 'number', min: '0', step: '1', value: '1', inputMode: 'numeric' });
+  const plannerSelect = el('select', { id: id('planner') });
+  const note = el('p', { className: 'hint task-note', id: id('planner-note'), hidden: true, role: 'status' });
+  const summary = el('p', { className: 'summary', id: id('planner-summary') });
+  const params = el('fieldset', { className: 'params', id: id('planner-params') });
+  const groupBox = el('div', { className: 'param-groups', id: id('param-groups') });
+  const limits = el('fieldset', { className: 'params', id: id('run-params') });
+  const seed = el('input', { id: id('seed'), type: 'number', min: '0', step: '1', value: '1', inputMode: 'numeric' });
   const seedHint = el('span', { className: 'hint' });
   controls.push(plannerSelect, seed);
 
   root.replaceChildren(
-    el('label', { className: 'field', htmlFor: 'planner' }, el('span', { text: 'Planner' }), plannerSelect),
+    el('label', { className: 'field', htmlFor: id('planner') }, el('span', { text: title }), plannerSelect),
+    note,
     summary,
     params,
+    groupBox,
     limits,
-    el('label', { className: 'field', htmlFor: 'seed', title: 'Random seed: the same seed replays the same run.' },
-      el('span', { text: 'Seed' }), seed, seedHint),
+    withSeed ? el('label', { className: 'field', htmlFor: id('seed'), title: 'Random seed: the same seed replays the same run.' },
+      el('span', { text: 'Seed' }), seed, seedHint) : null,
   );
 
   const emit = () => onChange(config());
+  const current = () => planners.find((q) => q.name === state.planner);
 
   function config() {
+    const p = current();
+    const shared = {};
+    for (const g of groupsOf(p)) {
+      const store = state.groups[g.name] || {};
+      for (const spec of g.params) if (Object.hasOwn(store, spec.name)) shared[spec.name] = store[spec.name];
+    }
     return {
       planner: state.planner,
-      params: { ...state.set[state.planner], ...state.run },
+      params: { ...shared, ...state.set[state.planner], ...state.run },
       seed: state.seed,
     };
   }
 
   // One input per ParamSpec; `store` is the object its set values live in.
-  function field(spec, store, prefix) {
-    const id = `${prefix}-${spec.name}`;
+  function field(spec, store, kind) {
+    const fid = id(`${kind}-${spec.name}`);
     let input;
     if (spec.kind === 'choice') {
-      input = el('select', { id, name: spec.name });
+      input = el('select', { id: fid, name: spec.name });
       for (const o of spec.options) input.append(el('option', { value: o, text: o }));
       input.value = store[spec.name] ?? spec.default;
     } else {
       input = el('input', {
-        id, name: spec.name, type: 'number', min: String(spec.min), max: String(spec.max),
+        id: fid, name: spec.name, type: 'number', min: String(spec.min), max: String(spec.max),
         step: spec.kind === 'int' ? '1' : 'any', placeholder: String(spec.default),
         value: String(store[spec.name] ?? spec.default),
       });
@@ -101,11 +135,33 @@ export function createPanel(root, registry, onChange) {
       emit();
     });
     controls.push(input);
-    return el('label', { className: 'field', htmlFor: id }, el('span', { text: spec.label }), input, hint);
+    return el('label', { className: 'field', htmlFor: fid }, el('span', { text: spec.label }), input, hint);
+  }
+
+  function renderOptions() {
+    const fits = planners.filter((p) => plannerFits(p, state.task));
+    plannerSelect.replaceChildren(...fits.map((p) => el('option', { value: p.name, text: p.label })));
+    const left = planners.filter((p) => !plannerFits(p, state.task));
+    const names = (list) => list.map((p) => p.label).join(', ');
+    let text = '';
+    if (!fits.length) {
+      text = 'No planner fits this scenario: it has neither a goal nor inspection points.';
+    } else if (left.length) {
+      const goalLeft = left.filter((p) => (p.task || 'goal') === 'goal');
+      const inspLeft = left.filter((p) => p.task === 'inspection');
+      const parts = [];
+      const need = (list) => (list.length === 1 ? 'needs' : 'need');
+      if (goalLeft.length) parts.push(`${names(goalLeft)} ${need(goalLeft)} a goal, and this scenario has none`);
+      if (inspLeft.length) parts.push(`${names(inspLeft)} ${need(inspLeft)} inspection points, and this scenario has none`);
+      text = `Not offered here: ${parts.join('; ')}.`;
+    }
+    note.textContent = text;
+    note.hidden = !text;
+    return fits;
   }
 
   function renderParams() {
-    const p = planners.find((q) => q.name === state.planner);
+    const p = current();
     plannerSelect.value = p.name;
     summary.textContent = p.summary || '';
     const keep = new Set([plannerSelect, seed]);
@@ -113,6 +169,13 @@ export function createPanel(root, registry, onChange) {
     params.replaceChildren(el('legend', { text: `${p.label} parameters` }));
     if (!p.params.length) params.append(el('p', { className: 'hint', text: 'No parameters.' }));
     for (const spec of p.params) params.append(field(spec, state.set[p.name], 'param'));
+    groupBox.replaceChildren(...groupsOf(p).filter((g) => g.params.length).map((g) => {
+      const box = el('fieldset', { className: 'params group-params', id: id(`group-${g.name}`) });
+      box.dataset.group = g.name;
+      box.append(el('legend', { text: g.label }));
+      for (const spec of g.params) box.append(field(spec, state.groups[g.name], 'param'));
+      return box;
+    }));
     limits.replaceChildren(el('legend', { text: 'Limits and smoothing' }));
     for (const spec of runParams) limits.append(field(spec, state.run, 'run'));
     seed.value = String(state.seed);
@@ -137,22 +200,45 @@ export function createPanel(root, registry, onChange) {
   });
 
   /**
+   * Offer the planners that fit `task` ({goal, inspection}, see taskOf). When the chosen planner
+   * no longer fits, the first that does is chosen. Does not call onChange. Returns whether the
+   * planner changed.
+   */
+  function setTask(task) {
+    state.task = { goal: !!task.goal, inspection: !!task.inspection };
+    const fits = renderOptions();
+    const before = state.planner;
+    if (fits.length && !fits.some((p) => p.name === state.planner)) state.planner = fits[0].name;
+    renderParams();
+    return state.planner !== before;
+  }
+
+  /**
    * Apply a scenario's `planner` block {name, seed, ...params}: it replaces what the user set.
-   * Keys that are neither a parameter of that planner nor a run parameter are ignored.
-   * Does not call onChange (the caller configures the worker once, after loading).
+   * Keys that are neither a parameter of that planner (its own or its groups') nor a run
+   * parameter are ignored. A planner that does not fit the scenario's task is replaced by one that
+   * does. Does not call onChange (the caller configures the worker once, after loading).
    */
   function apply(block) {
     if (!block) return;
-    const p = planners.find((q) => q.name === block.name) || planners.find((q) => q.name === state.planner);
+    const fits = (q) => plannerFits(q, state.task);
+    let p = planners.find((q) => q.name === block.name);
+    if (!p || !fits(p)) {
+      if (p) console.warn(`scenario planner block: ${p.name} does not fit this scenario's task`);
+      p = planners.find((q) => q.name === state.planner && fits(q)) || planners.find(fits) || current();
+    }
     state.planner = p.name;
     for (const name of Object.keys(state.set)) state.set[name] = {};
+    for (const name of Object.keys(state.groups)) state.groups[name] = {};
     state.run = {};
     if (Number.isSafeInteger(block.seed) && block.seed >= 0) state.seed = block.seed;
     for (const [key, value] of Object.entries(block)) {
       if (key === 'name' || key === 'seed') continue;
       const spec = p.params.find((s) => s.name === key);
+      const group = groupsOf(p).find((g) => g.params.some((s) => s.name === key));
       const runSpec = runParams.find((s) => s.name === key);
       if (spec) state.set[p.name][key] = value;
+      else if (group) state.groups[group.name][key] = value;
       else if (runSpec) state.run[key] = value;
       else console.warn(`scenario planner block: ignoring ${key} (not a parameter of ${p.name})`);
     }
@@ -163,6 +249,7 @@ export function createPanel(root, registry, onChange) {
     for (const c of controls) c.disabled = disabled;
   }
 
+  renderOptions();
   renderParams();
-  return { config, apply, setDisabled };
+  return { config, apply, setTask, setDisabled, planner: () => current() };
 }

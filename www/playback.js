@@ -1,6 +1,12 @@
 // Event playback: batches from the worker are queued, then revealed at the page's pace
 // (PathFinding.js style: pausing is playback-only, the records stay). Revealed records are kept in
 // one growable Float64Array, so the view can redraw everything from them after a resize.
+//
+// Every revealed record also goes through a RunModel: what the records say so far, kept so the
+// views need not re-read the whole log: a mirror of each tree (node points and parents: a REWIRE
+// moves a node's edge, so the tree layer is redrawn from the mirror, not from the records), the
+// dynamic-domain radius and exhausted flag of each node, the best solution's node with the cost or
+// coverage series, and the inspection points seen.
 
 import { EventKind, STRIDE } from './events.js';
 
@@ -26,9 +32,177 @@ export class RecordStore {
   }
 }
 
+const KNOWN = 1;     // the node's point is known
+const EXHAUSTED = 2; // the node is exhausted
+
+/** One tree as the records describe it: per node id, its point (x, y; c0, c1) and parent. */
+export class TreeMirror {
+  constructor() {
+    this.n = 0; // ids 0..n-1 have a slot (some may be unknown)
+    this.alloc(256);
+    this.domains = 0;   // nodes with a finite dynamic-domain radius
+    this.exhausted = 0; // exhausted nodes
+  }
+
+  alloc(cap) {
+    const grow = (Type, old, fill) => {
+      const a = new Type(cap);
+      if (fill !== undefined) a.fill(fill);
+      if (old) a.set(old.subarray(0, this.n));
+      return a;
+    };
+    this.x = grow(Float64Array, this.x);
+    this.y = grow(Float64Array, this.y);
+    this.c0 = grow(Float64Array, this.c0);
+    this.c1 = grow(Float64Array, this.c1);
+    this.parent = grow(Int32Array, this.parent, -1);
+    this.radius = grow(Float64Array, this.radius, Infinity);
+    this.flags = grow(Uint8Array, this.flags);
+    this.cap = cap;
+  }
+
+  /** Make room for node `id`. */
+  slot(id) {
+    if (id >= this.cap) {
+      let cap = this.cap;
+      while (cap <= id) cap *= 2;
+      this.alloc(cap);
+    }
+    if (id >= this.n) this.n = id + 1;
+  }
+
+  known(id) { return id >= 0 && id < this.n && (this.flags[id] & KNOWN) !== 0; }
+  isExhausted(id) { return (this.flags[id] & EXHAUSTED) !== 0; }
+
+  /** Set node `id`'s point (and its parent, unless `parent` is undefined). */
+  place(id, x, y, c0, c1, parent) {
+    if (!(id >= 0)) return;
+    this.slot(id);
+    this.x[id] = x; this.y[id] = y; this.c0[id] = c0; this.c1[id] = c1;
+    this.flags[id] |= KNOWN;
+    if (parent !== undefined) this.parent[id] = parent;
+  }
+
+  /** Place node `id` at (x, y) only if nothing better is known (events that carry no c0, c1). */
+  placeIfUnknown(id, x, y, c0 = 0, c1 = 0) {
+    if (!(id >= 0)) return;
+    this.slot(id);
+    if (!(this.flags[id] & KNOWN)) this.place(id, x, y, c0, c1);
+  }
+
+  /** Node ids from the root to `id` (following the mirror's parents), or [] when `id` is unknown. */
+  branch(id) {
+    const out = [];
+    let i = id;
+    for (let guard = 0; this.known(i) && guard <= this.n; guard++) {
+      out.push(i);
+      i = this.parent[i];
+    }
+    return out.reverse();
+  }
+}
+
+export class RunModel {
+  constructor() { this.clear(); }
+
+  clear() {
+    this.trees = [];
+    this.best = null;      // {tree, id, kind}: the latest COST or COVERAGE node
+    this.costs = [];       // [iteration, cost] per COST event
+    this.coverage = [];    // [iteration, fraction, points seen] per COVERAGE event
+    this.seen = new Set(); // inspection point numbers seen
+    this.counts = new Float64Array(16); // records per kind
+    this.treeVersion = 0;     // bumped when an edge moves (REWIRE): the tree layer is redrawn
+    this.domainVersion = 0;   // bumped when a radius changes
+  }
+
+  tree(t) {
+    const i = t > 0 ? t | 0 : 0;
+    while (this.trees.length <= i) this.trees.push(new TreeMirror());
+    return this.trees[i];
+  }
+
+  /** The record at offset `o` of `d` was revealed. */
+  apply(d, o) {
+    const kind = d[o];
+    if (kind >= 0 && kind < this.counts.length) this.counts[kind]++;
+    switch (kind) {
+      case EventKind.NODE_ADDED: {
+        const t = this.tree(d[o + 1]);
+        const parent = d[o + 3];
+        // the root has no record of its own: its first child's record says where it is
+        if (parent >= 0) t.placeIfUnknown(parent, d[o + 6], d[o + 7], d[o + 10], d[o + 11]);
+        t.place(d[o + 2], d[o + 4], d[o + 5], d[o + 8], d[o + 9], parent >= 0 ? parent : -1);
+        return;
+      }
+      case EventKind.REWIRE: {
+        const t = this.tree(d[o + 1]);
+        const id = d[o + 2], parent = d[o + 3];
+        t.placeIfUnknown(id, d[o + 4], d[o + 5], d[o + 8], d[o + 9]);
+        t.placeIfUnknown(parent, d[o + 6], d[o + 7], d[o + 10], d[o + 11]);
+        if (id >= 0 && parent >= 0 && parent !== id) t.parent[id] = parent;
+        this.treeVersion++;
+        return;
+      }
+      case EventKind.DOMAIN: {
+        const t = this.tree(d[o + 1]);
+        const id = d[o + 2];
+        if (!(id >= 0)) return;
+        t.placeIfUnknown(id, d[o + 4], d[o + 5]);
+        const before = Number.isFinite(t.radius[id]) && t.radius[id] > 0;
+        const r = d[o + 6];
+        t.radius[id] = Number.isFinite(r) && r > 0 ? r : Infinity;
+        t.domains += (Number.isFinite(t.radius[id]) ? 1 : 0) - (before ? 1 : 0);
+        this.domainVersion++;
+        return;
+      }
+      case EventKind.EXHAUSTED: {
+        const t = this.tree(d[o + 1]);
+        const id = d[o + 2];
+        if (!(id >= 0)) return;
+        t.placeIfUnknown(id, d[o + 4], d[o + 5]);
+        if (!t.isExhausted(id)) { t.flags[id] |= EXHAUSTED; t.exhausted++; }
+        return;
+      }
+      case EventKind.COST:
+        this.tree(d[o + 1]).placeIfUnknown(d[o + 2], d[o + 4], d[o + 5]);
+        this.best = { tree: d[o + 1] > 0 ? d[o + 1] | 0 : 0, id: d[o + 2], kind: 'cost' };
+        this.costs.push([d[o + 3], d[o + 6]]);
+        return;
+      case EventKind.COVERAGE:
+        this.tree(d[o + 1]).placeIfUnknown(d[o + 2], d[o + 4], d[o + 5]);
+        this.best = { tree: d[o + 1] > 0 ? d[o + 1] | 0 : 0, id: d[o + 2], kind: 'coverage' };
+        this.coverage.push([d[o + 3], d[o + 6], d[o + 7]]);
+        return;
+      case EventKind.POINT_SEEN:
+        this.seen.add(d[o + 2]);
+        return;
+      default:
+    }
+  }
+
+  /** The latest best cost, or null. */
+  get bestCost() { return this.costs.length ? this.costs[this.costs.length - 1][1] : null; }
+  /** The latest coverage {fraction, seen}, or null. */
+  get bestCoverage() {
+    if (!this.coverage.length) return null;
+    const [, fraction, seen] = this.coverage[this.coverage.length - 1];
+    return { fraction, seen };
+  }
+
+  /** The best branch, root first, as workspace points [[x, y], ...] (empty when there is none). */
+  bestBranch() {
+    if (!this.best) return [];
+    const t = this.trees[this.best.tree];
+    if (!t) return [];
+    return t.branch(this.best.id).map((i) => [t.x[i], t.y[i]]);
+  }
+}
+
 export class Playback {
   constructor() {
     this.store = new RecordStore();
+    this.model = new RunModel();
     this.queue = [];        // [{data: Float64Array, next: record index}]
     this.pending = 0;       // records queued, not yet revealed
     this.nodeCount = 0;     // NODE_ADDED records revealed
@@ -37,6 +211,7 @@ export class Playback {
 
   clear() {
     this.store.clear();
+    this.model.clear();
     this.queue = [];
     this.pending = 0;
     this.nodeCount = 0;
@@ -60,7 +235,9 @@ export class Playback {
       const take = Math.min(left, size - chunk.next);
       this.store.append(chunk.data, chunk.next, take);
       for (let i = chunk.next; i < chunk.next + take; i++) {
-        if (chunk.data[i * STRIDE] === EventKind.NODE_ADDED) this.nodeCount++;
+        const o = i * STRIDE;
+        if (chunk.data[o] === EventKind.NODE_ADDED) this.nodeCount++;
+        this.model.apply(chunk.data, o);
       }
       chunk.next += take;
       left -= take;

@@ -121,21 +121,78 @@ function drawChain(ctx, L, p, st) {
   ctx.stroke();
 }
 
-/** Inspection points: small diamonds. */
-export function drawInspection(ctx, L, points, fill, edge) {
+/**
+ * Inspection points: small diamonds; the numbers in `seen` (a Set, optional) are lit: drawn larger,
+ * in `lit`, with a halo.
+ */
+export function drawInspection(ctx, L, points, fill, edge, seen = null, lit = null) {
   if (!points || !points.length) return;
-  const r = L.px(4);
-  ctx.beginPath();
-  for (const [x, y] of points) {
-    const sx = L.sx(x), sy = L.sy(y);
-    ctx.moveTo(sx, sy - r); ctx.lineTo(sx + r, sy); ctx.lineTo(sx, sy + r); ctx.lineTo(sx - r, sy);
-    ctx.closePath();
-  }
+  const diamonds = (r, pick) => {
+    ctx.beginPath();
+    points.forEach(([x, y], i) => {
+      if (!pick(i)) return;
+      const sx = L.sx(x), sy = L.sy(y);
+      ctx.moveTo(sx, sy - r); ctx.lineTo(sx + r, sy); ctx.lineTo(sx, sy + r); ctx.lineTo(sx - r, sy);
+      ctx.closePath();
+    });
+  };
+  const isLit = (i) => !!(seen && lit && seen.has(i));
+  diamonds(L.px(4), (i) => !isLit(i));
   ctx.fillStyle = fill;
   ctx.fill();
   ctx.strokeStyle = edge;
   ctx.lineWidth = L.px(1);
   ctx.stroke();
+  if (!seen || !lit || !seen.size) return;
+  ctx.beginPath();
+  points.forEach(([x, y], i) => {
+    if (!isLit(i)) return;
+    ctx.moveTo(L.sx(x) + L.px(9), L.sy(y));
+    ctx.arc(L.sx(x), L.sy(y), L.px(9), 0, 2 * Math.PI);
+  });
+  ctx.fillStyle = 'rgba(255, 212, 0, 0.3)';
+  ctx.fill();
+  diamonds(L.px(6), isLit);
+  ctx.fillStyle = lit;
+  ctx.fill();
+  ctx.strokeStyle = edge;
+  ctx.lineWidth = L.px(1);
+  ctx.stroke();
+}
+
+/**
+ * Where the inspection sensor is and where it looks, for `robot` at scenario state `q`:
+ * {x, y, heading} (heading in radians from the x axis, null when the robot has none).
+ *   arm    the end effector (the last link's end; joint angles are relative to the previous link,
+ *          the first to the x axis, so the heading is their sum);
+ *   rigid  the reference point, heading θ;
+ *   point  the point, no heading; asv: the vehicles' centroid, no heading.
+ */
+export function sensorPose(robot, q) {
+  if (!q || q.length < 2) return null;
+  switch (robot?.kind) {
+    case 'arm': {
+      if (!robot.links || q.length < robot.links.length) return null;
+      let [x, y] = robot.base || [0, 0];
+      let a = 0;
+      robot.links.forEach((len, i) => {
+        a += q[i];
+        x += len * Math.cos(a);
+        y += len * Math.sin(a);
+      });
+      return { x, y, heading: a };
+    }
+    case 'rigid':
+      return { x: q[0], y: q[1], heading: q.length > 2 ? q[2] : null };
+    case 'asv': {
+      let x = 0, y = 0;
+      const n = Math.floor(q.length / 2);
+      for (let i = 0; i < n; i++) { x += q[2 * i]; y += q[2 * i + 1]; }
+      return { x: x / n, y: y / n, heading: null };
+    }
+    default:
+      return { x: q[0], y: q[1], heading: null };
+  }
 }
 
 /** The outline of `robot` at scenario state `q`, as the core would give it (for previews). */

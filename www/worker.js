@@ -18,7 +18,11 @@
 //                                            cspace {n, grid: Uint8Array (transferred), dims} for a
 //                                            2-D arm: n×n validity, rows from the lowest 2nd coordinate
 //   invalid   {error: {path, message, line, column, text}}
-//   events    {data: Float64Array, stats, status}   transferred, once per batch
+//   events    {data: Float64Array, stats, status, tries: {seen, sent}}   transferred, once per batch;
+//                                            the sampler's raw tries (SAMPLE_TRY) are all sent up to
+//                                            TRY_KEEP a run, then thinned (one in 2, 4, 8… as their
+//                                            number doubles), so a validity-checking sampler's
+//                                            millions of draws cannot swamp the page
 //   result    {result, frames: Float64Array, rawFrames: Float64Array}
 //   status    {status}
 //   asv-solution {text}
@@ -28,6 +32,7 @@
 
 import init, { Scene, Run, builtins, import_file, planners, event_kinds, install_panic_hook, last_panic, debug_panic }
   from './pkg/planarium.js';
+import { thinTries } from './thin.js';
 
 const BATCH_MS = 12;          // one batch of planning, then yield to the message queue
 const FRAME_SPACING = 0.004;  // animation frames along the path, in the robot's metric
@@ -40,6 +45,7 @@ let run = null;         // current Run
 let runId = 0;
 let running = false;
 let dead = false;
+let tries = { seen: 0, sent: 0 }; // the current run's raw tries: drawn by the core, sent to the page
 
 const ready = init().then(() => {
   install_panic_hook();
@@ -54,6 +60,7 @@ function post(msg, transfer = []) {
 function freeRun() {
   if (run) { run.free(); run = null; }
   running = false;
+  tries = { seen: 0, sent: 0 };
 }
 
 function ensureRun() {
@@ -65,8 +72,8 @@ function ensureRun() {
 }
 
 function flush(status) {
-  const data = run.drain_events();
-  post({ type: 'events', run: runId, data, stats: JSON.parse(run.stats_json()), status }, [data.buffer]);
+  const data = thinTries(run.drain_events(), tries);
+  post({ type: 'events', run: runId, data, stats: JSON.parse(run.stats_json()), status, tries: { ...tries } }, [data.buffer]);
   if (status !== 'running') {
     running = false;
     const result = JSON.parse(run.result_json());

@@ -233,7 +233,10 @@ impl KdTree {
                 }
                 let i = node as usize;
                 offer(space.distance(q, self.p(i)), i, &mut found);
-                for child in [self.left[i], self.right[i]] {
+                // Far side pushed first, so the near side is searched first and tightens the bound.
+                let s = self.split[i] as usize;
+                let (near, far) = if q[s] < self.pts[i * d + s] { (self.left[i], self.right[i]) } else { (self.right[i], self.left[i]) };
+                for child in [far, near] {
                     if child != NONE {
                         let c = child as usize;
                         let cb = space.box_lower_bound(q, &self.lo[c * d..(c + 1) * d], &self.hi[c * d..(c + 1) * d]);

@@ -443,7 +443,7 @@ impl Inspection {
         }
         if cx.si.check_motion(tree.state(source), &self.new, &mut self.scratch).is_err() {
             cx.events.at(EventKind::Collision, 0, cx.si.project(&self.scratch), &self.scratch);
-            cx.sampler.note_collision(&self.scratch);
+            cx.sampler.note_collision(tree.state(source));
             return None;
         }
         let new = self.new.clone();

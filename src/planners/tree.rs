@@ -116,7 +116,7 @@ impl Tree {
     pub fn parent(&self, i: u32) -> u32 {
         self.parents[i as usize]
     }
-    /// Add a node; emits `NodeAdded`.
+    /// Add a node (the caller emits `NodeAdded`).
     pub fn add(&mut self, cx: &Context, q: &[Real], parent: u32) -> u32 {
         let id = self.parents.len() as u32;
         self.states.extend_from_slice(q);
@@ -269,7 +269,7 @@ impl Tree {
         let near_state = &self.states[near as usize * self.dims..(near as usize + 1) * self.dims];
         if cx.si.check_motion(near_state, new, scratch).is_err() {
             cx.events.at(EventKind::Collision, self.index, cx.si.project(scratch), scratch);
-            cx.sampler.note_collision(scratch);
+            cx.sampler.note_collision(self.state(near));
             self.record(cx, near, true);
             return (Grow::Trapped, near);
         }

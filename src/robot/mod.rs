@@ -58,6 +58,12 @@ pub trait Robot: std::fmt::Debug {
         space.sample_uniform(rng, out);
         0
     }
+    /// Write into `out` a Gaussian neighbour of `centre` (spread `sigma` × each coordinate's range)
+    /// drawn the robot's own way and return `true`; the default returns `false`, and samplers move
+    /// every coordinate independently.
+    fn sample_gaussian(&self, _space: &StateSpace, _rng: &mut crate::rng::Rng, _centre: &[Real], _sigma: Real, _out: &mut [Real]) -> bool {
+        false
+    }
     /// How many steps a motion `a → b` of length `d` is checked in (default: `ceil(d / resolution)`);
     /// a robot with its own step rule (no vehicle moves more than `max_step`) overrides it.
     fn motion_steps(&self, _a: &[Real], _b: &[Real], d: Real, resolution: Real) -> usize {

@@ -1,7 +1,8 @@
 //! Gaussian sampling: V. Boor, M. H. Overmars, A. F. van der Stappen, "The Gaussian sampling
 //! strategy for probabilistic roadmap planners", ICRA 1999. Draw a uniform state and a Gaussian
-//! neighbour of it; when exactly one of the two is free, keep that one. Samples gather along the
-//! boundary of the obstacles.
+//! neighbour of it (`sigma`); when exactly one of the two is free, keep that one. Samples gather
+//! along the boundary of the obstacles, within a few `sigma` of it. One attempt: one pair, two
+//! draws and two checks.
 
 use super::{Draw, Sampler};
 use crate::math::Real;
@@ -14,6 +15,7 @@ pub(super) fn draw(s: &mut Sampler, d: &mut Draw, out: &mut [Real]) -> bool {
         let (fa, fb) = (d.check(&s.a), d.check(&s.b));
         if fa != fb {
             out.copy_from_slice(if fa { &s.a } else { &s.b });
+            s.witnessed = true;
             return true;
         }
     }

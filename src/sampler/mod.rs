@@ -12,11 +12,24 @@
 //! | `obstacle` | a free and an occupied state; walks from the free one toward the occupied one and keeps the last free state |
 //! | `near-collision` | Gaussian around the last collision point (`collision_sigma`), re-centred at random with `random_sigma` every `perseverance` samples |
 //!
+//! "Uniform" draws are always the robot's own sampler ([`SpaceInfo::sample`]): the vehicle chain
+//! draws valid-looking chains, since uniform chain states are almost never valid. Every sample
+//! is in the space's bounds (a draw the robot's sampler put outside them is clamped into them).
+//!
 //! `sigma`, `collision_sigma` and `random_sigma` are fractions of each coordinate's range, so one
-//! value means the same on every robot. With probability `goal_bias` any sampler returns the goal
-//! instead. A sampler that needs validity (gaussian, bridge, obstacle) gives up after
-//! `sampler_tries` raw draws; the iteration then grows nothing. [`SamplerStats`] counts raw draws
-//! and state checks per accepted sample. Raw draws are logged as [`EventKind::SampleTry`] events.
+//! value means the same on every robot. A Gaussian neighbour wraps on an angle that wraps, and is
+//! *reflected* back into the bounds on any other coordinate. (Clamping would put a point mass on
+//! the bounds, holding a third of the samples or more with the default `random_sigma` of 0.5 and
+//! nearly all of them with a spread of several ranges; reflected, a wide spread tends to uniform.)
+//!
+//! With probability `goal_bias` any sampler returns the goal instead. A sampler that needs
+//! validity (gaussian, bridge, obstacle) gives up after `sampler_tries` attempts (an attempt draws
+//! one or two raw states, so at most twice that many draws); the iteration then grows nothing. The
+//! obstacle-based walk that follows is not an attempt: it checks at most one state per
+//! `resolution` of the distance walked. [`SamplerStats`] counts raw draws (goal samples and
+//! near-collision centres included) and state checks per accepted sample. Every state these
+//! samplers check is logged as an [`EventKind::SampleTry`] event (not the candidates a robot's own
+//! sampler may check). Only the run's seeded [`Rng`] is used, so a seed fixes every sample.
 
 mod bridge;
 mod gaussian;
@@ -41,7 +54,7 @@ pub static SAMPLER_PARAMS: &[ParamSpec] = &[
     ParamSpec::real("collision_sigma", "Collision sigma", 0.0, 1.0, 0.03, "Near-collision sampler: standard deviation around the last collision point (fraction of each range)."),
     ParamSpec::real("random_sigma", "Random sigma", 0.0, 10.0, 0.5, "Near-collision sampler: standard deviation around a random centre (fraction of each range)."),
     ParamSpec::int("perseverance", "Perseverance", 1.0, 1e6, 20.0, "Near-collision sampler: samples around one centre before re-centring at random."),
-    ParamSpec::int("sampler_tries", "Sampler tries", 1.0, 1e6, 100.0, "Raw draws a validity-checking sampler may spend on one sample before giving up."),
+    ParamSpec::int("sampler_tries", "Sampler tries", 1.0, 1e6, 100.0, "Attempts (of one or two draws) a validity-checking sampler makes for one sample before giving up."),
 ];
 
 /// The sampler parameters as a group of the page's parameter panel.
@@ -52,9 +65,9 @@ pub const SAMPLER_GROUP: ParamGroup = ParamGroup { name: "sampler", label: "Samp
 pub struct SamplerStats {
     /// Samples handed to the planner.
     pub accepted: u64,
-    /// Samples that gave up after `sampler_tries` draws.
+    /// Samples given up after `sampler_tries` attempts.
     pub failed: u64,
-    /// Raw states drawn (goal samples included).
+    /// Raw states drawn (goal samples and near-collision centres included).
     pub draws: u64,
     /// State checks spent by the sampler itself.
     pub checks: u64,
@@ -102,8 +115,12 @@ pub struct Sampler {
     centre: Option<Vec<Real>>,
     centre_sigma: Real,
     around_centre: u64,
+    /// The two states the last sample was judged by (see [`Sampler::witnesses`]), and scratch.
     a: Vec<Real>,
     b: Vec<Real>,
+    c: Vec<Real>,
+    /// Whether `a` and `b` are the last sample's witnesses.
+    witnessed: bool,
     stats: SamplerStats,
 }
 
@@ -120,25 +137,60 @@ pub struct Draw<'a> {
 }
 
 impl Draw<'_> {
-    /// A raw draw from the robot's sampler.
+    /// A raw draw from the robot's sampler, clamped into the space's bounds: a robot's sampler
+    /// may return a state outside them (the vehicle chain's last resort, an invalid chain, can
+    /// have its centroid off the map).
     fn uniform(&mut self, out: &mut [Real]) {
         self.si.sample(self.rng, out);
-    }
-    /// Whether `q` is valid, logging the check as a raw try.
-    fn check(&mut self, q: &[Real]) -> bool {
-        let ok = self.si.is_valid(q);
-        self.events.mark(EventKind::SampleTry, self.tree, ok as i64, -1.0, self.si.project(q), 0.0, 0.0);
-        ok
-    }
-    /// Write into `out` a Gaussian neighbour of `centre`: each coordinate moved by a normal
-    /// deviate of `sigma` × its range (angles wrap, bounded coordinates are clamped).
-    fn gaussian_near(&mut self, centre: &[Real], sigma: Real, out: &mut [Real]) {
-        for (i, d) in self.si.space.dims.iter().enumerate() {
-            let v = centre[i] + self.rng.normal() * sigma * (d.hi - d.lo);
-            out[i] = if d.wraps { v } else { v.clamp(d.lo, d.hi) };
+        for (v, d) in out.iter_mut().zip(&self.si.space.dims) {
+            if !d.wraps {
+                *v = v.clamp(d.lo, d.hi);
+            }
         }
         self.si.space.enforce(out);
     }
+    /// Whether `q` is valid (one counted check), logged as a `SampleTry` event: `id` 1 free,
+    /// 0 occupied; the state's point and first two coordinates, as for any event at one state.
+    fn check(&mut self, q: &[Real]) -> bool {
+        let ok = self.si.is_valid(q);
+        let p = self.si.project(q);
+        self.events.push(EventKind::SampleTry, self.tree, ok as i64, -1, p, p, q, q);
+        ok
+    }
+    /// Write into `out` a Gaussian neighbour of `centre`: each coordinate moved by a normal
+    /// deviate of `sigma` × its range; an angle that wraps is wrapped, any other coordinate is
+    /// reflected back into its bounds.
+    ///
+    /// A robot whose coordinates are not independent (the vehicle chain, whose turns must keep
+    /// the polygon convex) moves them its own way: see [`SpaceInfo::sample_gaussian`].
+    fn gaussian_near(&mut self, centre: &[Real], sigma: Real, out: &mut [Real]) {
+        if self.si.sample_gaussian(self.rng, centre, sigma, out) {
+            return;
+        }
+        gaussian_coordinates(&self.si.space, self.rng, centre, sigma, out);
+    }
+}
+
+/// The generic Gaussian neighbour: every coordinate moved independently (see
+/// [`Draw::gaussian_near`]). Public for robots that move some coordinates this way.
+pub fn gaussian_coordinates(space: &crate::space::StateSpace, rng: &mut Rng, centre: &[Real], sigma: Real, out: &mut [Real]) {
+    for (i, d) in space.dims.iter().enumerate() {
+        let v = centre[i] + rng.normal() * sigma * (d.hi - d.lo);
+        out[i] = if d.wraps { v } else { reflect(v, d.lo, d.hi) };
+    }
+    space.enforce(out);
+}
+
+/// `v` folded into `[lo, hi]` by reflection at the bounds (as often as needed): the identity
+/// inside, a mirror image just outside, and uniform in the limit of a wide spread. Plain IEEE
+/// arithmetic (`rem_euclid`), so the result is the same on every platform.
+fn reflect(v: Real, lo: Real, hi: Real) -> Real {
+    let w = hi - lo;
+    if w <= 0.0 {
+        return lo;
+    }
+    let t = (v - lo).rem_euclid(2.0 * w);
+    (lo + if t > w { 2.0 * w - t } else { t }).clamp(lo, hi)
 }
 
 impl Sampler {
@@ -168,6 +220,8 @@ impl Sampler {
             around_centre: 0,
             a: vec![0.0; n],
             b: vec![0.0; n],
+            c: vec![0.0; n],
+            witnessed: false,
             stats: SamplerStats::default(),
         }
     }
@@ -184,9 +238,23 @@ impl Sampler {
     pub fn stats(&self) -> SamplerStats {
         self.stats
     }
+    /// The two states the last accepted sample was judged by, for tests and figures: `gaussian`,
+    /// the uniform state and its Gaussian neighbour (the sample is the free one); `bridge`, the
+    /// two occupied ends (the sample is their midpoint); `obstacle`, the free state the walk
+    /// started from and the occupied state it walked toward. `None` for the other samplers, a
+    /// goal sample, or a sampler that gave up.
+    pub fn witnesses(&self) -> Option<(&[Real], &[Real])> {
+        self.witnessed.then_some((&self.a[..], &self.b[..]))
+    }
+    /// The near-collision sampler's current centre and its sigma (a fraction of each range), and
+    /// the samples drawn since it was last re-centred at random; `None` before its first sample
+    /// or collision, and for the other samplers.
+    pub fn centre(&self) -> Option<(&[Real], Real, u64)> {
+        self.centre.as_deref().map(|c| (c, self.centre_sigma, self.around_centre))
+    }
 
-    /// Draw one sample into `out`; `false` when the sampler gave up (after `sampler_tries` raw
-    /// draws), in which case `out` holds nothing useful.
+    /// Draw one sample into `out`; `false` when the sampler gave up (after `sampler_tries`
+    /// attempts), in which case `out` holds nothing useful.
     pub fn sample(&mut self, d: &mut Draw, out: &mut [Real]) -> bool {
         let checks0 = d.si.checks();
         let ok = self.draw(d, out);
@@ -200,6 +268,7 @@ impl Sampler {
     }
 
     fn draw(&mut self, d: &mut Draw, out: &mut [Real]) -> bool {
+        self.witnessed = false;
         if self.goal_bias > 0.0 && d.rng.uniform01() < self.goal_bias {
             if let Some(g) = &self.goal {
                 out.copy_from_slice(g);
@@ -220,7 +289,10 @@ impl Sampler {
         }
     }
 
-    /// A motion toward a sample collided at `q` (the near-collision sampler re-centres there).
+    /// A motion toward a sample collided; `q` is the tree node it started from (report 001's
+    /// "last connected node": a free state beside the obstacle). The near-collision sampler
+    /// re-centres there, with `collision_sigma`; its count of samples since the last random centre
+    /// goes on.
     pub fn note_collision(&mut self, q: &[Real]) {
         if self.kind == Kind::NearCollision {
             near_collision::note_collision(self, q);

@@ -1,6 +1,13 @@
-//! Obstacle-based sampling (OMPL's `ObstacleBasedValidStateSampler`, after N. M. Amato et al.,
-//! "OBPRM", WAFR 1996): draw a free state and an occupied one, then walk from the free one toward
-//! the occupied one at the motion resolution and keep the last free state before the obstacle.
+//! Obstacle-based sampling (OMPL's `ObstacleBasedValidStateSampler`, after N. M. Amato,
+//! O. B. Bayazit, L. K. Dale, C. Jones, D. Vallejo, "OBPRM: an obstacle-based PRM for 3D
+//! workspaces", WAFR 1998): draw a free state and an occupied one (an attempt draws whichever is
+//! still missing), then walk from the free one toward the occupied one along the space's
+//! interpolation, in ⌈distance / resolution⌉ equal steps, and keep the last free state before the
+//! first occupied one. Samples lie within one step of an obstacle: at most one resolution apart
+//! under every metric but the chain metrics (under which equal steps of the joints are not equal
+//! moves of the links, as motion checking also knows). The walk checks fewer than
+//! ⌈distance / resolution⌉ states (the occupied end is known, and not checked again), so at most
+//! the space's extent over its resolution.
 
 use super::{Draw, Sampler};
 use crate::math::Real;
@@ -26,17 +33,17 @@ pub(super) fn draw(s: &mut Sampler, d: &mut Draw, out: &mut [Real]) -> bool {
     if !(free && occupied) {
         return false;
     }
-    // Walk a → b; `out` keeps the last free state seen.
+    // Walk a → b over the states a + k/steps·(b − a), 0 < k < steps; `out` keeps the last free one.
     let dist = d.si.distance(&s.a, &s.b);
     let steps = ((dist / d.si.resolution).ceil() as usize).max(1);
     out.copy_from_slice(&s.a);
-    let mut q = s.a.clone();
-    for k in 1..=steps {
-        d.si.interpolate(&s.a, &s.b, k as Real / steps as Real, &mut q);
-        if !d.check(&q) {
+    for k in 1..steps {
+        d.si.interpolate(&s.a, &s.b, k as Real / steps as Real, &mut s.c);
+        if !d.check(&s.c) {
             break;
         }
-        out.copy_from_slice(&q);
+        out.copy_from_slice(&s.c);
     }
+    s.witnessed = true;
     true
 }

@@ -285,6 +285,10 @@ impl Robot for AsvRobot {
     fn sample(&self, space: &StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) -> u64 {
         sampler::sample(self, space, rng, out)
     }
+    fn sample_gaussian(&self, space: &StateSpace, rng: &mut crate::rng::Rng, centre: &[Real], sigma: Real, out: &mut [Real]) -> bool {
+        sampler::sample_gaussian(self, space, rng, centre, sigma, out);
+        true
+    }
     fn motion_steps(&self, a: &[Real], b: &[Real], _d: Real, _resolution: Real) -> usize {
         // A hair of slack for rounding in the bound.
         ((self.bound(a, b) * (1.0 + 1e-9) / self.max_step).ceil() as usize).max(1)

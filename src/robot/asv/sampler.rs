@@ -180,6 +180,36 @@ pub(super) fn sample(robot: &AsvRobot, space: &StateSpace, rng: &mut Rng, out: &
     checks
 }
 
+/// A Gaussian neighbour of `centre` that keeps the chain's shape a chain: the centroid and `θ1`
+/// move as independent coordinates (spread `sigma` × their range), and each turn by a normal
+/// deviate of `sigma` × 2π, kept on the winding's side and below π, the turns scaled back when
+/// together they would leave no room to close the polygon. (Moving every coordinate
+/// independently, as for other robots, almost always breaks convexity: Gaussian, bridge and
+/// near-collision sampling would then only ever see invalid chains.)
+pub(super) fn sample_gaussian(robot: &AsvRobot, space: &StateSpace, rng: &mut Rng, centre: &[Real], sigma: Real, out: &mut [Real]) {
+    let placement = StateSpace { dims: space.dims[..3].to_vec(), metric: crate::space::Metric::Euclidean };
+    crate::sampler::gaussian_coordinates(&placement, rng, &centre[..3], sigma, &mut out[..3]);
+    let winding = match robot.orientation() {
+        0.0 => {
+            let s: Real = centre[3..].iter().sum();
+            if s < 0.0 { -1.0 } else { 1.0 }
+        }
+        w => w,
+    };
+    let mut total = 0.0;
+    for k in 3..out.len() {
+        let t = (centre[k] * winding + rng.normal() * sigma * 2.0 * PI).clamp(0.0, PI - 1e-6);
+        out[k] = t;
+        total += t;
+    }
+    // The turns of a convex polygon sum to 2π: leave the closing turns a share.
+    let room = 2.0 * PI * (1.0 - 1.0 / robot.n as Real);
+    let scale = if total > room { room / total } else { 1.0 };
+    for v in &mut out[3..] {
+        *v *= scale * winding;
+    }
+}
+
 /// Draw the chain's shape into `angles` (`θ1`, then the `n − 2` turns) with the given winding.
 fn shape(robot: &AsvRobot, rng: &mut Rng, winding: Real, angles: &mut [Real]) {
     let n = robot.n;

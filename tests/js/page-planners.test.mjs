@@ -1,0 +1,134 @@
+// The planners that keep improving, in the page (headless chromium): RRT* on the open field draws
+// its best-cost chart and reports the best cost; the inspection planner on the Technion room draws
+// its coverage chart, lights the points it sees and shows the sensor's field of view; planners are
+// offered by the scenario's task. Screenshots go to target/page-rrt-star.png, page-inspection.png.
+import { test, beforeEach } from 'node:test';
+import assert from 'node:assert/strict';
+import { join } from 'node:path';
+import { pageFixture, SHOTS as shots } from './browser.mjs';
+import { PALETTE } from '../../www/view.js';
+
+const fx = await pageFixture();
+let page;
+beforeEach(() => { page = fx.page; });
+const { waitState, pickScenario, countColours } = fx;
+
+const nextFrames = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+
+async function fastPlayback() {
+  await page.$eval('#speed', (el) => {
+    el.value = el.max;
+    el.dispatchEvent(new Event('input', { bubbles: true }));
+  });
+}
+
+async function setField(id, value) {
+  await page.$eval(`#${id}`, (el, v) => {
+    el.value = String(v);
+    el.dispatchEvent(new Event('change', { bubbles: true }));
+  }, value);
+  await waitState('idle');
+}
+
+/** Pixels of the chart canvas within `tol` of the chart's line colour. */
+const chartLine = async (tol = 8) => (await countColours('chart', [PALETTE.chartLine], tol))[0];
+
+test('RRT* on the open field: the best-cost chart has a line and the stats show the best cost', async () => {
+  await pickScenario('open-field', 'Open field');
+  await page.selectOption('#planner', 'rrt-star');
+  await waitState('idle');
+  assert.equal(await page.isVisible('#chart'), true, 'the chart is shown for RRT*');
+  assert.match(await page.textContent('#chart-title'), /cost/i);
+  await nextFrames();
+  assert.equal(await chartLine(), 0, 'no line before the run');
+  await setField('seed', 1);
+  await fastPlayback();
+  await page.click('#run');
+  await waitState('finished', 90000);
+  await nextFrames();
+  const model = await page.evaluate(() => window.planarium.model());
+  assert.ok(model.costs.length >= 2, `cost improvements shown: ${model.costs.length}`);
+  assert.ok(model.costs.every(([, c], i) => i === 0 || c <= model.costs[i - 1][1]), 'the best cost never grows');
+  assert.ok(model.rewires > 0, `rewires: ${model.rewires}`);
+  assert.ok(model.bestBranch >= 2, 'the best path walks back to the root');
+  const line = await chartLine();
+  console.log(`RRT*: ${model.costs.length} costs, ${model.rewires} rewires, chart line ${line} pixels`);
+  assert.ok(line > 60, `chart line pixels: ${line}`);
+  const best = Number(await page.textContent('#stat-best-cost'));
+  const last = model.costs.at(-1)[1];
+  assert.ok(Number.isFinite(best) && best > 0, `best cost shown: ${best}`);
+  assert.ok(Math.abs(best - last) < 1e-4, `stats best cost ${best} = last COST event ${last}`);
+  assert.equal(await page.isVisible('#stat-best-cost'), true);
+  assert.equal(await page.isVisible('#stat-coverage'), false, 'no coverage row for a goal planner');
+  await page.$eval('#chart-box', (el) => el.scrollIntoView());
+  await page.screenshot({ path: join(shots, 'page-rrt-star.png') });
+
+  // the best path so far is drawn, and goes when its overlay is switched off
+  await page.click('#reset');
+  await waitState('idle');
+  await page.$eval('#speed', (el) => { el.value = 55; el.dispatchEvent(new Event('input', { bubbles: true })); });
+  await page.click('#run');
+  await page.waitForFunction(() => window.planarium.model().costs.length > 0, null, { timeout: 60000 });
+  await page.click('#pause');
+  await waitState('paused');
+  await nextFrames();
+  const [bestPath] = await countColours('canvas', [PALETTE.best], 6);
+  assert.ok(bestPath > 100, `best path pixels: ${bestPath}`);
+  await page.click('#show-best');
+  await nextFrames();
+  const [bestOff] = await countColours('canvas', [PALETTE.best], 6);
+  assert.ok(bestOff < bestPath / 10, `best path gone: ${bestOff} of ${bestPath}`);
+});
+
+test('technion-ip: only inspection planners are offered, with the reason; narrow offers no inspection', async () => {
+  await pickScenario('technion-ip', 'Technion HW3: inspect the room');
+  const offered = await page.$$eval('#planner option', (os) => os.map((o) => o.value));
+  assert.deepEqual(offered, ['inspection']);
+  assert.match(await page.textContent('#planner-note'), /need a goal/);
+  await pickScenario('narrow', 'Narrow passage');
+  const goalOnly = await page.$$eval('#planner option', (os) => os.map((o) => o.value));
+  assert.ok(!goalOnly.includes('inspection') && goalOnly.includes('rrt-connect'), goalOnly.join());
+  assert.match(await page.textContent('#planner-note'), /needs inspection points/);
+});
+
+test('inspection on technion-ip: the coverage chart grows and seen points light up', async () => {
+  await pickScenario('technion-ip', 'Technion HW3: inspect the room');
+  assert.equal(await page.$eval('#planner', (s) => s.value), 'inspection');
+  assert.match(await page.textContent('#chart-title'), /coverage/i);
+  await setField('param-coverage', 0.5);
+  await setField('seed', 1);
+  await setField('run-time_limit', 120);
+  await nextFrames();
+  const [litBefore] = await countColours('canvas', [PALETTE.seen], 6);
+  assert.equal(litBefore, 0, 'nothing lit before the run');
+  assert.equal(await chartLine(), 0, 'no line before the run');
+  await fastPlayback();
+  await page.click('#run');
+  await waitState('finished', 150000);
+  assert.equal(await page.textContent('#status'), 'solved');
+  await page.waitForTimeout(300);
+  const model = await page.evaluate(() => window.planarium.model());
+  const coverage = model.coverage.at(-1);
+  console.log(`inspection: ${model.coverage.length} coverage events, last ${coverage}, ${model.seen.length} points seen`);
+  assert.ok(coverage[1] >= 0.5, `coverage reached: ${coverage[1]}`);
+  assert.ok(model.seen.length >= coverage[2], 'every point the best branch sees was seen');
+  assert.match(await page.textContent('#stat-coverage'), /^\d+(\.\d)?% \(\d+ seen\)$/);
+  const shown = parseFloat(await page.textContent('#stat-coverage'));
+  assert.ok(Math.abs(shown - 100 * coverage[1]) < 0.06, `stats coverage ${shown}% = ${100 * coverage[1]}%`);
+  const line = await chartLine();
+  assert.ok(line > 60, `coverage chart line pixels: ${line}`);
+  // lit points: each seen point is a bright diamond (about 70 px at this size)
+  const [lit, unlit] = await countColours('canvas', [PALETTE.seen, PALETTE.inspection], 6);
+  console.log(`lit ${lit} px for ${model.seen.length} points; unlit ${unlit} px`);
+  assert.ok(lit >= 25 * model.seen.length, `lit pixels ${lit} for ${model.seen.length} seen points`);
+  // the sensor's wedge at the robot shown
+  const [fov] = await countColours('canvas', [PALETTE.fov], 30);
+  assert.ok(fov > 80, `field-of-view outline pixels: ${fov}`);
+  await page.$eval('#chart-box', (el) => el.scrollIntoView());
+  await page.screenshot({ path: join(shots, 'page-inspection.png') });
+  // switched off, the points go back to their plain colour
+  await page.click('#show-seen');
+  await nextFrames();
+  const [litOff] = await countColours('canvas', [PALETTE.seen], 6);
+  assert.equal(litOff, 0, `lit pixels with the overlay off: ${litOff}`);
+});

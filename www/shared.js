@@ -1,0 +1,51 @@
+// Small helpers the playground and the compare page share: the playback-speed and animation
+// sliders, and which live chart a planner gets.
+
+import { EventKind } from './events.js';
+
+/** Events per second for the playback slider `input` (its maximum: Infinity, all at once). */
+export function speedRate(input) {
+  const v = Number(input.value);
+  return v >= Number(input.max) ? Infinity : Math.round(10 ** (1 + (4 * v) / 100));
+}
+
+/** The playback slider's value in words. */
+export function describeSpeed(input) {
+  const r = speedRate(input);
+  return Number.isFinite(r) ? `${r.toLocaleString('en')} events/s` : 'all at once';
+}
+
+/** Robot animation frames per second for the animation slider `input`. */
+export function animFps(input) { return 10 ** (0.5 + (2.5 * Number(input.value)) / 100); }
+
+// Parameters that only a planner which keeps improving its solution takes (RRT*'s).
+const ANYTIME_PARAMS = ['rewire', 'rewire_factor', 'improve_for'];
+
+/**
+ * The live chart for registry planner `p`: 'coverage' for an inspection planner, 'cost' for one
+ * that keeps improving (it has an anytime parameter, or the run already reported a cost in
+ * `model`), else null.
+ */
+export function chartKind(p, model = null) {
+  if (!p) return null;
+  if (p.task === 'inspection') return 'coverage';
+  if (p.params.some((s) => ANYTIME_PARAMS.includes(s.name))) return 'cost';
+  if (model && model.costs.length) return 'cost';
+  return null;
+}
+
+/** What the shown events say, for tests and the console (window.planarium.model()). */
+export function modelSummary(model, chart = null) {
+  const count = (kind) => model.counts[kind] || 0;
+  return {
+    chart: chart ? chart.kind : null,
+    trees: model.trees.map((t) => ({ nodes: t.n, domains: t.domains, exhausted: t.exhausted })),
+    tries: count(EventKind.SAMPLE_TRY),
+    rewires: count(EventKind.REWIRE),
+    costs: model.costs.map((c) => c.slice()),
+    coverage: model.coverage.map((c) => c.slice()),
+    seen: [...model.seen],
+    best: model.best ? { ...model.best } : null,
+    bestBranch: model.bestBranch().length,
+  };
+}

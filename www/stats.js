@@ -1,0 +1,61 @@
+// The stats panel: a <dl> built from one field table, filled from Lane.statsFor(). The playground
+// and each lane of the compare page use it, with an id prefix. Rows marked `optional` are hidden
+// while they have no value (the best cost only exists for planners that keep improving, the
+// coverage only for inspection, raw tries only for validity-checking samplers).
+
+import { el } from './dom.js';
+
+const fixed = (v, n) => (v === undefined || v === null || !Number.isFinite(v) ? undefined : v.toFixed(n));
+
+export const STAT_FIELDS = Object.freeze([
+  { key: 'time', label: 'Time (ms)', value: (s) => fixed(s.time_ms, 1) },
+  { key: 'iterations', label: 'Iterations', value: (s) => s.iterations },
+  { key: 'nodes', label: 'Nodes', value: (s) => s.nodes },
+  { key: 'checks', label: 'Checks', value: (s) => s.checks },
+  { key: 'cost', label: 'Cost', value: (s) => fixed(s.cost, 4) },
+  { key: 'smoothed-cost', label: 'Smoothed cost', value: (s) => fixed(s.smoothed_cost, 4) },
+  { key: 'best-cost', label: 'Best cost so far', optional: true, value: (s) => fixed(s.best_cost, 4),
+    title: 'The cost of the best solution in the events shown (it keeps improving)' },
+  { key: 'coverage', label: 'Coverage', optional: true,
+    value: (s) => (s.coverage == null ? undefined
+      : `${(100 * s.coverage).toFixed(1)}%${s.points_seen != null ? ` (${s.points_seen} seen)` : ''}`),
+    title: "The best branch's share of inspection points seen, in the events shown" },
+  { key: 'sampler', label: 'Sampler', value: (s) => s.sampler?.name },
+  { key: 'draws', label: 'Draws / sample', value: (s) => fixed(s.sampler?.draws_per_sample, 2),
+    title: "The sampler's raw draws per sample it handed to the planner" },
+  { key: 'sampler-checks', label: 'Checks / sample', value: (s) => fixed(s.sampler?.checks_per_sample, 2),
+    title: 'State checks the sampler spent per sample it handed to the planner' },
+  { key: 'tries', label: 'Raw tries shown', optional: true,
+    value: (s) => (s.tries_seen ? `${s.tries_sent.toLocaleString('en')} of ${s.tries_seen.toLocaleString('en')}` : undefined),
+    title: 'Raw tries sent to the page / drawn by the sampler (after the first 50 000 the worker thins them)' },
+  { key: 'shown', label: 'Nodes shown', value: (s) => `${s.shown_nodes} (${s.queued_events} events queued)` },
+]);
+
+/**
+ * Build the stats list into `dl` (ids `${prefix}status`, `${prefix}stat-<key>`); returns
+ * update(stats) which fills it.
+ */
+export function createStats(dl, prefix = '') {
+  const statusDd = el('dd', { id: `${prefix}status`, text: 'idle' });
+  statusDd.setAttribute('aria-live', 'polite');
+  const rows = [el('div', {}, el('dt', { text: 'Status' }), statusDd)];
+  const cells = STAT_FIELDS.map((f) => {
+    const dd = el('dd', { id: `${prefix}stat-${f.key}`, text: '–' });
+    const row = el('div', { className: 'stat-row' }, el('dt', { text: f.label, title: f.title || '' }), dd);
+    row.dataset.stat = f.key;
+    rows.push(row);
+    return { f, dd, row };
+  });
+  dl.replaceChildren(...rows);
+  return function update(s) {
+    statusDd.textContent = s.status;
+    statusDd.dataset.status = s.status;
+    for (const { f, dd, row } of cells) {
+      let v;
+      try { v = f.value(s); } catch { v = undefined; }
+      const none = v === undefined || v === null || Number.isNaN(v);
+      dd.textContent = none ? '–' : String(v);
+      if (f.optional) row.hidden = none;
+    }
+  };
+}
