@@ -12,7 +12,7 @@ import { Chart } from './chart.js';
 import { Lane } from './lane.js';
 import { createStats } from './stats.js';
 import { createOverlays } from './overlays.js';
-import { chartKind, speedRate, animFps, describeSpeed, modelSummary } from './shared.js';
+import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker } from './shared.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
@@ -88,18 +88,7 @@ function onReady(side, msg) {
       s.panel = createPanel($(`${s.key}-panel`), registry, () => { configure([s]); clearError(); },
         { prefix: `${s.key}-`, seed: false, title: 'Planner' });
     }
-    const groups = new Map();
-    for (const b of builtins) {
-      if (!groups.has(b.course)) {
-        const g = document.createElement('optgroup');
-        g.label = b.course || 'Other';
-        groups.set(b.course, g);
-        ui.scenario.append(g);
-      }
-      groups.get(b.course).append(new Option(b.name, b.id));
-    }
-    const first = builtins.find((b) => b.id === new URLSearchParams(location.search).get('scenario')) || builtins[0];
-    ui.scenario.value = first.id;
+    fillScenarioPicker(ui.scenario, builtins);
   }
   // load once every worker is ready (again, after a crash: same scenario, same set-ups)
   if (!sides.every((s) => s.ready)) return;

@@ -13,7 +13,7 @@ import { Chart } from './chart.js';
 import { Lane } from './lane.js';
 import { createStats } from './stats.js';
 import { createOverlays } from './overlays.js';
-import { chartKind, speedRate, animFps, describeSpeed, modelSummary } from './shared.js';
+import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker } from './shared.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
@@ -79,18 +79,7 @@ function onReady(msg) {
     registry = msg.planners;
     builtins = msg.builtins;
     panel = createPanel(ui.panel, registry, () => { configure(); clearError(); syncChart(); });
-    const groups = new Map(); // course → optgroup, in the order given
-    for (const b of builtins) {
-      if (!groups.has(b.course)) {
-        const g = document.createElement('optgroup');
-        g.label = b.course || 'Other';
-        groups.set(b.course, g);
-        ui.scenario.append(g);
-      }
-      groups.get(b.course).append(new Option(b.name, b.id));
-    }
-    const first = builtins.find((b) => b.id === new URLSearchParams(location.search).get('scenario')) || builtins[0];
-    ui.scenario.value = first.id;
+    const first = fillScenarioPicker(ui.scenario, builtins);
     load(JSON.stringify(first.scenario), true, { course: first.course });
   } else if (scenarioText) {
     load(scenarioText, false, { course }); // after a crash: same scenario, same configuration

@@ -1,5 +1,5 @@
-// Small helpers the playground and the compare page share: the playback-speed and animation
-// sliders, and which live chart a planner gets.
+// Small helpers the playground and the compare page share: the scenario picker, the
+// playback-speed and animation sliders, and which live chart a planner gets.
 
 import { EventKind } from './events.js';
 
@@ -48,4 +48,24 @@ export function modelSummary(model, chart = null) {
     best: model.best ? { ...model.best } : null,
     bestBranch: model.bestBranch().length,
   };
+}
+
+/**
+ * Fill the scenario `<select>` with the built-ins grouped by course (in the order given) and select
+ * the one named by the page's `?scenario=` (else the first). Returns the selected built-in.
+ */
+export function fillScenarioPicker(select, builtins) {
+  const groups = new Map(); // course → optgroup
+  for (const b of builtins) {
+    if (!groups.has(b.course)) {
+      const g = document.createElement('optgroup');
+      g.label = b.course || 'Other';
+      groups.set(b.course, g);
+      select.append(g);
+    }
+    groups.get(b.course).append(new Option(b.name, b.id));
+  }
+  const first = builtins.find((b) => b.id === new URLSearchParams(location.search).get('scenario')) || builtins[0];
+  select.value = first.id;
+  return first;
 }

@@ -1,5 +1,5 @@
 // The compare page in headless chromium: two set-ups (RRT-Connect with the uniform sampler and
-// with the bridge sampler) on the narrow passage, same seed, two workers and two canvases,
+// with the Gaussian sampler) on the narrow passage, same seed, two workers and two canvases,
 // started, paused, reset and run to the end together; both finish, with different stats.
 // Screenshot: target/page-compare.png.
 import { test, beforeEach } from 'node:test';
@@ -20,7 +20,7 @@ async function setSpeed(v) {
   }, v);
 }
 
-test('compare: uniform against bridge RRT-Connect on the same seed, run together, both finish with different stats', async () => {
+test('compare: uniform against Gaussian RRT-Connect on the same seed, run together, both finish with different stats', async () => {
   // from the playground's link, on the scenario shown there
   await page.selectOption('#scenario', 'narrow');
   await page.waitForFunction(() => document.getElementById('scenario-name').textContent === 'Narrow passage');
@@ -34,7 +34,7 @@ test('compare: uniform against bridge RRT-Connect on the same seed, run together
   await waitState('idle');
   await page.selectOption('#b-planner', 'rrt-connect');
   await waitState('idle');
-  await page.selectOption('#b-param-sampler', 'bridge');
+  await page.selectOption('#b-param-sampler', 'gaussian');
   await waitState('idle');
   await page.fill('#seed', '3');
   await page.dispatchEvent('#seed', 'change');
@@ -43,8 +43,8 @@ test('compare: uniform against bridge RRT-Connect on the same seed, run together
   assert.equal(a.seed, 3);
   assert.equal(b.seed, 3);
   assert.equal(a.params.sampler, undefined, 'A keeps the default (uniform) sampler');
-  assert.equal(b.params.sampler, 'bridge');
-  assert.match(await page.textContent('#b-title'), /bridge/);
+  assert.equal(b.params.sampler, 'gaussian');
+  assert.match(await page.textContent('#b-title'), /gaussian/);
 
   // started and paused together
   await setSpeed(0);
@@ -74,12 +74,12 @@ test('compare: uniform against bridge RRT-Connect on the same seed, run together
   assert.equal(await page.textContent('#a-status'), 'solved');
   assert.equal(await page.textContent('#b-status'), 'solved');
   assert.equal(sa.sampler.name, 'uniform');
-  assert.equal(sb.sampler.name, 'bridge');
-  assert.ok(sb.sampler.draws_per_sample > sa.sampler.draws_per_sample, 'the bridge sampler draws more per sample');
+  assert.equal(sb.sampler.name, 'gaussian');
+  assert.ok(sb.sampler.draws_per_sample > sa.sampler.draws_per_sample, 'the Gaussian sampler draws more per sample');
   assert.notEqual(sa.checks, sb.checks);
   assert.notDeepEqual([sa.iterations, sa.nodes], [sb.iterations, sb.nodes]);
   assert.equal(await page.textContent('#a-stat-sampler'), 'uniform');
-  assert.equal(await page.textContent('#b-stat-sampler'), 'bridge');
+  assert.equal(await page.textContent('#b-stat-sampler'), 'gaussian');
   assert.notEqual(await page.textContent('#a-stat-checks'), await page.textContent('#b-stat-checks'));
   const [ra, rb] = await page.evaluate(() => [window.planarium.result('a'), window.planarium.result('b')]);
   assert.equal(ra.seed, 3);

@@ -127,7 +127,7 @@ test('narrow, bridge sampler and dynamic domains: raw tries and domain circles s
   assert.equal(await page.isChecked('#show-domains'), true);
   const dd1 = await domains();
   console.log(`domain circle pixels: ${dd1}`);
-  assert.ok(dd1 > 300, `domain circle pixels: ${dd1}`);
+  assert.ok(dd1 > 100, `domain circle pixels: ${dd1}`);
   await page.screenshot({ path: join(shots, 'page-overlays-dd.png') });
   await toggle('show-domains');
   const dd2 = await domains();
