@@ -25,7 +25,7 @@ export function formatValue(v) {
 }
 
 export class Chart {
-  /** `canvas`: the chart's canvas (sized by CSS); `model`: a RunModel; `palette`: view.js PALETTE. */
+  /** `canvas`: the chart's canvas (sized by CSS); `model`: a RunModel; `palette`: palette.js PALETTE. */
   constructor(canvas, model, palette) {
     this.canvas = canvas;
     this.ctx = canvas.getContext('2d');

@@ -5,7 +5,8 @@
 // Read-only state for tests is exposed as window.planarium (lane-aware: stats('a'), result('b')).
 
 import { Controller } from './controller.js';
-import { View, PALETTE } from './view.js';
+import { View } from './view.js';
+import { PALETTE } from './palette.js';
 import { createPanel, taskOf } from './panel.js';
 import { Playback } from './playback.js';
 import { Chart } from './chart.js';

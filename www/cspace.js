@@ -9,13 +9,9 @@
 // two pieces, each leaving the square on its side, clipped to the square.
 
 import { EventKind, STRIDE } from './events.js';
+import { makeLayer } from './layout.js';
 
 const MARGIN = { left: 40, right: 12, top: 10, bottom: 36 }; // css px around the square
-
-function makeLayer() {
-  const c = document.createElement('canvas');
-  return { canvas: c, ctx: c.getContext('2d') };
-}
 
 /** A tick label for an angle-like value: multiples of π/2 by name. */
 export function formatTick(v) {

@@ -3,7 +3,8 @@
 // Read-only state for tests is exposed as window.planarium (nothing else is global).
 
 import { Controller, BUTTONS } from './controller.js';
-import { View, PALETTE } from './view.js';
+import { View } from './view.js';
+import { PALETTE } from './palette.js';
 import { CSpaceView } from './cspace.js';
 import { Editor } from './editor.js';
 import { fitViews, downloadText } from './stage.js';

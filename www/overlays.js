@@ -1,9 +1,9 @@
-// The overlay box: one checkbox per switchable overlay of view.js's OVERLAYS, each with its legend
+// The overlay box: one checkbox per switchable overlay of palette.js's OVERLAYS, each with its legend
 // marks, so the box is also the legend of what it switches. The boxes are built once per page and
 // never rebuilt, so their state stays when the scenario or the planner changes.
 
 import { el } from './dom.js';
-import { OVERLAYS } from './view.js';
+import { OVERLAYS } from './palette.js';
 
 /** A legend mark (styled by .swatch in style.css, coloured by --c). */
 export function swatch({ color, shape }) {

@@ -7,7 +7,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { pageFixture, ROOT as root, SHOTS as shots } from './browser.mjs';
-import { PALETTE } from '../../www/view.js';
+import { PALETTE } from '../../www/palette.js';
 import { wrapSegments, wrapInto, formatTick } from '../../www/cspace.js';
 
 
@@ -26,7 +26,7 @@ async function fastPlayback() {
 const nextFrames = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
 
 
-/** The page position (css px) of world point (x, y) on the workspace canvas (as view.js Layout). */
+/** The page position (css px) of world point (x, y) on the workspace canvas (as layout.js Layout). */
 async function toPage(x, y) {
   const box = await page.locator('#canvas').boundingBox();
   const [x0, y0, x1, y1] = (await page.evaluate(() => window.planarium.scenario())).bounds;

@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { pageFixture, ROOT as root, SHOTS as shots } from './browser.mjs';
-import { PALETTE } from '../../www/view.js';
+import { PALETTE } from '../../www/palette.js';
 import { TRANSITIONS, toDot } from '../../www/controller.js';
 
 

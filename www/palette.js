@@ -1,0 +1,100 @@
+// Colours, how each event kind is drawn, and the switchable overlays: the tables the canvas
+// views (view.js), the overlay box (overlays.js) and the browser tests share.
+// Colours follow the Okabe–Ito palette where it matters (tree 0 / tree 1 / paths), so they stay
+// distinguishable with the common colour-vision deficiencies (they also differ in lightness).
+
+import { EventKind } from './events.js';
+
+export const PALETTE = Object.freeze({
+  background: '#eef0f3',
+  free: '#ffffff',
+  bounds: '#30343b',
+  obstacle: '#e4877b',
+  obstacleEdge: '#a8362b',
+  start: '#e67e00',
+  goal: '#009e73',
+  tree0: '#1f4e9a',
+  tree1: '#cc79a7',
+  rejected: '#8a8f98',
+  collision: 'rgba(178, 24, 43, 0.7)',
+  sample: '#30343b',
+  connect: '#111111',
+  rawPath: '#ffb000',
+  smoothPath: '#e0a800',
+  pathCasing: '#3d2f00',
+  robot: 'rgba(48, 52, 59, 0.55)',
+  robotEdge: '#111111',
+  inspection: '#56b4e9',
+  handle: '#ffffff',
+  accepted: '#2a9d8f',
+  tryFree: '#4daf4a',
+  tryOccupied: '#5e3c99',
+  domain: '#8c510a',
+  exhausted: '#b0b4ba',
+  exhaustedEdge: '#4a4f57',
+  rewire: '#e7298a',
+  best: '#d55e00',
+  bestCasing: '#ffffff',
+  seen: '#ffd400',
+  fov: '#9a7400',
+  fovFill: 'rgba(255, 212, 0, 0.18)',
+  chartLine: '#d55e00',
+  chartTarget: '#009e73',
+  chartAxis: '#5d6470',
+});
+
+// How each event kind is drawn. `layer`: 'under', 'tree', 'over' (persistent, incremental),
+// 'domain' (from the run model) or 'marker' (top layer, every frame). `toggle` names a view option
+// that must be on for the kind to be drawn.
+export const STYLE = Object.freeze({
+  [EventKind.SAMPLE]: { layer: 'marker', shape: 'dot', color: PALETTE.sample, size: 3, label: 'latest sample' },
+  [EventKind.SAMPLE_REJECTED]: { layer: 'under', shape: 'square', color: PALETTE.rejected, size: 2, toggle: 'showRejected', label: 'rejected sample' },
+  [EventKind.NODE_ADDED]: { layer: 'tree', shape: 'edge', colors: [PALETTE.tree0, PALETTE.tree1], width: 1, size: 2, label: 'tree edge' },
+  [EventKind.COLLISION]: { layer: 'over', shape: 'cross', color: PALETTE.collision, size: 2.5, width: 1, toggle: 'showCollisions', label: 'blocked motion' },
+  [EventKind.TREES_CONNECTED]: { layer: 'marker', shape: 'ring', color: PALETTE.connect, size: 7, width: 2, label: 'trees connected' },
+  [EventKind.SOLVED]: { layer: 'marker', shape: 'ring', color: PALETTE.goal, size: 10, width: 2, label: 'goal reached' },
+  [EventKind.SAMPLE_TRY]: { layer: 'under', shape: 'square', colors: [PALETTE.tryOccupied, PALETTE.tryFree], size: 1.5, toggle: 'showTries', label: 'raw try of the sampler' },
+  [EventKind.DOMAIN]: { layer: 'domain', shape: 'circle', color: PALETTE.domain, width: 1.5, toggle: 'showDomains', label: 'dynamic-domain radius' },
+  [EventKind.EXHAUSTED]: { layer: 'tree', shape: 'square', color: PALETTE.exhausted, size: 5, toggle: 'showExhausted', label: 'exhausted node' },
+  [EventKind.REWIRE]: { layer: 'marker', shape: 'edge', color: PALETTE.rewire, width: 2, size: 3, toggle: 'showRewires', label: 'rewired edge' },
+  [EventKind.COST]: { layer: 'marker', shape: 'path', color: PALETTE.best, width: 3, toggle: 'showBest', label: 'best path so far' },
+  [EventKind.POINT_SEEN]: { layer: 'marker', shape: 'diamond', color: PALETTE.seen, toggle: 'showSeen', label: 'inspection point seen' },
+});
+
+// The switchable overlays, in the order of the overlay box: `option` is the view option, `swatches`
+// the legend marks [{color, shape, label?}], `on` the default. `doc` is the box's tooltip.
+export const OVERLAYS = Object.freeze([
+  { option: 'showAccepted', id: 'show-accepted', label: 'accepted samples', on: false,
+    swatches: [{ color: PALETTE.accepted, shape: 'dot' }],
+    doc: 'Samples the planner grew toward (a sample not followed by a rejection).' },
+  { option: 'showRejected', id: 'show-rejected', label: 'rejected samples', on: false,
+    swatches: [{ color: PALETTE.rejected, shape: 'dot' }],
+    doc: 'Samples that grew nothing: invalid, outside a dynamic domain, or their growth was blocked.' },
+  { option: 'showTries', id: 'show-tries', label: "sampler's raw tries: free / occupied", on: false,
+    swatches: [{ color: PALETTE.tryFree, shape: 'dot' }, { color: PALETTE.tryOccupied, shape: 'dot' }],
+    doc: 'Every state a validity-checking sampler (gaussian, bridge, obstacle) drew and checked. After the first 50 000 of a run, the worker forwards a thinning share of them (see the stats).' },
+  { option: 'showDomains', id: 'show-domains', label: 'dynamic-domain radii', on: true,
+    swatches: [{ color: PALETTE.domain, shape: 'ring' }],
+    doc: "Each node's latest dynamic-domain radius, drawn around its point. The radius is in the robot's metric: exact for a point robot; for other robots it is drawn in workspace units around the projected point, so only approximate." },
+  { option: 'showExhausted', id: 'show-exhausted', label: 'exhausted nodes (greyed)', on: true,
+    swatches: [{ color: PALETTE.exhausted, shape: 'box' }],
+    doc: 'Nodes whose expansions failed too often (the tree variant "exhausted nodes").' },
+  { option: 'showRewires', id: 'show-rewires', label: 'rewires (RRT*), flashing', on: true,
+    swatches: [{ color: PALETTE.rewire, shape: 'line' }],
+    doc: 'A node moved under a new parent: its new edge flashes for a moment (the tree is redrawn).' },
+  { option: 'showBest', id: 'show-best', label: 'best path so far', on: true,
+    swatches: [{ color: PALETTE.best, shape: 'thick' }],
+    doc: 'The best solution (RRT*) or best inspection branch so far, back to the root, through projected points.' },
+  { option: 'showSeen', id: 'show-seen', label: 'inspection points seen (lit)', on: true,
+    swatches: [{ color: PALETTE.seen, shape: 'box' }],
+    doc: 'Inspection points the planner has seen so far light up.' },
+  { option: 'showFov', id: 'show-fov', label: "sensor's field of view", on: true,
+    swatches: [{ color: PALETTE.fov, shape: 'box' }],
+    doc: "The inspection sensor's wedge (range, ±fov/2) at the end effector of the robot shown: the start, then the animated robot along the path. During a run, a dashed ring of the range marks the best branch's tip (the events do not carry its heading)." },
+  { option: 'showCollisions', id: 'show-collisions', label: 'blocked motions (×)', on: true,
+    swatches: [{ color: PALETTE.collision, shape: 'cross' }],
+    doc: 'Where a motion was found in collision.' },
+]);
+
+/** The overlays' default view options. */
+export const OVERLAY_DEFAULTS = Object.freeze(Object.fromEntries(OVERLAYS.map((o) => [o.option, o.on])));
