@@ -13,24 +13,13 @@ use planarium::math::Vec2;
 use planarium::planners::{self, inspection, InspectionTask, Params};
 use planarium::problem::Problem;
 use planarium::run::{PlanResult, RunConfig, Session};
-use planarium::scenario::{builtin, ObstacleSpec, RobotSpec, Scenario};
+use planarium::scenario::{builtin, RobotSpec, Scenario};
 use serde_json::{json, Value};
 use std::f64::consts::PI;
 
-type P = (f64, f64);
+use common::{cross, dist_point_segment, obstacle_polygon, P};
 
 // ---- an independent visibility model ---------------------------------------------------------
-
-fn cross(o: P, a: P, b: P) -> f64 {
-    (a.0 - o.0) * (b.1 - o.1) - (a.1 - o.1) * (b.0 - o.0)
-}
-
-fn dist_point_segment(p: P, a: P, b: P) -> f64 {
-    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-    let l2 = dx * dx + dy * dy;
-    let t = if l2 > 0.0 { (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / l2).clamp(0.0, 1.0) } else { 0.0 };
-    ((p.0 - a.0 - t * dx).powi(2) + (p.1 - a.1 - t * dy).powi(2)).sqrt()
-}
 
 /// Strictly inside (winding number), the boundary (within 1e-9) excluded.
 fn strictly_inside(poly: &[P], p: P) -> bool {
@@ -83,17 +72,7 @@ fn crosses_interior(poly: &[P], a: P, b: P) -> bool {
 }
 
 fn polygons(sc: &Scenario) -> Vec<Vec<P>> {
-    sc.obstacles
-        .iter()
-        .map(|o| match o {
-            ObstacleSpec::Polygon(p) => p.iter().map(|q| (q[0], q[1])).collect(),
-            ObstacleSpec::Rect(r) => {
-                let (x0, x1, y0, y1) = (r[0].min(r[2]), r[0].max(r[2]), r[1].min(r[3]), r[1].max(r[3]));
-                vec![(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
-            }
-            other => panic!("the test's visibility model has no {other:?}"),
-        })
-        .collect()
+    sc.obstacles.iter().map(|o| obstacle_polygon(o).unwrap_or_else(|| panic!("the test's visibility model has no {o:?}"))).collect()
 }
 
 /// The sensor at `q`: an arm's end effector and the sum of its joint angles; a point, all round.

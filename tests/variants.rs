@@ -112,7 +112,7 @@ fn exhausted_nodes_leave_selection_after_the_threshold() {
     {
         let cx = rig.cx();
         assert_eq!(tree.nearest(&cx, &[0.42, 0.5]).0, 0);
-        assert_eq!(tree.select(&cx, &[0.42, 0.5]).unwrap().0, 1);
+        assert_eq!(tree.select(&cx, &[0.42, 0.5]).0, 1);
     }
     // Exhaust the other one too: rather than a dead tree, the nearest node is used again.
     for _ in 0..3 {
@@ -122,7 +122,7 @@ fn exhausted_nodes_leave_selection_after_the_threshold() {
     }
     assert!(tree.is_exhausted(1));
     let cx = rig.cx();
-    assert_eq!(tree.select(&cx, &[0.42, 0.5]).unwrap().0, 0);
+    assert_eq!(tree.select(&cx, &[0.42, 0.5]).0, 0);
 }
 
 #[test]
@@ -140,11 +140,11 @@ fn weighted_selection_prefers_fewer_failures_by_the_h_score() {
     // Sample at x = 0.44: distances 0.04, 0.12, 0.2 → d terms 0, 0.5, 1; failure terms 1, 0, 0.
     // H = 1, 0.5, 1: node 1 wins although node 0 is nearest.
     let cx = rig.cx();
-    let (id, d) = tree.select(&cx, &[0.44, 0.5]).unwrap();
+    let (id, d) = tree.select(&cx, &[0.44, 0.5]);
     assert_eq!(id, 1);
     assert!((d - 0.12).abs() < 1e-12);
     // With equal failures the nearest wins, as plain RRT.
-    let (id, _) = tree.select(&cx, &[0.05, 0.5]).unwrap();
+    let (id, _) = tree.select(&cx, &[0.05, 0.5]);
     assert_eq!(id, 2);
 }
 

@@ -6,9 +6,10 @@
 
 use planarium::scenario::{ObstacleSpec, RobotSpec, Scenario};
 
-type P = (f64, f64);
+/// A point.
+pub type P = (f64, f64);
 
-fn cross(o: P, a: P, b: P) -> f64 {
+pub fn cross(o: P, a: P, b: P) -> f64 {
     (a.0 - o.0) * (b.1 - o.1) - (a.1 - o.1) * (b.0 - o.0)
 }
 
@@ -54,14 +55,14 @@ fn segments_meet(a: P, b: P, c: P, d: P) -> bool {
     (-1e-12..=1.0 + 1e-12).contains(&t) && (-1e-12..=1.0 + 1e-12).contains(&u)
 }
 
-fn dist_point_segment(p: P, a: P, b: P) -> f64 {
+pub fn dist_point_segment(p: P, a: P, b: P) -> f64 {
     let (dx, dy) = (b.0 - a.0, b.1 - a.1);
     let l2 = dx * dx + dy * dy;
     let t = if l2 > 0.0 { (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / l2).clamp(0.0, 1.0) } else { 0.0 };
     ((p.0 - a.0 - t * dx).powi(2) + (p.1 - a.1 - t * dy).powi(2)).sqrt()
 }
 
-fn obstacle_polygon(o: &ObstacleSpec) -> Option<Vec<P>> {
+pub fn obstacle_polygon(o: &ObstacleSpec) -> Option<Vec<P>> {
     match o {
         ObstacleSpec::Rect(r) => {
             let (x0, x1, y0, y1) = (r[0].min(r[2]), r[0].max(r[2]), r[1].min(r[3]), r[1].max(r[3]));

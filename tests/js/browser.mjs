@@ -44,6 +44,21 @@ export async function pageFixture() {
     await fx.page.waitForFunction((n) => document.getElementById('scenario-name').textContent === n, name);
     await fx.waitState('idle');
   };
+  /** Wait until two animation frames have been drawn. */
+  fx.nextFrames = () => fx.page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  /** Playback speed to its maximum: every event at once. */
+  fx.fastPlayback = () => fx.page.$eval('#speed', (el) => {
+    el.value = el.max;
+    el.dispatchEvent(new Event('input', { bubbles: true }));
+  });
+  /** Type `value` into the panel field `id` and commit it (the panel acts on `change`). */
+  fx.setField = async (id, value) => {
+    await fx.page.$eval(`#${id}`, (el, v) => {
+      el.value = String(v);
+      el.dispatchEvent(new Event('change', { bubbles: true }));
+    }, value);
+    await fx.waitState('idle');
+  };
   /** How many pixels of canvas `id` are within `tol` (per channel) of each `#rrggbb` colour. */
   fx.countColours = (id, colours, tol = 6) =>
     fx.page.evaluate(({ id, colours, tol }) => {

@@ -13,26 +13,7 @@ import { STRIDE, EventKind } from '../../www/events.js';
 const fx = await pageFixture();
 let page;
 beforeEach(() => { page = fx.page; });
-const { waitState, waitStatus, pickScenario, countColours } = fx;
-
-
-const nextFrames = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-
-async function fastPlayback() {
-  await page.$eval('#speed', (el) => {
-    el.value = el.max;
-    el.dispatchEvent(new Event('input', { bubbles: true }));
-  });
-}
-
-/** Type `value` into the panel field `id` and commit it (the panel acts on `change`). */
-async function setField(id, value) {
-  await page.$eval(`#${id}`, (el, v) => {
-    el.value = String(v);
-    el.dispatchEvent(new Event('change', { bubbles: true }));
-  }, value);
-  await waitState('idle');
-}
+const { waitState, waitStatus, pickScenario, countColours, nextFrames, fastPlayback, setField } = fx;
 
 async function toggle(id) {
   await page.click(`#${id}`);

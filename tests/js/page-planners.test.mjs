@@ -11,24 +11,7 @@ import { PALETTE } from '../../www/palette.js';
 const fx = await pageFixture();
 let page;
 beforeEach(() => { page = fx.page; });
-const { waitState, pickScenario, countColours } = fx;
-
-const nextFrames = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-
-async function fastPlayback() {
-  await page.$eval('#speed', (el) => {
-    el.value = el.max;
-    el.dispatchEvent(new Event('input', { bubbles: true }));
-  });
-}
-
-async function setField(id, value) {
-  await page.$eval(`#${id}`, (el, v) => {
-    el.value = String(v);
-    el.dispatchEvent(new Event('change', { bubbles: true }));
-  }, value);
-  await waitState('idle');
-}
+const { waitState, pickScenario, countColours, nextFrames, fastPlayback, setField } = fx;
 
 /** Pixels of the chart canvas within `tol` of the chart's line colour. */
 const chartLine = async (tol = 8) => (await countColours('chart', [PALETTE.chartLine], tol))[0];

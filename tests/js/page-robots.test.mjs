@@ -10,21 +10,10 @@ import { pageFixture, ROOT as root, SHOTS as shots } from './browser.mjs';
 import { PALETTE } from '../../www/palette.js';
 import { wrapSegments, wrapInto, formatTick } from '../../www/cspace.js';
 
-
 const fx = await pageFixture();
 let page;
 beforeEach(() => { page = fx.page; });
-const { waitState, waitStatus, pickScenario, countColours } = fx;
-
-async function fastPlayback() {
-  await page.$eval('#speed', (el) => {
-    el.value = el.max;
-    el.dispatchEvent(new Event('input', { bubbles: true }));
-  });
-}
-
-const nextFrames = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-
+const { waitState, waitStatus, pickScenario, countColours, nextFrames, fastPlayback } = fx;
 
 /** The page position (css px) of world point (x, y) on the workspace canvas (as layout.js Layout). */
 async function toPage(x, y) {

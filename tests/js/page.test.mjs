@@ -9,11 +9,10 @@ import { pageFixture, ROOT as root, SHOTS as shots } from './browser.mjs';
 import { PALETTE } from '../../www/palette.js';
 import { TRANSITIONS, toDot } from '../../www/controller.js';
 
-
 const fx = await pageFixture();
 let page;
 beforeEach(() => { page = fx.page; });
-const { waitState, waitStatus, pickScenario, countColours } = fx;
+const { waitState, waitStatus, pickScenario, countColours, nextFrames } = fx;
 
 async function setRange(id, value) {
   await page.$eval(`#${id}`, (el, v) => {
@@ -21,9 +20,6 @@ async function setRange(id, value) {
     el.dispatchEvent(new Event('input', { bubbles: true }));
   }, value);
 }
-
-const nextFrames = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-
 
 test('narrow passage: RRT-Connect solves and the canvas shows the trees and the smoothed path', async () => {
   await pickScenario('narrow', 'Narrow passage');
