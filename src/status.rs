@@ -47,7 +47,6 @@ pub enum Grow {
     Advanced,
     /// The target itself was added.
     Reached,
-    /// Nothing was tried: the sample lay outside its nearest node's dynamic domain, or every
-    /// node is exhausted.
+    /// Nothing was tried: the sample lay outside its nearest node's dynamic domain.
     Rejected,
 }

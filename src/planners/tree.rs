@@ -74,8 +74,10 @@ pub struct Tree {
     radius: Vec<Real>,
     /// Failed expansions per node, when exhausted nodes are on.
     fails: Vec<u32>,
-    /// Samples rejected by a dynamic domain, or because every node was exhausted.
+    /// Samples rejected by a dynamic domain.
     pub rejected: u64,
+    /// Scratch for the weighted selection's distances (reused, so selection does not allocate).
+    dist: Vec<Real>,
 }
 
 /// The most steps one CONNECT takes (every step makes progress; this bounds an iteration's time).
@@ -93,7 +95,7 @@ impl Tree {
     pub fn with_options(cx: &mut Context, root: &[Real], index: usize, opts: TreeOptions) -> Tree {
         let dims = root.len();
         let (radius, fails) = (Vec::new(), Vec::new());
-        let mut t = Tree { dims, states: Vec::new(), parents: Vec::new(), nn: KdTree::new(dims), index, opts, radius, fails, rejected: 0 };
+        let mut t = Tree { dims, states: Vec::new(), parents: Vec::new(), nn: KdTree::new(dims), index, opts, radius, fails, rejected: 0, dist: Vec::new() };
         t.add(cx, root, ROOT);
         cx.nodes_left = cx.nodes_left.saturating_sub(1);
         t
@@ -136,19 +138,23 @@ impl Tree {
     }
     /// The node to grow toward `q` under the exhausted-node policy (the nearest when it is off, or
     /// when every node is exhausted).
-    pub fn select(&mut self, cx: &Context, q: &[Real]) -> Option<(u32, Real)> {
+    pub fn select(&mut self, cx: &Context, q: &[Real]) -> (u32, Real) {
         let limit = self.opts.exhausted;
         if limit == 0 {
-            return Some(self.nearest(cx, q));
+            return self.nearest(cx, q);
         }
         if !self.opts.weighted {
             let fails = &self.fails;
             // When every node is exhausted the tree would be dead: the nearest grows again.
-            return self.nn.nearest_where(&cx.si.space, q, |i| fails[i as usize] < limit).or_else(|| Some(self.nearest(cx, q)));
+            return match self.nn.nearest_where(&cx.si.space, q, |i| fails[i as usize] < limit) {
+                Some(found) => found,
+                None => self.nearest(cx, q),
+            };
         }
-        // History-weighted: two passes, as report 001 describes.
-        let n = self.len();
-        let dist: Vec<Real> = (0..n as u32).map(|i| cx.si.distance(self.state(i), q)).collect();
+        // History-weighted: two passes, as report 001 describes (distances kept between calls).
+        let mut dist = std::mem::take(&mut self.dist);
+        dist.clear();
+        dist.extend((0..self.len() as u32).map(|i| cx.si.distance(self.state(i), q)));
         let (mut dmin, mut dmax) = (Real::INFINITY, Real::NEG_INFINITY);
         for &d in &dist {
             dmin = dmin.min(d);
@@ -164,7 +170,9 @@ impl Tree {
                 best = (i as u32, h);
             }
         }
-        Some((best.0, dist[best.0 as usize]))
+        let found = (best.0, dist[best.0 as usize]);
+        self.dist = dist;
+        found
     }
     /// The `k` nodes nearest to `q` as `(id, distance)`, nearest first.
     pub fn k_nearest(&mut self, cx: &Context, q: &[Real], k: usize) -> Vec<(u32, Real)> {
@@ -241,10 +249,7 @@ impl Tree {
     }
 
     fn grow(&mut self, cx: &mut Context, target: &[Real], range: Real, scratch: &mut [Real], new: &mut [Real], sample: bool) -> (Grow, u32) {
-        let Some((near, d)) = self.select(cx, target) else {
-            self.rejected += 1;
-            return (Grow::Rejected, 0);
-        };
+        let (near, d) = self.select(cx, target);
         if d == 0.0 {
             return (Grow::Reached, near);
         }

@@ -24,12 +24,21 @@ pub struct RunConfig {
 /// Seed offset of the smoothing generator, so the tree does not depend on smoothing.
 const SMOOTHING_STREAM: u64 = 0x5EED_5A00_7415_0001;
 
+/// The run's limits, read from its parameters once (they are checked before every iteration).
+#[derive(Clone, Copy, Debug)]
+struct Limits {
+    time_ms: f64,
+    iterations: u64,
+    nodes: usize,
+}
+
 /// One planning run, advanced in bounded batches.
 pub struct Session {
     problem: Problem,
     spec: &'static PlannerSpec,
     config: RunConfig,
     planner: Box<dyn Planner>,
+    limits: Limits,
     sampler: Sampler,
     task: Task,
     rng: Rng,
@@ -68,7 +77,10 @@ impl Session {
         problem.si.reset_checks();
         let planner = (spec.make)(&problem.si, &task, &config.params);
         let sampler = Sampler::from_params(&problem.si, task.goal.as_deref(), &config.params);
+        let p = &config.params;
+        let limits = Limits { time_ms: p.real("time_limit") * 1000.0, iterations: p.real("max_iterations") as u64, nodes: p.real("max_nodes") as usize };
         Ok(Session {
+            limits,
             sampler,
             task,
             rng: Rng::new(config.seed),
@@ -101,12 +113,12 @@ impl Session {
     }
 
     fn limits_status(&self) -> Option<Status> {
-        let p = &self.config.params;
-        if self.elapsed_ms >= p.real("time_limit") * 1000.0 {
+        let l = &self.limits;
+        if self.elapsed_ms >= l.time_ms {
             Some(Status::TimeLimit)
-        } else if self.iterations >= p.real("max_iterations") as u64 {
+        } else if self.iterations >= l.iterations {
             Some(Status::IterationLimit)
-        } else if self.planner.node_count() as f64 >= p.real("max_nodes") {
+        } else if self.planner.node_count() >= l.nodes {
             Some(Status::NodeLimit)
         } else {
             None
@@ -128,8 +140,7 @@ impl Session {
                 self.stop(s);
                 break;
             }
-            let max_nodes = self.config.params.real("max_nodes") as usize;
-            let nodes_left = max_nodes.saturating_sub(self.planner.node_count());
+            let nodes_left = self.limits.nodes.saturating_sub(self.planner.node_count());
             let mut cx = Context {
                 si: &self.problem.si,
                 rng: &mut self.rng,
