@@ -13,7 +13,7 @@ import { Chart } from './chart.js';
 import { Lane } from './lane.js';
 import { createStats } from './stats.js';
 import { createOverlays } from './overlays.js';
-import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker } from './shared.js';
+import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox } from './shared.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
@@ -22,6 +22,7 @@ const ui = {
   legend: $('legend'), speed: $('speed'), speedOut: $('speed-out'), animSpeed: $('anim-speed'),
   animOut: $('anim-speed-out'), overlays: $('overlays'), playground: $('to-playground'),
 };
+const { show: showError, clear: clearError } = errorBox(ui.error, ui.errorText);
 const BUTTONS = { run: 'run', pause: 'pause', reset: 'reset' };
 
 const controller = new Controller('loading');
@@ -218,15 +219,6 @@ function statusOf(s) {
 function statsOf(s) { return s.lane.statsFor(statusOf(s), s.lane.caughtUp); }
 
 function updateStats(s) { s.stats(statsOf(s)); }
-
-function showError(text) {
-  ui.errorText.textContent = text;
-  ui.error.hidden = false;
-}
-function clearError() {
-  ui.error.hidden = true;
-  ui.errorText.textContent = '';
-}
 
 function syncButtons() {
   for (const [id, event] of Object.entries(BUTTONS)) $(id).disabled = !controller.can(event);

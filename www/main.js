@@ -14,7 +14,7 @@ import { Chart } from './chart.js';
 import { Lane } from './lane.js';
 import { createStats } from './stats.js';
 import { createOverlays } from './overlays.js';
-import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker } from './shared.js';
+import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox } from './shared.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
@@ -25,6 +25,7 @@ const ui = {
   animSpeed: $('anim-speed'), animOut: $('anim-speed-out'), animRaw: $('anim-raw'), overlays: $('overlays'),
   stats: $('stats'), chartBox: $('chart-box'), chart: $('chart'), chartTitle: $('chart-title'), compare: $('to-compare'),
 };
+const { show: showError, clear: clearError } = errorBox(ui.error, ui.errorText);
 
 const controller = new Controller('loading');
 const playback = new Playback();
@@ -199,15 +200,6 @@ function showInvalid(error, edit) {
     onResize();
   }
   controller.fire('invalid');
-}
-
-function showError(text) {
-  ui.errorText.textContent = text;
-  ui.error.hidden = false;
-}
-function clearError() {
-  ui.error.hidden = true;
-  ui.errorText.textContent = '';
 }
 
 function statusWord() {

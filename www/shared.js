@@ -69,3 +69,17 @@ export function fillScenarioPicker(select, builtins) {
   select.value = first.id;
   return first;
 }
+
+/** The page's error box: `show(text)` (as text, never HTML) and `clear()`. */
+export function errorBox(box, textEl) {
+  return {
+    show(text) {
+      textEl.textContent = text;
+      box.hidden = false;
+    },
+    clear() {
+      box.hidden = true;
+      textEl.textContent = '';
+    },
+  };
+}
