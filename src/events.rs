@@ -42,11 +42,39 @@ pub enum EventKind {
     Coverage = 11,
     /// Inspection point `id` (at `x, y`) was seen for the first time.
     PointSeen = 12,
+    /// A decomposition cell was made: `tree`: its level; `id`; `parent` (-1 at level 0); `x, y`:
+    /// its centre; `px`: its [`CellLabel`](crate::planners::hex::CellLabel) (0 free, 1 mixed,
+    /// 2 full); `py`: the circumradius of its (unclipped) hexagon; `c0`: the number of outline
+    /// vertices, which follow in `ceil(n / 4)` [`CellShape`](EventKind::CellShape) records.
+    Cell = 13,
+    /// Up to four outline vertices of cell `id`: `x, y, px, py, c0, c1, pc0, pc1` (unused: NaN).
+    CellShape = 14,
+    /// Cell `id` was judged from cell `parent` (-1: the start): `px`: the verdict (0 passable,
+    /// 1 blocked by the step test, 2 visited, 3 outside the region of influence, 4 an
+    /// obstacle cell); `py`: for a blocked step, why (1 an obstacle vertex in the t/2 circle, 2 a
+    /// vertex in the swept rectangle, 3 an obstacle edge crossing the region, 4 the map's edge).
+    CellState = 15,
+    /// The potential of candidate cell `id` seen from cell `parent`: `x, y` its centre; `px` the
+    /// repulsion `Σ k1/r²`; `py` the trap term `k3/r_j²` (0 when not applied); `c0` the goal
+    /// term `−C(1 − k2·α)`; `c1` the total; `pc0` α (radians); `pc1` 1 if the search steps there.
+    Potential = 16,
+    /// The region of influence: `id` the attempt (0 first); `x, y` its centre; `px` its radius;
+    /// `py` the radius at which it stops growing (`d_maxOb + t`); `c0` the obstacles inside it;
+    /// `c1` the robot's t (`sqrt(l² + w²)`).
+    Region = 17,
+    /// A sample of a potential field for the heat map: `id` its index; `x, y` where; `px` the
+    /// value; `py`, `c0` its two terms (hexagonal: repulsion, trap term; classic: attraction,
+    /// repulsion); `c1, pc0` the direction the robot would move from here (unit, or 0 0);
+    /// `pc1` the half-size of the tile it stands for.
+    Field = 18,
+    /// A local minimum was detected at `x, y` (classic potential field): `id` the escapes so far;
+    /// `px` the potential there; `py` the distance to the goal.
+    Minimum = 19,
 }
 
 impl EventKind {
     /// Every kind with its name, for the JS constant check.
-    pub const ALL: [(EventKind, &'static str); 13] = [
+    pub const ALL: [(EventKind, &'static str); 20] = [
         (EventKind::Sample, "SAMPLE"),
         (EventKind::SampleRejected, "SAMPLE_REJECTED"),
         (EventKind::NodeAdded, "NODE_ADDED"),
@@ -60,6 +88,13 @@ impl EventKind {
         (EventKind::Cost, "COST"),
         (EventKind::Coverage, "COVERAGE"),
         (EventKind::PointSeen, "POINT_SEEN"),
+        (EventKind::Cell, "CELL"),
+        (EventKind::CellShape, "CELL_SHAPE"),
+        (EventKind::CellState, "CELL_STATE"),
+        (EventKind::Potential, "POTENTIAL"),
+        (EventKind::Region, "REGION"),
+        (EventKind::Field, "FIELD"),
+        (EventKind::Minimum, "MINIMUM"),
     ];
 }
 
@@ -111,6 +146,15 @@ impl EventLog {
     pub fn mark(&mut self, kind: EventKind, tree: usize, id: i64, parent: f64, p: Vec2, a: f64, b: f64) {
         if self.enabled {
             self.data.extend_from_slice(&[kind as u8 as f64, tree as f64, id as f64, parent, p.x, p.y, a, b, 0.0, 0.0, 0.0, 0.0]);
+        }
+    }
+    /// Record an event of values: `[kind, tree, id, parent, v[0], ..., v[7]]` (see each
+    /// [`EventKind`] for the meaning).
+    #[inline]
+    pub fn values(&mut self, kind: EventKind, tree: usize, id: i64, parent: i64, v: [f64; 8]) {
+        if self.enabled {
+            self.data.extend_from_slice(&[kind as u8 as f64, tree as f64, id as f64, parent as f64]);
+            self.data.extend_from_slice(&v);
         }
     }
     /// Number of records waiting.

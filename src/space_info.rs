@@ -77,6 +77,24 @@ impl SpaceInfo {
     pub fn sensor(&self, q: &[Real]) -> SensorPose {
         self.validity.sensor(q)
     }
+    /// The workspace, for planners that plan in it rather than in configuration space (cell
+    /// decomposition, potential fields). `None` for a space with no workspace behind it.
+    pub fn workspace(&self) -> Option<&crate::geometry::Workspace> {
+        self.validity.workspace()
+    }
+    /// The body's outline at `q`, as closed polygons (none for a point robot).
+    pub fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>> {
+        self.validity.outline(q)
+    }
+    /// The length and width of a mobile body (point: 0 × 0); `None` for robots that are not one.
+    pub fn body_size(&self) -> Option<(Real, Real)> {
+        self.validity.body_size()
+    }
+    /// Count `n` geometric tests as state checks (workspace planners test cells and steps rather
+    /// than states; their tests are counted here so `checks` compares work across planners).
+    pub fn count_checks(&self, n: u64) {
+        self.checks.set(self.checks.get() + n);
+    }
     /// Whether a sensor at `pose` sees the workspace point `p`: within `range`, within `fov / 2`
     /// of its heading, and with a sight line through no obstacle's interior (touching an obstacle
     /// does not block; see [`crate::geometry::sight`]). Exact: no sampling along the sight line.

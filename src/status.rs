@@ -18,6 +18,9 @@ pub enum Status {
     NodeLimit,
     /// The run was cancelled.
     Cancelled,
+    /// The planner gave up: it can say no path exists by its method (a region of influence that
+    /// can grow no further, a potential field's local minimum with no escape left).
+    NoPath,
 }
 
 impl Status {
@@ -34,6 +37,7 @@ impl Status {
             Status::IterationLimit => "iteration_limit",
             Status::NodeLimit => "node_limit",
             Status::Cancelled => "cancelled",
+            Status::NoPath => "no_path",
         }
     }
 }

@@ -31,6 +31,18 @@ pub trait StateValidity {
     /// Whether the sight line `a → b` passes through no obstacle's interior (touching allowed; see
     /// [`crate::geometry::sight`]).
     fn sight_clear(&self, a: Vec2, b: Vec2) -> bool;
+    /// The workspace, for planners that work in it (cell decomposition, potential fields).
+    fn workspace(&self) -> Option<&Workspace> {
+        None
+    }
+    /// The body's outline at `q` (closed polygons; none for a point).
+    fn outline(&self, _q: &[Real]) -> Vec<Vec<Vec2>> {
+        Vec::new()
+    }
+    /// The body's length and width, for a mobile body (see [`Robot::body_size`]).
+    fn body_size(&self) -> Option<(Real, Real)> {
+        None
+    }
 }
 
 /// A robot placed in a workspace.
@@ -72,5 +84,14 @@ impl StateValidity for RobotInWorkspace {
     }
     fn sight_clear(&self, a: Vec2, b: Vec2) -> bool {
         self.workspace.sight_clear(a, b)
+    }
+    fn workspace(&self) -> Option<&Workspace> {
+        Some(&self.workspace)
+    }
+    fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>> {
+        self.robot.outline(q)
+    }
+    fn body_size(&self) -> Option<(Real, Real)> {
+        self.robot.body_size()
     }
 }

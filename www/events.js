@@ -16,4 +16,12 @@ export const EventKind = Object.freeze({
   COST: 10, // id: best node, parent: iteration, px: cost
   COVERAGE: 11, // id: best node, parent: iteration, px: fraction, py: points seen
   POINT_SEEN: 12, // id: inspection point
+  // Cell decomposition and potential fields (hex-potential, potential-field): see src/events.rs.
+  CELL: 13, // tree: level, id, parent, x y: centre, px: label (0 free 1 mixed 2 full), py: radius, c0: vertex count
+  CELL_SHAPE: 14, // id: cell, then up to 4 vertices (x y px py c0 c1 pc0 pc1; NaN unused)
+  CELL_STATE: 15, // id: cell, parent: from cell, px: 0 passable 1 blocked 2 visited 3 outside region 4 obstacle, py: why blocked
+  POTENTIAL: 16, // id: cell, parent: from, px: repulsion, py: trap term, c0: goal term, c1: total, pc0: alpha, pc1: chosen
+  REGION: 17, // id: attempt, x y: centre, px: radius, py: final radius, c0: obstacles inside, c1: t
+  FIELD: 18, // id, x y, px: value, py c0: terms, c1 pc0: direction, pc1: tile half-size
+  MINIMUM: 19, // id: escapes so far, x y, px: potential, py: distance to goal
 });

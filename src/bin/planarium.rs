@@ -50,6 +50,12 @@ fn cli() -> Command {
                 .arg(Arg::new("seed").long("seed").default_value("1").value_parser(clap::value_parser!(u64)).help("Seed"))
                 .arg(Arg::new("json").long("json").action(ArgAction::SetTrue).help("Print the result JSON of the contract"))
                 .arg(
+                    Arg::new("events")
+                        .long("events")
+                        .value_name("FILE")
+                        .help("Write every event of the run as JSON: {\"stride\": 12, \"kinds\": {NAME: number}, \"records\": [...]} (the worker's stream; see src/events.rs)"),
+                )
+                .arg(
                     Arg::new("asv-solution")
                         .long("asv-solution")
                         .value_name("FILE")
@@ -120,9 +126,18 @@ fn plan(m: &ArgMatches) -> Result<(), String> {
     let params = params_for(spec, &sc, m)?;
     let problem = Problem::from_scenario(&sc).map_err(|e| e.to_string())?;
     let seed = *m.get_one::<u64>("seed").unwrap();
-    let mut s = Session::new(problem, RunConfig { planner: spec.name.into(), params, seed, record_events: false })?;
+    let events_file = m.get_one::<String>("events");
+    let mut s = Session::new(problem, RunConfig { planner: spec.name.into(), params, seed, record_events: events_file.is_some() })?;
     s.run_to_end();
     let r = s.result();
+    if let Some(file) = events_file {
+        let kinds: serde_json::Map<String, serde_json::Value> =
+            planarium::events::EventKind::ALL.iter().map(|(k, name)| (name.to_string(), serde_json::json!(*k as u8))).collect();
+        // NaN (unused slots) is not JSON: written as null.
+        let records: Vec<serde_json::Value> = s.drain_events().into_iter().map(|v| if v.is_finite() { serde_json::json!(v) } else { serde_json::Value::Null }).collect();
+        let doc = serde_json::json!({"stride": planarium::events::STRIDE, "kinds": kinds, "records": records});
+        std::fs::write(file, doc.to_string()).map_err(|e| format!("{file}: {e}"))?;
+    }
     if let Some(file) = m.get_one::<String>("asv-solution") {
         if !r.solved {
             return Err(format!("{}: not solved ({}), so no solution written to {file}", sc.name, r.status));
@@ -145,6 +160,9 @@ fn plan(m: &ArgMatches) -> Result<(), String> {
         );
         if let Some(c) = st.coverage {
             println!("  coverage {:.1}% (smoothed path: {:.1}%)", c * 100.0, st.smoothed_coverage.unwrap_or(0.0) * 100.0);
+        }
+        if let Some(why) = &r.reason {
+            println!("  {why}");
         }
         if r.solved {
             println!("  path: {} states, cost {:.4}", r.path.len(), st.cost.unwrap_or(0.0));

@@ -48,7 +48,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     params: PARAMS,
     groups: &[SAMPLER_GROUP],
     task: TaskKind::Inspection,
-    make: |si, task, params| Box::new(Inspection::new(si, task, params)),
+    make: |si, task, params| Ok(Box::new(Inspection::new(si, task, params))),
 };
 
 /// The inspection planner's parameters.

@@ -6,6 +6,8 @@
 //! [`REGISTRY`] lists every planner with its [`ParamSpec`]s; the page builds its parameter panel
 //! from that list.
 
+pub mod apf;
+pub mod hex;
 pub mod inspection;
 mod params;
 pub mod rrt;
@@ -109,7 +111,16 @@ pub trait Planner {
     fn coverage(&self) -> Option<Real> {
         None
     }
+    /// For planners that can conclude "no path" by their method (cell decomposition, potential
+    /// fields): why they gave up. The session stops with [`Status::NoPath`](crate::status::Status)
+    /// and reports the reason.
+    fn gave_up(&self) -> Option<String> {
+        None
+    }
 }
+
+/// How a registered planner is made for a task: the planner, or why it cannot plan for it.
+pub type MakePlanner = fn(&SpaceInfo, &Task, &Params) -> Result<Box<dyn Planner>, String>;
 
 /// A registered planner: its name, what it is, its parameters, and how to make one.
 pub struct PlannerSpec {
@@ -126,8 +137,9 @@ pub struct PlannerSpec {
     pub groups: &'static [ParamGroup],
     /// The task it solves.
     pub task: TaskKind,
-    /// Construct it for a task.
-    pub make: fn(&SpaceInfo, &Task, &Params) -> Box<dyn Planner>,
+    /// Construct it for a task; an error says why it cannot plan for this problem (a robot it
+    /// does not handle).
+    pub make: MakePlanner,
 }
 
 /// A named group of parameters shared by several planners.
@@ -153,7 +165,7 @@ impl PlannerSpec {
 }
 
 /// Every planner.
-pub static REGISTRY: &[PlannerSpec] = &[rrt::rrt::SPEC, rrt::rrt_connect::SPEC, rrt::rrt_star::SPEC, inspection::SPEC];
+pub static REGISTRY: &[PlannerSpec] = &[rrt::rrt::SPEC, rrt::rrt_connect::SPEC, rrt::rrt_star::SPEC, inspection::SPEC, hex::SPEC, apf::SPEC];
 
 /// A planner by name.
 pub fn find(name: &str) -> Option<&'static PlannerSpec> {

@@ -91,6 +91,12 @@ pub trait Robot: std::fmt::Debug {
     /// The body's outline at state `q`, as closed polygons in world coordinates (for drawing and
     /// exports); a point robot has none.
     fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>>;
+    /// For a mobile body moving along its heading (workspace planners: hexagonal decomposition,
+    /// potential fields): the length `l` (along the body's x axis) and width `w` of the smallest
+    /// rectangle centred on the rotation point that holds the body. `None`: not a mobile body.
+    fn body_size(&self) -> Option<(Real, Real)> {
+        None
+    }
     /// Where the robot's sensor is at state `q` and which way it looks (inspection tasks; see
     /// [`crate::geometry::sight`] for what it sees). Default: at the reference point
     /// ([`project`](Robot::project)), seeing all around.

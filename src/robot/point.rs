@@ -8,6 +8,9 @@ use crate::space::{Metric, StateSpace};
 pub struct PointRobot;
 
 impl Robot for PointRobot {
+    fn body_size(&self) -> Option<(Real, Real)> {
+        Some((0.0, 0.0))
+    }
     fn kind(&self) -> &'static str {
         "point"
     }

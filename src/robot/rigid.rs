@@ -52,6 +52,11 @@ impl RigidRobot {
 }
 
 impl Robot for RigidRobot {
+    fn body_size(&self) -> Option<(Real, Real)> {
+        let l = self.footprint.iter().map(|p| p.x.abs()).fold(0.0, Real::max);
+        let w = self.footprint.iter().map(|p| p.y.abs()).fold(0.0, Real::max);
+        Some((2.0 * l, 2.0 * w))
+    }
     fn kind(&self) -> &'static str {
         "rigid"
     }

@@ -80,6 +80,9 @@ pub struct PlanResult {
     pub smoothed: Vec<Vec<Real>>,
     /// The statistics.
     pub stats: Stats,
+    /// Why the planner gave up (status `no_path`); absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
 }
 
 impl PlanResult {

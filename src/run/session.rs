@@ -51,6 +51,8 @@ pub struct Session {
     planning_checks: Option<u64>,
     path: Vec<Vec<Real>>,
     smoothed: Vec<Vec<Real>>,
+    /// Why the planner gave up, when it did.
+    reason: Option<String>,
 }
 
 impl Session {
@@ -75,7 +77,7 @@ impl Session {
         }
         let task = Task { start: problem.start.clone(), goal: problem.goal.clone(), goal_tolerance: problem.goal_tolerance, inspection };
         problem.si.reset_checks();
-        let planner = (spec.make)(&problem.si, &task, &config.params);
+        let planner = (spec.make)(&problem.si, &task, &config.params).map_err(|e| format!("{}: {e}", spec.label))?;
         let sampler = Sampler::from_params(&problem.si, task.goal.as_deref(), &config.params);
         let p = &config.params;
         let limits = Limits { time_ms: p.real("time_limit") * 1000.0, iterations: p.real("max_iterations") as u64, nodes: p.real("max_nodes") as usize };
@@ -96,6 +98,7 @@ impl Session {
             planning_checks: None,
             path: Vec::new(),
             smoothed: Vec::new(),
+            reason: None,
         })
     }
 
@@ -155,6 +158,12 @@ impl Session {
             if let Some(path) = found {
                 self.elapsed_ms = base + begin.elapsed().as_secs_f64() * 1000.0;
                 self.finish_solved(path);
+                return self.status;
+            }
+            if let Some(why) = self.planner.gave_up() {
+                self.elapsed_ms = base + begin.elapsed().as_secs_f64() * 1000.0;
+                self.reason = Some(why);
+                self.status = Status::NoPath;
                 return self.status;
             }
             // Reading the clock costs more than a cheap iteration: look every 16.
@@ -264,6 +273,7 @@ impl Session {
             path: self.problem.decode_path(&self.path),
             smoothed: self.problem.decode_path(&self.smoothed),
             stats: self.stats(),
+            reason: self.reason.clone(),
         }
     }
 }

@@ -171,8 +171,8 @@ impl Draw<'_> {
     }
 }
 
-/// The generic Gaussian neighbour: every coordinate moved independently (see
-/// [`Draw::gaussian_near`]). Public for robots that move some coordinates this way.
+/// The generic Gaussian neighbour: every coordinate moved independently (what a sampler's
+/// `Draw::gaussian_near` falls back to). Public for robots that move some coordinates this way.
 pub fn gaussian_coordinates(space: &crate::space::StateSpace, rng: &mut Rng, centre: &[Real], sigma: Real, out: &mut [Real]) {
     for (i, d) in space.dims.iter().enumerate() {
         let v = centre[i] + rng.normal() * sigma * (d.hi - d.lo);

@@ -18,6 +18,11 @@ pub const BUILTINS: &[(&str, &str)] = &[
     ("asv-3", include_str!("../../scenarios/asv-3.json")),
     ("asv-7-easy", include_str!("../../scenarios/asv-7-easy.json")),
     ("asv-7", include_str!("../../scenarios/asv-7.json")),
+    ("hex-open", include_str!("../../scenarios/hex-open.json")),
+    ("hex-corridor", include_str!("../../scenarios/hex-corridor.json")),
+    ("hex-trap", include_str!("../../scenarios/hex-trap.json")),
+    ("hex-trap-modified", include_str!("../../scenarios/hex-trap-modified.json")),
+    ("apf-minimum", include_str!("../../scenarios/apf-minimum.json")),
 ];
 
 /// The course (or source) a built-in scenario comes from, for grouping them in the page.
@@ -28,6 +33,7 @@ pub fn course_of(id: &str) -> &'static str {
         _ if id.starts_with("horn-") => "OMPL benchmark: kinematic chain",
         _ if id.starts_with("technion-") => "Technion manipulator and inspection (report 004)",
         _ if id.starts_with("asv-") => "Vehicles joined by brooms (report 000)",
+        _ if id.starts_with("apf-") || id.starts_with("hex-") => "Hexagons and potential fields (report 002)",
         _ => "First steps",
     }
 }

@@ -26,7 +26,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     params: PARAMS,
     groups: &[SAMPLER_GROUP, TREE_GROUP],
     task: TaskKind::Goal,
-    make: |si, task, params| Box::new(Rrt::new(si, task, params)),
+    make: |si, task, params| Ok(Box::new(Rrt::new(si, task, params))),
 };
 
 /// RRT's parameters.

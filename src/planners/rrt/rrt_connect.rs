@@ -25,7 +25,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     params: PARAMS,
     groups: &[SAMPLER_GROUP, TREE_GROUP],
     task: TaskKind::Goal,
-    make: |si, task, params| Box::new(RrtConnect::new(si, task, params)),
+    make: |si, task, params| Ok(Box::new(RrtConnect::new(si, task, params))),
 };
 
 /// RRT-Connect's parameters.

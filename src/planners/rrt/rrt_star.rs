@@ -41,7 +41,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     params: PARAMS,
     groups: &[SAMPLER_GROUP],
     task: TaskKind::Goal,
-    make: |si, task, params| Box::new(RrtStar::new(si, task, params)),
+    make: |si, task, params| Ok(Box::new(RrtStar::new(si, task, params))),
 };
 
 /// RRT*'s parameters.
