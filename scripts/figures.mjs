@@ -1,0 +1,51 @@
+// The figures of docs/hexagonal-decomposition.md and docs/potential-field.md, made by driving the
+// playground in headless chromium like a person: pick a scenario (its planner block selects the
+// planner), run at full playback speed, wait for the run to finish, save the canvas as a PNG.
+//
+//   node scripts/build.mjs && node scripts/figures.mjs [id ...]     (default: every figure)
+//
+// Writes docs/figures/<scenario>.png. Uses the test fixture's server and browser launcher.
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { startBrowser, ROOT } from '../tests/js/browser.mjs';
+
+const FIGURES = {
+  'hex-open': { overlays: [] },
+  'hex-corridor': { overlays: [] },
+  'hex-trap': { overlays: [] },
+  'hex-trap-modified': { overlays: [] },
+  'apf-minimum': { overlays: [] },
+};
+
+const wanted = process.argv.slice(2);
+const ids = wanted.length ? wanted : Object.keys(FIGURES);
+const out = join(ROOT, 'docs', 'figures');
+mkdirSync(out, { recursive: true });
+
+const env = await startBrowser();
+try {
+  for (const id of ids) {
+    const page = await env.browser.newPage({ viewport: { width: 1280, height: 900 } });
+    page.on('pageerror', (e) => console.error(`[${id}] page error: ${e}`));
+    await page.goto(env.base);
+    await page.waitForFunction(() => window.planarium?.state() === 'idle', null, { timeout: 30000 });
+    await page.selectOption('#scenario', id);
+    await page.waitForFunction(() => window.planarium?.state() === 'idle');
+    for (const box of FIGURES[id]?.overlays ?? []) await page.check(`#${box}`);
+    await page.$eval('#speed', (el) => {
+      el.value = el.max;
+      el.dispatchEvent(new Event('input', { bubbles: true }));
+    });
+    await page.click('#run');
+    await page.waitForFunction(() => window.planarium?.state() === 'finished', null, { timeout: 60000 });
+    // Let playback reveal every record and the robot reach the goal.
+    await page.waitForTimeout(1500);
+    const status = await page.$eval('#status', (el) => el.textContent);
+    const png = await page.$eval('#canvas', (c) => c.toDataURL('image/png'));
+    writeFileSync(join(out, `${id}.png`), Buffer.from(png.split(',')[1], 'base64'));
+    console.log(`${id}: ${status} → docs/figures/${id}.png`);
+    await page.close();
+  }
+} finally {
+  await env.close();
+}
