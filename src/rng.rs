@@ -60,11 +60,13 @@ impl Rng {
         (((self.next_u64() >> 11) as u128 * n as u128) >> 53) as usize
     }
 
-    /// A standard normal sample (Box–Muller; deterministic, uses two uniforms).
+    /// A standard normal sample (Box–Muller; deterministic, uses two uniforms). `libm`'s log and
+    /// cos, not std's: std's come from the platform's C library natively and from Rust's own port
+    /// in wasm, and may differ in the last bit, so a Gaussian sampler's tree would differ.
     pub fn normal(&mut self) -> Real {
         let u1 = 1.0 - self.uniform01();
         let u2 = self.uniform01();
-        (-2.0 * u1.ln()).sqrt() * (2.0 * crate::math::PI * u2).cos()
+        (-2.0 * libm::log(u1)).sqrt() * libm::cos(2.0 * crate::math::PI * u2)
     }
 }
 

@@ -223,7 +223,8 @@ impl PotentialField {
         let repulsion = if rho <= 0.0 {
             Real::INFINITY
         } else if rho < rho0 {
-            0.5 * eta * (1.0 / rho - 1.0 / rho0).powi(2)
+            let d = 1.0 / rho - 1.0 / rho0;
+            0.5 * eta * d * d
         } else {
             0.0
         };
@@ -333,7 +334,7 @@ impl PotentialField {
                             _ => 0.0,
                         };
                     }
-                    let norm = g[0].hypot(g[1]);
+                    let norm = (g[0] * g[0] + g[1] * g[1]).sqrt(); // not hypot: std's differs between native and wasm
                     if norm > 0.0 && norm.is_finite() {
                         dir = [-g[0] / norm, -g[1] / norm];
                     }
