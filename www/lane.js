@@ -150,6 +150,7 @@ export class Lane {
     return {
       ...s,
       status,
+      reason: finished ? this.result?.reason ?? null : null, // status no_path: why the planner gave up
       best_cost: m.bestCost,
       coverage: cov ? cov.fraction : null,
       points_seen: cov ? cov.seen : m.seen.size || null,

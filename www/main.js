@@ -1,5 +1,6 @@
 // Wiring: one lane (the worker session, its playback, the views and the chart: lane.js), the
-// controller's table, the panel, the overlay box and the stats.
+// controller's table, the panel, the overlay box and the stats; the hover text of cells and
+// potential fields (cells.js), and the note under the canvas when a planner finds no path.
 // Read-only state for tests is exposed as window.planarium (nothing else is global).
 
 import { Controller, BUTTONS } from './controller.js';
@@ -14,6 +15,7 @@ import { Chart } from './chart.js';
 import { Lane } from './lane.js';
 import { createStats } from './stats.js';
 import { createOverlays } from './overlays.js';
+import { cellLegend, cellSummary } from './cells.js';
 import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox } from './shared.js';
 
 const $ = (id) => document.getElementById(id);
@@ -24,6 +26,7 @@ const ui = {
   panel: $('panel'), stepSize: $('step-size'), speed: $('speed'), speedOut: $('speed-out'),
   animSpeed: $('anim-speed'), animOut: $('anim-speed-out'), animRaw: $('anim-raw'), overlays: $('overlays'),
   stats: $('stats'), chartBox: $('chart-box'), chart: $('chart'), chartTitle: $('chart-title'), compare: $('to-compare'),
+  tip: $('cell-tip'), runNote: $('run-note'),
 };
 const { show: showError, clear: clearError } = errorBox(ui.error, ui.errorText);
 
@@ -105,6 +108,7 @@ function configure() {
   lane.configure(panel.config());
   syncChart();
   syncOptions();
+  buildLegend();
   controller.fire('configure');
 }
 
@@ -209,7 +213,14 @@ function statusWord() {
 
 function currentStats() { return lane.statsFor(statusWord(), controller.state === 'finished'); }
 
-function updateStats() { updateStatsList(currentStats()); }
+function updateStats() {
+  const s = currentStats();
+  updateStatsList(s);
+  // a planner that gave up says why: under the canvas too, where it is seen
+  const why = s.status === 'no_path' ? (lane.result?.reason || 'the planner gave up') : '';
+  ui.runNote.textContent = why ? `No path: ${why.replace(/^no path:\s*/i, '')}` : '';
+  ui.runNote.hidden = !why;
+}
 
 /** The chart that fits the chosen planner: best cost, coverage, or none. */
 function syncChart() {
@@ -234,7 +245,8 @@ function syncButtons() {
 controller.onChange(() => { syncButtons(); updateStats(); });
 
 function buildLegend() {
-  ui.legend.replaceChildren(...view.legend().map(({ label, color, shape }) => {
+  const items = [...view.legend(), ...cellLegend(panel?.planner()?.name)];
+  ui.legend.replaceChildren(...items.map(({ label, color, shape }) => {
     const li = document.createElement('li');
     const sw = document.createElement('span');
     sw.className = `swatch ${shape}`;
@@ -332,6 +344,23 @@ document.addEventListener('keydown', (e) => {
   }
 });
 
+// Hover: the cell or field tile under the pointer, described in a small box (text only).
+function hideTip() { ui.tip.hidden = true; }
+ui.canvas.addEventListener('pointermove', (e) => {
+  const L = view.layout;
+  const lines = L && !e.buttons ? view.cells.describe(L.wx(e.offsetX * L.dpr), L.wy(e.offsetY * L.dpr), view.options) : null;
+  if (!lines) { hideTip(); return; }
+  ui.tip.textContent = lines.join('\n');
+  ui.tip.hidden = false;
+  const stage = ui.stage.getBoundingClientRect();
+  const x = e.clientX - stage.left + 14, y = e.clientY - stage.top + 14;
+  const w = ui.tip.offsetWidth, h = ui.tip.offsetHeight;
+  ui.tip.style.left = `${Math.max(0, x + w > stage.width ? x - w - 28 : x)}px`;
+  ui.tip.style.top = `${Math.max(0, y + h > stage.height ? y - h - 28 : y)}px`;
+});
+ui.canvas.addEventListener('pointerleave', hideTip);
+ui.canvas.addEventListener('pointerdown', hideTip);
+
 // Size: the views follow the stage (and the device pixel ratio).
 const onResize = fitViews(ui.stage, view, cspace);
 
@@ -343,6 +372,9 @@ Object.defineProperty(window, 'planarium', {
     scenario: () => (editor.scenario ? structuredClone(editor.scenario) : null),
     nodeCount: () => playback.nodeCount,
     model: () => modelSummary(playback.model, chart),
+    cells: () => cellSummary(playback.model.cells),
+    /** Css px within the workspace canvas of the world point (x, y), or null. */
+    toCanvas: (x, y) => (view.layout ? [view.layout.sx(x) / view.layout.dpr, view.layout.sy(y) / view.layout.dpr] : null),
   }),
   writable: false,
   configurable: false,

@@ -41,6 +41,21 @@ export const PALETTE = Object.freeze({
   chartLine: '#d55e00',
   chartTarget: '#009e73',
   chartAxis: '#5d6470',
+  // cells and potential fields (cells.js): free cells light, darker by level; mixed amber; full grey;
+  // visited blue and step-blocked pink (with a × mark), told apart by lightness too
+  cellFree: Object.freeze(['#f7f4ea', '#efe9d8', '#e6dec6', '#ddd3b4']),
+  cellEdge: 'rgba(70, 60, 40, 0.32)',
+  cellMixed: '#f6c86e',
+  cellFull: '#8e949c',
+  cellVisited: '#9cc2ea',
+  cellBlocked: '#f4b6d2',
+  cellBlockedMark: '#a6165f',
+  // the heat map: ColorBrewer YlGnBu (sequential, colour-blind safe), low potential light, high dark
+  heat: Object.freeze(['#ffffd9', '#edf8b1', '#c7e9b4', '#7fcdbb', '#41b6c4', '#1d91c0', '#225ea8', '#253494', '#081d58']),
+  arrow: 'rgba(29, 33, 39, 0.75)',
+  region: '#7b3294',
+  robotT: '#30343b',
+  minimum: '#d01c8b',
 });
 
 // How each event kind is drawn. `layer`: 'under', 'tree', 'over' (persistent, incremental),
@@ -59,6 +74,12 @@ export const STYLE = Object.freeze({
   [EventKind.REWIRE]: { layer: 'marker', shape: 'edge', color: PALETTE.rewire, width: 2, size: 3, toggle: 'showRewires', label: 'rewired edge' },
   [EventKind.COST]: { layer: 'marker', shape: 'path', color: PALETTE.best, width: 3, toggle: 'showBest', label: 'best path so far' },
   [EventKind.POINT_SEEN]: { layer: 'marker', shape: 'diamond', color: PALETTE.seen, toggle: 'showSeen', label: 'inspection point seen' },
+  // cells and fields (cells.js): the 'cells' layer, between the scene and the samples
+  [EventKind.CELL]: { layer: 'cells', shape: 'polygon', colors: [PALETTE.cellFree, PALETTE.cellMixed, PALETTE.cellFull], widths: [1.6, 1.2, 0.9, 0.7], toggle: 'showCells', label: 'decomposition cell' },
+  [EventKind.CELL_STATE]: { layer: 'cells', shape: 'polygon', colors: { 1: PALETTE.cellBlocked, 2: PALETTE.cellVisited }, mark: PALETTE.cellBlockedMark, toggle: 'showCells', label: 'cell judged by the search' },
+  [EventKind.FIELD]: { layer: 'cells', shape: 'tile', colors: PALETTE.heat, toggle: 'showHeat', label: 'potential heat map' },
+  [EventKind.REGION]: { layer: 'marker', shape: 'circle', color: PALETTE.region, width: 2, toggle: 'showRegion', label: 'region of influence' },
+  [EventKind.MINIMUM]: { layer: 'marker', shape: 'ring', color: PALETTE.minimum, size: 11, width: 3, label: 'local minimum' },
 });
 
 // The switchable overlays, in the order of the overlay box: `option` is the view option, `swatches`
@@ -94,6 +115,18 @@ export const OVERLAYS = Object.freeze([
   { option: 'showCollisions', id: 'show-collisions', label: 'blocked motions (×)', on: true,
     swatches: [{ color: PALETTE.collision, shape: 'cross' }],
     doc: 'Where a motion was found in collision.' },
+  { option: 'showCells', id: 'show-cells', label: 'cells: free / mixed / full', on: true,
+    swatches: [{ color: PALETTE.cellFree[0], shape: 'box' }, { color: PALETTE.cellMixed, shape: 'box' }, { color: PALETTE.cellFull, shape: 'box' }],
+    doc: 'Hexagonal decomposition (hex-potential): each cell as it is made and labelled, free (lighter at coarser levels, thicker outline), mixed (an obstacle meets it: refined, or impassable at the finest level) or full; refined cells are covered by their children. During the search, visited cells turn blue and cells whose step test failed pink with a × (hover for why). Hover a cell for its level, state and potential terms.' },
+  { option: 'showHeat', id: 'show-heat', label: 'potential heat map (low → high)', on: false,
+    swatches: [{ color: PALETTE.heat[1], shape: 'box' }, { color: PALETTE.heat[4], shape: 'box' }, { color: PALETTE.heat[8], shape: 'box' }],
+    doc: "The potential field the planner reports, light where it is low, dark where it is high, by rank: each of the nine colours holds about a ninth of the samples, so the repulsion's blow-up near obstacles does not wash out the rest (hover a cell or tile for its numbers); where the robot would collide it takes the obstacle colour. hex-potential: each free cell in the region of influence, coloured by its obstacle terms (repulsion + trap term; the goal term depends on the step); potential-field: a grid of tiles, coloured by attraction + repulsion. A new region of influence replaces it." },
+  { option: 'showArrows', id: 'show-arrows', label: 'descent directions (arrows)', on: false,
+    swatches: [{ color: PALETTE.arrow, shape: 'line' }],
+    doc: 'At each heat-map sample, the way the robot would move from there: hex-potential: toward the passable neighbour of lowest potential (visited marks ignored); potential-field: along the negative gradient. Thinned where the samples are tiny.' },
+  { option: 'showRegion', id: 'show-region', label: 'region of influence, t/2 circle', on: true,
+    swatches: [{ color: PALETTE.region, shape: 'ring' }, { color: PALETTE.robotT, shape: 'dash' }],
+    doc: "hex-potential: the region of influence (dashed), the search's bounds; each time it grows the older radii stay, faint. Around the animated robot, a dashed circle of radius t/2, t being the robot's diagonal (the room it needs to turn on the spot)." },
 ]);
 
 /** The overlays' default view options. */

@@ -6,9 +6,11 @@
 // views need not re-read the whole log: a mirror of each tree (node points and parents: a REWIRE
 // moves a node's edge, so the tree layer is redrawn from the mirror, not from the records), the
 // dynamic-domain radius and exhausted flag of each node, the best solution's node with the cost or
-// coverage series, and the inspection points seen.
+// coverage series, and the inspection points seen; and the cells and potential fields of the
+// hex-potential and potential-field planners (cells.js CellMirror).
 
 import { EventKind, STRIDE } from './events.js';
+import { CellMirror } from './cells.js';
 
 export class RecordStore {
   constructor() {
@@ -111,7 +113,8 @@ export class RunModel {
     this.costs = [];       // [iteration, cost] per COST event
     this.coverage = [];    // [iteration, fraction, points seen] per COVERAGE event
     this.seen = new Set(); // inspection point numbers seen
-    this.counts = new Float64Array(16); // records per kind
+    this.counts = new Float64Array(32); // records per kind
+    this.cells = new CellMirror(); // cells, verdicts, regions, fields, minima
     this.treeVersion = 0;     // bumped when an edge moves (REWIRE): the tree layer is redrawn
     this.domainVersion = 0;   // bumped when a radius changes
   }
@@ -176,6 +179,10 @@ export class RunModel {
         return;
       case EventKind.POINT_SEEN:
         this.seen.add(d[o + 2]);
+        return;
+      case EventKind.CELL: case EventKind.CELL_SHAPE: case EventKind.CELL_STATE: case EventKind.POTENTIAL:
+      case EventKind.REGION: case EventKind.FIELD: case EventKind.MINIMUM:
+        this.cells.apply(d, o);
         return;
       default:
     }

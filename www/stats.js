@@ -7,7 +7,12 @@ import { el } from './dom.js';
 
 const fixed = (v, n) => (v === undefined || v === null || !Number.isFinite(v) ? undefined : v.toFixed(n));
 
+// Status words shown differently from the worker's (the rest are shown as they are).
+const STATUS_TEXT = Object.freeze({ no_path: 'no path' });
+
 export const STAT_FIELDS = Object.freeze([
+  { key: 'reason', label: 'Why', optional: true, className: 'reason', value: (s) => s.reason || undefined,
+    title: 'Why the planner gave up: it can tell, by its method, that it finds no path' },
   { key: 'time', label: 'Time (ms)', value: (s) => fixed(s.time_ms, 1) },
   { key: 'iterations', label: 'Iterations', value: (s) => s.iterations },
   { key: 'nodes', label: 'Nodes', value: (s) => s.nodes },
@@ -40,7 +45,7 @@ export function createStats(dl, prefix = '') {
   statusDd.setAttribute('aria-live', 'polite');
   const rows = [el('div', {}, el('dt', { text: 'Status' }), statusDd)];
   const cells = STAT_FIELDS.map((f) => {
-    const dd = el('dd', { id: `${prefix}stat-${f.key}`, text: '–' });
+    const dd = el('dd', { id: `${prefix}stat-${f.key}`, text: '–', className: f.className || '' });
     const row = el('div', { className: 'stat-row' }, el('dt', { text: f.label, title: f.title || '' }), dd);
     row.dataset.stat = f.key;
     rows.push(row);
@@ -48,7 +53,7 @@ export function createStats(dl, prefix = '') {
   });
   dl.replaceChildren(...rows);
   return function update(s) {
-    statusDd.textContent = s.status;
+    statusDd.textContent = STATUS_TEXT[s.status] || s.status;
     statusDd.dataset.status = s.status;
     for (const { f, dd, row } of cells) {
       let v;

@@ -1,6 +1,8 @@
 // Canvas drawing. One Layout owns the world↔screen transform (y up in the world, y down on the
 // screen); a style table keyed by EventKind says how each event record is drawn. Layers, bottom up:
 //   scene  (offscreen): bounds and obstacles, redrawn on load and resize;
+//   cells  (offscreen): hexagonal cells, their verdicts, the heat map and arrows (cells.js, from
+//          the run model; the obstacles are veiled over it when it shows anything);
 //   under  (offscreen): drawn samples (accepted / rejected) and the sampler's raw tries, drawn
 //          incrementally as records are revealed, redrawn from the stored records on resize or
 //          when one of their toggles changes;
@@ -10,13 +12,15 @@
 //   over   (offscreen): blocked motions, incremental like `under`;
 //   top    (the visible canvas): the layers composited, then inspection points (seen ones lit),
 //          the sensor's field of view, start/goal, markers, the best path so far, rewire flashes,
-//          the result's paths and the robot, which are cheap to draw every frame.
+//          the result's paths and the robot, the region of influence, local minima and the robot's
+//          t/2 circle, which are cheap to draw every frame.
 // The tables (colours, styles, overlays) are in palette.js; the transform and primitives in layout.js.
 
 import { EventKind, STRIDE } from './events.js';
 import { drawRobotShape, drawInspection, robotStyle, outlineOf, footprintRadius, sensorPose } from './robots.js';
 import { PALETTE, STYLE, OVERLAY_DEFAULTS } from './palette.js';
 import { Layout, parseOutline, parseFrames, makeLayer, drawExhausted, drawObstacle, drawMarker, drawPolyline } from './layout.js';
+import { CellsDrawing } from './cells.js';
 
 const FLASH_MS = 600;        // a rewire flashes this long
 const MAX_FLASHES = 80;      // the most flashes shown at once (a burst keeps only the latest)
@@ -34,6 +38,8 @@ export class View {
     this.store = store;
     this.model = model;
     this.sceneLayer = makeLayer();
+    this.cellsLayer = makeLayer();
+    this.cells = new CellsDrawing(this.cellsLayer, model);
     this.underLayer = makeLayer();
     this.domainLayer = makeLayer();
     this.treeLayer = makeLayer();
@@ -51,7 +57,7 @@ export class View {
     this.clearRun();
   }
 
-  get runLayers() { return [this.underLayer, this.domainLayer, this.treeLayer, this.overLayer]; }
+  get runLayers() { return [this.cellsLayer, this.underLayer, this.domainLayer, this.treeLayer, this.overLayer]; }
 
   /** Forget the run's drawing (tree, markers, result). */
   clearRun() {
@@ -67,6 +73,8 @@ export class View {
     this.treeSeen = this.model ? this.model.treeVersion : 0;
     this.domainSeen = -1;
     this.treeDrawnAt = 0;
+    this.attemptSeen = -1; // hex-potential: the attempt whose tree is drawn in full (older ones faint)
+    this.cells?.reset();
     if (this.layout) for (const l of this.runLayers) l.ctx.clearRect(0, 0, this.layout.width, this.layout.height);
     this.dirty = true;
   }
@@ -112,6 +120,7 @@ export class View {
     if (changed('showCollisions')) this.redrawOver();
     if (changed('showExhausted')) this.redrawTreeLayer();
     if (changed('showDomains')) this.domainSeen = -1;
+    if (changed('showCells', 'showHeat', 'showArrows')) this.cells.invalidate();
     if (!this.options.showRewires) this.flashes = [];
     this.dirty = true;
   }
@@ -199,7 +208,7 @@ export class View {
       ctx.fillStyle = edge.colors[tree];
       for (let i = from; i < to; i++) {
         const o = i * STRIDE;
-        if (d[o] !== EventKind.NODE_ADDED || (d[o + 1] > 0 ? 1 : 0) !== tree) continue;
+        if (d[o] !== EventKind.NODE_ADDED || this.treeGroup(d[o + 1]) !== tree) continue;
         const x = L.sx(d[o + 4]), y = L.sy(d[o + 5]);
         if (d[o + 3] >= 0) {
           ctx.moveTo(L.sx(d[o + 6]), L.sy(d[o + 7]));
@@ -230,8 +239,10 @@ export class View {
     const edge = STYLE[EventKind.NODE_ADDED];
     const node = Math.max(1, Math.round(L.px(edge.size)));
     const trees = this.model ? this.model.trees : [];
+    this.attemptSeen = this.model ? this.model.cells.attempt : -1;
     trees.forEach((t, k) => {
-      const color = edge.colors[k > 0 ? 1 : 0];
+      const color = edge.colors[this.treeGroup(k)];
+      ctx.globalAlpha = this.attemptSeen > k ? 0.3 : 1; // an earlier attempt of hex-potential
       ctx.beginPath();
       ctx.fillStyle = color;
       for (let i = 0; i < t.n; i++) {
@@ -253,10 +264,14 @@ export class View {
         drawExhausted(ctx, L, pts);
       }
     });
+    ctx.globalAlpha = 1;
     this.treeSeen = this.model ? this.model.treeVersion : 0;
     this.treeDrawnAt = performance.now();
     this.dirty = true;
   }
+
+  /** The colour of tree `k`'s records: 0 or 1 (hex-potential's trees are its attempts: all 0). */
+  treeGroup(k) { return k > 0 && !(this.model?.cells.regions.length) ? 1 : 0; }
 
   drawAccepted(ctx, [x, y]) {
     const L = this.layout;
@@ -378,6 +393,7 @@ export class View {
     this.redrawUnder();
     this.redrawOver();
     this.redrawDomains();
+    this.cells.redraw(this.layout, this.options);
     const d = this.store.data;
     for (let i = 0; i < this.store.length; i++) {
       const o = i * STRIDE;
@@ -390,6 +406,8 @@ export class View {
   syncModelLayers(time) {
     if (!this.model) return;
     if (this.model.domainVersion !== this.domainSeen) this.redrawDomains();
+    if (this.cells.sync(this.layout, this.options, time, this.showResult)) this.dirty = true;
+    if (this.model.cells.attempt !== this.attemptSeen) this.redrawTreeLayer();
     if (this.model.treeVersion !== this.treeSeen) {
       const nodes = this.model.trees.reduce((s, t) => s + t.n, 0);
       if (nodes < BIG_TREE || time - this.treeDrawnAt >= BIG_TREE_MS || this.showResult) this.redrawTreeLayer();
@@ -412,9 +430,12 @@ export class View {
     const L = this.layout;
     ctx.clearRect(0, 0, L.width, L.height);
     ctx.drawImage(this.sceneLayer.canvas, 0, 0);
-    for (const l of this.runLayers) ctx.drawImage(l.canvas, 0, 0);
-    if (!this.scenario) return;
     const o = this.options;
+    for (const l of this.runLayers) {
+      ctx.drawImage(l.canvas, 0, 0);
+      if (l === this.cellsLayer && this.cells.active(o)) this.cells.veil(ctx, L, this.scenario);
+    }
+    if (!this.scenario) return;
     const inspection = this.scenario.inspection;
     const seen = o.showSeen && this.model ? this.model.seen : null;
     drawInspection(ctx, L, inspection?.points, PALETTE.inspection, PALETTE.robotEdge, seen, PALETTE.seen);
@@ -433,6 +454,7 @@ export class View {
       drawPolyline(ctx, L, best, PALETTE.best, L.px(3.5));
     }
     if (!this.showResult && this.lastSample) drawMarker(ctx, L, STYLE[EventKind.SAMPLE], ...this.lastSample);
+    this.cells.drawTop(ctx, L, o, this.scenario.bounds);
     if (this.showResult && this.path) {
       drawPolyline(ctx, L, this.path, PALETTE.rawPath, L.px(2), [L.px(6), L.px(4)]);
     }
@@ -449,6 +471,7 @@ export class View {
     if (!frame) return;
     drawRobotShape(ctx, L, this.scenario.robot, frame.polys, frame.state, robotStyle(null, 'robot', PALETTE));
     this.robotState = frame.state;
+    this.cells.drawRobotT(ctx, L, o, frame.state);
   }
 
   /** Rewired edges, fading out; expired flashes are dropped. */

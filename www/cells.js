@@ -1,0 +1,511 @@
+// Cells and potential fields: what the hex-potential and potential-field planners record, mirrored
+// (CellMirror, fed by playback.js's RunModel) and drawn (CellsDrawing, owned by view.js: its
+// offscreen 'cells' layer lies between the scene and the samples; the region of influence, the
+// local minima and the robot's t/2 circle are drawn on the top layer every frame).
+//
+//   CELL + CELL_SHAPE  a cell of the hexagonal decomposition, complete once all its outline
+//                      vertices have come (NaN pads the last CELL_SHAPE); drawn in arrival order,
+//                      so a refined cell is covered by its children (they partition it exactly);
+//   CELL_STATE         the search's verdict on a cell: visited (blue), step-blocked (pink, ×, the
+//                      reason on hover), outside the region (kept for the hover text only);
+//   POTENTIAL          a candidate's terms, the latest per cell, for the hover text;
+//   REGION             the region of influence (an attempt): a new one resets the verdicts and
+//                      replaces the field; `t` (the robot's diagonal) is remembered;
+//   FIELD              the heat map and the descent arrows: a hex cell's own polygon when `id` is
+//                      a known cell, else a square tile of half-size `pc1`;
+//   MINIMUM            a local minimum of the classic field: a ring with a label.
+// Every text shown comes from numbers and fixed words, set with textContent by the page.
+
+import { EventKind } from './events.js';
+import { PALETTE, STYLE } from './palette.js';
+import { drawObstacle } from './layout.js';
+
+const BIG = 20000;     // above this many cells, full redraws happen at most every…
+const BIG_MS = 250;    // …this many ms
+const ARROW_GAP = 14;  // css px: at most one arrow per square of this size
+
+const LABELS = ['free', 'mixed', 'full'];
+const STATES = ['passable', 'step blocked', 'visited', 'outside the region of influence', 'obstacle cell'];
+const WHY = {
+  1: 'an obstacle vertex within t/2',
+  2: 'an obstacle vertex in the swept rectangle',
+  3: 'an obstacle edge crosses the swept region',
+  4: "the map's edge is within t/2",
+};
+
+/** What the cell and field records say so far (one per run; RunModel.cells). */
+export class CellMirror {
+  constructor() {
+    this.cells = new Map(); // id → {id, level, parent, x, y, label, radius, n, pts, done, state, why, from, terms, ...}
+    this.order = [];        // ids of complete cells, in arrival order
+    this.changed = [];      // ids whose verdict changed since the latest REGION, in order
+    this.regions = [];      // [{attempt, x, y, radius, limit, inside, t}]
+    this.field = [];        // the current field: [{id, x, y, v, a, b, dx, dy, half}]
+    this.minima = [];       // [{escapes, x, y, u, dist}]
+    this.fieldVersion = 0;  // bumped by every FIELD and REGION: the layer is redrawn
+    this.regionVersion = 0;
+  }
+
+  /** The robot's diagonal t from the latest REGION (0 when there is none). */
+  get t() { return this.regions.length ? this.regions[this.regions.length - 1].t : 0; }
+  /** The latest attempt (REGION id), or -1. */
+  get attempt() { return this.regions.length ? this.regions[this.regions.length - 1].attempt : -1; }
+  get empty() { return !this.cells.size && !this.field.length && !this.regions.length && !this.minima.length; }
+
+  /** The record at offset `o` of `d` was revealed (kinds CELL to MINIMUM). */
+  apply(d, o) {
+    const id = d[o + 2];
+    switch (d[o]) {
+      case EventKind.CELL: {
+        const n = d[o + 8] | 0;
+        this.cells.set(id, { id, level: d[o + 1], parent: d[o + 3], x: d[o + 4], y: d[o + 5], label: d[o + 6],
+          radius: d[o + 7], n, pts: [], done: false, state: -1, why: 0, from: -1, attempt: -1, terms: null });
+        return;
+      }
+      case EventKind.CELL_SHAPE: {
+        const c = this.cells.get(id);
+        if (!c || c.done) return;
+        for (let j = 0; j < 4 && c.pts.length < 2 * c.n; j++) {
+          const x = d[o + 4 + 2 * j], y = d[o + 5 + 2 * j];
+          if (Number.isNaN(x) || Number.isNaN(y)) break;
+          c.pts.push(x, y);
+        }
+        if (c.pts.length >= 2 * c.n && c.n >= 3) {
+          c.done = true;
+          let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+          for (let i = 0; i < c.pts.length; i += 2) {
+            x0 = Math.min(x0, c.pts[i]); x1 = Math.max(x1, c.pts[i]);
+            y0 = Math.min(y0, c.pts[i + 1]); y1 = Math.max(y1, c.pts[i + 1]);
+          }
+          c.box = [x0, y0, x1, y1];
+          this.order.push(id);
+        }
+        return;
+      }
+      case EventKind.CELL_STATE: {
+        const c = this.cells.get(id);
+        if (!c) return;
+        c.state = d[o + 6];
+        c.why = d[o + 7];
+        c.from = d[o + 3];
+        c.attempt = this.attempt;
+        this.changed.push(id);
+        return;
+      }
+      case EventKind.POTENTIAL: {
+        const c = this.cells.get(id);
+        if (!c) return;
+        c.terms = { from: d[o + 3], repulsion: d[o + 6], trap: d[o + 7], goal: d[o + 8], total: d[o + 9],
+          alpha: d[o + 10], chosen: d[o + 11] > 0, attempt: this.attempt };
+        return;
+      }
+      case EventKind.REGION:
+        // a new attempt: the search starts again from the start, its verdicts and field with it
+        for (const k of this.changed) { const c = this.cells.get(k); if (c) c.state = -1; }
+        this.changed = [];
+        this.field = [];
+        this.regions.push({ attempt: id, x: d[o + 4], y: d[o + 5], radius: d[o + 6], limit: d[o + 7], inside: d[o + 8], t: d[o + 9] });
+        this.fieldVersion++;
+        this.regionVersion++;
+        return;
+      case EventKind.FIELD:
+        this.field.push({ id, x: d[o + 4], y: d[o + 5], v: d[o + 6], a: d[o + 7], b: d[o + 8], dx: d[o + 9], dy: d[o + 10], half: d[o + 11] });
+        this.fieldVersion++;
+        return;
+      case EventKind.MINIMUM:
+        this.minima.push({ escapes: id, x: d[o + 4], y: d[o + 5], u: d[o + 6], dist: d[o + 7] });
+        return;
+      default:
+    }
+  }
+
+  /** The complete cell holding (x, y): the latest made (a child comes after its parent), or null. */
+  cellAt(x, y) {
+    for (let k = this.order.length - 1; k >= 0; k--) {
+      const c = this.cells.get(this.order[k]);
+      const [x0, y0, x1, y1] = c.box;
+      if (x < x0 || x > x1 || y < y0 || y > y1) continue;
+      if (inside(c.pts, x, y)) return c;
+    }
+    return null;
+  }
+
+  /** The field sample nearest (x, y) whose tile holds it, or null. */
+  sampleAt(x, y) {
+    let best = null, bd = Infinity;
+    for (const s of this.field) {
+      const dd = (s.x - x) ** 2 + (s.y - y) ** 2;
+      if (dd < bd && Math.abs(s.x - x) <= s.half * 1.01 && Math.abs(s.y - y) <= s.half * 1.01) { best = s; bd = dd; }
+    }
+    return best;
+  }
+}
+
+/** Even-odd point-in-polygon over flat [x, y, ...]. */
+function inside(p, x, y) {
+  let hit = false;
+  for (let i = 0, j = p.length - 2; i < p.length; j = i, i += 2) {
+    const yi = p[i + 1], yj = p[j + 1];
+    if ((yi > y) !== (yj > y) && x < ((p[j] - p[i]) * (y - yi)) / (yj - yi) + p[i]) hit = !hit;
+  }
+  return hit;
+}
+
+/** A number for the hover text. */
+export function fmt(v) {
+  if (v === Infinity) return '∞';
+  if (v === -Infinity) return '−∞';
+  if (!Number.isFinite(v)) return '–';
+  if (v === 0) return '0';
+  const a = Math.abs(v);
+  const s = a < 1e-3 || a >= 1e5 ? v.toExponential(2) : String(Number(v.toPrecision(3)));
+  return s.replace('-', '−');
+}
+
+/**
+ * The heat map's colour index of a value: by rank among the field's finite values (each colour
+ * holds about as many samples, so neither the repulsion's blow-up near obstacles nor a long
+ * attractive slope flattens the rest; equal values share a colour); -1 for an infinite
+ * (colliding) value.
+ */
+export function heatScale(field, bins = PALETTE.heat.length) {
+  const vals = Float64Array.from(field.map((s) => s.v).filter(Number.isFinite)).sort();
+  const n = vals.length;
+  if (!n) return () => -1;
+  return (v) => {
+    if (!Number.isFinite(v)) return -1;
+    let lo = 0, hi = n; // the first index whose value is ≥ v
+    while (lo < hi) { const mid = (lo + hi) >> 1; if (vals[mid] < v) lo = mid + 1; else hi = mid; }
+    return Math.min(bins - 1, Math.floor((lo / n) * bins));
+  };
+}
+
+/** Draws a CellMirror on its layer (from the run model `model.cells`). */
+export class CellsDrawing {
+  constructor(layer, model) {
+    this.layer = layer;
+    this.model = model;
+    this.reset();
+  }
+
+  get mirror() { return this.model ? this.model.cells : null; }
+
+  /** Forget what was drawn (the view clears the layer). */
+  reset() {
+    this.drawn = 0;        // cells of mirror.order drawn
+    this.statesDrawn = 0;  // entries of mirror.changed drawn
+    this.fieldSeen = -1;
+    this.stale = false;    // a full redraw is owed
+    this.drawnAt = 0;
+    this.mirrorSeen = null;
+  }
+
+  /** Whether there is anything to draw (the view then veils the obstacles over the layer). */
+  active(o) {
+    const m = this.mirror;
+    return !!m && ((o.showCells && m.order.length > 0) || (o.showHeat && m.field.length > 0) || (o.showArrows && m.field.length > 0));
+  }
+
+  /** A toggle changed: redraw at the next sync. */
+  invalidate() { this.stale = true; }
+
+  /**
+   * Bring the layer up to date with the mirror: new cells and verdicts drawn on top, a full
+   * redraw when the field or region changed (big decompositions at most every BIG_MS, unless `now`).
+   */
+  sync(L, o, time, now = false) {
+    const m = this.mirror;
+    if (!m || !L) return false;
+    if (m !== this.mirrorSeen) { this.mirrorSeen = m; this.stale = true; }
+    if (m.fieldVersion !== this.fieldSeen) this.stale = true;
+    if (this.statesDrawn < m.changed.length && (o.showHeat || o.showArrows)) this.stale = true;
+    if (this.stale) {
+      if (now || m.order.length < BIG || time - this.drawnAt >= BIG_MS) { this.redraw(L, o); return true; }
+      return false;
+    }
+    let drew = false;
+    const { ctx } = this.layer;
+    if (this.drawn < m.order.length) {
+      if (o.showCells) this.drawCells(ctx, L, o, m.order, this.drawn, m.order.length);
+      this.drawn = m.order.length;
+      drew = true;
+    }
+    if (this.statesDrawn < m.changed.length) {
+      if (o.showCells) this.drawCells(ctx, L, o, m.changed, this.statesDrawn, m.changed.length);
+      this.statesDrawn = m.changed.length;
+      drew = true;
+    }
+    return drew;
+  }
+
+  /** The whole layer from the mirror: cells, heat map, verdicts, arrows. */
+  redraw(L, o) {
+    const m = this.mirror;
+    const { ctx } = this.layer;
+    ctx.clearRect(0, 0, L.width, L.height);
+    this.stale = false;
+    this.drawnAt = performance.now();
+    if (!m) return;
+    this.mirrorSeen = m;
+    this.fieldSeen = m.fieldVersion;
+    this.drawn = m.order.length;
+    this.statesDrawn = m.changed.length;
+    if (o.showCells) this.drawCells(ctx, L, o, m.order, 0, m.order.length);
+    if (o.showHeat && m.field.length) {
+      this.drawHeat(ctx, L);
+      if (o.showCells) this.drawCells(ctx, L, o, m.changed, 0, m.changed.length, true); // the × marks
+    }
+    if (o.showArrows && m.field.length) this.drawArrows(ctx, L);
+  }
+
+  /**
+   * Cells ids[from, to) filled by label and level, or by verdict (× on step-blocked cells);
+   * `overHeat`: outlines and marks only, over the heat map.
+   */
+  drawCells(ctx, L, o, ids, from, to, overHeat = false) {
+    const m = this.mirror;
+    const st = STYLE[EventKind.CELL];
+    const marks = [];
+    for (let k = from; k < to; k++) {
+      const c = m.cells.get(ids[k]);
+      if (!c || !c.done) continue;
+      const level = Math.min(3, Math.max(0, c.level | 0));
+      let fill = c.label === 1 ? PALETTE.cellMixed : c.label === 2 || c.state === 4 ? PALETTE.cellFull : PALETTE.cellFree[level];
+      if (!o.showHeat && c.state === 2) fill = PALETTE.cellVisited;
+      if (!o.showHeat && c.state === 1) fill = PALETTE.cellBlocked;
+      trace(ctx, L, c.pts);
+      if (!overHeat) { ctx.fillStyle = fill; ctx.fill(); }
+      ctx.strokeStyle = PALETTE.cellEdge;
+      ctx.lineWidth = L.px(st.widths[level]);
+      ctx.stroke();
+      if (c.state === 1) marks.push(c);
+    }
+    if (!marks.length) return;
+    ctx.beginPath();
+    for (const c of marks) {
+      const r = Math.max(L.px(2.5), Math.min(L.px(6), 0.3 * c.radius * L.scale));
+      const [x, y] = centreOf(c);
+      const sx = L.sx(x), sy = L.sy(y);
+      ctx.moveTo(sx - r, sy - r); ctx.lineTo(sx + r, sy + r);
+      ctx.moveTo(sx - r, sy + r); ctx.lineTo(sx + r, sy - r);
+    }
+    ctx.strokeStyle = '#ffffff'; // a halo, for the dark end of the heat map
+    ctx.lineWidth = L.px(3.5);
+    ctx.stroke();
+    ctx.strokeStyle = PALETTE.cellBlockedMark;
+    ctx.lineWidth = L.px(1.75);
+    ctx.stroke();
+  }
+
+  /** The heat map: each sample's cell (or square tile), by colour bin. */
+  drawHeat(ctx, L) {
+    const m = this.mirror;
+    const bin = heatScale(m.field);
+    const colors = PALETTE.heat;
+    const byColour = new Map();
+    for (const s of m.field) {
+      const k = bin(s.v);
+      const col = k < 0 ? PALETTE.obstacle : colors[k];
+      if (!byColour.has(col)) byColour.set(col, []);
+      byColour.get(col).push(s);
+    }
+    const hex = m.cells.size > 0;
+    for (const [col, list] of byColour) {
+      ctx.beginPath();
+      for (const s of list) {
+        const c = hex ? m.cells.get(s.id) : null;
+        if (c && c.done) { traceInto(ctx, L, c.pts); continue; }
+        const h = s.half * L.scale;
+        ctx.rect(L.sx(s.x) - h, L.sy(s.y) - h, 2 * h, 2 * h);
+      }
+      ctx.fillStyle = col;
+      ctx.fill();
+      if (hex) {
+        ctx.strokeStyle = PALETTE.cellEdge;
+        ctx.lineWidth = L.px(0.75);
+        ctx.stroke();
+      }
+    }
+  }
+
+  /** A short arrow along each sample's descent direction (one per ARROW_GAP square at most). */
+  drawArrows(ctx, L) {
+    const m = this.mirror;
+    const gap = L.px(ARROW_GAP);
+    const taken = new Set();
+    ctx.beginPath();
+    for (const s of m.field) {
+      if (!(s.dx || s.dy)) continue;
+      const sx = L.sx(s.x), sy = L.sy(s.y);
+      const key = `${Math.floor(sx / gap)},${Math.floor(sy / gap)}`;
+      if (taken.has(key)) continue;
+      taken.add(key);
+      const len = Math.max(L.px(6), Math.min(L.px(18), 0.7 * s.half * L.scale));
+      const ex = sx + s.dx * len, ey = sy - s.dy * len; // screen y points down
+      const hx = -s.dx * len * 0.35, hy = s.dy * len * 0.35;
+      ctx.moveTo(sx, sy); ctx.lineTo(ex, ey);
+      ctx.moveTo(ex + hx - hy * 0.6, ey + hy + hx * 0.6); ctx.lineTo(ex, ey); ctx.lineTo(ex + hx + hy * 0.6, ey + hy - hx * 0.6);
+    }
+    ctx.strokeStyle = PALETTE.arrow;
+    ctx.lineWidth = L.px(1.1);
+    ctx.stroke();
+  }
+
+  /** The obstacles again over the layer, half transparent, so cells and tiles do not hide them. */
+  veil(ctx, L, scenario) {
+    if (!scenario) return;
+    ctx.globalAlpha = 0.6;
+    for (const ob of scenario.obstacles) drawObstacle(ctx, L, ob);
+    ctx.globalAlpha = 1;
+  }
+
+  /** On the top layer: the regions of influence (older radii faint) and the local minima. */
+  drawTop(ctx, L, o, bounds) {
+    const m = this.mirror;
+    if (!m || m.empty) return;
+    if (o.showRegion && m.regions.length) {
+      const st = STYLE[EventKind.REGION];
+      const [x0, y0, x1, y1] = bounds;
+      ctx.save();
+      ctx.beginPath();
+      ctx.rect(L.sx(x0), L.sy(y1), (x1 - x0) * L.scale, (y1 - y0) * L.scale);
+      ctx.clip();
+      ctx.setLineDash([L.px(7), L.px(5)]);
+      m.regions.forEach((r, i) => {
+        const last = i === m.regions.length - 1;
+        ctx.globalAlpha = last ? 1 : 0.35;
+        ctx.beginPath();
+        ctx.arc(L.sx(r.x), L.sy(r.y), r.radius * L.scale, 0, 2 * Math.PI);
+        ctx.strokeStyle = st.color;
+        ctx.lineWidth = L.px(last ? st.width : 1.25);
+        ctx.stroke();
+      });
+      ctx.restore();
+    }
+    for (const p of m.minima) drawMinimum(ctx, L, p);
+  }
+
+  /** The robot's t/2 circle (dashed) around `state`, when a region gave t > 0. */
+  drawRobotT(ctx, L, o, state) {
+    const m = this.mirror;
+    if (!m || !o.showRegion || !state || state.length < 2 || !(m.t > 0)) return;
+    ctx.beginPath();
+    ctx.arc(L.sx(state[0]), L.sy(state[1]), (m.t / 2) * L.scale, 0, 2 * Math.PI);
+    ctx.setLineDash([L.px(4), L.px(3)]);
+    ctx.strokeStyle = PALETTE.robotT;
+    ctx.lineWidth = L.px(1.5);
+    ctx.stroke();
+    ctx.setLineDash([]);
+  }
+
+  /** The hover text (lines) for the world point (x, y), or null. */
+  describe(x, y, o) {
+    const m = this.mirror;
+    if (!m) return null;
+    if (m.order.length && (o.showCells || o.showHeat)) {
+      const c = m.cellAt(x, y);
+      return c ? describeCell(m, c) : null;
+    }
+    if (!m.cells.size && m.field.length && (o.showHeat || o.showArrows)) {
+      const s = m.sampleAt(x, y);
+      if (!s) return null;
+      return [
+        `potential field at (${fmt(s.x)}, ${fmt(s.y)})`,
+        `attraction ${fmt(s.a)}`,
+        `repulsion ${fmt(s.b)}`,
+        `total ${fmt(s.v)}${Number.isFinite(s.v) ? '' : ' (the robot would collide)'}`,
+        s.dx || s.dy ? `descent direction (${fmt(s.dx)}, ${fmt(s.dy)})` : 'no descent direction',
+      ];
+    }
+    return null;
+  }
+}
+
+/** A cell's centre as drawn: the record's, or its outline's mean when that lies outside. */
+function centreOf(c) {
+  if (inside(c.pts, c.x, c.y)) return [c.x, c.y];
+  let x = 0, y = 0;
+  for (let i = 0; i < c.pts.length; i += 2) { x += c.pts[i]; y += c.pts[i + 1]; }
+  return [x / (c.pts.length / 2), y / (c.pts.length / 2)];
+}
+
+function describeCell(m, c) {
+  const lines = [`cell ${c.id} · level ${c.level} · ${LABELS[c.label] || `label ${c.label}`}`];
+  if (c.state >= 0) {
+    let s = STATES[c.state] || `state ${c.state}`;
+    if (c.state === 1 && WHY[c.why]) s += `: ${WHY[c.why]}`;
+    lines.push(`${s} (from ${c.from >= 0 ? `cell ${c.from}` : 'the start'}, attempt ${c.attempt + 1})`);
+  }
+  const t = c.terms;
+  if (t) {
+    lines.push(`potential seen from cell ${t.from}${t.chosen ? ' (chosen)' : ''}, attempt ${t.attempt + 1}:`,
+      `repulsion Σk1/r² ${fmt(t.repulsion)}`,
+      `trap term k3/r_j² ${fmt(t.trap)}`,
+      `goal term −C(1−k2·α) ${fmt(t.goal)}, α ${fmt((t.alpha * 180) / Math.PI)}°`,
+      `total ${fmt(t.total)}`);
+  } else {
+    const s = m.field.find((f) => f.id === c.id);
+    if (s) lines.push('obstacle terms at its centre:', `repulsion Σk1/r² ${fmt(s.a)}`, `trap term k3/r_j² ${fmt(s.b)}`, `sum ${fmt(s.v)}`);
+  }
+  return lines;
+}
+
+function drawMinimum(ctx, L, p) {
+  const st = STYLE[EventKind.MINIMUM];
+  const x = L.sx(p.x), y = L.sy(p.y), r = L.px(st.size);
+  ctx.beginPath();
+  ctx.arc(x, y, r, 0, 2 * Math.PI);
+  ctx.strokeStyle = '#ffffff';
+  ctx.lineWidth = L.px(st.width + 2.5);
+  ctx.stroke();
+  ctx.strokeStyle = st.color;
+  ctx.lineWidth = L.px(st.width);
+  ctx.stroke();
+  ctx.font = `600 ${Math.round(L.px(12))}px system-ui, sans-serif`;
+  ctx.textBaseline = 'middle';
+  const label = p.escapes > 0 ? `local minimum (${p.escapes} escapes)` : 'local minimum';
+  const w = ctx.measureText(label).width;
+  const tx = x + r + L.px(6) + w > L.width ? x - r - L.px(6) - w : x + r + L.px(6);
+  ctx.lineWidth = L.px(3);
+  ctx.strokeStyle = '#ffffff';
+  ctx.strokeText(label, tx, y);
+  ctx.fillStyle = st.color;
+  ctx.fillText(label, tx, y);
+}
+
+function traceInto(ctx, L, p) {
+  for (let i = 0; i < p.length; i += 2) {
+    if (i) ctx.lineTo(L.sx(p[i]), L.sy(p[i + 1])); else ctx.moveTo(L.sx(p[i]), L.sy(p[i + 1]));
+  }
+  ctx.closePath();
+}
+
+function trace(ctx, L, p) {
+  ctx.beginPath();
+  traceInto(ctx, L, p);
+}
+
+/** Legend items for the planner `name` (marks the overlay box does not show). */
+export function cellLegend(name) {
+  if (name === 'hex-potential') {
+    return [
+      { label: 'visited cell', color: PALETTE.cellVisited, shape: 'box' },
+      { label: 'step-blocked cell (×)', color: PALETTE.cellBlocked, shape: 'box' },
+      { label: 'later attempts: earlier trees faint', color: PALETTE.tree0, shape: 'line' },
+    ];
+  }
+  if (name === 'potential-field') return [{ label: 'local minimum', color: PALETTE.minimum, shape: 'ring' }];
+  return [];
+}
+
+/** What the mirror holds, for tests and the console (window.planarium.cells()). */
+export function cellSummary(m) {
+  const labels = [0, 0, 0];
+  for (const id of m.order) { const l = m.cells.get(id).label; if (l >= 0 && l < 3) labels[l]++; }
+  const pick = (state) => m.changed.map((id) => m.cells.get(id)).filter((c) => c && c.state === state)
+    .map((c) => { const [x, y] = centreOf(c); return { id: c.id, x, y, level: c.level, radius: c.radius }; });
+  return {
+    cells: m.order.length, labels, visited: pick(2), blocked: pick(1).length, field: m.field.length,
+    regions: m.regions.map((r) => ({ ...r })), minima: m.minima.map((p) => ({ ...p })), t: m.t,
+  };
+}
