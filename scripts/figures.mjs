@@ -9,12 +9,14 @@ import { mkdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { startBrowser, ROOT } from '../tests/js/browser.mjs';
 
+// Each figure: the scenario, the overlays switched on besides the defaults, and the file name.
 const FIGURES = {
   'hex-open': { overlays: [] },
   'hex-corridor': { overlays: [] },
   'hex-trap': { overlays: [] },
+  'hex-trap-heat': { scenario: 'hex-trap', overlays: ['show-heat', 'show-arrows'] },
   'hex-trap-modified': { overlays: [] },
-  'apf-minimum': { overlays: [] },
+  'apf-minimum': { overlays: ['show-heat', 'show-arrows'] },
 };
 
 const wanted = process.argv.slice(2);
@@ -29,7 +31,7 @@ try {
     page.on('pageerror', (e) => console.error(`[${id}] page error: ${e}`));
     await page.goto(env.base);
     await page.waitForFunction(() => window.planarium?.state() === 'idle', null, { timeout: 30000 });
-    await page.selectOption('#scenario', id);
+    await page.selectOption('#scenario', FIGURES[id]?.scenario ?? id);
     await page.waitForFunction(() => window.planarium?.state() === 'idle');
     for (const box of FIGURES[id]?.overlays ?? []) await page.check(`#${box}`);
     await page.$eval('#speed', (el) => {
