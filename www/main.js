@@ -245,7 +245,8 @@ function syncButtons() {
 controller.onChange(() => { syncButtons(); updateStats(); });
 
 function buildLegend() {
-  const items = [...view.legend(), ...cellLegend(panel?.planner()?.name)];
+  const name = panel?.planner()?.name;
+  const items = [...view.legend(name), ...cellLegend(name)];
   ui.legend.replaceChildren(...items.map(({ label, color, shape }) => {
     const li = document.createElement('li');
     const sw = document.createElement('span');

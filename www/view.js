@@ -18,7 +18,7 @@
 
 import { EventKind, STRIDE } from './events.js';
 import { drawRobotShape, drawInspection, robotStyle, outlineOf, footprintRadius, sensorPose } from './robots.js';
-import { PALETTE, STYLE, OVERLAY_DEFAULTS } from './palette.js';
+import { PALETTE, STYLE, OVERLAY_DEFAULTS, TREE_LEGEND } from './palette.js';
 import { Layout, parseOutline, parseFrames, makeLayer, drawExhausted, drawObstacle, drawMarker, drawPolyline } from './layout.js';
 import { CellsDrawing } from './cells.js';
 
@@ -575,15 +575,16 @@ export class View {
 
   /**
    * [{label, color, shape}] for the legend under the canvas, from the palette and style table
-   * (the switchable overlays have their own marks in the overlay box).
+   * (the switchable overlays have their own marks in the overlay box). The trees are named for
+   * the planner `name` when it is given (what tree 0 and tree 1 mean differs).
    */
-  legend() {
+  legend(name = null) {
+    const trees = TREE_LEGEND[name] ?? TREE_LEGEND.default;
     const items = [
       { label: 'obstacle', color: PALETTE.obstacle, shape: 'box' },
       { label: 'start', color: PALETTE.start, shape: 'box' },
       { label: 'goal', color: PALETTE.goal, shape: 'box' },
-      { label: 'tree from the start (tree 0)', color: PALETTE.tree0, shape: 'line' },
-      { label: 'tree from the goal (tree 1)', color: PALETTE.tree1, shape: 'line' },
+      ...trees.map(([label, color]) => ({ label, color, shape: 'line' })),
       { label: 'raw path', color: PALETTE.rawPath, shape: 'dash' },
       { label: 'smoothed path', color: PALETTE.smoothPath, shape: 'thick' },
       { label: 'robot', color: PALETTE.robot, shape: 'box' },
