@@ -253,8 +253,10 @@ impl Decomposition {
     /// (positive length). Cells of every size meet this way, since each lies on its parent's
     /// edges.
     pub fn adjacency(&self, cells: &[usize]) -> Vec<Vec<usize>> {
-        // Bucket the cells by their boxes on a grid of the coarse cell size.
-        let bucket = (2.0 * self.base_radius).max(1e-9);
+        // Bucket the cells by their boxes on a grid of the smallest cell's size (a big cell sits in
+        // many buckets; a bucket holds few small ones).
+        let smallest = cells.iter().map(|&i| self.cells[i].radius).fold(self.base_radius, Real::min);
+        let bucket = (2.0 * smallest).max(1e-9);
         let key = |x: Real, y: Real| ((x / bucket).floor() as i64, (y / bucket).floor() as i64);
         let mut grid: std::collections::HashMap<(i64, i64), Vec<usize>> = std::collections::HashMap::new();
         for (k, &i) in cells.iter().enumerate() {
