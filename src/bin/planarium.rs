@@ -46,8 +46,8 @@ fn cli() -> Command {
             Command::new("plan")
                 .about("Plan once and print the result")
                 .arg(scenario_arg.clone())
-                .arg(Arg::new("planner").long("planner").default_value("rrt-connect").help("Planner name"))
-                .arg(Arg::new("seed").long("seed").default_value("1").value_parser(clap::value_parser!(u64)).help("Seed"))
+                .arg(Arg::new("planner").long("planner").help("Planner name (default: the scenario's planner block's, else rrt-connect)"))
+                .arg(Arg::new("seed").long("seed").value_parser(clap::value_parser!(u64)).help("Seed (default: the scenario's planner block's, else 1)"))
                 .arg(Arg::new("json").long("json").action(ArgAction::SetTrue).help("Print the result JSON of the contract"))
                 .arg(
                     Arg::new("events")
@@ -122,10 +122,13 @@ fn find_planner(name: &str) -> Result<&'static PlannerSpec, String> {
 
 fn plan(m: &ArgMatches) -> Result<(), String> {
     let sc = load(m.get_one::<String>("scenario").unwrap())?;
-    let spec = find_planner(m.get_one::<String>("planner").unwrap())?;
+    // As the page does: the scenario's planner block chooses the planner and seed unless told.
+    let block = sc.planner.as_ref();
+    let name = m.get_one::<String>("planner").cloned().or_else(|| block.map(|b| b.name.clone())).unwrap_or_else(|| "rrt-connect".into());
+    let spec = find_planner(&name)?;
     let params = params_for(spec, &sc, m)?;
     let problem = Problem::from_scenario(&sc).map_err(|e| e.to_string())?;
-    let seed = *m.get_one::<u64>("seed").unwrap();
+    let seed = m.get_one::<u64>("seed").copied().or_else(|| block.filter(|b| b.name == spec.name).and_then(|b| b.seed)).unwrap_or(1);
     let events_file = m.get_one::<String>("events");
     let mut s = Session::new(problem, RunConfig { planner: spec.name.into(), params, seed, record_events: events_file.is_some() })?;
     s.run_to_end();
