@@ -81,6 +81,18 @@ pub fn import_file(text: &str, name: &str) -> Result<String, JsError> {
     Ok(sc.to_json())
 }
 
+/// Benchmark results in one export format: `report_json` is a bench report (see
+/// `docs/benchmarks.md`: `{scenario, scenario_id, date, host, time_limit_s, runs, setups: [{label,
+/// planner, params, rows: [{seed, solved, status, time_ms, iterations, nodes, checks, cost,
+/// smoothed_cost, smoothing_ms}]}]}`), `format` one of `csv`, `json` (with summaries), `ompl` (an
+/// OMPL benchmark log for Planner Arena) or `table` (the courses' Markdown table). The same code
+/// writes the CLI's `bench --csv/--json-file/--ompl-log`. Errors are plain messages.
+#[wasm_bindgen]
+pub fn bench_export(report_json: &str, format: &str) -> Result<String, JsError> {
+    let report = crate::run::export::from_json(report_json).map_err(|e| JsError::new(&e))?;
+    crate::run::export::render(&report, format).map_err(|e| JsError::new(&e))
+}
+
 /// A validated scenario: its normalised JSON and the robot's outlines.
 #[wasm_bindgen]
 pub struct Scene {
@@ -174,6 +186,10 @@ impl Run {
     /// Run at most `iterations` iterations for at most `max_ms` ms; returns the status name.
     pub fn step(&mut self, iterations: f64, max_ms: f64) -> String {
         self.inner.step(iterations as u64, max_ms).name().to_string()
+    }
+    /// Record events from now on, or not (the benchmark page's runs draw nothing).
+    pub fn record_events(&mut self, on: bool) {
+        self.inner.set_record_events(on)
     }
     /// Take the events recorded since the last call (flat records, see `www/events.js`).
     pub fn drain_events(&mut self) -> Vec<f64> {

@@ -6,7 +6,7 @@
 use clap::{Arg, ArgAction, ArgMatches, Command};
 use planarium::planners::{self, Params, PlannerSpec};
 use planarium::problem::Problem;
-use planarium::run::{bench, RunConfig, Session};
+use planarium::run::{bench, export, RunConfig, Session};
 use planarium::scenario::{self, Scenario};
 use std::process::ExitCode;
 
@@ -76,7 +76,21 @@ fn cli() -> Command {
                 )
                 .arg(Arg::new("report").long("report").action(ArgAction::SetTrue).help("Print report 001's table (avg and std of time, avg nodes, avg and median checks) as Markdown"))
                 .arg(Arg::new("runs").long("runs").default_value("20").value_parser(clap::value_parser!(u64)).help("Seeds 1..=runs"))
-                .arg(Arg::new("json").long("json").action(ArgAction::SetTrue).help("Print JSON instead of a table")),
+                .arg(Arg::new("json").long("json").action(ArgAction::SetTrue).help("Print JSON instead of a table"))
+                .arg(
+                    Arg::new("course-table")
+                        .long("course-table")
+                        .action(ArgAction::SetTrue)
+                        .help("Print the courses' table as Markdown (success; mean, std and median time; nodes; checks; cost; smoothed cost)"),
+                )
+                .arg(Arg::new("csv").long("csv").value_name("FILE").help("Also write every run as CSV (one row per run; see docs/benchmarks.md)"))
+                .arg(Arg::new("json-file").long("json-file").value_name("FILE").help("Also write the report (runs and summaries) as JSON"))
+                .arg(
+                    Arg::new("ompl-log")
+                        .long("ompl-log")
+                        .value_name("FILE")
+                        .help("Also write an OMPL benchmark log (ompl_benchmark_statistics.py FILE -d bench.db, then upload bench.db to plannerarena.org)"),
+                ),
         ))
         .subcommand(Command::new("validate").about("Check a scenario and print it normalised").arg(scenario_arg))
         .subcommand(Command::new("list").about("List built-in scenarios and planners"))
@@ -206,7 +220,21 @@ fn run_bench(m: &ArgMatches) -> Result<(), String> {
         eprintln!("{}: {:.0}% solved, median {:.0} checks", row.label, row.success_rate * 100.0, row.checks.median);
         rows.push(row);
     }
-    if m.get_flag("report") {
+    let scenario_arg = m.get_one::<String>("scenario").unwrap();
+    // As `load` reads it: a file (its stem) before a built-in (its id).
+    let path = std::path::Path::new(scenario_arg);
+    let scenario_id = if path.exists() { path.file_stem().and_then(|s| s.to_str()).unwrap_or(scenario_arg) } else { scenario_arg }.to_string();
+    let report = export::BenchReport::new(&sc.name, &scenario_id, &now_utc(), &host_name(), &rows);
+    for (flag, format) in [("csv", "csv"), ("json-file", "json"), ("ompl-log", "ompl")] {
+        if let Some(file) = m.get_one::<String>(flag) {
+            std::fs::write(file, export::render(&report, format)?).map_err(|e| format!("{file}: {e}"))?;
+            eprintln!("wrote {file}");
+        }
+    }
+    if m.get_flag("course-table") {
+        println!("{} — {} seeded runs per set-up (seeds 1..={runs})\n", sc.name, runs);
+        print!("{}", export::course_table(&report));
+    } else if m.get_flag("report") {
         println!("{} — {} seeded runs per set-up (seeds 1..={runs})\n", sc.name, runs);
         print!("{}", bench::report_table(&rows));
     } else if m.get_flag("json") {
@@ -217,6 +245,20 @@ fn run_bench(m: &ArgMatches) -> Result<(), String> {
         print!("{}", bench::table(&rows));
     }
     Ok(())
+}
+
+/// The current time, UTC, as `YYYY-MM-DDTHH:MM:SSZ` (the benchmark report's date).
+fn now_utc() -> String {
+    let secs = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs());
+    export::utc_timestamp(secs)
+}
+
+/// The machine's name, for the benchmark report: `$HOSTNAME`/`$COMPUTERNAME`, else the kernel's,
+/// else "unknown".
+fn host_name() -> String {
+    let from_env = ["HOSTNAME", "COMPUTERNAME"].iter().find_map(|k| std::env::var(k).ok());
+    let from_file = || ["/proc/sys/kernel/hostname", "/etc/hostname"].iter().find_map(|f| std::fs::read_to_string(f).ok());
+    from_env.or_else(from_file).map(|s| s.trim().to_string()).filter(|s| !s.is_empty()).unwrap_or_else(|| "unknown".into())
 }
 
 fn main() -> ExitCode {

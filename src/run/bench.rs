@@ -1,11 +1,13 @@
 //! Benchmarks over seeds: run planners on one problem for seeds 1..=N and summarise
 //! (success rate; median, mean and standard deviation of time, nodes, checks and cost), as a table
-//! or JSON.
+//! or JSON. [`export`](super::export) turns the results into a [`BenchReport`](super::export::BenchReport)
+//! and writes it as CSV, JSON, an OMPL benchmark log or the courses' table.
 
 use super::{RunConfig, Session, Stats};
 use crate::planners::Params;
 use crate::problem::Problem;
 use crate::scenario::{Scenario, ScenarioError};
+use crate::status::Status;
 use serde::Serialize;
 
 /// Median, mean and standard deviation of a metric over the runs that have it.
@@ -62,17 +64,23 @@ pub struct PlannerBench {
     pub smoothed_cost: Summary,
     /// Per-run statistics, seed order.
     pub per_run: Vec<(u64, bool, Stats)>,
+    /// How each run ended, in the order of `per_run`.
+    pub statuses: Vec<Status>,
+    /// The set-up's planning time limit, seconds (its `time_limit` parameter or the default).
+    pub time_limit_s: f64,
 }
 
 /// Run `planner` with `params` on `scenario` for seeds `1..=runs`.
 pub fn bench_planner(scenario: &Scenario, planner: &str, params: &Params, runs: u64) -> Result<PlannerBench, String> {
     let mut per_run = Vec::new();
+    let mut statuses = Vec::new();
     for seed in 1..=runs {
         let problem = Problem::from_scenario(scenario).map_err(|e: ScenarioError| e.to_string())?;
         let config = RunConfig { planner: planner.to_string(), params: params.clone(), seed, record_events: false };
         let mut s = Session::new(problem, config)?;
         let status = s.run_to_end();
-        per_run.push((seed, status == crate::status::Status::Solved, s.stats()));
+        per_run.push((seed, status == Status::Solved, s.stats()));
+        statuses.push(status);
     }
     let all = |f: fn(&Stats) -> f64| Summary::of(&per_run.iter().map(|r| f(&r.2)).collect::<Vec<_>>());
     let solved = |f: fn(&Stats) -> Option<f64>| Summary::of(&per_run.iter().filter_map(|r| f(&r.2)).collect::<Vec<_>>());
@@ -88,6 +96,8 @@ pub fn bench_planner(scenario: &Scenario, planner: &str, params: &Params, runs: 
         cost: solved(|s| s.cost),
         smoothed_cost: solved(|s| s.smoothed_cost),
         per_run,
+        statuses,
+        time_limit_s: params.real("time_limit"),
     })
 }
 

@@ -217,6 +217,15 @@ impl Session {
         }
     }
 
+    /// Record events from now on, or not (benchmarks: nothing to draw, no time spent on it).
+    /// Turning it off drops the events waiting.
+    pub fn set_record_events(&mut self, on: bool) {
+        self.events.enabled = on;
+        if !on {
+            self.events.drain();
+        }
+    }
+
     /// Stop the run now.
     pub fn cancel(&mut self) {
         if !self.status.is_finished() {

@@ -1,0 +1,572 @@
+//! Benchmark exports: the CSV, JSON and OMPL benchmark log written by `run::export` read back to
+//! the per-run statistics, through small readers written here (an RFC 4180 CSV reader, and an OMPL
+//! log reader following `readBenchmarkLog` of OMPL's `scripts/ompl_benchmark_statistics.py`), and
+//! the CLI's `bench --csv --json-file --ompl-log` files equal to the library's for the same seeds.
+
+use planarium::planners::{self, Params};
+use planarium::run::bench::{self, PlannerBench};
+use planarium::run::export::{self, BenchReport, RunRow, SetupReport};
+use planarium::scenario::builtin;
+use std::collections::BTreeMap;
+
+const RUNS: u64 = 4;
+const DATE: &str = "2025-01-31T12:00:00Z";
+
+/// The benchmark the CLI test repeats: narrow, RRT-Connect and RRT with defaults, and RRT stopped
+/// after 5 iterations (unsolved runs), seeds 1..=4.
+fn benches() -> Vec<PlannerBench> {
+    let sc = builtin("narrow").unwrap();
+    let setups: [(&str, &str, serde_json::Value); 3] = [
+        ("rrt-connect", "rrt-connect", serde_json::json!({})),
+        ("rrt", "rrt", serde_json::json!({})),
+        ("rrt capped", "rrt", serde_json::json!({"max_iterations": 5})),
+    ];
+    setups
+        .iter()
+        .map(|(label, planner, params)| {
+            let spec = planners::find(planner).unwrap();
+            let params = Params::from_json(spec, params).unwrap();
+            let mut b = bench::bench_planner(&sc, planner, &params, RUNS).unwrap();
+            b.label = label.to_string();
+            b
+        })
+        .collect()
+}
+
+fn report(benches: &[PlannerBench]) -> BenchReport {
+    BenchReport::new("Narrow passage", "narrow", DATE, "test host", benches)
+}
+
+// ---------------------------------------------------------------------------------------------
+// A tiny RFC 4180 reader: quoted fields, doubled quotes, CRLF (or LF) record ends.
+
+fn read_csv(text: &str) -> Vec<Vec<String>> {
+    let mut records = Vec::new();
+    let mut record = Vec::new();
+    let mut field = String::new();
+    let mut chars = text.chars().peekable();
+    let mut quoted = false;
+    while let Some(c) = chars.next() {
+        if quoted {
+            match c {
+                '"' if chars.peek() == Some(&'"') => {
+                    chars.next();
+                    field.push('"');
+                }
+                '"' => quoted = false,
+                _ => field.push(c),
+            }
+            continue;
+        }
+        match c {
+            '"' => {
+                assert!(field.is_empty(), "a quote inside an unquoted field: {field:?}");
+                quoted = true;
+            }
+            ',' => record.push(std::mem::take(&mut field)),
+            '\r' | '\n' => {
+                if c == '\r' {
+                    assert_eq!(chars.next(), Some('\n'), "CR without LF");
+                }
+                record.push(std::mem::take(&mut field));
+                records.push(std::mem::take(&mut record));
+            }
+            _ => field.push(c),
+        }
+    }
+    assert!(!quoted, "unterminated quoted field");
+    assert!(field.is_empty() && record.is_empty(), "the last record has no line break");
+    records
+}
+
+fn opt_f64(s: &str) -> Option<f64> {
+    (!s.is_empty()).then(|| s.parse().unwrap())
+}
+
+// ---------------------------------------------------------------------------------------------
+// An OMPL benchmark log reader following readBenchmarkLog (ompl_benchmark_statistics.py): the
+// same lines, the same tokens, the same optional parts.
+
+#[derive(Debug, PartialEq)]
+struct OmplPlanner {
+    name: String,
+    common: Vec<String>,
+    /// (column name as the reader makes it: words joined by `_`, type).
+    properties: Vec<(String, String)>,
+    /// One row per run; `None` for an empty value (or `nan`/`inf`, as the reader stores NULL).
+    runs: Vec<Vec<Option<String>>>,
+}
+
+#[derive(Debug, PartialEq)]
+struct OmplLog {
+    version: String,
+    experiment: String,
+    host: String,
+    date: String,
+    setup: String,
+    cpuinfo: Option<String>,
+    seed: String,
+    time_limit: f64,
+    memory_limit: f64,
+    runs_per_planner: i64,
+    total_time: f64,
+    enums: Vec<Vec<String>>,
+    planners: Vec<OmplPlanner>,
+}
+
+struct Lines<'a> {
+    lines: Vec<&'a str>,
+    at: usize,
+}
+
+impl<'a> Lines<'a> {
+    fn new(text: &'a str) -> Lines<'a> {
+        assert!(text.ends_with('\n'), "the log ends with a line break");
+        assert!(!text.contains('\r'), "EOL is \\n");
+        Lines { lines: text[..text.len() - 1].split('\n').collect(), at: 0 }
+    }
+    fn next(&mut self) -> &'a str {
+        let l = self.lines.get(self.at).unwrap_or_else(|| panic!("log ends early at line {}", self.at + 1));
+        self.at += 1;
+        l
+    }
+    fn peek(&self) -> Option<&'a str> {
+        self.lines.get(self.at).copied()
+    }
+    /// readLogValue: the token at `index` (negative: from the end) when the expected tokens match,
+    /// else the line is not consumed.
+    fn value(&mut self, index: isize, expected: &[(isize, &str)]) -> Option<String> {
+        let tokens: Vec<&str> = self.peek()?.split_whitespace().collect();
+        let at = |i: isize| if i < 0 { tokens.len().checked_sub(i.unsigned_abs()) } else { Some(i as usize) };
+        for (i, want) in expected {
+            if at(*i).and_then(|k| tokens.get(k)) != Some(want) {
+                return None;
+            }
+        }
+        self.at += 1;
+        Some(tokens[at(index).unwrap()].to_string())
+    }
+    fn required(&mut self, what: &str, index: isize, expected: &[(isize, &str)]) -> String {
+        let line = self.peek().map(str::to_string);
+        self.value(index, expected).unwrap_or_else(|| panic!("unable to read {what} from {line:?}"))
+    }
+    fn multiline(&mut self) -> Option<String> {
+        if !self.peek()?.starts_with("<<<|") {
+            return None;
+        }
+        self.next();
+        let mut value = String::new();
+        loop {
+            let l = self.next();
+            if l.starts_with("|>>>") {
+                return Some(value);
+            }
+            value.push_str(l);
+            value.push('\n');
+        }
+    }
+}
+
+fn read_ompl_log(text: &str) -> OmplLog {
+    let mut l = Lines::new(text);
+    let first: Vec<&str> = l.peek().unwrap().split_whitespace().collect();
+    let version = if first.get(1) == Some(&"version") {
+        l.next();
+        format!("{} {}", first[0], first.last().unwrap())
+    } else {
+        "OMPL 0.0.0".into()
+    };
+    let experiment = l.required("experiment name", -1, &[(0, "Experiment")]);
+    let n_props: usize = l.value(0, &[(-2, "experiment"), (-1, "properties")]).map_or(0, |s| s.parse().unwrap());
+    for _ in 0..n_props {
+        assert!(l.next().contains(" = "));
+    }
+    let host = l.required("hostname", -1, &[(0, "Running")]);
+    let date_line = l.next();
+    assert!(date_line.starts_with("Starting"));
+    let date = date_line.split_whitespace().skip(2).collect::<Vec<_>>().join(" ");
+    let setup = l.multiline().expect("the setup block");
+    let cpuinfo = l.multiline();
+    let seed = l.required("random seed", 0, &[(-2, "random"), (-1, "seed")]);
+    let time_limit = l.required("time limit", 0, &[(-3, "seconds"), (-2, "per"), (-1, "run")]).parse().unwrap();
+    let memory_limit = l.required("memory limit", 0, &[(-3, "MB"), (-2, "per"), (-1, "run")]).parse().unwrap();
+    let runs_per_planner = l.value(0, &[(-3, "runs"), (-2, "per"), (-1, "planner")]).map_or(-1, |s| s.parse().unwrap());
+    let total_time = l.required("total time", 0, &[(-3, "collect"), (-2, "the"), (-1, "data")]).parse().unwrap();
+    let n_enums: usize = l.value(0, &[(-2, "enum")]).map_or(0, |s| s.parse().unwrap());
+    let enums = (0..n_enums).map(|_| l.next().split('|').map(String::from).collect()).collect();
+    let n_planners: usize = l.required("planner count", 0, &[(-1, "planners")]).parse().unwrap();
+    let mut planners = Vec::new();
+    for _ in 0..n_planners {
+        let name = l.next().to_string();
+        let n_common: usize = l.next().split_whitespace().next().unwrap().parse().unwrap();
+        let common = (0..n_common).map(|_| l.next().to_string()).collect();
+        let n_properties: usize = l.next().split_whitespace().next().unwrap().parse().unwrap();
+        let properties: Vec<(String, String)> = (0..n_properties)
+            .map(|_| {
+                let field: Vec<&str> = l.next().split_whitespace().collect();
+                (field[..field.len() - 1].join("_"), field[field.len() - 1].to_string())
+            })
+            .collect();
+        let n_runs: usize = l.next().split_whitespace().next().unwrap().parse().unwrap();
+        let mut runs = Vec::new();
+        for _ in 0..n_runs {
+            // `line.split('; ')[:-1]`: every value is followed by "; ".
+            let parts: Vec<&str> = l.next().split("; ").collect();
+            assert_eq!(parts.last(), Some(&""), "a run line ends with \"; \"");
+            let values: Vec<Option<String>> =
+                parts[..parts.len() - 1].iter().map(|x| (!x.is_empty() && *x != "nan" && *x != "inf").then(|| x.to_string())).collect();
+            assert_eq!(values.len(), properties.len(), "one value per property in {name}");
+            runs.push(values);
+        }
+        let next = l.next().trim();
+        if next != "." {
+            // Progress properties: a count, names, a run count, one line per run, then ".".
+            let n: usize = next.split_whitespace().next().unwrap().parse().unwrap();
+            for _ in 0..n {
+                l.next();
+            }
+            let m: usize = l.next().split_whitespace().next().unwrap().parse().unwrap();
+            for _ in 0..m {
+                l.next();
+            }
+            assert_eq!(l.next().trim(), ".");
+        }
+        planners.push(OmplPlanner { name, common, properties, runs });
+    }
+    assert_eq!(l.peek(), None, "nothing after the last planner");
+    OmplLog {
+        version,
+        experiment,
+        host,
+        date,
+        setup,
+        cpuinfo,
+        seed,
+        time_limit,
+        memory_limit,
+        runs_per_planner,
+        total_time,
+        enums,
+        planners,
+    }
+}
+
+/// A planner's runs as maps from column name to value.
+fn ompl_runs(p: &OmplPlanner) -> Vec<BTreeMap<String, Option<String>>> {
+    p.runs.iter().map(|r| p.properties.iter().map(|(n, _)| n.clone()).zip(r.iter().cloned()).collect()).collect()
+}
+
+fn int(v: &Option<String>) -> u64 {
+    v.as_deref().expect("a value").parse().unwrap()
+}
+
+fn real(v: &Option<String>) -> Option<f64> {
+    v.as_deref().map(|s| s.parse().unwrap())
+}
+
+fn assert_same_report(a: &BenchReport, b: &BenchReport) {
+    // Exact: serde_json's float_roundtrip feature (Cargo.toml) reads every number back to the
+    // same double.
+    let (x, y) = (serde_json::to_value(a).unwrap(), serde_json::to_value(b).unwrap());
+    assert_eq!(x, y, "reports differ");
+}
+
+// ---------------------------------------------------------------------------------------------
+
+#[test]
+fn the_report_holds_every_run_and_the_benches_summaries() {
+    let benches = benches();
+    let r = report(&benches);
+    assert_eq!((r.runs, r.time_limit_s, r.setups.len()), (RUNS as usize, 30.0, 3));
+    for (b, s) in benches.iter().zip(&r.setups) {
+        assert_eq!((s.label.as_str(), s.planner.as_str(), &s.params), (b.label.as_str(), b.planner.as_str(), &b.params));
+        assert_eq!(s.rows.len(), b.per_run.len());
+        for ((seed, solved, st), (row, status)) in b.per_run.iter().zip(s.rows.iter().zip(&b.statuses)) {
+            assert_eq!(row, &RunRow::of(*seed, *status, st));
+            assert_eq!(row.solved, *solved);
+        }
+        // The courses' numbers from the rows equal the bench's own (the page's table and the CLI's).
+        let m = s.summary();
+        assert_eq!(m.success_rate, b.success_rate);
+        assert_eq!((&m.time_ms, &m.nodes, &m.checks, &m.cost, &m.smoothed_cost), (&b.time_ms, &b.nodes, &b.checks, &b.cost, &b.smoothed_cost));
+    }
+    // Both kinds of run are here: solved ones, and ones stopped by the iteration limit.
+    assert!(r.setups[0].rows.iter().all(|x| x.solved && x.status == "solved"));
+    assert!(r.setups[2].rows.iter().all(|x| !x.solved && x.status == "iteration_limit" && x.cost.is_none()));
+}
+
+#[test]
+fn csv_reads_back_to_the_per_run_stats() {
+    let benches = benches();
+    let r = report(&benches);
+    let text = export::to_csv(&r);
+    assert!(text.ends_with("\r\n") && !text.replace("\r\n", "").contains('\n'), "RFC 4180 line breaks");
+    let records = read_csv(&text);
+    assert_eq!(records[0].join(","), "setup,planner,seed,solved,status,time_ms,iterations,nodes,checks,cost,smoothed_cost");
+    let rows = &records[1..];
+    assert_eq!(rows.len(), 3 * RUNS as usize);
+    let expected = benches.iter().flat_map(|b| b.per_run.iter().zip(&b.statuses).map(move |(run, status)| (b, run, status)));
+    for (rec, (b, (seed, solved, st), status)) in rows.iter().zip(expected) {
+        assert_eq!(rec.len(), 11);
+        assert_eq!((rec[0].as_str(), rec[1].as_str()), (b.label.as_str(), b.planner.as_str()));
+        assert_eq!(rec[2].parse::<u64>().unwrap(), *seed);
+        assert_eq!(rec[3].parse::<bool>().unwrap(), *solved);
+        assert_eq!(rec[4], status.name());
+        assert_eq!(rec[5].parse::<f64>().unwrap(), st.time_ms, "time in ms, exactly");
+        assert_eq!(rec[6].parse::<u64>().unwrap(), st.iterations);
+        assert_eq!(rec[7].parse::<u64>().unwrap(), st.nodes);
+        assert_eq!(rec[8].parse::<u64>().unwrap(), st.checks);
+        assert_eq!(opt_f64(&rec[9]), st.cost);
+        assert_eq!(opt_f64(&rec[10]), st.smoothed_cost);
+    }
+}
+
+#[test]
+fn csv_quotes_as_rfc_4180_asks() {
+    let row = RunRow {
+        seed: 3,
+        solved: false,
+        status: "time_limit".into(),
+        time_ms: 1.5,
+        iterations: 2,
+        nodes: 3,
+        checks: 4,
+        cost: None,
+        smoothed_cost: None,
+        smoothing_ms: 0.0,
+    };
+    let label = "bridge, \"tuned\"\nσ 0.02";
+    let r = BenchReport {
+        scenario: "s".into(),
+        scenario_id: String::new(),
+        date: String::new(),
+        host: String::new(),
+        time_limit_s: 1.0,
+        runs: 1,
+        setups: vec![SetupReport { label: label.into(), planner: "rrt".into(), params: Default::default(), rows: vec![row] }],
+    };
+    let text = export::to_csv(&r);
+    assert!(text.contains("\"bridge, \"\"tuned\"\"\nσ 0.02\",rrt,3,false,time_limit,1.5,2,3,4,,\r\n"), "{text}");
+    let records = read_csv(&text);
+    assert_eq!(records.len(), 2);
+    assert_eq!(records[1][0], label);
+    assert_eq!((records[1][9].as_str(), records[1][10].as_str()), ("", ""));
+}
+
+#[test]
+fn json_round_trips_and_carries_the_summaries() {
+    let benches = benches();
+    let r = report(&benches);
+    let text = export::to_json(&r);
+    let back = export::from_json(&text).unwrap();
+    assert_same_report(&back, &r);
+    // Written again, the JSON reads back to the same report (and, with exact float parsing, the
+    // same text).
+    assert_same_report(&export::from_json(&export::to_json(&back)).unwrap(), &r);
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    assert_eq!(v["scenario_id"], "narrow");
+    assert_eq!(v["date"], DATE);
+    for (b, s) in benches.iter().zip(v["setups"].as_array().unwrap()) {
+        let m = &s["summary"];
+        assert_eq!(m["success_rate"].as_f64().unwrap(), b.success_rate);
+        assert_eq!(m["runs"], RUNS);
+        for (key, want) in [("time_ms", &b.time_ms), ("nodes", &b.nodes), ("checks", &b.checks), ("cost", &b.cost), ("smoothed_cost", &b.smoothed_cost)] {
+            assert_eq!(m[key], serde_json::to_value(want).unwrap(), "{key}");
+        }
+        assert_eq!(s["rows"].as_array().unwrap().len(), RUNS as usize);
+    }
+}
+
+#[test]
+fn from_json_takes_the_pages_minimal_report_and_says_what_is_wrong() {
+    // What the page builds from its runs' results: the optional fields left out.
+    let minimal = r#"{"scenario": "Narrow passage", "time_limit_s": 5, "setups": [{"label": "a", "planner": "rrt",
+        "rows": [{"seed": 1, "solved": true, "status": "solved", "time_ms": 2.5, "iterations": 10, "nodes": 8, "checks": 99, "cost": 1.5, "smoothed_cost": 1.2},
+                 {"seed": 2, "solved": false, "status": "time_limit", "time_ms": 5000, "iterations": 10, "nodes": 8, "checks": 99, "cost": null}]}]}"#;
+    let r = export::from_json(minimal).unwrap();
+    assert_eq!((r.runs, r.scenario_id.as_str(), r.setups[0].rows[1].smoothed_cost), (2, "", None));
+    assert_eq!(r.setups[0].summary().success_rate, 0.5);
+    for format in export::FORMATS {
+        assert!(!export::render(&r, format).unwrap().is_empty());
+    }
+    let bad = [
+        (minimal.replace("\"time_limit\"", "\"timeout\""), "setups[0].rows[1].status: unknown status \"timeout\""),
+        (minimal.replace("\"solved\": false", "\"solved\": true"), "setups[0].rows[1]: solved is true but status is \"time_limit\""),
+        (minimal.replace("\"time_ms\": 2.5", "\"time_ms\": -1"), "setups[0].rows[0].time_ms: must be a non-negative number"),
+        (minimal.replace("\"label\": \"a\", ", ""), "missing field `label`"),
+        ("[1, 2]".to_string(), "bench report:"),
+    ];
+    for (text, want) in bad {
+        let e = export::from_json(&text).unwrap_err();
+        assert!(e.starts_with("bench report: ") && e.contains(want), "{e} (wanted: {want})");
+    }
+    let e = export::render(&r, "xml").unwrap_err();
+    assert_eq!(e, "unknown export format \"xml\" (known: csv, json, ompl, table)");
+}
+
+#[test]
+fn the_ompl_log_parses_and_holds_the_stats() {
+    let benches = benches();
+    let r = report(&benches);
+    let log = read_ompl_log(&export::to_ompl_log(&r));
+    assert_eq!(log.version, format!("Planarium {}", env!("CARGO_PKG_VERSION")));
+    assert_eq!((log.experiment.as_str(), log.host.as_str(), log.date.as_str()), ("Narrow_passage", "test_host", DATE));
+    assert!(log.setup.contains("Narrow passage") && log.setup.contains("rrt capped: rrt {\"max_iterations\":5.0}"), "{}", log.setup);
+    assert_eq!(log.cpuinfo, None);
+    assert_eq!((log.seed.as_str(), log.time_limit, log.memory_limit, log.runs_per_planner), ("1", 30.0, -1.0, RUNS as i64));
+    let total: f64 = r.setups.iter().flat_map(|s| &s.rows).map(|x| (x.time_ms + x.smoothing_ms) / 1000.0).sum();
+    assert!((log.total_time - total).abs() < 1e-12);
+    let status_enum = log.enums.iter().find(|e| e[0] == "status").expect("OMPL's status enum");
+    assert_eq!(status_enum[1..].len(), 10);
+    assert_eq!((status_enum[1 + 4].as_str(), status_enum[1 + 6].as_str()), ("Timeout", "Exact solution"));
+    let ours = log.enums.iter().find(|e| e[0] == "planarium_status").expect("our status enum");
+    let names: Vec<&str> = log.planners.iter().map(|p| p.name.as_str()).collect();
+    assert_eq!(names, ["geometric_rrt-connect", "geometric_rrt", "geometric_rrt_capped"]);
+    for (p, b) in log.planners.iter().zip(&benches) {
+        assert!(p.common.contains(&format!("planner = {}", b.planner)));
+        for (name, ty) in &p.properties {
+            assert!(["BOOLEAN", "INTEGER", "REAL", "ENUM"].contains(&ty.as_str()), "{name} {ty}");
+            if ty == "ENUM" {
+                assert!(log.enums.iter().any(|e| &e[0] == name), "an enum named {name}");
+            }
+        }
+        let runs = ompl_runs(p);
+        assert_eq!(runs.len(), b.per_run.len());
+        for (run, ((seed, solved, st), status)) in runs.iter().zip(b.per_run.iter().zip(&b.statuses)) {
+            assert_eq!(real(&run["time"]), Some(st.time_ms / 1000.0), "time in seconds");
+            assert_eq!(int(&run["solved"]), u64::from(*solved));
+            assert_eq!(int(&run["seed"]), *seed);
+            assert_eq!(int(&run["graph_states"]), st.nodes);
+            assert_eq!(int(&run["collision_checks"]), st.checks);
+            assert_eq!(int(&run["iterations"]), st.iterations);
+            assert_eq!(real(&run["solution_length"]), st.cost);
+            assert_eq!(real(&run["simplified_solution_length"]), st.smoothed_cost);
+            assert_eq!(real(&run["simplification_time"]), solved.then_some(st.smoothing_ms / 1000.0));
+            let ompl_status = &status_enum[1 + int(&run["status"]) as usize];
+            assert_eq!(ompl_status, if *solved { "Exact solution" } else { "Timeout" });
+            assert_eq!(ours[1 + int(&run["planarium_status"]) as usize], status.name().replace('_', " "));
+        }
+    }
+}
+
+#[test]
+fn ompl_names_are_single_words_and_unique() {
+    let mut r = report(&benches());
+    r.scenario = "My  scene; v2".into();
+    r.host = "lab machine 3".into();
+    r.setups[1].label = "near-collision tuned (p 3; σ 0.005)".into();
+    r.setups[2].label = "near-collision tuned (p 3| σ 0.005)".into();
+    r.setups[0].params.insert("sampler".into(), "bridge".into());
+    let text = export::to_ompl_log(&r);
+    let log = read_ompl_log(&text);
+    assert_eq!((log.experiment.as_str(), log.host.as_str()), ("My__scene__v2", "lab_machine_3"));
+    let names: Vec<&str> = log.planners.iter().map(|p| p.name.as_str()).collect();
+    assert_eq!(names, ["geometric_rrt-connect", "geometric_near-collision_tuned_(p_3__σ_0.005)", "geometric_near-collision_tuned_(p_3__σ_0.005)_2"]);
+    assert_eq!(log.planners[0].common, ["planner = rrt-connect", "sampler = bridge"]);
+}
+
+#[test]
+fn the_course_table_shows_the_summaries() {
+    let benches = benches();
+    let r = report(&benches);
+    let t = export::course_table(&r);
+    let lines: Vec<&str> = t.lines().collect();
+    assert_eq!(lines.len(), 2 + 3);
+    assert!(lines[0].starts_with("| set-up | planner | runs | solved | mean time (ms) | std time (ms) | median time (ms) |"));
+    for (line, b) in lines[2..].iter().zip(&benches) {
+        let cells: Vec<&str> = line.trim_matches('|').split('|').map(str::trim).collect();
+        assert_eq!(cells.len(), 13);
+        assert_eq!(cells[0], b.label);
+        assert_eq!(cells[3], format!("{:.0}%", b.success_rate * 100.0));
+        assert_eq!(cells[4], format!("{:.2}", b.time_ms.mean));
+        assert_eq!(cells[9], format!("{:.0}", b.checks.mean));
+        let cost = if b.cost.n == 0 { "—".to_string() } else { format!("{:.4}", b.cost.mean) };
+        assert_eq!(cells[11], cost);
+    }
+    assert_eq!(export::render(&r, "table").unwrap(), t);
+}
+
+#[test]
+fn utc_timestamps_follow_the_civil_calendar() {
+    for (secs, want) in [
+        (0, "1970-01-01T00:00:00Z"),
+        (951_782_400, "2000-02-29T00:00:00Z"),
+        (1_709_210_096, "2024-02-29T12:34:56Z"),
+        (4_102_444_799, "2099-12-31T23:59:59Z"),
+        (253_402_300_799, "9999-12-31T23:59:59Z"),
+    ] {
+        assert_eq!(export::utc_timestamp(secs), want);
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+
+fn without_times(mut r: BenchReport) -> BenchReport {
+    r.date.clear();
+    r.host.clear();
+    for row in r.setups.iter_mut().flat_map(|s| s.rows.iter_mut()) {
+        row.time_ms = 0.0;
+        row.smoothing_ms = 0.0;
+    }
+    r
+}
+
+/// The OMPL log without what the clock decides (times, date, host).
+fn ompl_without_times(mut log: OmplLog) -> OmplLog {
+    log.date.clear();
+    log.host.clear();
+    log.total_time = 0.0;
+    for p in &mut log.planners {
+        let clocked: Vec<usize> = p.properties.iter().enumerate().filter(|(_, (n, _))| n == "time" || n == "simplification_time").map(|(i, _)| i).collect();
+        for run in &mut p.runs {
+            for &i in &clocked {
+                run[i] = run[i].as_ref().map(|_| "t".to_string());
+            }
+        }
+    }
+    log
+}
+
+#[test]
+fn the_cli_writes_the_same_three_formats() {
+    let dir = std::env::temp_dir().join(format!("planarium-bench-export-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (csv, json, log) = (dir.join("b.csv"), dir.join("b.json"), dir.join("b.log"));
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_planarium"))
+        .args(["bench", "narrow", "--runs", &RUNS.to_string(), "--setup", "rrt-connect", "--setup", "rrt", "--setup", "rrt capped: rrt --max-iterations 5"])
+        .arg("--csv")
+        .arg(&csv)
+        .arg("--json-file")
+        .arg(&json)
+        .arg("--ompl-log")
+        .arg(&log)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let read = |p: &std::path::Path| std::fs::read_to_string(p).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
+    let (csv_text, json_text, log_text) = (read(&csv), read(&json), read(&log));
+    std::fs::remove_dir_all(&dir).ok();
+
+    let lib = report(&benches());
+    // JSON: the same report, up to what the clock decides.
+    let cli = export::from_json(&json_text).unwrap();
+    let date = cli.date.as_bytes();
+    assert!(cli.date.len() == 20 && date[4] == b'-' && date[10] == b'T' && date[19] == b'Z', "{}", cli.date);
+    assert!(!cli.host.is_empty());
+    assert!(cli.setups.iter().flat_map(|s| &s.rows).all(|x| x.time_ms > 0.0));
+    assert_same_report(&without_times(cli.clone()), &without_times(lib.clone()));
+    // CSV: the same records but the time column.
+    // (read from the CLI's own CSV, exactly: these bypass JSON parsing).
+    let drop_time = |t: &str| {
+        read_csv(t)
+            .into_iter()
+            .map(|mut r| {
+                r.remove(5);
+                r
+            })
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(drop_time(&csv_text), drop_time(&export::to_csv(&lib)));
+    // OMPL log: the same log but times, date and host.
+    assert_eq!(ompl_without_times(read_ompl_log(&log_text)), ompl_without_times(read_ompl_log(&export::to_ompl_log(&lib))));
+}
