@@ -1,0 +1,125 @@
+// The benchmark page in headless chromium, driven like a person: choose a scenario, type set-ups
+// and a number of runs, run them over a pool of workers, and check the table against the native
+// CLI's `bench` for the same seeds; the plots are drawn; the OMPL log parses with a small reader;
+// cancel stops at once and keeps the page usable; a bad set-up line is named.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { pageFixture, ROOT, SHOTS } from './browser.mjs';
+
+const fx = await pageFixture();
+
+async function openBench() {
+  await fx.page.goto(`${fx.env.base}bench.html`);
+  await fx.page.waitForFunction(() => window.planarium?.state() === 'idle', null, { timeout: 30000 });
+}
+
+async function runBench(scenario, setups, runs) {
+  await fx.page.selectOption('#scenario', scenario);
+  await fx.page.fill('#setups', setups);
+  await fx.page.fill('#runs', String(runs));
+  await fx.page.click('#bench-run');
+}
+
+/** A reader for OMPL's benchmark log, following ompl_benchmark_statistics.py's readBenchmarkLog. */
+function readOmplLog(text) {
+  const lines = text.split('\n');
+  let i = 0;
+  const next = () => lines[i++];
+  const header = {};
+  header.version = next();
+  header.experiment = next();
+  while (i < lines.length && !/planners? in this benchmark|planner count/i.test(lines[i]) && !/^\d+ planners?$/.test(lines[i].trim())) i++;
+  const planners = [];
+  const count = parseInt(next(), 10);
+  assert.ok(count > 0, 'a planner count');
+  for (let p = 0; p < count; p++) {
+    const name = next().trim();
+    const common = parseInt(next(), 10);
+    for (let k = 0; k < common; k++) next();
+    const nprops = parseInt(next(), 10);
+    const props = [];
+    for (let k = 0; k < nprops; k++) props.push(next().trim());
+    const nruns = parseInt(next(), 10);
+    const runs = [];
+    for (let k = 0; k < nruns; k++) runs.push(next().split(';').map((s) => s.trim()));
+    // Progress properties (none, or a block), then the planner's closing ".".
+    while (i < lines.length && lines[i].trim() !== '.') i++;
+    next();
+    planners.push({ name, props, runs });
+  }
+  return { header, planners };
+}
+
+test('a benchmark over two workers gives the CLI\'s numbers, plots and exports', async () => {
+  await openBench();
+  await fx.page.fill('#workers', '2');
+  await runBench('narrow', 'connect: rrt-connect\nbiased: rrt --goal-bias 0.2', 4);
+  await fx.page.waitForFunction(() => window.planarium.state() === 'idle' && window.planarium.report(), null, { timeout: 120000 });
+  const status = await fx.page.textContent('#bench-status');
+  assert.match(status, /^8 runs in /);
+  assert.equal(await fx.page.$eval('#bench-progress', (p) => p.value), 8);
+  const report = await fx.page.evaluate(() => window.planarium.report());
+  // The native CLI, same scenario, set-ups and seeds.
+  const dir = mkdtempSync(join(tmpdir(), 'planarium-bench-'));
+  const cli = join(ROOT, 'target/release/planarium');
+  execFileSync(cli, ['bench', 'narrow', '--runs', '4', '--setup', 'connect: rrt-connect', '--setup', 'biased: rrt --goal-bias 0.2',
+    '--json-file', join(dir, 'cli.json')], { encoding: 'utf8' });
+  const native = JSON.parse(readFileSync(join(dir, 'cli.json'), 'utf8'));
+  assert.equal(report.setups.length, 2);
+  report.setups.forEach((s, k) => {
+    const n = native.setups[k];
+    assert.equal(s.label, n.label);
+    assert.deepEqual(s.rows.map((r) => r.seed), [1, 2, 3, 4]);
+    for (const key of ['solved', 'status', 'iterations', 'nodes', 'checks', 'cost', 'smoothed_cost']) {
+      assert.deepEqual(s.rows.map((r) => r[key]), n.rows.map((r) => r[key]), `${s.label}: ${key}`);
+    }
+  });
+  // The table shows the same medians as the CLI's summary.
+  const cells = await fx.page.$$eval('#bench-table tbody tr', (trs) => trs.map((tr) => [...tr.children].map((c) => c.textContent)));
+  assert.equal(cells.length, 2);
+  assert.equal(cells[0][0], 'connect');
+  assert.equal(Number(cells[0][6]), native.setups[0].summary.checks.median);
+  assert.equal(Number(cells[1][5]), native.setups[1].summary.nodes.median);
+  assert.match(cells[0][1], /^100% \(4\/4\)$/);
+  // The plots are drawn: the box plot has both set-ups' colours.
+  const painted = await fx.page.evaluate(() => {
+    const c = document.getElementById('plot-checks');
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    const near = (r, g, b) => { let n = 0; for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - r) < 8 && Math.abs(d[i + 1] - g) < 8 && Math.abs(d[i + 2] - b) < 8) n++; return n; };
+    return [near(0x00, 0x72, 0xb2), near(0xe6, 0x9f, 0x00)];
+  });
+  assert.ok(painted[0] > 20 && painted[1] > 20, `box plot colours ${painted}`);
+  // Exports: CSV rows, and an OMPL log our reader parses, with the CLI's numbers.
+  const csv = await fx.page.evaluate(() => window.planarium.exported('csv'));
+  assert.equal(csv.trim().split(/\r?\n/).length, 1 + 8);
+  const log = readOmplLog(await fx.page.evaluate(() => window.planarium.exported('ompl')));
+  assert.equal(log.planners.length, 2);
+  const p0 = log.planners[0];
+  assert.equal(p0.runs.length, 4);
+  const nodesAt = p0.props.findIndex((p) => /^graph states/.test(p));
+  assert.ok(nodesAt >= 0, `a graph states property in ${p0.props}`);
+  assert.deepEqual(p0.runs.map((r) => Number(r[nodesAt])), native.setups[0].rows.map((r) => r.nodes));
+  await fx.page.screenshot({ path: join(SHOTS, 'page-bench.png'), fullPage: true });
+});
+
+test('cancel stops the pool at once and the page stays usable; a bad line is named', async () => {
+  await openBench();
+  await runBench('horn-20', 'rrt-connect --time-limit 30', 50);
+  await fx.page.waitForFunction(() => window.planarium.state() === 'running');
+  await fx.page.waitForTimeout(300);
+  await fx.page.click('#bench-cancel');
+  await fx.page.waitForFunction(() => window.planarium.state() === 'idle', null, { timeout: 5000 });
+  assert.match(await fx.page.textContent('#bench-status'), /^Cancelled after \d+ of 50 runs$/);
+  // A typo is named by line and the run does not start.
+  await fx.page.fill('#setups', 'rrt-connect\nrrt --goal-bais 0.2');
+  await fx.page.click('#bench-run');
+  assert.match(await fx.page.textContent('#bench-error'), /set-up line 2: --goal-bais is not a parameter of rrt/);
+  assert.equal(await fx.page.evaluate(() => window.planarium.state()), 'idle');
+  // And a good one runs afterwards.
+  await runBench('narrow', 'rrt-connect', 2);
+  await fx.page.waitForFunction(() => window.planarium.state() === 'idle' && window.planarium.report()?.setups[0].rows.length === 2, null, { timeout: 60000 });
+});

@@ -1,0 +1,38 @@
+// A benchmark worker: runs one seeded planning run at a time, to the end, and posts its result.
+// The page keeps a pool of these (one per core) and hands out (set-up, seed) jobs.
+//
+// Message in  {id, text, planner, params, seed}: the scenario's JSON text, the set-up and seed.
+// Messages out {type: 'ready'}; {type: 'done', id, result} (the contract's result JSON, parsed);
+//              {type: 'failed', id, message}: a bad set-up (the worker stays usable);
+//              {type: 'crashed', id, message}: the core panicked; the page replaces this worker.
+
+import init, { Run, install_panic_hook, last_panic } from './pkg/planarium.js';
+
+const BATCH_MS = 50; // a batch of planning between looks at the message queue is not needed here
+
+const ready = init().then(() => {
+  install_panic_hook();
+  self.postMessage({ type: 'ready' });
+});
+
+self.onmessage = async (e) => {
+  await ready;
+  const { id, text, planner, params, seed } = e.data;
+  let run = null;
+  try {
+    run = new Run(text, planner, JSON.stringify(params), seed);
+    run.record_events(false);
+    let status;
+    do {
+      status = run.step(1e9, BATCH_MS);
+    } while (status === 'running');
+    const result = JSON.parse(run.result_json());
+    self.postMessage({ type: 'done', id, result });
+  } catch (err) {
+    const panic = last_panic();
+    if (panic) self.postMessage({ type: 'crashed', id, message: panic });
+    else self.postMessage({ type: 'failed', id, message: String(err?.message ?? err) });
+  } finally {
+    try { run?.free(); } catch { /* a poisoned module: the page replaces the worker */ }
+  }
+};

@@ -1,0 +1,150 @@
+// Plots for the benchmark page, drawn on canvases: box plots per metric, success bars, and cost
+// against time (one dot per solved run). Colours are the Okabe–Ito set, distinguishable with the
+// common colour-blindness types; set-ups also differ by position and label, never colour alone.
+
+export const SERIES = ['#0072b2', '#e69f00', '#009e73', '#cc79a7', '#56b4e9', '#d55e00', '#f0e442', '#000000'];
+
+/** Quartiles by linear interpolation (as numpy's default). */
+export function quartiles(values) {
+  const v = [...values].sort((a, b) => a - b);
+  const q = (p) => {
+    if (!v.length) return NaN;
+    const i = (v.length - 1) * p;
+    const lo = Math.floor(i), hi = Math.ceil(i);
+    return v[lo] + (v[hi] - v[lo]) * (i - lo);
+  };
+  return { min: v[0], q1: q(0.25), median: q(0.5), q3: q(0.75), max: v[v.length - 1], n: v.length };
+}
+
+function setup(canvas, title) {
+  const dpr = window.devicePixelRatio || 1;
+  const w = canvas.clientWidth || 320, h = canvas.clientHeight || 200;
+  canvas.width = Math.round(w * dpr);
+  canvas.height = Math.round(h * dpr);
+  const ctx = canvas.getContext('2d');
+  ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+  ctx.clearRect(0, 0, w, h);
+  ctx.fillStyle = '#ffffff';
+  ctx.fillRect(0, 0, w, h);
+  ctx.fillStyle = '#222';
+  ctx.font = '600 12px system-ui, sans-serif';
+  ctx.fillText(title, 8, 16);
+  canvas.setAttribute('aria-label', title);
+  return { ctx, w, h, pad: { l: 64, r: 12, t: 28, b: 36 } };
+}
+
+/** A "nice" axis: [lo, hi] widened to round ticks. */
+function ticks(lo, hi, n = 4) {
+  if (!(hi > lo)) { hi = lo + 1; }
+  const step0 = (hi - lo) / n;
+  const mag = 10 ** Math.floor(Math.log10(step0));
+  const step = [1, 2, 5, 10].map((m) => m * mag).find((s) => s >= step0);
+  const a = Math.floor(lo / step) * step, b = Math.ceil(hi / step) * step;
+  const out = [];
+  for (let t = a; t <= b + step / 2; t += step) out.push(Number(t.toPrecision(12)));
+  return out;
+}
+
+const short = (v) => (Math.abs(v) >= 1e4 || (Math.abs(v) < 1e-2 && v !== 0) ? v.toExponential(1) : String(Number(v.toPrecision(3))));
+
+function yAxis(ctx, g, lo, hi, unit) {
+  const ts = ticks(lo, hi);
+  const [a, b] = [ts[0], ts[ts.length - 1]];
+  const y = (v) => g.h - g.pad.b - ((v - a) / (b - a)) * (g.h - g.pad.t - g.pad.b);
+  ctx.strokeStyle = '#ddd';
+  ctx.fillStyle = '#444';
+  ctx.font = '11px system-ui, sans-serif';
+  ctx.textAlign = 'right';
+  for (const t of ts) {
+    ctx.beginPath(); ctx.moveTo(g.pad.l, y(t)); ctx.lineTo(g.w - g.pad.r, y(t)); ctx.stroke();
+    ctx.fillText(short(t), g.pad.l - 4, y(t) + 4);
+  }
+  ctx.save();
+  ctx.translate(12, (g.h - g.pad.b + g.pad.t) / 2);
+  ctx.rotate(-Math.PI / 2);
+  ctx.textAlign = 'center';
+  ctx.fillText(unit, 0, 0);
+  ctx.restore();
+  return y;
+}
+
+function xLabels(ctx, g, labels, x) {
+  ctx.fillStyle = '#222';
+  ctx.textAlign = 'center';
+  ctx.font = '11px system-ui, sans-serif';
+  labels.forEach((l, i) => ctx.fillText(l.length > 16 ? `${l.slice(0, 15)}…` : l, x(i), g.h - g.pad.b + 14));
+}
+
+/** Box plots: `groups` [{label, values}] (empty groups get "no data"). */
+export function boxPlot(canvas, title, unit, groups) {
+  const g = setup(canvas, title);
+  const { ctx } = g;
+  const all = groups.flatMap((s) => s.values).filter(Number.isFinite);
+  if (!all.length) { ctx.fillText('no data', g.pad.l, g.h / 2); return; }
+  const y = yAxis(ctx, g, Math.min(...all), Math.max(...all), unit);
+  const slot = (g.w - g.pad.l - g.pad.r) / groups.length;
+  const x = (i) => g.pad.l + slot * (i + 0.5);
+  const bw = Math.min(40, slot * 0.5);
+  groups.forEach((s, i) => {
+    const vals = s.values.filter(Number.isFinite);
+    const c = SERIES[i % SERIES.length];
+    if (!vals.length) { ctx.fillStyle = '#888'; ctx.textAlign = 'center'; ctx.fillText('no data', x(i), g.h / 2); return; }
+    const q = quartiles(vals);
+    ctx.strokeStyle = c; ctx.lineWidth = 1.5;
+    ctx.beginPath(); ctx.moveTo(x(i), y(q.min)); ctx.lineTo(x(i), y(q.q1)); ctx.moveTo(x(i), y(q.q3)); ctx.lineTo(x(i), y(q.max)); ctx.stroke();
+    ctx.beginPath(); ctx.moveTo(x(i) - bw / 4, y(q.min)); ctx.lineTo(x(i) + bw / 4, y(q.min)); ctx.moveTo(x(i) - bw / 4, y(q.max)); ctx.lineTo(x(i) + bw / 4, y(q.max)); ctx.stroke();
+    ctx.fillStyle = `${c}40`;
+    ctx.fillRect(x(i) - bw / 2, y(q.q3), bw, y(q.q1) - y(q.q3));
+    ctx.strokeRect(x(i) - bw / 2, y(q.q3), bw, y(q.q1) - y(q.q3));
+    ctx.lineWidth = 3;
+    ctx.beginPath(); ctx.moveTo(x(i) - bw / 2, y(q.median)); ctx.lineTo(x(i) + bw / 2, y(q.median)); ctx.stroke();
+  });
+  xLabels(ctx, g, groups.map((s) => s.label), x);
+}
+
+/** Success bars: `bars` [{label, solved, runs}], as percentages. */
+export function successBars(canvas, title, bars) {
+  const g = setup(canvas, title);
+  const { ctx } = g;
+  const y = yAxis(ctx, g, 0, 100, '% solved');
+  const slot = (g.w - g.pad.l - g.pad.r) / Math.max(1, bars.length);
+  const x = (i) => g.pad.l + slot * (i + 0.5);
+  const bw = Math.min(48, slot * 0.6);
+  bars.forEach((b, i) => {
+    const pct = b.runs ? (100 * b.solved) / b.runs : 0;
+    ctx.fillStyle = SERIES[i % SERIES.length];
+    ctx.fillRect(x(i) - bw / 2, y(pct), bw, y(0) - y(pct));
+    ctx.fillStyle = '#222';
+    ctx.textAlign = 'center';
+    ctx.fillText(`${b.solved}/${b.runs}`, x(i), y(pct) - 4);
+  });
+  xLabels(ctx, g, bars.map((b) => b.label), x);
+}
+
+/** Cost against time: `series` [{label, points: [[time, cost], ...]}], one dot per solved run. */
+export function scatter(canvas, title, xUnit, yUnit, series) {
+  const g = setup(canvas, title);
+  const { ctx } = g;
+  const pts = series.flatMap((s) => s.points);
+  if (!pts.length) { ctx.fillText('no solved runs', g.pad.l, g.h / 2); return; }
+  const y = yAxis(ctx, g, Math.min(...pts.map((p) => p[1])), Math.max(...pts.map((p) => p[1])), yUnit);
+  const xs = ticks(Math.min(0, ...pts.map((p) => p[0])), Math.max(...pts.map((p) => p[0])));
+  const [a, b] = [xs[0], xs[xs.length - 1]];
+  const x = (v) => g.pad.l + ((v - a) / (b - a)) * (g.w - g.pad.l - g.pad.r);
+  ctx.fillStyle = '#444'; ctx.textAlign = 'center';
+  for (const t of xs) ctx.fillText(short(t), x(t), g.h - g.pad.b + 14);
+  ctx.fillText(xUnit, (g.w + g.pad.l) / 2, g.h - 6);
+  series.forEach((s, i) => {
+    ctx.fillStyle = SERIES[i % SERIES.length];
+    for (const [t, c] of s.points) {
+      ctx.beginPath();
+      if (i % 2) ctx.rect(x(t) - 3, y(c) - 3, 6, 6); else ctx.arc(x(t), y(c), 3.5, 0, 2 * Math.PI);
+      ctx.fill();
+    }
+  });
+  ctx.textAlign = 'left';
+  series.forEach((s, i) => {
+    ctx.fillStyle = SERIES[i % SERIES.length];
+    ctx.fillText(`${i % 2 ? '■' : '●'} ${s.label}`, g.pad.l + 4 + (i % 3) * 110, g.pad.t + 12 + Math.floor(i / 3) * 13);
+  });
+}
