@@ -149,6 +149,7 @@ export class Editor {
 
   commit() {
     if (this.restore) this.restore.disabled = !this.changed();
+    this.beforeCommit?.(); // the obstacle editor's undo history
     this.onCommit(structuredClone(this.scenario));
   }
 

@@ -28,7 +28,8 @@ export class Lane {
       events: (m) => this.onEvents(m),
       result: (m) => this.onResult(m),
       error: (message) => {
-        this.stepPending = this.revealOnePending = false;
+        this.stepPending = 0;
+        this.revealOnePending = false;
         hooks.error?.(message);
       },
       asv: (text) => hooks.asv?.(text),
@@ -49,7 +50,7 @@ export class Lane {
     this.finalStatus = null;  // the planner's terminal status word
     this.result = null;
     this.done = false;        // the `result` message arrived
-    this.stepPending = false; // reveal the answer to a step at once
+    this.stepPending = 0;     // steps sent, not yet answered: reveal each answer at once
     this.revealOnePending = false;
     if (notify) this.hooks.changed?.();
   }
@@ -65,7 +66,7 @@ export class Lane {
   /** Run `iterations` planner iterations and show them at once (or show what is left). */
   step(iterations) {
     if (this.done) { this.reveal(this.playback.revealAll()); return; }
-    this.stepPending = true;
+    this.stepPending++;
     this.session.send({ type: 'step', iterations });
   }
 
@@ -92,7 +93,10 @@ export class Lane {
     this.stats = msg.stats;
     if (msg.tries) this.tries = msg.tries;
     if (msg.status !== 'running') this.finalStatus = msg.status;
-    if (this.stepPending || this.hooks.finished?.()) { this.stepPending = false; this.reveal(this.playback.revealAll()); }
+    if (this.stepPending > 0 || this.hooks.finished?.()) {
+      this.stepPending = Math.max(0, this.stepPending - 1);
+      this.reveal(this.playback.revealAll());
+    }
     if (this.revealOnePending) { this.revealOnePending = false; this.reveal(this.playback.reveal(1)); }
     this.hooks.changed?.();
   }

@@ -1,22 +1,28 @@
-// Wiring: one lane (the worker session, its playback, the views and the chart: lane.js), the
-// controller's table, the panel, the overlay box and the stats; the hover text of cells and
-// potential fields (cells.js), and the note under the canvas when a planner finds no path.
+// Wiring: one player (player.js: the controller's table, a lane with the worker session, its
+// playback, the views and the chart, the actions and the frame loop), the panel, the overlay box
+// and the stats; the hover text of cells and potential fields (cells.js), and the note under the
+// canvas when a planner finds no path; the share link (share.js): the state is kept in the URL
+// hash, and a page opened with a hash restores it.
 // Read-only state for tests is exposed as window.planarium (nothing else is global).
 
-import { Controller, BUTTONS } from './controller.js';
+import { BUTTONS } from './controller.js';
 import { View } from './view.js';
 import { PALETTE } from './palette.js';
 import { CSpaceView } from './cspace.js';
 import { Editor } from './editor.js';
+import { ObstacleEditor } from './obstacle-editor.js';
+import { pngBlob, sceneSvg, recordCanvas, webmType } from './exports.js';
 import { fitViews, downloadText } from './stage.js';
 import { createPanel, taskOf } from './panel.js';
 import { Playback } from './playback.js';
 import { Chart } from './chart.js';
-import { Lane } from './lane.js';
+import { Player } from './player.js';
 import { createStats } from './stats.js';
 import { createOverlays } from './overlays.js';
 import { cellLegend, cellSummary } from './cells.js';
 import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox } from './shared.js';
+import { readShare, setupFor, writeShare, VIEW_DEFAULTS } from './share.js';
+import { OVERLAYS } from './palette.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
@@ -26,11 +32,11 @@ const ui = {
   panel: $('panel'), stepSize: $('step-size'), speed: $('speed'), speedOut: $('speed-out'),
   animSpeed: $('anim-speed'), animOut: $('anim-speed-out'), animRaw: $('anim-raw'), overlays: $('overlays'),
   stats: $('stats'), chartBox: $('chart-box'), chart: $('chart'), chartTitle: $('chart-title'), compare: $('to-compare'),
-  tip: $('cell-tip'), runNote: $('run-note'),
+  tip: $('cell-tip'), runNote: $('run-note'), back: $('step-back'), copyLink: $('copy-link'), shareUrl: $('share-url'),
+  copyStatus: $('copy-status'),
 };
 const { show: showError, clear: clearError } = errorBox(ui.error, ui.errorText);
 
-const controller = new Controller('loading');
 const playback = new Playback();
 const view = new View(ui.canvas, playback.store, playback.model);
 const cspace = new CSpaceView(ui.cspace, playback.store, PALETTE, playback.model);
@@ -45,39 +51,69 @@ let sentEdit = false;    // the latest `load` is a start/goal edit
 let course = '';         // the course of the scenario being loaded
 let loaded = null;       // the latest `loaded` message's scenario
 let applyDefaults = false;
-let lastFrame = 0;
+// Share links: where the scenario came from ({id}: a built-in as shipped; {custom}: edited or
+// opened), the share being restored (applied when its scenario has loaded), and the hash writer.
+let source = null;
+let restoring = null;    // a readShare() result waiting for its scenario
+let restoreNotes = [];   // its problems, shown once the scenario has loaded
+let shareReady = false;  // the hash is written only once the first state is in place
+const builtinNormal = new Map(); // built-in id → its scenario as the worker normalised it
 
-const lane = new Lane({
+const player = new Player({
   playback,
   views: [view, cspace],
   chart,
+  rate: () => speedRate(ui.speed),
+  fps: () => animFps(ui.animSpeed),
   hooks: {
     ready: onReady,
     loaded(msg) {
       scenarioText = JSON.stringify(msg.scenario);
+      if (source?.id && !sentEdit) builtinNormal.set(source.id, scenarioText);
+      // an edit that gives back a built-in exactly (say, "Restore start and goal") is that built-in again
+      if (source?.custom) for (const [id, text] of builtinNormal) if (text === scenarioText) source = { id };
       showScenario(msg);
       panel.setTask(taskOf(msg.scenario));
-      if (applyDefaults) panel.apply(msg.scenario.planner);
+      if (restoring) {
+        const { block, problems } = setupFor(restoring, msg.scenario, registry, panel.planner().name);
+        panel.apply(block);
+        restoreNotes.push(...problems);
+        restoring = null;
+        if (restoreNotes.length) showError(`Some of this link could not be used:\n• ${restoreNotes.join('\n• ')}`);
+        restoreNotes = [];
+        shareReady = true;
+      } else if (applyDefaults) {
+        panel.apply(msg.scenario.planner);
+      }
       applyDefaults = false;
       configure(); // fires 'configure' only from states that allow it; then 'loaded' below
       controller.fire('loaded');
     },
-    invalid(error) { showInvalid(error, sentEdit); },
-    error(message) {
-      showError(message);
-      if (!lane.done && controller.fire('fail')) lane.clearRun();
+    invalid(error) {
+      if (restoring) { // a link's scenario the core refuses: say why, show the first built-in instead
+        const where = error.path ? ` at ${error.path}` : error.line != null ? ` at line ${error.line}` : '';
+        restoreNotes.push(`The link's scenario is not valid${where}: ${error.message || error.text}. The first built-in is shown instead.`);
+        restoring.scenario = null;
+        restoreScenario(restoring);
+        return;
+      }
+      showInvalid(error, sentEdit);
     },
+    error(message) { showError(message); },
     asv(text) { downloadText(text, `${(loaded?.name || 'solution').replace(/[^\w.-]+/g, '_')}-solution.txt`); },
     stopped(message, fatal) {
       showError(fatal ? `The planning worker keeps stopping (${message}). Reload the page to try again.`
         : `The planning worker stopped: ${message}`);
-      if (!fatal) controller.fire('load');
     },
-    revealed: () => maybeFinish(),
-    finished: () => controller.state === 'finished',
     changed: () => { updateStats(); syncDownload(); },
+    frame() {
+      if (!chart.kind && playback.model.costs.length) syncChart(); // a planner that reports costs
+      cspace.render(view.robotState);
+      chart.render(lane.iterationNow);
+    },
   },
 });
+const { controller, lane } = player;
 
 function onReady(msg) {
   if (!registry) {
@@ -85,7 +121,11 @@ function onReady(msg) {
     builtins = msg.builtins;
     panel = createPanel(ui.panel, registry, () => { configure(); clearError(); syncChart(); });
     const first = fillScenarioPicker(ui.scenario, builtins);
-    load(JSON.stringify(first.scenario), true, { course: first.course });
+    if (location.hash.length > 1) restoreHash(location.hash);
+    else {
+      load(JSON.stringify(first.scenario), true, { course: first.course, source: { id: first.id } });
+      shareReady = true;
+    }
   } else if (scenarioText) {
     load(scenarioText, false, { course }); // after a crash: same scenario, same configuration
   }
@@ -93,75 +133,149 @@ function onReady(msg) {
 
 // Requests
 
-/** Send a scenario (or, with `file`, any file the core imports) to the worker. */
-function load(text, defaults, { course: c = course, edit = false, file = null } = {}) {
+/**
+ * Send a scenario (or, with `file`, any file the core imports) to the worker. `source`: {id} for
+ * a built-in as shipped, {custom: true} for anything else (an edit, a file, a link's JSON: the
+ * default for an edit or a file); left out otherwise, it stays (a reload after a crash).
+ */
+function load(text, defaults, { course: c = course, edit = false, file = null, source: s = edit || file ? { custom: true } : undefined } = {}) {
   sentEdit = edit;
   course = c;
   applyDefaults = defaults;
+  if (s !== undefined) source = s;
   if (!edit) editor.loading();
-  lane.load(text, file);
-  controller.fire('load');
+  player.load(text, file);
 }
 
 function configure() {
   if (!panel || !lane.session.alive) return;
-  lane.configure(panel.config());
+  player.configure(panel.config());
   syncChart();
   syncOptions();
   buildLegend();
-  controller.fire('configure');
+  scheduleShare();
 }
+
+const stepSize = () => Math.max(1, Math.floor(Number(ui.stepSize.value)) || 1);
 
 const actions = {
   run() {
-    if (!controller.can('run')) return;
-    clearError();
-    if (controller.state === 'finished') lane.resetRun();
-    controller.fire('run');
-    lane.run();
+    if (controller.can('run')) clearError();
+    player.run();
   },
-  pause() {
-    if (!controller.fire('pause')) return;
-    lane.pause();
-  },
-  step() {
-    if (!controller.fire('step')) return;
-    lane.step(Math.max(1, Math.floor(Number(ui.stepSize.value)) || 1));
-  },
-  stepEvent() {
-    if (!controller.fire('stepEvent')) return;
-    lane.stepEvent();
-  },
-  reset() {
-    if (!controller.can('reset')) return;
-    lane.resetRun();
-    controller.fire('reset');
-  },
-  cancel() {
-    if (!controller.can('cancel')) return;
-    const stopped = lane.done; // the planner already stopped: show the rest now
-    lane.cancel();
-    if (!stopped) controller.fire('cancel');
-  },
+  pause() { player.pause(); },
+  step() { player.step(stepSize()); },
+  back() { player.back(stepSize()); },
+  stepEvent() { player.stepEvent(); },
+  reset() { player.reset(); },
+  cancel() { player.cancel(); },
 };
 
-// Run state and playback
+// Share links
 
-function maybeFinish() {
-  if (lane.caughtUp && controller.fire('finish')) updateStats();
-  if (controller.state === 'finished' && lane.showResult()) syncDownload();
+/** Restore the state a link's hash describes (bad values are reported and left at defaults). */
+async function restoreHash(hash) {
+  shareReady = false;
+  clearTimeout(shareTimer);
+  const share = await readShare(hash, { builtins });
+  restoring = share;
+  restoreNotes = [...share.problems];
+  applyView(share);
+  restoreScenario(share);
 }
 
-function frame(time) {
-  const dt = Math.min(0.25, (time - (lastFrame || time)) / 1000);
-  lastFrame = time;
-  if (controller.state === 'running' && playback.pending > 0) lane.tick(speedRate(ui.speed), dt);
-  else if (controller.state === 'running') maybeFinish();
-  if (!chart.kind && playback.model.costs.length) syncChart(); // a planner that reports costs
-  view.render(time, animFps(ui.animSpeed));
-  cspace.render(view.robotState);
-  chart.render(lane.iterationNow);
-  requestAnimationFrame(frame);
+/** Load the scenario a share names: a built-in, a link's JSON, or (none) the first built-in. */
+function restoreScenario(share) {
+  removeCustomOptions();
+  clearError();
+  if (share.scenario?.text) {
+    markCustom('Scenario from a link');
+    load(share.scenario.text, false, { course: 'Shared link', source: { custom: true } });
+    return;
+  }
+  const b = builtins.find((x) => x.id === share.scenario?.id) || builtins.find((x) => x.id === ui.scenario.value) || builtins[0];
+  ui.scenario.value = b.id;
+  load(JSON.stringify(b.scenario), false, { course: b.course, source: { id: b.id } });
+}
+
+/** The view options of a share (overlays, sliders, step size): its values, else the defaults. */
+function applyView(share) {
+  const on = Object.fromEntries(OVERLAYS.map((o) => [o.option, share.overlays[o.option] ?? o.on]));
+  for (const o of OVERLAYS) $(o.id).checked = on[o.option];
+  ui.speed.value = String(share.view.speed ?? VIEW_DEFAULTS.speed);
+  ui.animSpeed.value = String(share.view.anim ?? VIEW_DEFAULTS.anim);
+  ui.animRaw.checked = share.view.rawPath ?? VIEW_DEFAULTS.rawPath;
+  ui.stepSize.value = String(share.view.stepSize ?? VIEW_DEFAULTS.stepSize);
+  updateOutputs();
+  syncOptions();
+}
+
+let shareTimer = 0;
+let shareGen = 0;
+let lastHash = null;          // the hash this page wrote last (a hashchange to it is ours)
+const encodedScenarios = new Map();
+
+/** Keep the hash up to date, a moment after the last change. */
+function scheduleShare() {
+  if (!shareReady) return;
+  clearTimeout(shareTimer);
+  shareTimer = setTimeout(() => { writeHash(); }, 250);
+}
+
+/** Write the current state into the hash now; resolves to the page's full link. */
+async function writeHash() {
+  clearTimeout(shareTimer);
+  if (!shareReady || !panel || !scenarioText || !source || controller.state === 'invalid' || controller.state === 'loading') {
+    return location.href;
+  }
+  const gen = ++shareGen;
+  const hash = await writeShare({
+    scenario: source.id ? { id: source.id } : { text: scenarioText },
+    config: panel.config(),
+    overlays: overlayOptions(),
+    view: {
+      speed: Number(ui.speed.value), anim: Number(ui.animSpeed.value), rawPath: ui.animRaw.checked,
+      stepSize: stepSize(),
+    },
+  }, registry, encodedScenarios);
+  if (gen !== shareGen) return location.href; // a newer write is on its way
+  lastHash = `#${hash}`;
+  if (location.hash !== lastHash) history.replaceState(history.state, '', `${location.pathname}${location.search}${lastHash}`);
+  ui.shareUrl.value = location.href;
+  return location.href;
+}
+
+ui.copyLink.addEventListener('click', async () => {
+  const link = await writeHash();
+  ui.shareUrl.value = link;
+  try {
+    await navigator.clipboard.writeText(link);
+    ui.copyStatus.textContent = 'Copied.';
+  } catch {
+    ui.shareUrl.select();
+    ui.copyStatus.textContent = 'Copy the selected link (the clipboard is not available here).';
+  }
+});
+
+// someone pastes another link into the address bar of this tab
+window.addEventListener('hashchange', () => {
+  if (!registry || location.hash === lastHash) return;
+  if (location.hash.length > 1) restoreHash(location.hash);
+});
+
+function removeCustomOptions() {
+  for (const o of [...ui.scenario.options]) if (o.dataset.file) o.remove();
+}
+
+/** Show `label` in the scenario picker for a scenario that is not a built-in. */
+function markCustom(label) {
+  removeCustomOptions();
+  const opt = new Option(label, '', true, true);
+  opt.dataset.file = 'yes';
+  opt.disabled = true;
+  ui.scenario.append(opt);
+  ui.scenario.value = '';
+  opt.selected = true;
 }
 
 // Display
@@ -174,6 +288,7 @@ function showScenario({ scenario, start, goal, space, cspace: grid }) {
   view.setScenario(scenario, start, goal);
   cspace.setSpace(grid || null, scenario.start, scenario.goal);
   editor.setScenario(scenario, space, sentEdit);
+  obstacleEditor.loaded(sentEdit);
   ui.cspace.hidden = !cspace.active;
   ui.stage.classList.toggle('dual', cspace.active);
   buildLegend();
@@ -185,8 +300,8 @@ function showInvalid(error, edit) {
     error.column != null ? `column ${error.column}` : null].filter(Boolean).join(', ');
   if (edit) {
     const which = /^(start|goal)\b/.exec(error.path || '')?.[1] || 'start or goal';
-    showError(`The new ${which} is not valid${/^(start|goal)$/.test(error.path) ? '' : ` at ${where}`}: ` +
-      `${error.message || error.text}\nMove it back to a free place, restore it, or pick another scenario.`);
+    showError(`After this edit the ${which} is not valid${/^(start|goal)$/.test(error.path) ? '' : ` at ${where}`}: ` +
+      `${error.message || error.text}\nUndo it (ctrl+Z), move it to a free place, or pick another scenario.`);
   } else {
     showError(`This scenario has an error${where ? ` at ${where}` : ''}: ${error.message || error.text}`);
   }
@@ -199,6 +314,7 @@ function showInvalid(error, edit) {
     view.setScenario(null);
     cspace.setSpace(null);
     editor.setScenario(null, null, false);
+    obstacleEditor.loaded(false);
     ui.cspace.hidden = true;
     ui.stage.classList.remove('dual');
     onResize();
@@ -206,12 +322,7 @@ function showInvalid(error, edit) {
   controller.fire('invalid');
 }
 
-function statusWord() {
-  return controller.state === 'finished'
-    ? (lane.finalStatus || (lane.result?.solved ? 'solved' : 'finished')) : controller.state;
-}
-
-function currentStats() { return lane.statsFor(statusWord(), controller.state === 'finished'); }
+function currentStats() { return player.stats(); }
 
 function updateStats() {
   const s = currentStats();
@@ -235,6 +346,7 @@ function syncChart() {
 function syncButtons() {
   const enabled = controller.buttons();
   for (const id of Object.keys(BUTTONS)) $(id).disabled = !enabled[id];
+  ui.back.disabled = !player.canBack();
   const busy = controller.state === 'loading';
   ui.scenario.disabled = busy;
   ui.file.disabled = busy;
@@ -269,8 +381,59 @@ const editor = new Editor({
   },
   onCommit(scenario) {
     clearError();
-    load(JSON.stringify(scenario), false, { edit: true });
+    load(JSON.stringify(scenario), false, { edit: true, source: { custom: true } });
   },
+});
+
+// Obstacles and bounds: drawn, moved, resized, deleted; undo/redo; saved as JSON (obstacle-editor.js)
+
+const obstacleEditor = new ObstacleEditor({ canvas: ui.canvas, view, editor, root: $('obstacle-tools'), download: downloadText });
+
+// Exports for slides (exports.js)
+
+const exportStatus = $('export-status');
+function saveBlob(blob, name) {
+  const url = URL.createObjectURL(blob);
+  const a = document.createElement('a');
+  a.href = url;
+  a.download = name;
+  a.click();
+  setTimeout(() => URL.revokeObjectURL(url), 1000);
+}
+const fileStem = () => (loaded?.name || 'planarium').replace(/[^\w.-]+/g, '-').toLowerCase();
+$('export-png').addEventListener('click', async () => {
+  const width = Math.max(100, Math.min(8000, Math.round(Number($('png-width').value) || 1600)));
+  try {
+    saveBlob(await pngBlob(view, width), `${fileStem()}-${width}.png`);
+    exportStatus.textContent = `PNG, ${width} px wide`;
+  } catch (e) { exportStatus.textContent = String(e.message ?? e); }
+});
+$('export-svg').addEventListener('click', () => {
+  try {
+    saveBlob(new Blob([sceneSvg(view)], { type: 'image/svg+xml' }), `${fileStem()}.svg`);
+    exportStatus.textContent = 'SVG of the current picture';
+  } catch (e) { exportStatus.textContent = String(e.message ?? e); }
+});
+let recording = null;
+const recordButton = $('record');
+recordButton.disabled = !webmType();
+if (!webmType()) recordButton.title = 'This browser cannot record WebM';
+recordButton.addEventListener('click', async () => {
+  if (recording) {
+    const blob = await recording.stop();
+    recording = null;
+    recordButton.textContent = 'Record WebM';
+    recordButton.setAttribute('aria-pressed', 'false');
+    saveBlob(blob, `${fileStem()}.webm`);
+    exportStatus.textContent = `WebM, ${(blob.size / 1024).toFixed(0)} kB`;
+    return;
+  }
+  try {
+    recording = recordCanvas(ui.canvas, 30);
+    recordButton.textContent = 'Stop and save';
+    recordButton.setAttribute('aria-pressed', 'true');
+    exportStatus.textContent = 'Recording the canvas…';
+  } catch (e) { exportStatus.textContent = String(e.message ?? e); }
 });
 
 function syncDownload() {
@@ -282,14 +445,15 @@ ui.download.addEventListener('click', () => { if (lane.session.alive && lane.res
 // Inputs
 
 for (const [id, event] of Object.entries(BUTTONS)) $(id).addEventListener('click', () => actions[event]());
+ui.back.addEventListener('click', () => actions.back());
 ui.errorClose.addEventListener('click', clearError);
 
 ui.scenario.addEventListener('change', () => {
   const b = builtins.find((x) => x.id === ui.scenario.value);
   if (!b) return;
   clearError();
-  for (const o of [...ui.scenario.options]) if (o.dataset.file) o.remove();
-  load(JSON.stringify(b.scenario), true, { course: b.course });
+  removeCustomOptions();
+  load(JSON.stringify(b.scenario), true, { course: b.course, source: { id: b.id } });
 });
 
 ui.file.addEventListener('change', async () => {
@@ -299,14 +463,8 @@ ui.file.addEventListener('change', async () => {
   clearError();
   let text;
   try { text = await file.text(); } catch (e) { showError(`Could not read ${file.name}: ${e.message}`); return; }
-  for (const o of [...ui.scenario.options]) if (o.dataset.file) o.remove();
-  const opt = new Option(`File: ${file.name}`, '', true, true);
-  opt.dataset.file = 'yes';
-  opt.disabled = true;
-  ui.scenario.append(opt);
-  ui.scenario.value = '';
-  opt.selected = true;
-  load(text, true, { course: 'Opened file', file: file.name });
+  markCustom(`File: ${file.name}`);
+  load(text, true, { course: 'Opened file', file: file.name, source: { custom: true } });
 });
 
 // the compare page opens on the scenario shown here
@@ -319,16 +477,17 @@ function updateOutputs() {
   ui.speedOut.textContent = describeSpeed(ui.speed);
   ui.animOut.textContent = `${Math.round(animFps(ui.animSpeed))} frames/s`;
 }
-ui.speed.addEventListener('input', updateOutputs);
-ui.animSpeed.addEventListener('input', updateOutputs);
-const overlayOptions = createOverlays(ui.overlays, () => syncOptions());
+ui.speed.addEventListener('input', () => { updateOutputs(); scheduleShare(); });
+ui.animSpeed.addEventListener('input', () => { updateOutputs(); scheduleShare(); });
+ui.stepSize.addEventListener('change', scheduleShare);
+const overlayOptions = createOverlays(ui.overlays, () => { syncOptions(); scheduleShare(); });
 // An inspection planner's smoothed path need not see what its branch saw: its robot follows the raw path.
 const syncOptions = () => {
   const o = overlayOptions();
   view.setOptions({ ...o, animateRaw: ui.animRaw.checked || panel?.planner().task === 'inspection' });
   cspace.setOptions({ showRejected: o.showRejected, showCollisions: o.showCollisions });
 };
-ui.animRaw.addEventListener('change', syncOptions);
+ui.animRaw.addEventListener('change', () => { syncOptions(); scheduleShare(); });
 
 document.addEventListener('keydown', (e) => {
   if (e.ctrlKey || e.metaKey || e.altKey || e.repeat && e.key !== 'ArrowRight') return;
@@ -340,6 +499,9 @@ document.addEventListener('keydown', (e) => {
   } else if (e.key === 'ArrowRight') {
     e.preventDefault();
     actions.step();
+  } else if (e.key === 'ArrowLeft') {
+    e.preventDefault();
+    actions.back();
   } else if (e.key === 'r' || e.key === 'R') {
     actions.reset();
   }
@@ -372,6 +534,10 @@ Object.defineProperty(window, 'planarium', {
     result: () => (lane.result ? structuredClone(lane.result) : null),
     scenario: () => (editor.scenario ? structuredClone(editor.scenario) : null),
     nodeCount: () => playback.nodeCount,
+    /** Iterations whose events are all shown (step back goes back from here). */
+    shownIterations: () => player.shownIterations,
+    /** The link to this state (the hash is kept up to date a moment after each change). */
+    shareLink: () => writeHash(),
     model: () => modelSummary(playback.model, chart),
     cells: () => cellSummary(playback.model.cells),
     /** Css px within the workspace canvas of the world point (x, y), or null. */
@@ -386,5 +552,4 @@ updateOutputs();
 syncOptions();
 syncButtons();
 updateStats();
-lane.start();
-requestAnimationFrame(frame);
+player.start();

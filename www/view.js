@@ -54,6 +54,7 @@ export class View {
     this.preview = { start: null, goal: null }; // states being edited (drawn instead of start/goal)
     this.editable = false;                       // draw the rotation handles of a rigid body
     this.robotState = null;                      // the animated robot's state, after render()
+    this.overlayHooks = [];                      // (ctx, layout) => void, drawn above the scene
     this.clearRun();
   }
 
@@ -455,6 +456,7 @@ export class View {
     }
     if (!this.showResult && this.lastSample) drawMarker(ctx, L, STYLE[EventKind.SAMPLE], ...this.lastSample);
     this.cells.drawTop(ctx, L, o, this.scenario.bounds);
+    for (const hook of this.overlayHooks) hook(ctx, L); // e.g. the obstacle editor's selection
     if (this.showResult && this.path) {
       drawPolyline(ctx, L, this.path, PALETTE.rawPath, L.px(2), [L.px(6), L.px(4)]);
     }

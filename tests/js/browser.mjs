@@ -59,6 +59,26 @@ export async function pageFixture() {
     }, value);
     await fx.waitState('idle');
   };
+  /** The page position (css px) of world point (x, y) on the workspace canvas (as layout.js's Layout). */
+  fx.toPage = async (x, y) => {
+    const box = await fx.page.locator('#canvas').boundingBox();
+    const [x0, y0, x1, y1] = (await fx.page.evaluate(() => window.planarium.scenario())).bounds;
+    const margin = 10;
+    const scale = Math.min((box.width - 2 * margin) / (x1 - x0), (box.height - 2 * margin) / (y1 - y0));
+    const ox = (box.width - scale * (x1 - x0)) / 2 - scale * x0;
+    const oy = (box.height + scale * (y1 - y0)) / 2 + scale * y0;
+    return [box.x + ox + x * scale, box.y + oy - y * scale];
+  };
+  /** Press at page point `from`, move in steps to `to`, release (a person's drag). */
+  fx.drag = async (from, to) => {
+    await fx.page.mouse.move(...from);
+    await fx.page.mouse.down();
+    const steps = 8;
+    for (let i = 1; i <= steps; i++) {
+      await fx.page.mouse.move(from[0] + ((to[0] - from[0]) * i) / steps, from[1] + ((to[1] - from[1]) * i) / steps);
+    }
+    await fx.page.mouse.up();
+  };
   /** How many pixels of canvas `id` are within `tol` (per channel) of each `#rrggbb` colour. */
   fx.countColours = (id, colours, tol = 6) =>
     fx.page.evaluate(({ id, colours, tol }) => {

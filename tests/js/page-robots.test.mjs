@@ -15,26 +15,8 @@ let page;
 beforeEach(() => { page = fx.page; });
 const { waitState, waitStatus, pickScenario, countColours, nextFrames, fastPlayback } = fx;
 
-/** The page position (css px) of world point (x, y) on the workspace canvas (as layout.js Layout). */
-async function toPage(x, y) {
-  const box = await page.locator('#canvas').boundingBox();
-  const [x0, y0, x1, y1] = (await page.evaluate(() => window.planarium.scenario())).bounds;
-  const margin = 10;
-  const scale = Math.min((box.width - 2 * margin) / (x1 - x0), (box.height - 2 * margin) / (y1 - y0));
-  const ox = (box.width - scale * (x1 - x0)) / 2 - scale * x0;
-  const oy = (box.height + scale * (y1 - y0)) / 2 + scale * y0;
-  return [box.x + ox + x * scale, box.y + oy - y * scale];
-}
-
-async function drag(from, to) {
-  await page.mouse.move(...from);
-  await page.mouse.down();
-  const steps = 8;
-  for (let i = 1; i <= steps; i++) {
-    await page.mouse.move(from[0] + ((to[0] - from[0]) * i) / steps, from[1] + ((to[1] - from[1]) * i) / steps);
-  }
-  await page.mouse.up();
-}
+const toPage = (x, y) => fx.toPage(x, y);
+const drag = (from, to) => fx.drag(from, to);
 
 test('C-space geometry: wrapping edges are split at the border, ticks are named', () => {
   const torus = [{ lo: -Math.PI, hi: Math.PI, wraps: true }, { lo: -Math.PI, hi: Math.PI, wraps: true }];

@@ -1,0 +1,348 @@
+// <planarium-playground>: one scenario and a few chosen controls, for course notes and slides.
+//
+//   <script type="module" src="planarium/planarium-playground.js"></script>
+//   <planarium-playground scenario="narrow" planner="rrt-connect" seed="7" autoplay controls="step,reset">
+//   </planarium-playground>
+//
+// Attributes (the share-link grammar of share.js, one key per attribute): scenario, planner, seed,
+// speed, anim, overlays, step-size, raw-path, autoplay, click, controls; `params` for planner
+// parameters in link form ("range=0.1&goal_bias=0.2"); `link` for a whole share link's hash (the
+// other attributes win over it); `fill` to fill the element's height (embed.html) instead of
+// taking the height the scenario's aspect ratio gives the element's width.
+//
+// Shadow DOM; the canvas scales to the element's width and keeps the scenario's aspect ratio. Keys
+// (space run / pause, → step, ← step back, r reset; only those whose control is shown) act only
+// while the element has focus: no listener on the document. The planning worker is loaded from
+// this module's folder (worker.js next to it), so the page must come from the same origin as this
+// file (a worker cannot be started across origins; use embed.html in an iframe there).
+// Read-only state for scripts and tests: el.state, el.status, el.result(), el.stats(), el.nodeCount,
+// el.shownIterations, el.controls; and el.run(), pause(), step(), back(), reset().
+
+import { Playback } from './playback.js';
+import { View } from './view.js';
+import { Player } from './player.js';
+import { fitViews } from './stage.js';
+import { speedRate, animFps, describeSpeed } from './shared.js';
+import { readShare, setupFor, configOf, overlayOptions, DEFAULT_CONTROLS, VIEW_DEFAULTS } from './share.js';
+
+const KEYS = ['scenario', 'planner', 'seed', 'speed', 'anim', 'overlays', 'step-size', 'raw-path', 'autoplay', 'click', 'controls'];
+const FLAGS = ['raw-path', 'autoplay', 'click'];
+const LABELS = { run: 'Run', pause: 'Pause', step: 'Step', back: 'Step back', reset: 'Reset' };
+const TITLES = {
+  run: 'Run (space)', pause: 'Pause (space)', step: 'Run more iterations, then pause (→)',
+  back: 'Go back: the run is replayed from its seed (←)', reset: 'Reset (r)',
+};
+
+const CSS = `
+:host { display: block; position: relative; min-width: 0; font: 14px/1.35 system-ui, -apple-system, "Segoe UI", Roboto, sans-serif;
+  color: #1d2127; text-align: left; }
+:host([hidden]) { display: none; }
+:host(:focus) { outline: none; }
+:host(:focus-visible) .stage canvas { outline: 2px solid #e67e00; outline-offset: 1px; }
+:host([fill]) { display: flex; flex-direction: column; height: 100%; }
+.stage { position: relative; display: flex; align-items: center; justify-content: center; overflow: hidden; width: 100%; min-height: 40px; }
+:host([fill]) .stage { flex: 1 1 auto; min-height: 0; }
+canvas { display: block; background: #eef0f3; border-radius: 4px; }
+.start { position: absolute; inset: 0; margin: auto; width: max-content; height: max-content; padding: 0.5rem 1.1rem;
+  font: inherit; font-size: 1.05rem; border: 0; border-radius: 999px; background: rgba(31, 78, 154, 0.92); color: #fff; cursor: pointer;
+  box-shadow: 0 1px 4px rgba(0, 0, 0, 0.3); }
+.bar { display: flex; flex-wrap: wrap; align-items: center; gap: 0.3rem 0.4rem; padding-top: 0.35rem; }
+.bar:empty { display: none; }
+button { font: inherit; font-size: 0.88rem; padding: 0.2rem 0.55rem; border: 1px solid #b9bfc8; border-radius: 4px; background: #f3f5f8;
+  color: #1d2127; cursor: pointer; }
+button:hover:not(:disabled) { background: #e7ebf0; }
+button:disabled { opacity: 0.45; cursor: default; }
+button:focus-visible, input:focus-visible { outline: 2px solid #e67e00; outline-offset: 1px; }
+label { display: inline-flex; align-items: center; gap: 0.3rem; font-size: 0.85rem; color: #5d6470; }
+input[type="range"] { width: 7rem; }
+input[type="number"] { width: 5rem; font: inherit; padding: 0.15rem 0.3rem; border: 1px solid #b9bfc8; border-radius: 4px; }
+.status { margin-left: auto; font-size: 0.85rem; color: #5d6470; font-variant-numeric: tabular-nums; }
+.status[data-status="solved"] { color: #007a5a; }
+.message { margin: 0.35rem 0 0; padding: 0.3rem 0.5rem; border: 1px solid #a8362b; border-radius: 4px; background: #fdecea;
+  color: #5a1710; font-size: 0.82rem; white-space: pre-wrap; overflow-wrap: anywhere; }
+[hidden] { display: none !important; }
+`;
+
+const el = (tag, props = {}) => Object.assign(document.createElement(tag), props);
+
+export class PlanariumPlayground extends HTMLElement {
+  static get observedAttributes() { return [...KEYS, 'params', 'link']; }
+
+  constructor() {
+    super();
+    const root = this.attachShadow({ mode: 'open' });
+    const style = el('style', { textContent: CSS });
+    this.canvas = el('canvas');
+    this.canvas.setAttribute('role', 'img');
+    this.canvas.setAttribute('part', 'canvas');
+    this.startButton = el('button', { className: 'start', type: 'button', textContent: '▶ Run', hidden: true });
+    this.startButton.dataset.control = 'start';
+    this.stage = el('div', { className: 'stage' });
+    this.stage.append(this.canvas, this.startButton);
+    this.bar = el('div', { className: 'bar' });
+    this.message = el('p', { className: 'message', hidden: true });
+    this.message.setAttribute('role', 'alert');
+    root.append(style, this.stage, this.bar, this.message);
+    this.player = null;
+    this.share = null;
+    this.registry = null;
+    this.builtins = [];
+    this.started = false; // autoplay / click: the run has been started once
+    this.pending = 0;
+    this.aspect = 1;
+    this.shown = [];
+    this.onKey = this.onKey.bind(this);
+    this.stage.addEventListener('pointerdown', () => this.focus({ preventScroll: true }));
+    this.stage.addEventListener('click', () => this.startOnClick());
+    this.playback = new Playback();
+    this.view = new View(this.canvas, this.playback.store, this.playback.model);
+    this.resize = null;
+  }
+
+  connectedCallback() {
+    if (!this.hasAttribute('tabindex')) this.tabIndex = 0;
+    this.addEventListener('keydown', this.onKey);
+    if (this.player) return;
+    this.player = new Player({
+      playback: this.playback,
+      views: [this.view],
+      rate: () => speedRate(this.speedInput || { value: String(this.share?.view.speed ?? VIEW_DEFAULTS.speed), max: '100' }),
+      fps: () => animFps({ value: String(this.share?.view.anim ?? VIEW_DEFAULTS.anim) }),
+      hooks: {
+        ready: (msg) => this.onReady(msg),
+        loaded: (msg) => this.onLoaded(msg),
+        invalid: (error) => this.onInvalid(error),
+        error: (message) => this.say(message),
+        stopped: (message, fatal) => this.say(fatal ? `The planning worker keeps stopping (${message}).` : `The planning worker stopped: ${message}`),
+        changed: () => this.sync(),
+      },
+    });
+    this.player.controller.onChange(() => this.sync());
+    this.sizeStage = () => {
+      if (this.hasAttribute('fill')) { this.stage.style.height = ''; return; }
+      const w = this.stage.clientWidth;
+      if (!w) return;
+      // Layout.fit keeps a 10 px margin around the bounds
+      const h = (w - 20) / this.aspect + 20;
+      const cap = Math.max(160, (window.innerHeight || 800) * 0.85);
+      this.stage.style.height = `${Math.round(Math.min(h, cap))}px`;
+    };
+    this.hostObserver = new ResizeObserver(() => this.sizeStage());
+    this.hostObserver.observe(this);
+    this.sizeStage();
+    this.resize ||= fitViews(this.stage, this.view, { active: false });
+    this.player.start();
+  }
+
+  disconnectedCallback() {
+    this.removeEventListener('keydown', this.onKey);
+    this.hostObserver?.disconnect();
+    this.player?.stop();
+    this.player = null;
+  }
+
+  attributeChangedCallback() {
+    if (!this.registry) return; // read once the worker is ready
+    clearTimeout(this.pending);
+    this.pending = setTimeout(() => this.restore(), 0);
+  }
+
+  /** The element's attributes as a share link's hash. */
+  linkText() {
+    const parts = [];
+    const link = this.getAttribute('link');
+    if (link) parts.push(link.replace(/^#/, ''));
+    const params = this.getAttribute('params');
+    if (params) parts.push(params.replace(/^[#?&]/, ''));
+    for (const key of KEYS) {
+      if (!this.hasAttribute(key)) continue;
+      const v = this.getAttribute(key);
+      if (FLAGS.includes(key) && v === '') parts.push(key);
+      else parts.push(`${key}=${encodeURIComponent(v)}`);
+    }
+    return parts.join('&');
+  }
+
+  // The worker's answers
+
+  onReady(msg) {
+    const first = !this.registry;
+    this.registry = msg.planners;
+    this.builtins = msg.builtins;
+    if (first) this.restore();
+    else if (this.scenarioText) this.player.load(this.scenarioText); // after a crash: the same again
+  }
+
+  async restore() {
+    const share = await readShare(this.linkText(), { builtins: this.builtins });
+    this.share = share;
+    this.problems = [...share.problems];
+    this.started = false;
+    this.buildControls(share.controls ?? DEFAULT_CONTROLS);
+    this.view.setOptions({ ...overlayOptions(share.overlays), animateRaw: !!share.view.rawPath });
+    const b = share.scenario?.id ? this.builtins.find((x) => x.id === share.scenario.id) : null;
+    if (share.scenario?.text) this.player.load(share.scenario.text);
+    else if (b) this.player.load(JSON.stringify(b.scenario));
+    else {
+      if (!share.scenario) this.problems.push('No scenario given (scenario=…): the first built-in is shown.');
+      this.player.load(JSON.stringify(this.builtins[0].scenario));
+    }
+  }
+
+  onLoaded(msg) {
+    this.scenarioText = JSON.stringify(msg.scenario);
+    this.scenario = msg.scenario;
+    const [x0, y0, x1, y1] = msg.scenario.bounds;
+    this.aspect = (x1 - x0) / (y1 - y0) || 1;
+    this.canvas.setAttribute('aria-label', `${msg.scenario.name || 'Scenario'}: the planner's trees and the path`);
+    this.view.setScenario(msg.scenario, msg.start, msg.goal);
+    this.sizeStage();
+    this.resize();
+    const { block, problems } = setupFor(this.share, msg.scenario, this.registry);
+    this.config = configOf(block);
+    if (this.seedInput) this.seedInput.value = String(this.config.seed);
+    this.player.configure(this.config);
+    this.player.controller.fire('loaded');
+    this.problems.push(...problems);
+    this.say(this.problems.length ? `Some of this embed's settings could not be used:\n• ${this.problems.join('\n• ')}` : '');
+    if (this.share.autoplay && !this.started) {
+      this.started = true;
+      this.player.run();
+    }
+    this.sync();
+  }
+
+  onInvalid(error) {
+    const where = error.path ? ` at ${error.path}` : error.line != null ? ` at line ${error.line}` : '';
+    this.problems.push(`The scenario is not valid${where}: ${error.message || error.text}. The first built-in is shown instead.`);
+    this.player.controller.fire('invalid');
+    if (this.share.scenario) {
+      this.share.scenario = null;
+      this.player.load(JSON.stringify(this.builtins[0].scenario));
+    }
+  }
+
+  say(text) {
+    this.message.textContent = text;
+    this.message.hidden = !text;
+  }
+
+  // Controls
+
+  buildControls(names) {
+    this.shown = names;
+    this.buttons = {};
+    this.speedInput = null;
+    this.seedInput = null;
+    const items = [];
+    for (const name of names) {
+      if (LABELS[name]) {
+        const b = el('button', { type: 'button', textContent: LABELS[name], title: TITLES[name] });
+        b.dataset.control = name;
+        b.setAttribute('part', `button ${name}`);
+        b.addEventListener('click', () => this.act(name));
+        this.buttons[name] = b;
+        items.push(b);
+      } else if (name === 'speed') {
+        const input = el('input', { type: 'range', min: '0', max: '100', step: '1', value: String(this.share.view.speed ?? VIEW_DEFAULTS.speed) });
+        const out = el('output', { textContent: describeSpeed(input) });
+        input.addEventListener('input', () => { out.textContent = describeSpeed(input); });
+        const label = el('label', { title: 'Playback speed' });
+        label.dataset.control = 'speed';
+        label.append('Speed', input, out);
+        this.speedInput = input;
+        items.push(label);
+      } else if (name === 'seed') {
+        const input = el('input', { type: 'number', min: '0', step: '1', value: String(this.config?.seed ?? this.share.seed ?? 1), inputMode: 'numeric' });
+        input.addEventListener('change', () => {
+          const v = Number(input.value);
+          if (!Number.isSafeInteger(v) || v < 0 || !this.config) { input.setAttribute('aria-invalid', 'true'); return; }
+          input.removeAttribute('aria-invalid');
+          this.config = { ...this.config, seed: v };
+          this.player.configure(this.config);
+        });
+        const label = el('label', { title: 'Random seed: the same seed replays the same run' });
+        label.dataset.control = 'seed';
+        label.append('Seed', input);
+        this.seedInput = input;
+        items.push(label);
+      }
+    }
+    this.statusText = el('span', { className: 'status' });
+    this.statusText.setAttribute('aria-live', 'polite');
+    this.bar.replaceChildren(...items, this.statusText);
+  }
+
+  stepSize() { return this.share?.view.stepSize ?? VIEW_DEFAULTS.stepSize; }
+
+  act(name) {
+    const p = this.player;
+    if (!p) return false;
+    this.started = true;
+    switch (name) {
+      case 'run': return p.run();
+      case 'pause': return p.pause();
+      case 'toggle': return p.toggle();
+      case 'step': return p.step(this.stepSize());
+      case 'back': return p.back(this.stepSize()) !== null;
+      case 'reset': return p.reset();
+      default: return false;
+    }
+  }
+
+  startOnClick() {
+    if (!this.share?.click || this.started || !this.player?.controller.can('run')) return;
+    this.started = true;
+    this.player.run();
+    this.sync();
+  }
+
+  onKey(e) {
+    if (e.ctrlKey || e.metaKey || e.altKey || (e.repeat && e.key !== 'ArrowRight')) return;
+    const t = e.composedPath()[0];
+    if (t instanceof Element && t.closest('input, select, textarea, [contenteditable]')) return;
+    const has = (n) => this.shown.includes(n);
+    let name = null;
+    if (e.key === ' ' && (has('run') || has('pause'))) name = this.state === 'running' ? (has('pause') ? 'pause' : null) : (has('run') ? 'run' : null);
+    else if (e.key === 'ArrowRight' && has('step')) name = 'step';
+    else if (e.key === 'ArrowLeft' && has('back')) name = 'back';
+    else if ((e.key === 'r' || e.key === 'R') && has('reset')) name = 'reset';
+    if (!name) return;
+    e.preventDefault();
+    e.stopPropagation(); // a slide deck's own keys stay out of it while the embed has focus
+    this.act(name);
+  }
+
+  sync() {
+    const p = this.player;
+    if (!p || !this.statusText) return;
+    const c = p.controller;
+    const can = { run: c.can('run'), pause: c.can('pause'), step: c.can('step'), back: p.canBack(), reset: c.can('reset') };
+    for (const [name, b] of Object.entries(this.buttons || {})) b.disabled = !can[name];
+    if (this.seedInput) this.seedInput.disabled = c.state === 'loading';
+    this.startButton.hidden = !(this.share?.click && !this.started && c.state === 'idle');
+    const s = p.stats();
+    const word = s.status === 'no_path' ? 'no path' : s.status;
+    this.statusText.dataset.status = s.status;
+    this.statusText.textContent = s.iterations != null && c.state !== 'loading' && c.state !== 'idle'
+      ? `${word} · ${Number(s.iterations).toLocaleString('en')} iterations · ${s.shown_nodes} nodes` : word;
+    this.dataset.state = c.state;
+  }
+
+  // Read-only state and actions for scripts
+
+  get state() { return this.player?.state ?? 'loading'; }
+  get status() { return this.player?.statusWord() ?? 'loading'; }
+  get nodeCount() { return this.player?.playback.nodeCount ?? 0; }
+  get shownIterations() { return this.player?.shownIterations ?? 0; }
+  get controls() { return [...this.shown]; }
+  result() { return this.player?.lane.result ? structuredClone(this.player.lane.result) : null; }
+  stats() { return this.player ? this.player.stats() : null; }
+  run() { return this.act('run'); }
+  pause() { return this.act('pause'); }
+  step() { return this.act('step'); }
+  back() { return this.act('back'); }
+  reset() { return this.act('reset'); }
+}
+
+if (!customElements.get('planarium-playground')) customElements.define('planarium-playground', PlanariumPlayground);
