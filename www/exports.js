@@ -165,3 +165,57 @@ export function recordCanvas(canvas, fps = 30) {
     }),
   };
 }
+
+/** Save a Blob under `name` (a download). */
+function saveBlob(blob, name) {
+  const url = URL.createObjectURL(blob);
+  const a = document.createElement('a');
+  a.href = url;
+  a.download = name;
+  a.click();
+  setTimeout(() => URL.revokeObjectURL(url), 1000);
+}
+
+/**
+ * Wire the page's export controls (#png-width, #export-png, #export-svg, #record, #export-status)
+ * to `view` and its `canvas`; `stem()` names the files.
+ */
+export function wireExports({ view, canvas, stem }) {
+  const $ = (id) => document.getElementById(id);
+  const status = $('export-status');
+  const say = (text) => { status.textContent = text; };
+  $('export-png').addEventListener('click', async () => {
+    const width = Math.max(100, Math.min(8000, Math.round(Number($('png-width').value) || 1600)));
+    try {
+      saveBlob(await pngBlob(view, width), `${stem()}-${width}.png`);
+      say(`PNG, ${width} px wide`);
+    } catch (e) { say(String(e.message ?? e)); }
+  });
+  $('export-svg').addEventListener('click', () => {
+    try {
+      saveBlob(new Blob([sceneSvg(view)], { type: 'image/svg+xml' }), `${stem()}.svg`);
+      say('SVG of the current picture');
+    } catch (e) { say(String(e.message ?? e)); }
+  });
+  const record = $('record');
+  let recording = null;
+  record.disabled = !webmType();
+  if (!webmType()) record.title = 'This browser cannot record WebM';
+  record.addEventListener('click', async () => {
+    if (recording) {
+      const blob = await recording.stop();
+      recording = null;
+      record.textContent = 'Record WebM';
+      record.setAttribute('aria-pressed', 'false');
+      saveBlob(blob, `${stem()}.webm`);
+      say(`WebM, ${(blob.size / 1024).toFixed(0)} kB`);
+      return;
+    }
+    try {
+      recording = recordCanvas(canvas, 30);
+      record.textContent = 'Stop and save';
+      record.setAttribute('aria-pressed', 'true');
+      say('Recording the canvas…');
+    } catch (e) { say(String(e.message ?? e)); }
+  });
+}

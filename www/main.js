@@ -11,7 +11,7 @@ import { PALETTE } from './palette.js';
 import { CSpaceView } from './cspace.js';
 import { Editor } from './editor.js';
 import { ObstacleEditor } from './obstacle-editor.js';
-import { pngBlob, sceneSvg, recordCanvas, webmType } from './exports.js';
+import { wireExports } from './exports.js';
 import { fitViews, downloadText } from './stage.js';
 import { createPanel, taskOf } from './panel.js';
 import { Playback } from './playback.js';
@@ -389,52 +389,8 @@ const editor = new Editor({
 
 const obstacleEditor = new ObstacleEditor({ canvas: ui.canvas, view, editor, root: $('obstacle-tools'), download: downloadText });
 
-// Exports for slides (exports.js)
-
-const exportStatus = $('export-status');
-function saveBlob(blob, name) {
-  const url = URL.createObjectURL(blob);
-  const a = document.createElement('a');
-  a.href = url;
-  a.download = name;
-  a.click();
-  setTimeout(() => URL.revokeObjectURL(url), 1000);
-}
-const fileStem = () => (loaded?.name || 'planarium').replace(/[^\w.-]+/g, '-').toLowerCase();
-$('export-png').addEventListener('click', async () => {
-  const width = Math.max(100, Math.min(8000, Math.round(Number($('png-width').value) || 1600)));
-  try {
-    saveBlob(await pngBlob(view, width), `${fileStem()}-${width}.png`);
-    exportStatus.textContent = `PNG, ${width} px wide`;
-  } catch (e) { exportStatus.textContent = String(e.message ?? e); }
-});
-$('export-svg').addEventListener('click', () => {
-  try {
-    saveBlob(new Blob([sceneSvg(view)], { type: 'image/svg+xml' }), `${fileStem()}.svg`);
-    exportStatus.textContent = 'SVG of the current picture';
-  } catch (e) { exportStatus.textContent = String(e.message ?? e); }
-});
-let recording = null;
-const recordButton = $('record');
-recordButton.disabled = !webmType();
-if (!webmType()) recordButton.title = 'This browser cannot record WebM';
-recordButton.addEventListener('click', async () => {
-  if (recording) {
-    const blob = await recording.stop();
-    recording = null;
-    recordButton.textContent = 'Record WebM';
-    recordButton.setAttribute('aria-pressed', 'false');
-    saveBlob(blob, `${fileStem()}.webm`);
-    exportStatus.textContent = `WebM, ${(blob.size / 1024).toFixed(0)} kB`;
-    return;
-  }
-  try {
-    recording = recordCanvas(ui.canvas, 30);
-    recordButton.textContent = 'Stop and save';
-    recordButton.setAttribute('aria-pressed', 'true');
-    exportStatus.textContent = 'Recording the canvas…';
-  } catch (e) { exportStatus.textContent = String(e.message ?? e); }
-});
+// Exports for slides (exports.js): PNG at a width, SVG, WebM
+wireExports({ view, canvas: ui.canvas, stem: () => (loaded?.name || 'planarium').replace(/[^\w.-]+/g, '-').toLowerCase() });
 
 function syncDownload() {
   ui.download.hidden = !(loaded?.robot?.kind === 'asv' && lane.result?.solved && controller.state === 'finished');
@@ -504,8 +460,19 @@ document.addEventListener('keydown', (e) => {
     actions.back();
   } else if (e.key === 'r' || e.key === 'R') {
     actions.reset();
+  } else if (e.key === '?') {
+    e.preventDefault();
+    toggleHelp();
   }
 });
+
+// The keyboard help (a modal dialog: Escape or the button closes it, focus returns).
+const help = $('help');
+function toggleHelp() {
+  if (help.open) help.close(); else help.showModal();
+}
+$('help-button').addEventListener('click', toggleHelp);
+$('help-close').addEventListener('click', () => help.close());
 
 // Hover: the cell or field tile under the pointer, described in a small box (text only).
 function hideTip() { ui.tip.hidden = true; }

@@ -9,8 +9,8 @@ export const PALETTE = Object.freeze({
   background: '#eef0f3',
   free: '#ffffff',
   bounds: '#30343b',
-  obstacle: '#e4877b',
-  obstacleEdge: '#a8362b',
+  obstacle: '#8c510a',  // brown: apart from the start (orange) and goal (green) for every colour-vision deficiency (tests/js/palette.test.mjs)
+  obstacleEdge: '#543005',
   start: '#e67e00',
   goal: '#009e73',
   tree0: '#1f4e9a',
