@@ -4,7 +4,8 @@
 //
 //   node scripts/build.mjs && node scripts/figures.mjs [id ...]     (default: every figure)
 //
-// Writes docs/figures/<scenario>.png. Uses the test fixture's server and browser launcher.
+// Writes docs/figures/<id>.png (and docs/screenshot.png, the README's). Uses the test fixture's
+// server and browser launcher.
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { startBrowser, ROOT } from '../tests/js/browser.mjs';
@@ -17,6 +18,8 @@ const FIGURES = {
   'hex-trap-heat': { scenario: 'hex-trap', overlays: ['show-heat', 'show-arrows'] },
   'hex-trap-modified': { overlays: [] },
   'apf-minimum': { overlays: ['show-heat', 'show-arrows'] },
+  // README's picture: the whole page, RRT-Connect in the narrow passage.
+  screenshot: { scenario: 'narrow', overlays: [], page: true, file: join('docs', 'screenshot.png') },
 };
 
 const wanted = process.argv.slice(2);
@@ -43,9 +46,16 @@ try {
     // Let playback reveal every record and the robot reach the goal.
     await page.waitForTimeout(1500);
     const status = await page.$eval('#status', (el) => el.textContent);
-    const png = await page.$eval('#canvas', (c) => c.toDataURL('image/png'));
-    writeFileSync(join(out, `${id}.png`), Buffer.from(png.split(',')[1], 'base64'));
-    console.log(`${id}: ${status} → docs/figures/${id}.png`);
+    const file = FIGURES[id]?.file ?? join('docs', 'figures', `${id}.png`);
+    if (FIGURES[id]?.page) {
+      await page.setViewportSize({ width: 1280, height: 800 });
+      await page.waitForTimeout(500);
+      await page.screenshot({ path: join(ROOT, file) });
+    } else {
+      const png = await page.$eval('#canvas', (c) => c.toDataURL('image/png'));
+      writeFileSync(join(ROOT, file), Buffer.from(png.split(',')[1], 'base64'));
+    }
+    console.log(`${id}: ${status} → ${file}`);
     await page.close();
   }
 } finally {

@@ -16,7 +16,7 @@ export const PALETTE = Object.freeze({
   tree0: '#1f4e9a',
   tree1: '#cc79a7',
   rejected: '#8a8f98',
-  collision: 'rgba(178, 24, 43, 0.7)',
+  collision: 'rgba(255, 236, 120, 0.85)', // pale yellow: seen on the brown obstacles where motions end
   sample: '#30343b',
   connect: '#111111',
   rawPath: '#ffb000',
