@@ -287,8 +287,8 @@ fn the_report_holds_every_run_and_the_benches_summaries() {
         }
         // The courses' numbers from the rows equal the bench's own (the page's table and the CLI's).
         let m = s.summary();
-        assert_eq!(m.success_rate, b.success_rate);
-        assert_eq!((&m.time_ms, &m.nodes, &m.checks, &m.cost, &m.smoothed_cost), (&b.time_ms, &b.nodes, &b.checks, &b.cost, &b.smoothed_cost));
+        assert_eq!(m.success_rate, b.summary.success_rate);
+        assert_eq!((&m.time_ms, &m.nodes, &m.checks, &m.cost, &m.smoothed_cost), (&b.summary.time_ms, &b.summary.nodes, &b.summary.checks, &b.summary.cost, &b.summary.smoothed_cost));
     }
     // Both kinds of run are here: solved ones, and ones stopped by the iteration limit.
     assert!(r.setups[0].rows.iter().all(|x| x.solved && x.status == "solved"));
@@ -368,9 +368,9 @@ fn json_round_trips_and_carries_the_summaries() {
     assert_eq!(v["date"], DATE);
     for (b, s) in benches.iter().zip(v["setups"].as_array().unwrap()) {
         let m = &s["summary"];
-        assert_eq!(m["success_rate"].as_f64().unwrap(), b.success_rate);
+        assert_eq!(m["success_rate"].as_f64().unwrap(), b.summary.success_rate);
         assert_eq!(m["runs"], RUNS);
-        for (key, want) in [("time_ms", &b.time_ms), ("nodes", &b.nodes), ("checks", &b.checks), ("cost", &b.cost), ("smoothed_cost", &b.smoothed_cost)] {
+        for (key, want) in [("time_ms", &b.summary.time_ms), ("nodes", &b.summary.nodes), ("checks", &b.summary.checks), ("cost", &b.summary.cost), ("smoothed_cost", &b.summary.smoothed_cost)] {
             assert_eq!(m[key], serde_json::to_value(want).unwrap(), "{key}");
         }
         assert_eq!(s["rows"].as_array().unwrap().len(), RUNS as usize);
@@ -477,10 +477,10 @@ fn the_course_table_shows_the_summaries() {
         let cells: Vec<&str> = line.trim_matches('|').split('|').map(str::trim).collect();
         assert_eq!(cells.len(), 13);
         assert_eq!(cells[0], b.label);
-        assert_eq!(cells[3], format!("{:.0}%", b.success_rate * 100.0));
-        assert_eq!(cells[4], format!("{:.2}", b.time_ms.mean));
-        assert_eq!(cells[9], format!("{:.0}", b.checks.mean));
-        let cost = if b.cost.n == 0 { "—".to_string() } else { format!("{:.4}", b.cost.mean) };
+        assert_eq!(cells[3], format!("{:.0}%", b.summary.success_rate * 100.0));
+        assert_eq!(cells[4], format!("{:.2}", b.summary.time_ms.mean));
+        assert_eq!(cells[9], format!("{:.0}", b.summary.checks.mean));
+        let cost = if b.summary.cost.n == 0 { "—".to_string() } else { format!("{:.4}", b.summary.cost.mean) };
         assert_eq!(cells[11], cost);
     }
     assert_eq!(export::render(&r, "table").unwrap(), t);

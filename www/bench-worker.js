@@ -3,10 +3,13 @@
 //
 // Message in  {id, text, planner, params, seed}: the scenario's JSON text, the set-up and seed.
 // Messages out {type: 'ready'}; {type: 'done', id, result} (the contract's result JSON, parsed);
+//              (for RRT*: `curve`, the best cost against planning time, [[ms, cost], ...], read
+//              from its COST events after each 10 ms batch)
 //              {type: 'failed', id, message}: a bad set-up (the worker stays usable);
 //              {type: 'crashed', id, message}: the core panicked; the page replaces this worker.
 
 import init, { Run, install_panic_hook, last_panic } from './pkg/planarium.js';
+import { EventKind, STRIDE } from './events.js';
 
 const BATCH_MS = 50; // a batch of planning between looks at the message queue is not needed here
 
@@ -21,13 +24,21 @@ self.onmessage = async (e) => {
   let run = null;
   try {
     run = new Run(text, planner, JSON.stringify(params), seed);
-    run.record_events(false);
+    // An anytime planner's cost curve needs its COST events; other runs record nothing.
+    const curve = planner === 'rrt-star' ? [] : null;
+    run.record_events(!!curve);
     let status;
     do {
-      status = run.step(1e9, BATCH_MS);
+      status = run.step(1e9, curve ? 10 : BATCH_MS);
+      if (curve) {
+        const ev = run.drain_events();
+        let best = null;
+        for (let o = 0; o < ev.length; o += STRIDE) if (ev[o] === EventKind.COST) best = ev[o + 6];
+        if (best !== null) curve.push([JSON.parse(run.stats_json()).time_ms, best]);
+      }
     } while (status === 'running');
     const result = JSON.parse(run.result_json());
-    self.postMessage({ type: 'done', id, result });
+    self.postMessage({ type: 'done', id, result, curve });
   } catch (err) {
     const panic = last_panic();
     if (panic) self.postMessage({ type: 'crashed', id, message: panic });

@@ -7,7 +7,7 @@
 import init, { builtins as builtinsJson, planners as plannersJson, bench_export as benchExport } from './pkg/planarium.js';
 import { fillScenarioPicker } from './shared.js';
 import { parseParam } from './panel.js';
-import { boxPlot, successBars, scatter } from './plots.js';
+import { boxPlot, successBars, scatter, stepLines } from './plots.js';
 import { downloadText } from './stage.js';
 
 const $ = (id) => document.getElementById(id);
@@ -23,6 +23,7 @@ let registry = null;
 let pool = [];
 let job = null;   // the benchmark being run: {report, queue, done, total, started}
 let report = null; // the last finished (or cancelled) report
+let curves = [];   // per set-up, RRT*'s best cost against time per run: [[[ms, cost], ...], ...]
 
 function showError(text) {
   ui.error.textContent = text;
@@ -95,6 +96,7 @@ function onWorkerMessage(w, msg) {
   w.busy = null;
   if (msg.type === 'done' && j) {
     job.rows[j.k].push(rowOf(j.seed, msg.result));
+    if (msg.curve) job.curves[j.k].push(msg.curve);
   } else if (j) {
     // A bad set-up or a crash: stop, say which run, keep the page usable.
     const what = msg.type === 'crashed' ? 'the core crashed' : 'the run was refused';
@@ -137,7 +139,7 @@ function start() {
   const queue = [];
   // Seed-major order, so every set-up's first seeds finish early and partial results are fair.
   for (let seed = 1; seed <= runs; seed++) setups.forEach((setup, k) => queue.push({ id: queue.length, k, setup, seed }));
-  job = { text: JSON.stringify(b.scenario), scenario: b, setups, runs, rows: setups.map(() => []), queue, done: 0, total: queue.length, started: performance.now() };
+  job = { text: JSON.stringify(b.scenario), scenario: b, setups, runs, rows: setups.map(() => []), curves: setups.map(() => []), queue, done: 0, total: queue.length, started: performance.now() };
   stopPool();
   const n = Math.max(1, Math.min(64, Math.floor(Number(ui.workers.value) || navigator.hardwareConcurrency || 2)));
   for (let i = 0; i < n; i++) pool.push(newWorker());
@@ -158,6 +160,7 @@ function finish(problem) {
     host: 'browser', time_limit_s: limit, runs: j.runs,
     setups: j.setups.map((s, k) => ({ label: s.label, planner: s.planner, params: s.params, rows: j.rows[k].sort((a, b) => a.seed - b.seed) })),
   };
+  curves = j.curves;
   const secs = ((performance.now() - j.started) / 1000).toFixed(1);
   if (problem) showError(problem);
   ui.status.textContent = problem ? `${j.done} of ${j.total} runs done` : `${j.total} runs in ${secs} s`;
@@ -207,6 +210,9 @@ function show(r) {
   boxPlot($('plot-cost'), 'Path cost (solved runs)', 'cost', groups((x) => x.cost, true));
   scatter($('plot-cost-time'), 'Cost against time (one dot per solved run)', 'time (ms)', 'cost',
     r.setups.map((s) => ({ label: s.label, points: s.rows.filter((x) => x.solved).map((x) => [x.time_ms, x.cost]) })));
+  const anytime = r.setups.map((s, k) => ({ label: s.label, lines: curves[k] ?? [] })).filter((s) => s.lines.length);
+  $('plot-curves').hidden = !anytime.length;
+  if (anytime.length) stepLines($('plot-curves'), "RRT*: best cost against time (one line per run)", 'time (ms)', 'cost', anytime);
 }
 
 function exportAs(format, ext) {
@@ -235,5 +241,6 @@ document.body.dataset.state = 'idle';
 window.planarium = Object.freeze({
   state: () => document.body.dataset.state,
   report: () => report && JSON.parse(JSON.stringify(report)),
+  curves: () => JSON.parse(JSON.stringify(curves)),
   exported: (format) => report && benchExport(JSON.stringify(report), format),
 });

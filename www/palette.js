@@ -29,7 +29,7 @@ export const PALETTE = Object.freeze({
   accepted: '#2a9d8f',
   tryFree: '#4daf4a',
   tryOccupied: '#5e3c99',
-  domain: '#8c510a',
+  domain: '#b2182b',  // dark red rings: not the brown obstacles, not the purple occupied tries
   exhausted: '#b0b4ba',
   exhaustedEdge: '#4a4f57',
   rewire: '#e7298a',

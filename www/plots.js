@@ -148,3 +148,39 @@ export function scatter(canvas, title, xUnit, yUnit, series) {
     ctx.fillText(`${i % 2 ? '■' : '●'} ${s.label}`, g.pad.l + 4 + (i % 3) * 110, g.pad.t + 12 + Math.floor(i / 3) * 13);
   });
 }
+
+/** Step lines: `series` [{label, lines: [[[x, y], ...], ...]}] (each line one run), by series colour. */
+export function stepLines(canvas, title, xUnit, yUnit, series) {
+  const g = setup(canvas, title);
+  const { ctx } = g;
+  const pts = series.flatMap((s) => s.lines.flat());
+  if (!pts.length) { ctx.fillText('no data', g.pad.l, g.h / 2); return; }
+  const y = yAxis(ctx, g, Math.min(...pts.map((p) => p[1])), Math.max(...pts.map((p) => p[1])), yUnit);
+  const xs = ticks(0, Math.max(...pts.map((p) => p[0])));
+  const [a, b] = [xs[0], xs[xs.length - 1]];
+  const x = (v) => g.pad.l + ((v - a) / (b - a)) * (g.w - g.pad.l - g.pad.r);
+  ctx.fillStyle = '#444'; ctx.textAlign = 'center';
+  for (const t of xs) ctx.fillText(short(t), x(t), g.h - g.pad.b + 14);
+  ctx.fillText(xUnit, (g.w + g.pad.l) / 2, g.h - 6);
+  series.forEach((s, i) => {
+    ctx.strokeStyle = SERIES[i % SERIES.length];
+    ctx.globalAlpha = 0.55;
+    ctx.lineWidth = 1.5;
+    ctx.setLineDash(i % 2 ? [5, 3] : []);
+    for (const line of s.lines) {
+      ctx.beginPath();
+      line.forEach(([t, c], k) => {
+        if (k === 0) ctx.moveTo(x(t), y(c));
+        else { ctx.lineTo(x(t), y(line[k - 1][1])); ctx.lineTo(x(t), y(c)); }
+      });
+      ctx.stroke();
+    }
+  });
+  ctx.globalAlpha = 1;
+  ctx.setLineDash([]);
+  ctx.textAlign = 'left';
+  series.forEach((s, i) => {
+    ctx.fillStyle = SERIES[i % SERIES.length];
+    ctx.fillText(`${i % 2 ? '┄' : '—'} ${s.label}`, g.pad.l + 4 + (i % 3) * 110, g.pad.t + 12 + Math.floor(i / 3) * 13);
+  });
+}

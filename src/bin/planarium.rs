@@ -217,7 +217,7 @@ fn run_bench(m: &ArgMatches) -> Result<(), String> {
         }
         let mut row = bench::bench_planner(&sc, spec.name, &params, runs)?;
         row.label = label.map_or_else(|| rest.trim().to_string(), String::from);
-        eprintln!("{}: {:.0}% solved, median {:.0} checks", row.label, row.success_rate * 100.0, row.checks.median);
+        eprintln!("{}: {:.0}% solved, median {:.0} checks", row.label, row.summary.success_rate * 100.0, row.summary.checks.median);
         rows.push(row);
     }
     let scenario_arg = m.get_one::<String>("scenario").unwrap();

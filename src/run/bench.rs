@@ -3,6 +3,7 @@
 //! or JSON. [`export`](super::export) turns the results into a [`BenchReport`](super::export::BenchReport)
 //! and writes it as CSV, JSON, an OMPL benchmark log or the courses' table.
 
+use super::export::{RunRow, SetupSummary};
 use super::{RunConfig, Session, Stats};
 use crate::planners::Params;
 use crate::problem::Problem;
@@ -48,20 +49,10 @@ pub struct PlannerBench {
     pub planner: String,
     /// Parameters set explicitly.
     pub params: serde_json::Map<String, serde_json::Value>,
-    /// Runs.
-    pub runs: usize,
-    /// Fraction solved.
-    pub success_rate: f64,
-    /// Planning time, ms (all runs).
-    pub time_ms: Summary,
-    /// Nodes (all runs).
-    pub nodes: Summary,
-    /// State checks (all runs).
-    pub checks: Summary,
-    /// Raw path cost (solved runs).
-    pub cost: Summary,
-    /// Smoothed path cost (solved runs).
-    pub smoothed_cost: Summary,
+    /// The courses' numbers: runs, success rate, and the summaries of time, nodes, checks, cost
+    /// and smoothed cost (in JSON, flattened into the set-up's object).
+    #[serde(flatten)]
+    pub summary: SetupSummary,
     /// Per-run statistics, seed order.
     pub per_run: Vec<(u64, bool, Stats)>,
     /// How each run ended, in the order of `per_run`.
@@ -82,19 +73,12 @@ pub fn bench_planner(scenario: &Scenario, planner: &str, params: &Params, runs: 
         per_run.push((seed, status == Status::Solved, s.stats()));
         statuses.push(status);
     }
-    let all = |f: fn(&Stats) -> f64| Summary::of(&per_run.iter().map(|r| f(&r.2)).collect::<Vec<_>>());
-    let solved = |f: fn(&Stats) -> Option<f64>| Summary::of(&per_run.iter().filter_map(|r| f(&r.2)).collect::<Vec<_>>());
+    let rows: Vec<RunRow> = per_run.iter().zip(&statuses).map(|((seed, _, st), status)| RunRow::of(*seed, *status, st)).collect();
     Ok(PlannerBench {
         label: planner.to_string(),
         planner: planner.to_string(),
         params: params.values().clone(),
-        runs: runs as usize,
-        success_rate: per_run.iter().filter(|r| r.1).count() as f64 / runs.max(1) as f64,
-        time_ms: all(|s| s.time_ms),
-        nodes: all(|s| s.nodes as f64),
-        checks: all(|s| s.checks as f64),
-        cost: solved(|s| s.cost),
-        smoothed_cost: solved(|s| s.smoothed_cost),
+        summary: SetupSummary::of(&rows),
         per_run,
         statuses,
         time_limit_s: params.real("time_limit"),
@@ -106,10 +90,11 @@ pub fn bench_planner(scenario: &Scenario, planner: &str, params: &Params, runs: 
 pub fn table(rows: &[PlannerBench]) -> String {
     let mut out = format!("{:<16} {:>8}  {:<14} {:>12} {:>12} {:>12}\n", "planner", "success", "metric", "median", "mean", "std");
     for r in rows {
+        let m = &r.summary;
         let metrics: [(&str, &Summary); 5] =
-            [("time_ms", &r.time_ms), ("nodes", &r.nodes), ("checks", &r.checks), ("cost", &r.cost), ("smoothed_cost", &r.smoothed_cost)];
+            [("time_ms", &m.time_ms), ("nodes", &m.nodes), ("checks", &m.checks), ("cost", &m.cost), ("smoothed_cost", &m.smoothed_cost)];
         for (k, (name, m)) in metrics.iter().enumerate() {
-            let (p, sr) = if k == 0 { (r.label.as_str(), format!("{:.0}%", r.success_rate * 100.0)) } else { ("", String::new()) };
+            let (p, sr) = if k == 0 { (r.label.as_str(), format!("{:.0}%", r.summary.success_rate * 100.0)) } else { ("", String::new()) };
             out.push_str(&format!("{:<16} {:>8}  {:<14} {:>12.4} {:>12.4} {:>12.4}\n", p, sr, name, m.median, m.mean, m.std));
         }
     }
@@ -124,12 +109,12 @@ pub fn report_table(rows: &[PlannerBench]) -> String {
         out.push_str(&format!(
             "| {} | {:.0}% | {:.2} | {:.2} | {:.1} | {:.0} | {:.0} |\n",
             r.label,
-            r.success_rate * 100.0,
-            r.time_ms.mean,
-            r.time_ms.std,
-            r.nodes.mean,
-            r.checks.mean,
-            r.checks.median
+            r.summary.success_rate * 100.0,
+            r.summary.time_ms.mean,
+            r.summary.time_ms.std,
+            r.summary.nodes.mean,
+            r.summary.checks.mean,
+            r.summary.checks.median
         ));
     }
     out

@@ -230,10 +230,17 @@ impl SetupReport {
     /// checks over all runs, of cost and smoothed cost over the solved runs (as
     /// [`bench_planner`](super::bench::bench_planner) computes them).
     pub fn summary(&self) -> SetupSummary {
-        let all = |f: fn(&RunRow) -> f64| Summary::of(&self.rows.iter().map(f).collect::<Vec<_>>());
-        let solved_only = |f: fn(&RunRow) -> Option<f64>| Summary::of(&self.rows.iter().filter_map(f).collect::<Vec<_>>());
-        let runs = self.rows.len();
-        let solved = self.rows.iter().filter(|r| r.solved).count();
+        SetupSummary::of(&self.rows)
+    }
+}
+
+impl SetupSummary {
+    /// The summary of some runs (see [`SetupReport::summary`]).
+    pub fn of(rows: &[RunRow]) -> SetupSummary {
+        let all = |f: fn(&RunRow) -> f64| Summary::of(&rows.iter().map(f).collect::<Vec<_>>());
+        let solved_only = |f: fn(&RunRow) -> Option<f64>| Summary::of(&rows.iter().filter_map(f).collect::<Vec<_>>());
+        let runs = rows.len();
+        let solved = rows.iter().filter(|r| r.solved).count();
         SetupSummary {
             runs,
             solved,

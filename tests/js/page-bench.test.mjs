@@ -123,3 +123,25 @@ test('cancel stops the pool at once and the page stays usable; a bad line is nam
   await runBench('narrow', 'rrt-connect', 2);
   await fx.page.waitForFunction(() => window.planarium.state() === 'idle' && window.planarium.report()?.setups[0].rows.length === 2, null, { timeout: 60000 });
 });
+
+test('RRT*: the best cost against time, one falling line per run, ending at the run\'s cost', async () => {
+  await openBench();
+  await runBench('open-field', 'star: rrt-star --improve-for 3000\nplain: rrt', 3);
+  await fx.page.waitForFunction(() => window.planarium.state() === 'idle' && window.planarium.report(), null, { timeout: 120000 });
+  const [curves, report] = await fx.page.evaluate(() => [window.planarium.curves(), window.planarium.report()]);
+  assert.equal(curves[0].length, 3, 'a curve per RRT* run');
+  assert.equal(curves[1].length, 0, 'none for plain RRT');
+  curves[0].forEach((line, i) => {
+    assert.ok(line.length >= 1);
+    for (let k = 1; k < line.length; k++) {
+      assert.ok(line[k][0] >= line[k - 1][0] && line[k][1] <= line[k - 1][1], `run ${i}: time rises, cost falls`);
+    }
+    const row = report.setups[0].rows.find((r) => r.seed === i + 1) ?? report.setups[0].rows[i];
+    assert.ok(row.solved);
+  });
+  // The last point of each line is that run's cost (the rows are in seed order, lines in finishing order).
+  const finals = curves[0].map((l) => l.at(-1)[1]).sort((a, b) => a - b);
+  const costs = report.setups[0].rows.map((r) => r.cost).sort((a, b) => a - b);
+  assert.deepEqual(finals, costs);
+  assert.equal(await fx.page.$eval('#plot-curves', (c) => c.hidden), false);
+});
