@@ -190,7 +190,15 @@ impl Robot for ArmRobot {
                                 distance2_point_segment(a, m, e).min(distance2_point_segment(e, a, m)).sqrt()
                             }
                         } else {
-                            distance_segment_segment(pts[i], pts[i + 1], pts[j], pts[j + 1])
+                            // Broad phase: two links whose boxes are 2c apart cannot lower c (the
+                            // result is the same; most pairs of a long chain are far apart).
+                            let (p, q, r, s) = (pts[i], pts[i + 1], pts[j], pts[j + 1]);
+                            let gx = (p.x.min(q.x) - r.x.max(s.x)).max(r.x.min(s.x) - p.x.max(q.x)).max(0.0);
+                            let gy = (p.y.min(q.y) - r.y.max(s.y)).max(r.y.min(s.y) - p.y.max(q.y)).max(0.0);
+                            if gx * gx + gy * gy >= 4.0 * c * c {
+                                continue;
+                            }
+                            distance_segment_segment(p, q, r, s)
                         };
                         c = c.min(0.5 * d);
                     }

@@ -12,6 +12,7 @@ pub const BUILTINS: &[(&str, &str)] = &[
     ("arm-3", include_str!("../../scenarios/arm-3.json")),
     ("horn-10", include_str!("../../scenarios/horn-10.json")),
     ("horn-20", include_str!("../../scenarios/horn-20.json")),
+    ("ompl-rect", include_str!("../../scenarios/ompl-rect.json")),
     ("technion-mp", include_str!("../../scenarios/technion-mp.json")),
     ("technion-ip", include_str!("../../scenarios/technion-ip.json")),
     ("asv-3-easy", include_str!("../../scenarios/asv-3-easy.json")),
@@ -30,7 +31,7 @@ pub fn course_of(id: &str) -> &'static str {
     match id {
         "slot" | "arm-3" => "Polygon robot and chain (report 003)",
         "arm-2" => "Configuration space",
-        _ if id.starts_with("horn-") => "OMPL benchmark: kinematic chain",
+        _ if id.starts_with("horn-") || id.starts_with("ompl-") => "OMPL benchmarks (issue 7)",
         _ if id.starts_with("technion-") => "Technion manipulator and inspection (report 004)",
         _ if id.starts_with("asv-") => "Vehicles joined by brooms (report 000)",
         _ if id.starts_with("apf-") || id.starts_with("hex-") => "Hexagons and potential fields (report 002)",
