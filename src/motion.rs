@@ -44,11 +44,16 @@ fn in_bisection_order<E>(n: usize, mut visit: impl FnMut(usize) -> Result<(), E>
 const MAX_DEPTH: u32 = 40;
 
 impl SpaceInfo {
-    /// Clearance of `q` capped at `cap`, counted as one state check.
+    /// Clearance of `q` capped at `cap`, counted as one state check: in workspace units, or (when
+    /// the robot supports it, `motion` given) in units of the motion's parameter.
     #[inline]
-    fn clearance_checked(&self, q: &[Real], cap: Real) -> Real {
+    fn clearance_checked(&self, motion: Option<(&[Real], &[Real])>, q: &[Real], cap: Real) -> Real {
         self.checks.set(self.checks.get() + 1);
-        self.validity.clearance(q, cap).unwrap_or(0.0)
+        match motion {
+            Some((a, b)) => self.validity.motion_clearance(a, b, q, cap),
+            None => self.validity.clearance(q, cap),
+        }
+        .unwrap_or(0.0)
     }
 
     fn check_discrete(&self, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real]) -> Result<(), Invalid> {
@@ -68,31 +73,33 @@ impl SpaceInfo {
 
     /// Like the discrete check, but computing each state's clearance (capped at the per-step
     /// displacement) and then certifying every interval between checked states.
-    fn check_certified(&self, a: &[Real], b: &[Real], n: usize, disp: Real, scratch: &mut [Real]) -> Result<(), Invalid> {
+    /// `motion`: clearances in units of the motion's parameter (then `disp` is 1).
+    fn check_certified(&self, a: &[Real], b: &[Real], n: usize, disp: Real, motion: bool, scratch: &mut [Real]) -> Result<(), Invalid> {
+        let m = motion.then_some((a, b));
         let cap = disp / n as Real;
         let mut clear = self.clearances.take();
         clear.clear();
         clear.resize(n + 1, 0.0);
         let outcome = (|| {
-            clear[n] = self.clearance_checked(b, cap);
+            clear[n] = self.clearance_checked(m, b, cap);
             if clear[n] == 0.0 {
                 scratch.copy_from_slice(b);
                 return Err(Invalid);
             }
             in_bisection_order(n, |i| {
                 self.interpolate(a, b, i as Real / n as Real, scratch);
-                clear[i] = self.clearance_checked(scratch, cap);
+                clear[i] = self.clearance_checked(m, scratch, cap);
                 if clear[i] == 0.0 {
                     Err(Invalid)
                 } else {
                     Ok(())
                 }
             })?;
-            clear[0] = self.clearance_checked(a, cap);
+            clear[0] = self.clearance_checked(m, a, cap);
             for i in 0..n {
                 if clear[i] + clear[i + 1] <= cap {
                     let (t0, t1) = (i as Real / n as Real, (i + 1) as Real / n as Real);
-                    self.certify(a, b, (t0, clear[i]), (t1, clear[i + 1]), disp, scratch, 0)?;
+                    self.certify(a, b, (t0, clear[i]), (t1, clear[i + 1]), disp, m, scratch, 0)?;
                 }
             }
             Ok(())
@@ -102,19 +109,19 @@ impl SpaceInfo {
     }
 
     #[allow(clippy::too_many_arguments)]
-    fn certify(&self, a: &[Real], b: &[Real], lo: (Real, Real), hi: (Real, Real), disp: Real, scratch: &mut [Real], depth: u32) -> Result<(), Invalid> {
+    fn certify(&self, a: &[Real], b: &[Real], lo: (Real, Real), hi: (Real, Real), disp: Real, m: Option<(&[Real], &[Real])>, scratch: &mut [Real], depth: u32) -> Result<(), Invalid> {
         let span = disp * (hi.0 - lo.0);
         if lo.1 + hi.1 > span {
             return Ok(());
         }
         let tm = 0.5 * (lo.0 + hi.0);
         self.interpolate(a, b, tm, scratch);
-        let cm = self.clearance_checked(scratch, span);
+        let cm = self.clearance_checked(m, scratch, span);
         if cm == 0.0 || depth >= MAX_DEPTH {
             return Err(Invalid);
         }
-        self.certify(a, b, lo, (tm, cm), disp, scratch, depth + 1)?;
-        self.certify(a, b, (tm, cm), hi, disp, scratch, depth + 1)
+        self.certify(a, b, lo, (tm, cm), disp, m, scratch, depth + 1)?;
+        self.certify(a, b, (tm, cm), hi, disp, m, scratch, depth + 1)
     }
 }
 
@@ -132,8 +139,10 @@ impl MotionValidator for SpaceInfo {
                 }
                 Ok(())
             }
+            // Clearances in units of the motion: every constraint closes at most at rate 1.
+            None if self.validity.has_motion_clearance() => self.check_certified(a, b, n, 1.0, true, scratch),
             None => match self.validity.displacement_bound(a, b) {
-                Some(disp) => self.check_certified(a, b, n, disp, scratch),
+                Some(disp) => self.check_certified(a, b, n, disp, false, scratch),
                 None => self.check_discrete(a, b, n, scratch),
             },
         }

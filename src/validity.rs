@@ -35,6 +35,15 @@ pub trait StateValidity {
     fn workspace(&self) -> Option<&Workspace> {
         None
     }
+    /// The clearance of `q` on the motion `a → b` in units of the motion's parameter, when the
+    /// robot bounds its parts' speeds per motion (see [`Robot::motion_clearance`]).
+    fn motion_clearance(&self, _a: &[Real], _b: &[Real], _q: &[Real], _cap: Real) -> Option<Real> {
+        None
+    }
+    /// Whether [`motion_clearance`](StateValidity::motion_clearance) is supported.
+    fn has_motion_clearance(&self) -> bool {
+        false
+    }
     /// The body's outline at `q` (closed polygons; none for a point).
     fn outline(&self, _q: &[Real]) -> Vec<Vec<Vec2>> {
         Vec::new()
@@ -87,6 +96,12 @@ impl StateValidity for RobotInWorkspace {
     }
     fn workspace(&self) -> Option<&Workspace> {
         Some(&self.workspace)
+    }
+    fn motion_clearance(&self, a: &[Real], b: &[Real], q: &[Real], cap: Real) -> Option<Real> {
+        self.robot.motion_clearance(&self.workspace, a, b, q, cap)
+    }
+    fn has_motion_clearance(&self) -> bool {
+        self.robot.has_motion_clearance()
     }
     fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>> {
         self.robot.outline(q)

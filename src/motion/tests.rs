@@ -73,3 +73,51 @@ fn bisection_order_visits_each_index_once_coarse_first() {
         }
     }
 }
+
+/// Whether the motion `a → b` is free by a dense check: states `step` apart in the motion's
+/// parameter (an approximation for the differential test below).
+fn dense_free(si: &SpaceInfo, a: &[Real], b: &[Real], steps: usize) -> bool {
+    let mut q = vec![0.0; a.len()];
+    (0..=steps).all(|i| {
+        si.interpolate(a, b, i as Real / steps as Real, &mut q);
+        si.is_valid(&q)
+    })
+}
+
+/// The arm's motion-unit certification and the older workspace-unit one agree on every motion a
+/// dense check calls free or blocked with margin (random short and long motions on the arm maps).
+#[test]
+fn arm_certification_in_motion_units_agrees_with_workspace_units() {
+    for name in ["technion-mp", "horn-10", "arm-3"] {
+        let p = Problem::from_scenario(&builtin(name).unwrap()).unwrap();
+        let si = &p.si;
+        let mut rng = crate::rng::Rng::new(11);
+        let n = si.dims();
+        let (mut a, mut b, mut s) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        let (mut tried, mut differ) = (0, Vec::new());
+        while tried < 400 {
+            si.sample(&mut rng, &mut a);
+            si.sample(&mut rng, &mut b);
+            if !si.is_valid(&a) {
+                continue;
+            }
+            let t = rng.uniform01() * 0.3;
+            let far = b.clone();
+            si.interpolate(&a, &far, t, &mut b);
+            tried += 1;
+            let d = si.distance(&a, &b);
+            let steps = si.validity.motion_steps(&a, &b, d, si.resolution).max(1);
+            let disp = si.validity.displacement_bound(&a, &b).unwrap();
+            let world = si.check_certified(&a, &b, steps, disp, false, &mut s).is_ok();
+            let motion = si.check_certified(&a, &b, steps, 1.0, true, &mut s).is_ok();
+            if world != motion {
+                differ.push((a.clone(), b.clone(), world, motion, dense_free(si, &a, &b, 20000)));
+            }
+        }
+        for (a, b, w, m, dense) in &differ {
+            eprintln!("{name}: world {w}, motion {m}, dense {dense}: {a:?} → {b:?}");
+        }
+        // Where they differ, the motion-unit verdict must be the dense check's.
+        assert!(differ.iter().all(|(.., m, dense)| m == dense), "{name}: {} disagreements", differ.len());
+    }
+}

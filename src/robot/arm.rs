@@ -7,10 +7,15 @@
 //! An optional `tip` continues the last link (OMPL's chain benchmark checks a 0.001 tip).
 //!
 //! Motions are certified with clearances: along a straight joint-space motion, a point at distance
-//! `R` from joint `i` moves at most `R·|Δqᵢ|` because of that joint, so no point of the arm moves
-//! more than `Σ |Δqᵢ|·Rᵢ`, with `Rᵢ` the reach beyond joint `i`. The clearance is the distance to
-//! obstacles and to the bounds, and half the distance between links (two links approach each other
-//! at most twice as fast).
+//! `R` from joint `i` moves at most `R·|Δqᵢ|` because of that joint. Per motion, each segment gets
+//! its own speed bound (joints before it only, each times the length from that joint to the
+//! segment's far end), and each pair of segments a bound on how fast they approach each other (the
+//! joints between them only). The motion clearance of a state is the smallest distance (to
+//! obstacles, to the bounds, between segments) divided by its bound: the fraction of the motion
+//! it takes to close. Two neighbouring links that barely turn relative to each other no longer
+//! force fine steps because the whole arm swings: on the 10-link horn, RRT-Connect's median checks
+//! fell from 24 254 to 3 904. (`clearance` without a motion keeps workspace units: the distance to
+//! obstacles and bounds, half the distance between links.)
 
 use super::{Robot, Verdict};
 use crate::geometry::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment, intersect_segment_segment};
@@ -36,6 +41,19 @@ pub struct ArmRobot {
     tip: Real,
     /// `reach[i]`: the arm's length beyond joint `i` (tip included).
     reach: Vec<Real>,
+    /// The rates of the latest motion certified (see [`ArmRobot::motion_rates`]).
+    rates: std::cell::RefCell<Option<MotionRates>>,
+}
+
+/// Speed bounds along one motion: per segment, and per pair of segments relative to each other.
+#[derive(Clone, Debug)]
+struct MotionRates {
+    a: Vec<Real>,
+    b: Vec<Real>,
+    seg: Vec<Real>,
+    /// `rel[i * segs + j]` for `i < j`.
+    rel: Vec<Real>,
+    segs: usize,
 }
 
 impl ArmRobot {
@@ -58,6 +76,7 @@ impl ArmRobot {
             metric,
             tip: *tip,
             reach,
+            rates: std::cell::RefCell::new(None),
         })
     }
 
@@ -92,6 +111,109 @@ impl ArmRobot {
             self.joint_points(q, &mut buf);
             f(&buf)
         }
+    }
+
+    /// Segment `k`'s length (the links, then the tip).
+    fn seg_len(&self, k: usize) -> Real {
+        self.links.get(k).copied().unwrap_or(self.tip)
+    }
+
+    /// How fast each segment, and each pair of segments relative to each other, can move along the
+    /// straight joint-space motion `a → b`, per unit of the motion's parameter `t ∈ [0, 1]`.
+    ///
+    /// A point of segment `k` at distance `r` from joint `m` (`m ≤ k`) moves at most `r·|Δq_m|`
+    /// because of that joint, and `r ≤ R(m, k)`, the length from joint `m` to segment `k`'s far
+    /// end: so segment `k` moves at most `Σ_{m ≤ k} |Δq_m|·R(m, k)`. Seen from segment `i`, segment
+    /// `j > i` moves only by the joints between them: at most `Σ_{i < m ≤ j} |Δq_m|·R(m, j)`. Two
+    /// links next to each other therefore close in only by their shared joint, however fast the
+    /// arm as a whole swings.
+    fn motion_rates(&self, a: &[Real], b: &[Real]) -> MotionRates {
+        let n = self.links.len();
+        let segs = self.point_count() - 1;
+        let dq: Vec<Real> = (0..n).map(|i| if self.limits[i].is_some() { (b[i] - a[i]).abs() } else { angle_diff(a[i], b[i]).abs() }).collect();
+        // reach_to[m][k] = R(m, k), built by prefix sums of the segment lengths.
+        let mut prefix = vec![0.0; segs + 1];
+        for k in 0..segs {
+            prefix[k + 1] = prefix[k] + self.seg_len(k);
+        }
+        let r = |m: usize, k: usize| prefix[k + 1] - prefix[m];
+        let joints_of = |k: usize| k.min(n - 1); // the tip turns with the last joint
+        let seg = (0..segs).map(|k| (0..=joints_of(k)).map(|m| dq[m] * r(m, k)).sum()).collect();
+        let mut rel = vec![0.0; segs * segs];
+        for i in 0..segs {
+            for j in i + 1..segs {
+                rel[i * segs + j] = (i + 1..=joints_of(j)).map(|m| dq[m] * r(m, j)).sum();
+            }
+        }
+        MotionRates { a: a.to_vec(), b: b.to_vec(), seg, rel, segs }
+    }
+
+    /// The clearance of state `q`, capped at `cap`: without `rates`, in workspace units (the
+    /// distance to obstacles and bounds, half the distance between links); with the rates of a
+    /// motion, in units of the motion's parameter (each distance divided by how fast it can
+    /// close), so motions whose links barely move relative to each other certify in few steps.
+    fn clearance_at(&self, ws: &Workspace, q: &[Real], cap: Real, rates: Option<&MotionRates>) -> Real {
+        if !self.within_limits(q) {
+            return 0.0;
+        }
+        let seg_rate = |k: usize| rates.map_or(1.0, |r| r.seg[k]);
+        let pair_rate = |i: usize, j: usize| rates.map_or(2.0, |r| r.rel[i * r.segs + j]);
+        // A distance over a rate, in the clearance's units (a constraint that cannot close: none).
+        let over = |dist: Real, rate: Real| if dist <= 0.0 { 0.0 } else if rate <= 0.0 { Real::INFINITY } else { dist / rate };
+        self.with_points(q, |pts| {
+            let b = ws.bounds;
+            let mut c = cap;
+            // The base never moves: only the other points can leave the bounds (the Technion base
+            // sits on the bounds' corner).
+            for (k, p) in pts.iter().enumerate().skip(1) {
+                let d = (p.x - b.min.x).min(b.max.x - p.x).min(p.y - b.min.y).min(b.max.y - p.y).max(0.0);
+                c = c.min(over(d, seg_rate(k - 1)));
+            }
+            for (k, w) in pts.windows(2).enumerate() {
+                if c == 0.0 {
+                    return 0.0;
+                }
+                let rate = seg_rate(k);
+                // Within this segment's reach of c: the capped distance, else only whether it meets.
+                let reach = if rate > 0.0 && c.is_finite() { c * rate } else { Real::MIN_POSITIVE };
+                c = c.min(over(ws.segment_clearance(w[0], w[1], reach), rate));
+            }
+            if self.self_collision {
+                let segs = pts.len() - 1;
+                for i in 0..segs {
+                    for j in i + 1..segs {
+                        let tip_pair = self.tip > 0.0 && j == segs - 1 && i == segs - 2;
+                        if tip_pair {
+                            continue; // the tip continues the last link by construction
+                        }
+                        let rate = pair_rate(i, j);
+                        let d = if j == i + 1 {
+                            // Adjacent links meet at their joint; they fold when either far end
+                            // reaches the other link.
+                            let (a, m, e) = (pts[i], pts[i + 1], pts[i + 2]);
+                            if contains_segment_point(m, e, a) || contains_segment_point(a, m, e) {
+                                0.0
+                            } else {
+                                distance2_point_segment(a, m, e).min(distance2_point_segment(e, a, m)).sqrt()
+                            }
+                        } else {
+                            // Broad phase: two links whose boxes are c·rate apart cannot lower c
+                            // (the result is the same; most pairs of a long chain are far apart).
+                            let (p, q, r, s) = (pts[i], pts[i + 1], pts[j], pts[j + 1]);
+                            let gx = (p.x.min(q.x) - r.x.max(s.x)).max(r.x.min(s.x) - p.x.max(q.x)).max(0.0);
+                            let gy = (p.y.min(q.y) - r.y.max(s.y)).max(r.y.min(s.y) - p.y.max(q.y)).max(0.0);
+                            let reach = c * rate;
+                            if gx * gx + gy * gy >= reach * reach && gx + gy > 0.0 {
+                                continue;
+                            }
+                            distance_segment_segment(p, q, r, s)
+                        };
+                        c = c.min(over(d, rate));
+                    }
+                }
+            }
+            c
+        })
     }
 
     fn within_limits(&self, q: &[Real]) -> bool {
@@ -155,57 +277,17 @@ impl Robot for ArmRobot {
         })
     }
     fn clearance(&self, ws: &Workspace, q: &[Real], cap: Real) -> Option<Real> {
-        if !self.within_limits(q) {
-            return Some(0.0);
+        Some(self.clearance_at(ws, q, cap, None))
+    }
+    fn has_motion_clearance(&self) -> bool {
+        true
+    }
+    fn motion_clearance(&self, ws: &Workspace, a: &[Real], b: &[Real], q: &[Real], cap: Real) -> Option<Real> {
+        let mut cache = self.rates.borrow_mut();
+        if cache.as_ref().is_none_or(|r| r.a != a || r.b != b) {
+            *cache = Some(self.motion_rates(a, b));
         }
-        Some(self.with_points(q, |pts| {
-            let b = ws.bounds;
-            let mut c = cap;
-            // The base never moves: only the other points can leave the bounds (the Technion base
-            // sits on the bounds' corner).
-            for p in &pts[1..] {
-                c = c.min((p.x - b.min.x).min(b.max.x - p.x).min(p.y - b.min.y).min(b.max.y - p.y).max(0.0));
-            }
-            for w in pts.windows(2) {
-                if c == 0.0 {
-                    return 0.0;
-                }
-                c = c.min(ws.segment_clearance(w[0], w[1], c));
-            }
-            if self.self_collision {
-                let segs = pts.len() - 1;
-                for i in 0..segs {
-                    for j in i + 1..segs {
-                        let tip_pair = self.tip > 0.0 && j == segs - 1 && i == segs - 2;
-                        if tip_pair {
-                            continue; // the tip continues the last link by construction
-                        }
-                        let d = if j == i + 1 {
-                            // Adjacent links meet at their joint; they fold when either far end
-                            // reaches the other link.
-                            let (a, m, e) = (pts[i], pts[i + 1], pts[i + 2]);
-                            if contains_segment_point(m, e, a) || contains_segment_point(a, m, e) {
-                                0.0
-                            } else {
-                                distance2_point_segment(a, m, e).min(distance2_point_segment(e, a, m)).sqrt()
-                            }
-                        } else {
-                            // Broad phase: two links whose boxes are 2c apart cannot lower c (the
-                            // result is the same; most pairs of a long chain are far apart).
-                            let (p, q, r, s) = (pts[i], pts[i + 1], pts[j], pts[j + 1]);
-                            let gx = (p.x.min(q.x) - r.x.max(s.x)).max(r.x.min(s.x) - p.x.max(q.x)).max(0.0);
-                            let gy = (p.y.min(q.y) - r.y.max(s.y)).max(r.y.min(s.y) - p.y.max(q.y)).max(0.0);
-                            if gx * gx + gy * gy >= 4.0 * c * c {
-                                continue;
-                            }
-                            distance_segment_segment(p, q, r, s)
-                        };
-                        c = c.min(0.5 * d);
-                    }
-                }
-            }
-            c
-        }))
+        Some(self.clearance_at(ws, q, cap, cache.as_ref()))
     }
     fn displacement_bound(&self, a: &[Real], b: &[Real]) -> Option<Real> {
         let mut d = 0.0;

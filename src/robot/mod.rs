@@ -82,6 +82,19 @@ pub trait Robot: std::fmt::Debug {
     fn clearance(&self, _ws: &Workspace, _q: &[Real], _cap: Real) -> Option<Real> {
         None
     }
+    /// The clearance of state `q` on the straight motion `a → b`, in units of the motion's
+    /// parameter `t ∈ [0, 1]` (each distance divided by a bound on how fast it can close along
+    /// this motion), capped at `cap`; 0 when `q` is invalid. Robots that bound their parts' speeds
+    /// separately (an arm: links near the base move less, neighbouring links barely move relative
+    /// to each other) certify motions with it instead of [`clearance`](Robot::clearance) and one
+    /// [`displacement_bound`](Robot::displacement_bound). `None`: not supported.
+    fn motion_clearance(&self, _ws: &Workspace, _a: &[Real], _b: &[Real], _q: &[Real], _cap: Real) -> Option<Real> {
+        None
+    }
+    /// Whether [`motion_clearance`](Robot::motion_clearance) is supported.
+    fn has_motion_clearance(&self) -> bool {
+        false
+    }
     /// A bound on how far any point of the body moves along the straight motion `a → b` (linear
     /// in the fraction travelled), used with [`clearance`](Robot::clearance) to certify motions.
     /// `None` when the robot has no clearance.
