@@ -26,6 +26,11 @@ pub struct KdTree {
     root: u32,
     next_rebuild: usize,
     stack: Vec<(u32, Real)>,
+    /// For metrics with an embedding (chain metrics): each point's, flat, `elen` per point, and
+    /// the query's (see [`StateSpace::embed`]).
+    elen: usize,
+    emb: Vec<Real>,
+    qemb: Vec<Real>,
 }
 
 impl KdTree {
@@ -51,9 +56,37 @@ impl KdTree {
         &self.pts[i * self.dims..(i + 1) * self.dims]
     }
 
+    /// The distance from the query `q` (embedded in `qemb` by [`Self::prepare`]) to point `i`.
+    #[inline]
+    fn dist(&self, space: &StateSpace, q: &[Real], i: usize) -> Real {
+        if self.elen > 0 {
+            space.embedded_distance(&self.qemb, &self.emb[i * self.elen..(i + 1) * self.elen])
+        } else {
+            space.distance(q, self.p(i))
+        }
+    }
+
+    /// Embed the query, for metrics that have an embedding.
+    fn prepare(&mut self, space: &StateSpace, q: &[Real]) {
+        if self.elen > 0 {
+            self.qemb.resize(self.elen, 0.0);
+            let mut e = std::mem::take(&mut self.qemb);
+            space.embed(q, &mut e);
+            self.qemb = e;
+        }
+    }
+
     /// Insert state `q` under `id`.
     pub fn add(&mut self, space: &StateSpace, q: &[Real], id: u32) {
         let n = self.ids.len();
+        if n == 0 {
+            self.elen = space.embedding_len();
+        }
+        if self.elen > 0 {
+            let at = self.emb.len();
+            self.emb.resize(at + self.elen, 0.0);
+            space.embed(q, &mut self.emb[at..]);
+        }
         self.pts.extend_from_slice(q);
         self.ids.push(id);
         self.lo.extend_from_slice(q);
@@ -141,6 +174,7 @@ impl KdTree {
 
     /// Like [`nearest`](Self::nearest), among the points whose id passes `keep`.
     pub fn nearest_where(&mut self, space: &StateSpace, q: &[Real], keep: impl Fn(u32) -> bool) -> Option<(u32, Real)> {
+        self.prepare(space, q);
         let mut best: Option<(u32, Real)> = None;
         let mut best_i = usize::MAX;
         let consider = |i: usize, dist: Real, best: &mut Option<(u32, Real)>, best_i: &mut usize| {
@@ -157,7 +191,7 @@ impl KdTree {
         if self.root == NONE {
             for i in 0..self.ids.len() {
                 if keep(self.ids[i]) {
-                    let dist = space.distance(q, self.p(i));
+                    let dist = self.dist(space, q, i);
                     consider(i, dist, &mut best, &mut best_i);
                 }
             }
@@ -174,7 +208,7 @@ impl KdTree {
                 }
             }
             if keep(self.ids[i]) {
-                let dist = space.distance(q, self.p(i));
+                let dist = self.dist(space, q, i);
                 consider(i, dist, &mut best, &mut best_i);
             }
             let s = self.split[i] as usize;
@@ -208,6 +242,7 @@ impl KdTree {
         if k == 0 {
             return Vec::new();
         }
+        self.prepare(space, q);
         // (distance, insertion index), kept sorted; the bound is the k-th distance once full.
         let mut found: Vec<(Real, usize)> = Vec::new();
         let bound = |found: &Vec<(Real, usize)>| if found.len() >= k { found[k - 1].0 } else { r };
@@ -221,7 +256,7 @@ impl KdTree {
         let d = self.dims;
         if self.root == NONE {
             for i in 0..self.ids.len() {
-                offer(space.distance(q, self.p(i)), i, &mut found);
+                offer(self.dist(space, q, i), i, &mut found);
             }
         } else {
             let mut stack = std::mem::take(&mut self.stack);
@@ -232,7 +267,7 @@ impl KdTree {
                     continue;
                 }
                 let i = node as usize;
-                offer(space.distance(q, self.p(i)), i, &mut found);
+                offer(self.dist(space, q, i), i, &mut found);
                 // Far side pushed first, so the near side is searched first and tightens the bound.
                 let s = self.split[i] as usize;
                 let (near, far) = if q[s] < self.pts[i * d + s] { (self.left[i], self.right[i]) } else { (self.right[i], self.left[i]) };

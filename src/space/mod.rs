@@ -87,6 +87,42 @@ impl StateSpace {
         }
     }
 
+    /// Numbers in a state's embedding (see [`embed`](Self::embed)): the chain metrics' link-end
+    /// points; 0 for metrics computed from the states directly.
+    pub fn embedding_len(&self) -> usize {
+        match &self.metric {
+            Metric::ChainSum { links } | Metric::ChainMax { links } => 2 * links.len(),
+            _ => 0,
+        }
+    }
+
+    /// Write `q`'s embedding into `out`: for a chain metric, the link-end points relative to the
+    /// base, computed exactly as [`chain_moves`] does, so that
+    /// [`embedded_distance`](Self::embedded_distance) of two embeddings equals
+    /// [`distance`](Self::distance) of the states bit for bit. Nearest-neighbour search embeds each
+    /// stored state once instead of redoing its forward kinematics at every comparison.
+    pub fn embed(&self, q: &[Real], out: &mut [Real]) {
+        if let Metric::ChainSum { links } | Metric::ChainMax { links } = &self.metric {
+            let (mut t, mut p) = (0.0, (0.0, 0.0));
+            for (i, l) in links.iter().enumerate() {
+                t += q[i];
+                p = (p.0 + l * libm::cos(t), p.1 + l * libm::sin(t));
+                out[2 * i] = p.0;
+                out[2 * i + 1] = p.1;
+            }
+        }
+    }
+
+    /// The distance between two states from their embeddings (chain metrics only).
+    #[inline]
+    pub fn embedded_distance(&self, ea: &[Real], eb: &[Real]) -> Real {
+        let moves = (0..ea.len() / 2).map(|k| ((ea[2 * k] - eb[2 * k]).powi(2) + (ea[2 * k + 1] - eb[2 * k + 1]).powi(2)).sqrt());
+        match &self.metric {
+            Metric::ChainMax { .. } => moves.fold(0.0, Real::max),
+            _ => moves.sum(),
+        }
+    }
+
     /// Write into `out` the state a fraction `t` of the way from `a` to `b`.
     #[inline]
     pub fn interpolate(&self, a: &[Real], b: &[Real], t: Real, out: &mut [Real]) {

@@ -49,3 +49,24 @@ fn max_extent_matches_ompl_ranges() {
     assert!((0.2 * r2.max_extent() - 0.2828).abs() < 1e-4);
     assert!((0.2 * se2(0.5).max_extent() - 0.597).abs() < 1e-3);
 }
+
+#[test]
+fn chain_embeddings_give_the_distance_bit_for_bit() {
+    let links = vec![0.1, 0.25, 0.05, 0.3, 0.1];
+    for metric in [Metric::ChainSum { links: links.clone() }, Metric::ChainMax { links: links.clone() }] {
+        let space = StateSpace { dims: vec![Dim { lo: -PI, hi: PI, wraps: true }; 5], metric };
+        assert_eq!(space.embedding_len(), 10);
+        let mut rng = crate::rng::Rng::new(3);
+        let (mut a, mut b) = (vec![0.0; 5], vec![0.0; 5]);
+        let (mut ea, mut eb) = (vec![0.0; 10], vec![0.0; 10]);
+        for _ in 0..1000 {
+            space.sample_uniform(&mut rng, &mut a);
+            space.sample_uniform(&mut rng, &mut b);
+            space.embed(&a, &mut ea);
+            space.embed(&b, &mut eb);
+            assert_eq!(space.embedded_distance(&ea, &eb).to_bits(), space.distance(&a, &b).to_bits());
+        }
+    }
+    let plane = StateSpace { dims: vec![Dim { lo: 0.0, hi: 1.0, wraps: false }; 2], metric: Metric::Euclidean };
+    assert_eq!(plane.embedding_len(), 0);
+}
