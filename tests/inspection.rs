@@ -21,24 +21,10 @@ use common::{cross, dist_point_segment, obstacle_polygon, P};
 
 // ---- an independent visibility model ---------------------------------------------------------
 
-/// Strictly inside (winding number), the boundary (within 1e-9) excluded.
+/// Strictly inside: the common checker's winding number, the boundary (within 1e-9) excluded.
 fn strictly_inside(poly: &[P], p: P) -> bool {
     let n = poly.len();
-    if (0..n).any(|i| dist_point_segment(p, poly[i], poly[(i + 1) % n]) <= 1e-9) {
-        return false;
-    }
-    let mut w = 0i32;
-    for i in 0..n {
-        let (a, b) = (poly[i], poly[(i + 1) % n]);
-        if a.1 <= p.1 {
-            if b.1 > p.1 && cross(a, b, p) > 0.0 {
-                w += 1;
-            }
-        } else if b.1 <= p.1 && cross(a, b, p) < 0.0 {
-            w -= 1;
-        }
-    }
-    w != 0
+    !(0..n).any(|i| dist_point_segment(p, poly[i], poly[(i + 1) % n]) <= 1e-9) && common::in_polygon(poly, p)
 }
 
 /// Whether the sight line a → b passes through the polygon's interior: cut it where it meets the

@@ -84,40 +84,38 @@ fn dense_free(si: &SpaceInfo, a: &[Real], b: &[Real], steps: usize) -> bool {
     })
 }
 
-/// The arm's motion-unit certification and the older workspace-unit one agree on every motion a
-/// dense check calls free or blocked with margin (random short and long motions on the arm maps).
+/// The arm's certification (in units of the motion) against a dense check: every motion it
+/// accepts is free at 20 000 states along it; every motion it refuses, it refuses at a state that
+/// is really invalid (even where the dense check stepped over it), except at most 1% of the free
+/// ones (a graze, where bisection reaches its depth).
+/// Random short and long motions on the arm maps, valid starts.
 #[test]
-fn arm_certification_in_motion_units_agrees_with_workspace_units() {
+fn arm_certification_agrees_with_a_dense_check() {
     for name in ["technion-mp", "horn-10", "arm-3"] {
         let p = Problem::from_scenario(&builtin(name).unwrap()).unwrap();
         let si = &p.si;
         let mut rng = crate::rng::Rng::new(11);
         let n = si.dims();
-        let (mut a, mut b, mut s) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
-        let (mut tried, mut differ) = (0, Vec::new());
+        let (mut a, mut b, mut far, mut s) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        let (mut tried, mut free, mut refused_free) = (0, 0, 0);
         while tried < 400 {
             si.sample(&mut rng, &mut a);
-            si.sample(&mut rng, &mut b);
+            si.sample(&mut rng, &mut far);
             if !si.is_valid(&a) {
                 continue;
             }
-            let t = rng.uniform01() * 0.3;
-            let far = b.clone();
-            si.interpolate(&a, &far, t, &mut b);
+            si.interpolate(&a, &far, rng.uniform01() * 0.3, &mut b);
             tried += 1;
-            let d = si.distance(&a, &b);
-            let steps = si.validity.motion_steps(&a, &b, d, si.resolution).max(1);
-            let disp = si.validity.displacement_bound(&a, &b).unwrap();
-            let world = si.check_certified(&a, &b, steps, disp, false, &mut s).is_ok();
-            let motion = si.check_certified(&a, &b, steps, 1.0, true, &mut s).is_ok();
-            if world != motion {
-                differ.push((a.clone(), b.clone(), world, motion, dense_free(si, &a, &b, 20000)));
-            }
+            let certified = si.check_motion(&a, &b, &mut s).is_ok();
+            let dense = dense_free(si, &a, &b, 20000);
+            assert!(!certified || dense, "{name}: certified a motion the dense check finds blocked: {a:?} → {b:?}");
+            free += usize::from(dense);
+            // A refusal names the state it found invalid: if that state is invalid, the dense
+            // check stepped over it (a wrapping joint passing a fold at ±π, a band of 1e-9).
+            let found_invalid = !certified && !si.is_valid(&s);
+            refused_free += usize::from(dense && !certified && !found_invalid);
         }
-        for (a, b, w, m, dense) in &differ {
-            eprintln!("{name}: world {w}, motion {m}, dense {dense}: {a:?} → {b:?}");
-        }
-        // Where they differ, the motion-unit verdict must be the dense check's.
-        assert!(differ.iter().all(|(.., m, dense)| m == dense), "{name}: {} disagreements", differ.len());
+        assert!(free > 40, "{name}: only {free} free motions drawn");
+        assert!(refused_free * 100 <= free, "{name}: {refused_free} of {free} free motions refused");
     }
 }

@@ -14,8 +14,7 @@
 //! obstacles, to the bounds, between segments) divided by its bound: the fraction of the motion
 //! it takes to close. Two neighbouring links that barely turn relative to each other no longer
 //! force fine steps because the whole arm swings: on the 10-link horn, RRT-Connect's median checks
-//! fell from 24 254 to 3 904. (`clearance` without a motion keeps workspace units: the distance to
-//! obstacles and bounds, half the distance between links.)
+//! fell from 24 254 (one displacement bound for the whole arm) to 3 904.
 
 use super::{Robot, Verdict};
 use crate::geometry::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment, intersect_segment_segment};
@@ -39,8 +38,6 @@ pub struct ArmRobot {
     self_collision: bool,
     metric: Metric,
     tip: Real,
-    /// `reach[i]`: the arm's length beyond joint `i` (tip included).
-    reach: Vec<Real>,
     /// The rates of the latest motion certified (see [`ArmRobot::motion_rates`]).
     rates: std::cell::RefCell<Option<MotionRates>>,
 }
@@ -67,7 +64,6 @@ impl ArmRobot {
             "max" => Metric::ChainMax { links: links.clone() },
             _ => Metric::ChainSum { links: links.clone() },
         };
-        let reach = (0..links.len()).map(|i| links[i..].iter().sum::<Real>() + tip).collect();
         Ok(ArmRobot {
             base: Vec2::new(base[0], base[1]),
             links: links.clone(),
@@ -75,7 +71,6 @@ impl ArmRobot {
             self_collision: *self_collision,
             metric,
             tip: *tip,
-            reach,
             rates: std::cell::RefCell::new(None),
         })
     }
@@ -131,7 +126,7 @@ impl ArmRobot {
         let n = self.links.len();
         let segs = self.point_count() - 1;
         let dq: Vec<Real> = (0..n).map(|i| if self.limits[i].is_some() { (b[i] - a[i]).abs() } else { angle_diff(a[i], b[i]).abs() }).collect();
-        // reach_to[m][k] = R(m, k), built by prefix sums of the segment lengths.
+        // R(m, k), by prefix sums of the segment lengths.
         let mut prefix = vec![0.0; segs + 1];
         for k in 0..segs {
             prefix[k + 1] = prefix[k] + self.seg_len(k);
@@ -148,16 +143,16 @@ impl ArmRobot {
         MotionRates { a: a.to_vec(), b: b.to_vec(), seg, rel, segs }
     }
 
-    /// The clearance of state `q`, capped at `cap`: without `rates`, in workspace units (the
-    /// distance to obstacles and bounds, half the distance between links); with the rates of a
-    /// motion, in units of the motion's parameter (each distance divided by how fast it can
-    /// close), so motions whose links barely move relative to each other certify in few steps.
-    fn clearance_at(&self, ws: &Workspace, q: &[Real], cap: Real, rates: Option<&MotionRates>) -> Real {
+    /// The clearance of state `q` on the motion whose `rates` are given, capped at `cap`, in units
+    /// of the motion's parameter: each distance (to obstacles, to the bounds, between segments)
+    /// divided by how fast it can close, so motions whose links barely move relative to each
+    /// other certify in few steps.
+    fn clearance_at(&self, ws: &Workspace, q: &[Real], cap: Real, rates: &MotionRates) -> Real {
         if !self.within_limits(q) {
             return 0.0;
         }
-        let seg_rate = |k: usize| rates.map_or(1.0, |r| r.seg[k]);
-        let pair_rate = |i: usize, j: usize| rates.map_or(2.0, |r| r.rel[i * r.segs + j]);
+        let seg_rate = |k: usize| rates.seg[k];
+        let pair_rate = |i: usize, j: usize| rates.rel[i * rates.segs + j];
         // A distance over a rate, in the clearance's units (a constraint that cannot close: none).
         let over = |dist: Real, rate: Real| if dist <= 0.0 { 0.0 } else if rate <= 0.0 { Real::INFINITY } else { dist / rate };
         self.with_points(q, |pts| {
@@ -276,9 +271,6 @@ impl Robot for ArmRobot {
             }
         })
     }
-    fn clearance(&self, ws: &Workspace, q: &[Real], cap: Real) -> Option<Real> {
-        Some(self.clearance_at(ws, q, cap, None))
-    }
     fn has_motion_clearance(&self) -> bool {
         true
     }
@@ -287,15 +279,7 @@ impl Robot for ArmRobot {
         if cache.as_ref().is_none_or(|r| r.a != a || r.b != b) {
             *cache = Some(self.motion_rates(a, b));
         }
-        Some(self.clearance_at(ws, q, cap, cache.as_ref()))
-    }
-    fn displacement_bound(&self, a: &[Real], b: &[Real]) -> Option<Real> {
-        let mut d = 0.0;
-        for i in 0..self.links.len() {
-            let dq = if self.limits[i].is_some() { b[i] - a[i] } else { angle_diff(a[i], b[i]) };
-            d += dq.abs() * self.reach[i];
-        }
-        Some(d)
+        Some(self.clearance_at(ws, q, cap, cache.as_ref().expect("rates just computed")))
     }
     fn project(&self, q: &[Real]) -> Vec2 {
         // The end effector (the last link's end).

@@ -23,7 +23,7 @@ fn on_segment(a: P, b: P, p: P) -> bool {
 }
 
 /// Winding number of `poly` around `p` (nonzero: inside), boundary counted as inside.
-fn in_polygon(poly: &[P], p: P) -> bool {
+pub fn in_polygon(poly: &[P], p: P) -> bool {
     let n = poly.len();
     let mut w = 0i32;
     for i in 0..n {

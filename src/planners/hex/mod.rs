@@ -189,19 +189,6 @@ impl HexPotential {
         })
     }
 
-    /// The robot's diagonal t.
-    pub fn t(&self) -> Real {
-        self.t
-    }
-    /// The decomposition so far.
-    pub fn decomposition(&self) -> &Decomposition {
-        &self.dec
-    }
-    /// The current region of influence.
-    pub fn region(&self) -> Region {
-        self.region
-    }
-
     fn start_point(&self) -> Vec2 {
         Vec2::new(self.start[0], self.start[1])
     }
