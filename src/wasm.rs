@@ -81,6 +81,17 @@ pub fn import_file(text: &str, name: &str) -> Result<String, JsError> {
     Ok(sc.to_json())
 }
 
+/// The benchmark page's set-up lines (`[label:] planner [--param value ...]`, one per line, the
+/// CLI's `--setup` syntax) as JSON `[{label, planner, params}]` (`params`: the values set); an
+/// error names the line. The same parser as the CLI's.
+#[wasm_bindgen]
+pub fn parse_setups(text: &str) -> Result<String, JsError> {
+    let setups = crate::run::bench::parse_setup_lines(text).map_err(|e| JsError::new(&e))?;
+    let list: Vec<serde_json::Value> =
+        setups.iter().map(|s| serde_json::json!({"label": s.label, "planner": s.spec.name, "params": s.params.values()})).collect();
+    Ok(serde_json::to_string(&list).expect("set-ups serialise"))
+}
+
 /// Benchmark results in one export format: `report_json` is a bench report (see
 /// `docs/benchmarks.md`: `{scenario, scenario_id, date, host, time_limit_s, runs, setups: [{label,
 /// planner, params, rows: [{seed, solved, status, time_ms, iterations, nodes, checks, cost,

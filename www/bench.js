@@ -4,9 +4,8 @@
 // `bench --csv/--json-file/--ompl-log`), so the table and the exports match the CLI's numbers.
 // Read-only state for tests is exposed as window.planarium.
 
-import init, { builtins as builtinsJson, planners as plannersJson, bench_export as benchExport } from './pkg/planarium.js';
+import init, { builtins as builtinsJson, planners as plannersJson, bench_export as benchExport, parse_setups as parseSetups } from './pkg/planarium.js';
 import { fillScenarioPicker } from './shared.js';
-import { parseParam } from './panel.js';
 import { boxPlot, successBars, scatter, stepLines } from './plots.js';
 import { downloadText } from './stage.js';
 
@@ -28,38 +27,6 @@ let curves = [];   // per set-up, RRT*'s best cost against time per run: [[[ms, 
 function showError(text) {
   ui.error.textContent = text;
   ui.error.hidden = !text;
-}
-
-/** Parse the set-ups box: one `label: planner --param value ...` per line (the CLI's --setup). */
-export function parseSetups(text, reg) {
-  const setups = [];
-  text.split('\n').forEach((raw, i) => {
-    const line = raw.trim();
-    if (!line || line.startsWith('#')) return;
-    const at = `set-up line ${i + 1}`;
-    const m = /^([^:]+):\s*(.*)$/.exec(line);
-    const [label, rest] = m && !m[1].includes('--') ? [m[1].trim(), m[2]] : [null, line];
-    const words = rest.split(/\s+/).filter(Boolean);
-    const planner = words.shift();
-    const spec = reg.planners.find((p) => p.name === planner);
-    if (!spec) throw new Error(`${at}: unknown planner "${planner ?? ''}" (known: ${reg.planners.map((p) => p.name).join(', ')})`);
-    const all = [...spec.params, ...spec.groups.flatMap((g) => g.params), ...reg.run_params];
-    const params = {};
-    while (words.length) {
-      const flag = words.shift();
-      if (!flag.startsWith('--')) throw new Error(`${at}: expected --param, found "${flag}"`);
-      const name = flag.slice(2).replaceAll('-', '_');
-      const p = all.find((s) => s.name === name);
-      if (!p) throw new Error(`${at}: ${flag} is not a parameter of ${planner}`);
-      if (!words.length) throw new Error(`${at}: ${flag} needs a value`);
-      const v = parseParam(p, words.shift());
-      if (!v.ok) throw new Error(`${at}: ${flag} must be ${v.why}`);
-      params[name] = v.value;
-    }
-    setups.push({ label: label ?? planner, planner, params });
-  });
-  if (!setups.length) throw new Error('no set-up: write one per line, e.g. "rrt-connect" or "biased: rrt --goal-bias 0.2"');
-  return setups;
 }
 
 function newWorker() {
@@ -129,9 +96,10 @@ function start() {
   showError('');
   let setups;
   try {
-    setups = parseSetups(ui.setups.value, registry);
+    // The core's parser, the CLI's --setup syntax: errors name the line.
+    setups = JSON.parse(parseSetups(ui.setups.value));
   } catch (e) {
-    showError(e.message);
+    showError(String(e?.message ?? e));
     return;
   }
   const runs = Math.max(1, Math.min(10000, Math.floor(Number(ui.runs.value) || 1)));

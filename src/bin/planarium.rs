@@ -198,25 +198,10 @@ fn run_bench(m: &ArgMatches) -> Result<(), String> {
         Some(v) => v.cloned().collect(),
         None => m.get_one::<String>("planners").unwrap().split(',').map(str::trim).filter(|s| !s.is_empty()).map(String::from).collect(),
     };
-    for setup in &setups {
-        let (label, rest) = match setup.split_once(':') {
-            Some((l, r)) => (Some(l.trim()), r),
-            None => (None, setup.as_str()),
-        };
-        let mut words = rest.split_whitespace();
-        let name = words.next().ok_or_else(|| format!("--setup \"{setup}\": no planner name"))?;
-        let spec = find_planner(name)?;
-        let mut params = params_for(spec, &sc, m)?;
-        while let Some(flag) = words.next() {
-            let key = flag.strip_prefix("--").ok_or_else(|| format!("--setup \"{setup}\": expected --param, found \"{flag}\""))?.replace('-', "_");
-            let value = words.next().ok_or_else(|| format!("--setup \"{setup}\": {flag} needs a value"))?;
-            if spec.param(&key).is_none() {
-                return Err(format!("--setup \"{setup}\": {flag} is not a parameter of {}", spec.name));
-            }
-            params.set_text(spec, &key, value).map_err(|e| format!("--setup \"{setup}\": {e}"))?;
-        }
-        let mut row = bench::bench_planner(&sc, spec.name, &params, runs)?;
-        row.label = label.map_or_else(|| rest.trim().to_string(), String::from);
+    for text in &setups {
+        let setup = bench::parse_setup(text, |spec| params_for(spec, &sc, m)).map_err(|e| format!("--setup \"{text}\": {e}"))?;
+        let mut row = bench::bench_planner(&sc, setup.spec.name, &setup.params, runs)?;
+        row.label = setup.label;
         eprintln!("{}: {:.0}% solved, median {:.0} checks", row.label, row.summary.success_rate * 100.0, row.summary.checks.median);
         rows.push(row);
     }

@@ -5,7 +5,7 @@
 
 use super::export::{RunRow, SetupSummary};
 use super::{RunConfig, Session, Stats};
-use crate::planners::Params;
+use crate::planners::{self, Params, PlannerSpec};
 use crate::problem::Problem;
 use crate::scenario::{Scenario, ScenarioError};
 use crate::status::Status;
@@ -59,6 +59,68 @@ pub struct PlannerBench {
     pub statuses: Vec<Status>,
     /// The set-up's planning time limit, seconds (its `time_limit` parameter or the default).
     pub time_limit_s: f64,
+}
+
+/// A planner set-up as the CLI's `--setup` and the benchmark page's lines write it:
+/// `[label:] planner [--param value ...]` (flags in the CLI's spelling, `--goal-bias 0.2`).
+#[derive(Clone)]
+pub struct Setup {
+    /// The label (without one: the set-up's text after the label, e.g. `rrt --goal-bias 0.2`).
+    pub label: String,
+    /// The planner.
+    pub spec: &'static PlannerSpec,
+    /// Its parameters: `base(spec)` with the set-up's values on top.
+    pub params: Params,
+}
+
+impl std::fmt::Debug for Setup {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Setup").field("label", &self.label).field("planner", &self.spec.name).field("params", &self.params.values()).finish()
+    }
+}
+
+/// Parse one set-up; `base` gives the parameters the set-up's values go on top of (the CLI: the
+/// scenario's planner block and the command's flags; the page: the defaults). Errors say what is
+/// wrong, without saying where (the caller adds the `--setup` or the line).
+pub fn parse_setup(text: &str, base: impl Fn(&'static PlannerSpec) -> Result<Params, String>) -> Result<Setup, String> {
+    let (label, rest) = match text.split_once(':') {
+        Some((l, r)) if !l.contains("--") => (Some(l.trim()), r),
+        _ => (None, text),
+    };
+    let mut words = rest.split_whitespace();
+    let name = words.next().ok_or("no planner name")?;
+    let spec = planners::find(name).ok_or_else(|| format!("unknown planner \"{name}\" (known: {})", planners::names().join(", ")))?;
+    let mut params = base(spec)?;
+    while let Some(flag) = words.next() {
+        let key = flag.strip_prefix("--").ok_or_else(|| format!("expected --param, found \"{flag}\""))?.replace('-', "_");
+        let value = words.next().ok_or_else(|| format!("{flag} needs a value"))?;
+        if spec.param(&key).is_none() {
+            return Err(format!("{flag} is not a parameter of {}", spec.name));
+        }
+        params.set_text(spec, &key, value)?;
+    }
+    let label = match label {
+        Some(l) if !l.is_empty() => l.to_string(),
+        _ => rest.trim().to_string(),
+    };
+    Ok(Setup { label, spec, params })
+}
+
+/// Parse the page's set-up lines (one per line; blank lines and `#` comments skipped) on top of
+/// each planner's defaults; an error names its line (`set-up line 2: ...`).
+pub fn parse_setup_lines(text: &str) -> Result<Vec<Setup>, String> {
+    let mut out = Vec::new();
+    for (i, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        out.push(parse_setup(line, |spec| Ok(Params::defaults(spec))).map_err(|e| format!("set-up line {}: {e}", i + 1))?);
+    }
+    if out.is_empty() {
+        return Err("no set-up: write one per line, e.g. \"rrt-connect\" or \"biased: rrt --goal-bias 0.2\"".into());
+    }
+    Ok(out)
 }
 
 /// Run `planner` with `params` on `scenario` for seeds `1..=runs`.

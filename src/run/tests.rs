@@ -61,3 +61,23 @@ fn bench_summary_statistics() {
     assert_eq!((m.median, m.mean, m.n), (2.5, 2.5, 4));
     assert!((m.std - 1.2909944487358056).abs() < 1e-12);
 }
+
+#[test]
+fn set_ups_parse_the_same_for_the_cli_and_the_page() {
+    use super::bench::{parse_setup, parse_setup_lines};
+    let base = |spec| Ok(crate::planners::Params::defaults(spec));
+    let s = parse_setup("biased: rrt --goal-bias 0.2 --extend connect", base).unwrap();
+    assert_eq!((s.label.as_str(), s.spec.name), ("biased", "rrt"));
+    assert_eq!((s.params.real("goal_bias"), s.params.choice("extend")), (0.2, "connect"));
+    // Without a label: the set-up's text.
+    assert_eq!(parse_setup("rrt --goal-bias 0.2", base).unwrap().label, "rrt --goal-bias 0.2");
+    assert_eq!(parse_setup("  rrt-connect ", base).unwrap().label, "rrt-connect");
+    assert!(parse_setup("rrt --goal-bais 0.2", base).unwrap_err().contains("--goal-bais is not a parameter of rrt"));
+    assert!(parse_setup("rrt --goal-bias", base).unwrap_err().contains("needs a value"));
+    assert!(parse_setup("rrt --goal-bias 7", base).is_err(), "out of range");
+    assert!(parse_setup("rrrt", base).unwrap_err().contains("unknown planner"));
+    let lines = parse_setup_lines("# a comment\nrrt-connect\n\nrrt --goal-bais 1").unwrap_err();
+    assert!(lines.starts_with("set-up line 4: "), "{lines}");
+    assert_eq!(parse_setup_lines("a: rrt\nb: rrt-star").unwrap().len(), 2);
+    assert!(parse_setup_lines("\n# nothing\n").is_err());
+}
