@@ -11,7 +11,9 @@
 import init, { Run, install_panic_hook, last_panic } from './pkg/planarium.js';
 import { EventKind, STRIDE } from './events.js';
 
-const BATCH_MS = 50; // a batch of planning between looks at the message queue is not needed here
+// The run goes to its end in one loop (the page cancels by terminating the worker); batches of this
+// many ms only bound each wasm call. An RRT* cost curve reads its COST events every 10 ms instead.
+const BATCH_MS = 50;
 
 const ready = init().then(() => {
   install_panic_hook();

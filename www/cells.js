@@ -18,7 +18,7 @@
 
 import { EventKind } from './events.js';
 import { PALETTE, STYLE } from './palette.js';
-import { drawObstacle } from './layout.js';
+import { drawObstacle, pointInPolygon } from './layout.js';
 
 const BIG = 20000;     // above this many cells, full redraws happen at most every…
 const BIG_MS = 250;    // …this many ms
@@ -125,7 +125,7 @@ export class CellMirror {
       const c = this.cells.get(this.order[k]);
       const [x0, y0, x1, y1] = c.box;
       if (x < x0 || x > x1 || y < y0 || y > y1) continue;
-      if (inside(c.pts, x, y)) return c;
+      if (pointInPolygon(x, y, c.pts)) return c;
     }
     return null;
   }
@@ -142,14 +142,6 @@ export class CellMirror {
 }
 
 /** Even-odd point-in-polygon over flat [x, y, ...]. */
-function inside(p, x, y) {
-  let hit = false;
-  for (let i = 0, j = p.length - 2; i < p.length; j = i, i += 2) {
-    const yi = p[i + 1], yj = p[j + 1];
-    if ((yi > y) !== (yj > y) && x < ((p[j] - p[i]) * (y - yi)) / (yj - yi) + p[i]) hit = !hit;
-  }
-  return hit;
-}
 
 /** A number for the hover text. */
 export function fmt(v) {
@@ -423,7 +415,7 @@ export class CellsDrawing {
 
 /** A cell's centre as drawn: the record's, or its outline's mean when that lies outside. */
 function centreOf(c) {
-  if (inside(c.pts, c.x, c.y)) return [c.x, c.y];
+  if (pointInPolygon(c.x, c.y, c.pts)) return [c.x, c.y];
   let x = 0, y = 0;
   for (let i = 0; i < c.pts.length; i += 2) { x += c.pts[i]; y += c.pts[i + 1]; }
   return [x / (c.pts.length / 2), y / (c.pts.length / 2)];

@@ -13,7 +13,7 @@ import { Chart } from './chart.js';
 import { Lane } from './lane.js';
 import { createStats } from './stats.js';
 import { createOverlays } from './overlays.js';
-import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox } from './shared.js';
+import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend } from './shared.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
@@ -232,15 +232,7 @@ function syncButtons() {
 controller.onChange(() => { syncButtons(); sides.forEach(updateStats); });
 
 function buildLegend() {
-  ui.legend.replaceChildren(...sides[0].view.legend().map(({ label, color, shape }) => {
-    const li = document.createElement('li');
-    const sw = document.createElement('span');
-    sw.className = `swatch ${shape}`;
-    sw.style.setProperty('--c', color);
-    sw.setAttribute('aria-hidden', 'true');
-    li.append(sw, document.createTextNode(label));
-    return li;
-  }));
+  fillLegend(ui.legend, sides[0].view.legend());
 }
 
 // Inputs

@@ -5,6 +5,7 @@
 // invalid start or goal is reported there, and dragging back fixes it).
 
 import { el } from './dom.js';
+import { pointInPolygon } from './layout.js';
 
 const HIT = 10; // css px: how near a start/goal dot or handle a press must be
 
@@ -12,15 +13,6 @@ const HIT = 10; // css px: how near a start/goal dot or handle a press must be
 function tidy(v, extent) {
   const step = 10 ** (Math.floor(Math.log10(Math.max(extent, 1e-9))) - 4);
   return Number((Math.round(v / step) * step).toFixed(12));
-}
-
-function pointInPolygon(x, y, p) {
-  let inside = false;
-  for (let i = 0, j = p.length - 2; i < p.length; j = i, i += 2) {
-    const xi = p[i], yi = p[i + 1], xj = p[j], yj = p[j + 1];
-    if ((yi > y) !== (yj > y) && x < ((xj - xi) * (y - yi)) / (yj - yi) + xi) inside = !inside;
-  }
-  return inside;
 }
 
 export class Editor {

@@ -4,6 +4,7 @@
 // SVG is built with DOM calls and serialised.
 
 import { PALETTE } from './palette.js';
+import { downloadBlob } from './stage.js';
 
 const SVG_NS = 'http://www.w3.org/2000/svg';
 
@@ -166,16 +167,6 @@ export function recordCanvas(canvas, fps = 30) {
   };
 }
 
-/** Save a Blob under `name` (a download). */
-function saveBlob(blob, name) {
-  const url = URL.createObjectURL(blob);
-  const a = document.createElement('a');
-  a.href = url;
-  a.download = name;
-  a.click();
-  setTimeout(() => URL.revokeObjectURL(url), 1000);
-}
-
 /**
  * Wire the page's export controls (#png-width, #export-png, #export-svg, #record, #export-status)
  * to `view` and its `canvas`; `stem()` names the files.
@@ -187,13 +178,13 @@ export function wireExports({ view, canvas, stem }) {
   $('export-png').addEventListener('click', async () => {
     const width = Math.max(100, Math.min(8000, Math.round(Number($('png-width').value) || 1600)));
     try {
-      saveBlob(await pngBlob(view, width), `${stem()}-${width}.png`);
+      downloadBlob(await pngBlob(view, width), `${stem()}-${width}.png`);
       say(`PNG, ${width} px wide`);
     } catch (e) { say(String(e.message ?? e)); }
   });
   $('export-svg').addEventListener('click', () => {
     try {
-      saveBlob(new Blob([sceneSvg(view)], { type: 'image/svg+xml' }), `${stem()}.svg`);
+      downloadBlob(new Blob([sceneSvg(view)], { type: 'image/svg+xml' }), `${stem()}.svg`);
       say('SVG of the current picture');
     } catch (e) { say(String(e.message ?? e)); }
   });
@@ -207,7 +198,7 @@ export function wireExports({ view, canvas, stem }) {
       recording = null;
       record.textContent = 'Record WebM';
       record.setAttribute('aria-pressed', 'false');
-      saveBlob(blob, `${stem()}.webm`);
+      downloadBlob(blob, `${stem()}.webm`);
       say(`WebM, ${(blob.size / 1024).toFixed(0)} kB`);
       return;
     }

@@ -155,3 +155,13 @@ export function drawPolyline(ctx, L, pts, color, width, dash = []) {
   ctx.setLineDash([]);
   ctx.lineCap = 'butt';
 }
+
+/** Whether (x, y) is inside the polygon of flat corners [x, y, x, y, ...] (even-odd rule). */
+export function pointInPolygon(x, y, p) {
+  let inside = false;
+  for (let i = 0, j = p.length - 2; i < p.length; j = i, i += 2) {
+    const xi = p[i], yi = p[i + 1], xj = p[j], yj = p[j + 1];
+    if ((yi > y) !== (yj > y) && x < ((xj - xi) * (y - yi)) / (yj - yi) + xi) inside = !inside;
+  }
+  return inside;
+}

@@ -20,7 +20,7 @@ import { Player } from './player.js';
 import { createStats } from './stats.js';
 import { createOverlays } from './overlays.js';
 import { cellLegend, cellSummary } from './cells.js';
-import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox } from './shared.js';
+import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend } from './shared.js';
 import { readShare, setupFor, writeShare, VIEW_DEFAULTS } from './share.js';
 import { OVERLAYS } from './palette.js';
 
@@ -358,16 +358,7 @@ controller.onChange(() => { syncButtons(); updateStats(); });
 
 function buildLegend() {
   const name = panel?.planner()?.name;
-  const items = [...view.legend(name), ...cellLegend(name)];
-  ui.legend.replaceChildren(...items.map(({ label, color, shape }) => {
-    const li = document.createElement('li');
-    const sw = document.createElement('span');
-    sw.className = `swatch ${shape}`;
-    sw.style.setProperty('--c', color);
-    sw.setAttribute('aria-hidden', 'true');
-    li.append(sw, document.createTextNode(label));
-    return li;
-  }));
+  fillLegend(ui.legend, [...view.legend(name), ...cellLegend(name)]);
 }
 
 // Start / goal editing and the solution file

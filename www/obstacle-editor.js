@@ -10,18 +10,10 @@
 
 import { el } from './dom.js';
 import { PALETTE } from './palette.js';
+import { pointInPolygon } from './layout.js';
 
 const HANDLE = 6; // css px: handle half-size and grab distance
 const MIN = 1e-3; // the smallest rectangle side or circle radius, as a fraction of the scene
-
-function inPolygon(x, y, pts) {
-  let inside = false;
-  for (let i = 0, j = pts.length - 1; i < pts.length; j = i++) {
-    const [xi, yi] = pts[i], [xj, yj] = pts[j];
-    if ((yi > y) !== (yj > y) && x < ((xj - xi) * (y - yi)) / (yj - yi) + xi) inside = !inside;
-  }
-  return inside;
-}
 
 /** The handles of obstacle `ob`: [[x, y], ...] in world units. */
 function handles(ob) {
@@ -36,7 +28,7 @@ function handles(ob) {
 function inside(ob, x, y, tol) {
   if (ob.rect) { const [a, b, c, d] = ob.rect; return x >= Math.min(a, c) && x <= Math.max(a, c) && y >= Math.min(b, d) && y <= Math.max(b, d); }
   if (ob.circle) { const [cx, cy, r] = ob.circle; return Math.hypot(x - cx, y - cy) <= r; }
-  if (ob.polygon) return inPolygon(x, y, ob.polygon);
+  if (ob.polygon) return pointInPolygon(x, y, ob.polygon.flat());
   if (ob.segment) {
     const [a, b, c, d] = ob.segment;
     const dx = c - a, dy = d - b, len2 = dx * dx + dy * dy || 1;

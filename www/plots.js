@@ -81,7 +81,7 @@ export function boxPlot(canvas, title, unit, groups) {
   const { ctx } = g;
   const all = groups.flatMap((s) => s.values).filter(Number.isFinite);
   if (!all.length) { ctx.fillText('no data', g.pad.l, g.h / 2); return; }
-  const y = yAxis(ctx, g, Math.min(...all), Math.max(...all), unit);
+  const y = yAxis(ctx, g, ...extent(all), unit);
   const slot = (g.w - g.pad.l - g.pad.r) / groups.length;
   const x = (i) => g.pad.l + slot * (i + 0.5);
   const bw = Math.min(40, slot * 0.5);
@@ -121,19 +121,41 @@ export function successBars(canvas, title, bars) {
   xLabels(ctx, g, bars.map((b) => b.label), x);
 }
 
+/** The extent of `vals` without spreading them into a call (curves can hold many points). */
+function extent(vals) {
+  return vals.reduce(([lo, hi], v) => [Math.min(lo, v), Math.max(hi, v)], [Infinity, -Infinity]);
+}
+
+/** Axes for points [[x, y], ...]: y as yAxis draws it, x from 0 (or below) to the largest x. */
+function xyAxes(ctx, g, pts, xUnit, yUnit) {
+  const [ylo, yhi] = extent(pts.map((p) => p[1]));
+  const y = yAxis(ctx, g, ylo, yhi, yUnit);
+  const [xlo, xhi] = extent(pts.map((p) => p[0]));
+  const xs = ticks(Math.min(0, xlo), xhi);
+  const [a, b] = [xs[0], xs[xs.length - 1]];
+  const x = (v) => g.pad.l + ((v - a) / (b - a)) * (g.w - g.pad.l - g.pad.r);
+  ctx.fillStyle = '#444'; ctx.textAlign = 'center';
+  for (const t of xs) ctx.fillText(short(t), x(t), g.h - g.pad.b + 14);
+  ctx.fillText(xUnit, (g.w + g.pad.l) / 2, g.h - 6);
+  return { x, y };
+}
+
+/** The key: each series' label after its mark (`marks` alternate, so colour is not alone). */
+function seriesKey(ctx, g, series, marks) {
+  ctx.textAlign = 'left';
+  series.forEach((s, i) => {
+    ctx.fillStyle = SERIES[i % SERIES.length];
+    ctx.fillText(`${marks[i % 2]} ${s.label}`, g.pad.l + 4 + (i % 3) * 110, g.pad.t + 12 + Math.floor(i / 3) * 13);
+  });
+}
+
 /** Cost against time: `series` [{label, points: [[time, cost], ...]}], one dot per solved run. */
 export function scatter(canvas, title, xUnit, yUnit, series) {
   const g = setup(canvas, title);
   const { ctx } = g;
   const pts = series.flatMap((s) => s.points);
   if (!pts.length) { ctx.fillText('no solved runs', g.pad.l, g.h / 2); return; }
-  const y = yAxis(ctx, g, Math.min(...pts.map((p) => p[1])), Math.max(...pts.map((p) => p[1])), yUnit);
-  const xs = ticks(Math.min(0, ...pts.map((p) => p[0])), Math.max(...pts.map((p) => p[0])));
-  const [a, b] = [xs[0], xs[xs.length - 1]];
-  const x = (v) => g.pad.l + ((v - a) / (b - a)) * (g.w - g.pad.l - g.pad.r);
-  ctx.fillStyle = '#444'; ctx.textAlign = 'center';
-  for (const t of xs) ctx.fillText(short(t), x(t), g.h - g.pad.b + 14);
-  ctx.fillText(xUnit, (g.w + g.pad.l) / 2, g.h - 6);
+  const { x, y } = xyAxes(ctx, g, pts, xUnit, yUnit);
   series.forEach((s, i) => {
     ctx.fillStyle = SERIES[i % SERIES.length];
     for (const [t, c] of s.points) {
@@ -142,11 +164,7 @@ export function scatter(canvas, title, xUnit, yUnit, series) {
       ctx.fill();
     }
   });
-  ctx.textAlign = 'left';
-  series.forEach((s, i) => {
-    ctx.fillStyle = SERIES[i % SERIES.length];
-    ctx.fillText(`${i % 2 ? '■' : '●'} ${s.label}`, g.pad.l + 4 + (i % 3) * 110, g.pad.t + 12 + Math.floor(i / 3) * 13);
-  });
+  seriesKey(ctx, g, series, ['●', '■']);
 }
 
 /** Step lines: `series` [{label, lines: [[[x, y], ...], ...]}] (each line one run), by series colour. */
@@ -155,13 +173,7 @@ export function stepLines(canvas, title, xUnit, yUnit, series) {
   const { ctx } = g;
   const pts = series.flatMap((s) => s.lines.flat());
   if (!pts.length) { ctx.fillText('no data', g.pad.l, g.h / 2); return; }
-  const y = yAxis(ctx, g, Math.min(...pts.map((p) => p[1])), Math.max(...pts.map((p) => p[1])), yUnit);
-  const xs = ticks(0, Math.max(...pts.map((p) => p[0])));
-  const [a, b] = [xs[0], xs[xs.length - 1]];
-  const x = (v) => g.pad.l + ((v - a) / (b - a)) * (g.w - g.pad.l - g.pad.r);
-  ctx.fillStyle = '#444'; ctx.textAlign = 'center';
-  for (const t of xs) ctx.fillText(short(t), x(t), g.h - g.pad.b + 14);
-  ctx.fillText(xUnit, (g.w + g.pad.l) / 2, g.h - 6);
+  const { x, y } = xyAxes(ctx, g, pts, xUnit, yUnit);
   series.forEach((s, i) => {
     ctx.strokeStyle = SERIES[i % SERIES.length];
     ctx.globalAlpha = 0.55;
@@ -178,9 +190,5 @@ export function stepLines(canvas, title, xUnit, yUnit, series) {
   });
   ctx.globalAlpha = 1;
   ctx.setLineDash([]);
-  ctx.textAlign = 'left';
-  series.forEach((s, i) => {
-    ctx.fillStyle = SERIES[i % SERIES.length];
-    ctx.fillText(`${i % 2 ? '┄' : '—'} ${s.label}`, g.pad.l + 4 + (i % 3) * 110, g.pad.t + 12 + Math.floor(i / 3) * 13);
-  });
+  seriesKey(ctx, g, series, ['—', '┄']);
 }

@@ -70,6 +70,19 @@ export function fillScenarioPicker(select, builtins) {
   return first;
 }
 
+/** Fill the legend list `ul` with items [{label, color, shape}] (a swatch and its words). */
+export function fillLegend(ul, items) {
+  ul.replaceChildren(...items.map(({ label, color, shape }) => {
+    const li = document.createElement('li');
+    const sw = document.createElement('span');
+    sw.className = `swatch ${shape}`;
+    sw.style.setProperty('--c', color);
+    sw.setAttribute('aria-hidden', 'true');
+    li.append(sw, document.createTextNode(label));
+    return li;
+  }));
+}
+
 /** The page's error box: `show(text)` (as text, never HTML) and `clear()`. */
 export function errorBox(box, textEl) {
   return {

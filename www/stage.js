@@ -40,7 +40,12 @@ export function fitViews(stage, view, cspace) {
 
 /** Offer `text` as a file download named `name`. */
 export function downloadText(text, name) {
-  const url = URL.createObjectURL(new Blob([text], { type: 'text/plain' }));
+  downloadBlob(new Blob([text], { type: 'text/plain' }), name);
+}
+
+/** Offer `blob` as a file download named `name`. */
+export function downloadBlob(blob, name) {
+  const url = URL.createObjectURL(blob);
   const a = document.createElement('a');
   a.href = url;
   a.download = name;
