@@ -1,5 +1,9 @@
-// Builds the core to WebAssembly for the page and the worker: www/pkg/ (wasm-pack, --target web).
-import { execSync } from 'node:child_process';
+// Builds the core to WebAssembly for the page and the worker: www/pkg/ (wasm-pack, --target web),
+// then optimises the module with binaryen's wasm-opt -O3 from npm (node_modules/.bin).
+// wasm-pack's own wasm-opt step stays off (Cargo.toml): it would fetch a binaryen release from GitHub.
+// PLANARIUM_WASM_OPT=0 skips the optimisation for a quicker build while developing.
+import { execFileSync, execSync } from 'node:child_process';
+import { existsSync, statSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
@@ -9,3 +13,20 @@ if (!process.env.PATH.split(':').includes(cargoBin)) process.env.PATH = `${cargo
 const cmd = 'wasm-pack build --target web --release --out-dir www/pkg --no-typescript --no-pack -- --no-default-features';
 console.log(`[build] ${cmd}`);
 execSync(cmd, { stdio: 'inherit', cwd: root });
+
+const wasm = join(root, 'www', 'pkg', 'planarium_bg.wasm');
+const wasmOpt = join(root, 'node_modules', '.bin', 'wasm-opt');
+// Exactly the features rustc enables by default for wasm32-unknown-unknown, so that wasm-opt
+// accepts the module and never introduces an instruction a browser of that generation lacks.
+const features = ['sign-ext', 'mutable-globals', 'nontrapping-float-to-int', 'bulk-memory', 'reference-types', 'multivalue'];
+if (process.env.PLANARIUM_WASM_OPT === '0') {
+  console.log('[build] PLANARIUM_WASM_OPT=0: wasm-opt skipped');
+} else if (!existsSync(wasmOpt)) {
+  console.log('[build] node_modules/.bin/wasm-opt is missing (node scripts/setup.mjs installs it): wasm-opt skipped');
+} else {
+  const before = statSync(wasm).size;
+  const args = ['-O3', ...features.map((f) => `--enable-${f}`), wasm, '-o', wasm];
+  console.log(`[build] wasm-opt ${args.join(' ')}`);
+  execFileSync(wasmOpt, args, { stdio: 'inherit', cwd: root });
+  console.log(`[build] wasm-opt: ${(before / 1024).toFixed(0)} kB → ${(statSync(wasm).size / 1024).toFixed(0)} kB`);
+}

@@ -1,5 +1,6 @@
 // Installs whatever is missing, idempotently: the wasm32 target, wasm-bindgen-cli at the exact
-// version in Cargo.lock, wasm-pack, and with --browser also the npm packages and Debian's chromium.
+// version in Cargo.lock, wasm-pack, the npm packages (binaryen's wasm-opt for the build,
+// playwright-core for the browser tests), and with --browser also Debian's chromium.
 // Everything comes from the package registries (crates.io, npm, Debian); nothing else is fetched.
 import { execSync, spawnSync } from 'node:child_process';
 import { existsSync, readFileSync } from 'node:fs';
@@ -40,8 +41,10 @@ const have = (out('wasm-bindgen --version') || '').split(' ')[1];
 if (have !== want) sh(`cargo install wasm-bindgen-cli --version ${want} --force`);
 if (!out('wasm-pack --version')) sh('cargo install wasm-pack');
 
+const npmPackages = Object.keys(JSON.parse(readFileSync(join(root, 'package.json'), 'utf8')).devDependencies || {});
+if (npmPackages.some((p) => !existsSync(join(root, 'node_modules', p, 'package.json')))) sh('npm install --no-audit --no-fund');
+
 if (browser) {
-  if (!existsSync(join(root, 'node_modules', 'playwright-core'))) sh('npm install --no-audit --no-fund');
   if (!existsSync('/usr/bin/chromium')) {
     const sudo = process.getuid && process.getuid() === 0 ? '' : 'sudo ';
     sh(`${sudo}apt-get update`);

@@ -1,4 +1,4 @@
-use crate::math::{Real, Vec2};
+use crate::math::{MinMax, Real, Vec2};
 
 /// An axis-aligned bounding box, the broad phase of every test.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -14,10 +14,10 @@ impl Aabb {
     pub fn of_points(pts: &[Vec2]) -> Aabb {
         let mut b = Aabb { min: pts[0], max: pts[0] };
         for p in &pts[1..] {
-            b.min.x = b.min.x.min(p.x);
-            b.min.y = b.min.y.min(p.y);
-            b.max.x = b.max.x.max(p.x);
-            b.max.y = b.max.y.max(p.y);
+            b.min.x = b.min.x.at_most(p.x);
+            b.min.y = b.min.y.at_most(p.y);
+            b.max.x = b.max.x.at_least(p.x);
+            b.max.y = b.max.y.at_least(p.y);
         }
         b
     }

@@ -1,6 +1,6 @@
 //! Segment/segment and point/segment predicates.
 
-use crate::math::{Real, Vec2};
+use crate::math::{MinMax, Real, Vec2};
 
 /// Twice the signed area of triangle `a, b, c` (> 0 when counter-clockwise).
 #[inline]
@@ -11,7 +11,7 @@ pub fn orient(a: Vec2, b: Vec2, c: Vec2) -> Real {
 /// Whether `p`, known to be collinear with `a, b`, lies within their bounding box.
 #[inline]
 fn within(a: Vec2, b: Vec2, p: Vec2) -> bool {
-    p.x >= a.x.min(b.x) && p.x <= a.x.max(b.x) && p.y >= a.y.min(b.y) && p.y <= a.y.max(b.y)
+    p.x >= a.x.at_most(b.x) && p.x <= a.x.at_least(b.x) && p.y >= a.y.at_most(b.y) && p.y <= a.y.at_least(b.y)
 }
 
 /// Whether point `p` lies on the closed segment `a b`.
@@ -43,9 +43,9 @@ pub fn distance_segment_segment(a: Vec2, b: Vec2, c: Vec2, d: Vec2) -> Real {
         return 0.0;
     }
     distance2_point_segment(a, c, d)
-        .min(distance2_point_segment(b, c, d))
-        .min(distance2_point_segment(c, a, b))
-        .min(distance2_point_segment(d, a, b))
+        .at_most(distance2_point_segment(b, c, d))
+        .at_most(distance2_point_segment(c, a, b))
+        .at_most(distance2_point_segment(d, a, b))
         .sqrt()
 }
 

@@ -2,7 +2,7 @@ use super::circle::intersect_segment_circle;
 use super::polygon::{contains_polygon_point, interior_meets_segment_polygon, intersect_segment_polygon};
 use super::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment, intersect_segment_segment, orient};
 use super::Aabb;
-use crate::math::{Real, Vec2};
+use crate::math::{MinMax, Real, Vec2};
 
 /// A closed obstacle shape in world coordinates.
 #[derive(Clone, Debug, PartialEq)]
@@ -77,13 +77,13 @@ impl Shape {
         match self {
             Shape::Rect(r) => {
                 let c = [r.min, Vec2::new(r.max.x, r.min.y), r.max, Vec2::new(r.min.x, r.max.y)];
-                (0..4).for_each(|i| best = best.min(distance_segment_segment(a, b, c[i], c[(i + 1) % 4])));
+                (0..4).for_each(|i| best = best.at_most(distance_segment_segment(a, b, c[i], c[(i + 1) % 4])));
             }
-            Shape::Polygon(p) => (0..p.len()).for_each(|i| best = best.min(distance_segment_segment(a, b, p[i], p[(i + 1) % p.len()]))),
-            Shape::Segment(c, d) => best = best.min(distance_segment_segment(a, b, *c, *d)),
-            Shape::Circle(c, r) => best = best.min(distance2_point_segment(*c, a, b).sqrt() - r),
+            Shape::Polygon(p) => (0..p.len()).for_each(|i| best = best.at_most(distance_segment_segment(a, b, p[i], p[(i + 1) % p.len()]))),
+            Shape::Segment(c, d) => best = best.at_most(distance_segment_segment(a, b, *c, *d)),
+            Shape::Circle(c, r) => best = best.at_most(distance2_point_segment(*c, a, b).sqrt() - r),
         }
-        best.max(0.0)
+        best.at_least(0.0)
     }
 
     /// Whether the segment `a b` meets the shape's *interior* (the shape as an open set: touching
@@ -100,8 +100,8 @@ impl Shape {
                         }
                     } else {
                         let (t0, t1) = ((min - p) / d, (max - p) / d);
-                        lo = lo.max(t0.min(t1));
-                        hi = hi.min(t0.max(t1));
+                        lo = lo.at_least(t0.at_most(t1));
+                        hi = hi.at_most(t0.at_least(t1));
                     }
                 }
                 lo < hi && lo < 1.0 && hi > 0.0
@@ -129,7 +129,7 @@ impl Shape {
         let mut best = cap;
         let mut edge = |a: Vec2, b: Vec2| {
             for i in 0..n {
-                best = best.min(distance_segment_segment(a, b, poly[i], poly[(i + 1) % n]));
+                best = best.at_most(distance_segment_segment(a, b, poly[i], poly[(i + 1) % n]));
             }
         };
         match self {
@@ -141,11 +141,11 @@ impl Shape {
             Shape::Segment(a, b) => edge(*a, *b),
             Shape::Circle(c, r) => {
                 for i in 0..n {
-                    best = best.min(distance2_point_segment(*c, poly[i], poly[(i + 1) % n]).sqrt() - r);
+                    best = best.at_most(distance2_point_segment(*c, poly[i], poly[(i + 1) % n]).sqrt() - r);
                 }
             }
         }
-        best.max(0.0)
+        best.at_least(0.0)
     }
 
     /// Whether the closed polygon `poly` (with bounding box `bb`) meets the shape.

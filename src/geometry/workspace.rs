@@ -1,5 +1,5 @@
 use super::{Aabb, Shape};
-use crate::math::{Real, Vec2};
+use crate::math::{MinMax, Real, Vec2};
 
 /// The world a robot moves in: rectangular bounds and closed obstacles.
 #[derive(Clone, Debug)]
@@ -39,7 +39,7 @@ impl Workspace {
         let mut best = cap;
         for (shape, bx) in self.obstacles.iter().zip(&self.boxes) {
             if bx.intersects(&bb.grown(best)) {
-                best = best.min(shape.distance_to_polygon(poly, &bb, best));
+                best = best.at_most(shape.distance_to_polygon(poly, &bb, best));
                 if best == 0.0 {
                     break;
                 }
@@ -65,7 +65,7 @@ impl Workspace {
         let mut best = cap;
         for (shape, bx) in self.obstacles.iter().zip(&self.boxes) {
             if bx.intersects(&bb.grown(best)) {
-                best = best.min(shape.distance_to_segment(a, b, best));
+                best = best.at_most(shape.distance_to_segment(a, b, best));
                 if best == 0.0 {
                     break;
                 }

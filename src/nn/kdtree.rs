@@ -1,4 +1,4 @@
-use crate::math::Real;
+use crate::math::{MinMax, Real};
 use crate::space::StateSpace;
 
 const NONE: u32 = u32::MAX;
@@ -106,8 +106,8 @@ impl KdTree {
         let mut cur = self.root as usize;
         loop {
             for (k, &v) in q.iter().enumerate() {
-                self.lo[cur * d + k] = self.lo[cur * d + k].min(v);
-                self.hi[cur * d + k] = self.hi[cur * d + k].max(v);
+                self.lo[cur * d + k] = self.lo[cur * d + k].at_most(v);
+                self.hi[cur * d + k] = self.hi[cur * d + k].at_least(v);
             }
             let s = self.split[cur] as usize;
             let go_left = q[s] < self.pts[cur * d + s];
@@ -140,8 +140,8 @@ impl KdTree {
         for &i in idx.iter() {
             for k in 0..d {
                 let v = self.pts[i as usize * d + k];
-                lo[k] = lo[k].min(v);
-                hi[k] = hi[k].max(v);
+                lo[k] = lo[k].at_most(v);
+                hi[k] = hi[k].at_least(v);
             }
         }
         // Widest dimension, with the rotation weight of the metric applied to angles.

@@ -14,7 +14,7 @@
 
 use super::{Context, ParamGroup, ParamSpec, Params};
 use crate::events::EventKind;
-use crate::math::Real;
+use crate::math::{MinMax, Real};
 use crate::motion::MotionValidator;
 use crate::nn::KdTree;
 use crate::status::Grow;
@@ -157,8 +157,8 @@ impl Tree {
         dist.extend((0..self.len() as u32).map(|i| cx.si.distance(self.state(i), q)));
         let (mut dmin, mut dmax) = (Real::INFINITY, Real::NEG_INFINITY);
         for &d in &dist {
-            dmin = dmin.min(d);
-            dmax = dmax.max(d);
+            dmin = dmin.at_most(d);
+            dmax = dmax.at_least(d);
         }
         let nmin = *self.fails.iter().min().expect("a root") as Real;
         let nmax = *self.fails.iter().max().expect("a root") as Real;
@@ -213,7 +213,7 @@ impl Tree {
             let r = self.radius[i];
             let next = match (failed, r.is_finite()) {
                 (true, false) => o.dd_radius,
-                (true, true) if o.dd_adaptive > 0.0 => (r * (1.0 - o.dd_adaptive)).max(o.dd_min_radius),
+                (true, true) if o.dd_adaptive > 0.0 => (r * (1.0 - o.dd_adaptive)).at_least(o.dd_min_radius),
                 (false, true) if o.dd_adaptive > 0.0 => r * (1.0 + o.dd_adaptive),
                 _ => r,
             };

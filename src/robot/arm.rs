@@ -19,7 +19,7 @@
 use super::{Robot, Verdict};
 use crate::geometry::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment, intersect_segment_segment};
 use crate::geometry::{SensorPose, Workspace};
-use crate::math::{angle_diff, Real, Vec2, PI};
+use crate::math::{MinMax, PI, Real, Vec2, angle_diff};
 use crate::scenario::RobotSpec;
 use crate::space::{Dim, Metric, StateSpace};
 
@@ -161,8 +161,8 @@ impl ArmRobot {
             // The base never moves: only the other points can leave the bounds (the Technion base
             // sits on the bounds' corner).
             for (k, p) in pts.iter().enumerate().skip(1) {
-                let d = (p.x - b.min.x).min(b.max.x - p.x).min(p.y - b.min.y).min(b.max.y - p.y).max(0.0);
-                c = c.min(over(d, seg_rate(k - 1)));
+                let d = (p.x - b.min.x).at_most(b.max.x - p.x).at_most(p.y - b.min.y).at_most(b.max.y - p.y).at_least(0.0);
+                c = c.at_most(over(d, seg_rate(k - 1)));
             }
             for (k, w) in pts.windows(2).enumerate() {
                 if c == 0.0 {
@@ -171,7 +171,7 @@ impl ArmRobot {
                 let rate = seg_rate(k);
                 // Within this segment's reach of c: the capped distance, else only whether it meets.
                 let reach = if rate > 0.0 && c.is_finite() { c * rate } else { Real::MIN_POSITIVE };
-                c = c.min(over(ws.segment_clearance(w[0], w[1], reach), rate));
+                c = c.at_most(over(ws.segment_clearance(w[0], w[1], reach), rate));
             }
             if self.self_collision {
                 let segs = pts.len() - 1;
@@ -189,21 +189,21 @@ impl ArmRobot {
                             if contains_segment_point(m, e, a) || contains_segment_point(a, m, e) {
                                 0.0
                             } else {
-                                distance2_point_segment(a, m, e).min(distance2_point_segment(e, a, m)).sqrt()
+                                distance2_point_segment(a, m, e).at_most(distance2_point_segment(e, a, m)).sqrt()
                             }
                         } else {
                             // Broad phase: two links whose boxes are c·rate apart cannot lower c
                             // (the result is the same; most pairs of a long chain are far apart).
                             let (p, q, r, s) = (pts[i], pts[i + 1], pts[j], pts[j + 1]);
-                            let gx = (p.x.min(q.x) - r.x.max(s.x)).max(r.x.min(s.x) - p.x.max(q.x)).max(0.0);
-                            let gy = (p.y.min(q.y) - r.y.max(s.y)).max(r.y.min(s.y) - p.y.max(q.y)).max(0.0);
+                            let gx = (p.x.at_most(q.x) - r.x.at_least(s.x)).at_least(r.x.at_most(s.x) - p.x.at_least(q.x)).at_least(0.0);
+                            let gy = (p.y.at_most(q.y) - r.y.at_least(s.y)).at_least(r.y.at_most(s.y) - p.y.at_least(q.y)).at_least(0.0);
                             let reach = c * rate;
                             if gx * gx + gy * gy >= reach * reach && gx + gy > 0.0 {
                                 continue;
                             }
                             distance_segment_segment(p, q, r, s)
                         };
-                        c = c.min(over(d, rate));
+                        c = c.at_most(over(d, rate));
                     }
                 }
             }

@@ -1,6 +1,6 @@
 use super::{xy_dims, xy_in_bounds, Robot, Verdict};
 use crate::geometry::{SensorPose, Workspace};
-use crate::math::{Real, Vec2, PI};
+use crate::math::{MinMax, PI, Real, Vec2};
 use crate::space::{Dim, Metric, StateSpace};
 
 /// The most footprint vertices transformed on the stack; larger footprints use the heap.
@@ -100,8 +100,8 @@ impl Robot for RigidRobot {
         if self.body_in_bounds {
             let b = ws.bounds;
             for p in body.iter() {
-                let inside = (p.x - b.min.x).min(b.max.x - p.x).min(p.y - b.min.y).min(b.max.y - p.y);
-                cap = cap.min(inside.max(0.0));
+                let inside = (p.x - b.min.x).at_most(b.max.x - p.x).at_most(p.y - b.min.y).at_most(b.max.y - p.y);
+                cap = cap.at_most(inside.at_least(0.0));
             }
         }
         Some(if cap == 0.0 { 0.0 } else { ws.polygon_clearance(body, cap) })

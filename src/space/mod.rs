@@ -4,7 +4,7 @@
 //! [`StateSpace::dims`] numbers; the space says how far apart two of them are, how to move between
 //! them, and which dimensions wrap around (angles).
 
-use crate::math::{angle_diff, wrap_angle, Real};
+use crate::math::{MinMax, Real, angle_diff, wrap_angle};
 use crate::rng::Rng;
 
 /// One dimension of a state space.
@@ -173,7 +173,7 @@ impl StateSpace {
             if v >= lo[i] && v <= hi[i] {
                 0.0
             } else if self.dims[i].wraps {
-                angle_diff(v, lo[i]).abs().min(angle_diff(v, hi[i]).abs())
+                angle_diff(v, lo[i]).abs().at_most(angle_diff(v, hi[i]).abs())
             } else if v < lo[i] {
                 lo[i] - v
             } else {
@@ -186,7 +186,7 @@ impl StateSpace {
             Metric::TranslationRotation { weight } => (gap(0).powi(2) + gap(1).powi(2)).sqrt() + weight * gap(2),
             // Both chain metrics are at least the move of the first link's end, 2·l₁·sin(|Δq₁|/2).
             Metric::ChainSum { links } | Metric::ChainMax { links } => {
-                2.0 * links[0] * libm::sin(0.5 * gap(0).min(std::f64::consts::PI))
+                2.0 * links[0] * libm::sin(0.5 * gap(0).at_most(std::f64::consts::PI))
             }
         }
     }

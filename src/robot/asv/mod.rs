@@ -30,7 +30,7 @@ mod sampler;
 
 use super::{Robot, Verdict};
 use crate::geometry::Workspace;
-use crate::math::{angle_diff, wrap_angle, Real, Vec2, PI};
+use crate::math::{MinMax, PI, Real, Vec2, angle_diff, wrap_angle};
 use crate::scenario::RobotSpec;
 use crate::space::{Dim, Metric, StateSpace};
 use std::cell::{Cell, RefCell};
@@ -210,10 +210,10 @@ fn motion_bound(l: Real, a: &[Real], b: &[Real], radii: &[Real]) -> Real {
                 before += m as Real * e;
                 after -= (nf - m as Real) * e;
             }
-            let e_m = l * (before + after.max(0.0)) / nf;
-            worst = worst.max(delta.abs() * (r + e_m) + e_m);
+            let e_m = l * (before + after.at_least(0.0)) / nf;
+            worst = worst.at_least(delta.abs() * (r + e_m) + e_m);
         }
-        best = best.min(worst);
+        best = best.at_most(worst);
     }
     dc + best
 }
@@ -312,7 +312,7 @@ impl AsvRobot {
     /// both bound it; the smaller), so a motion is cut into the same steps whichever way it is
     /// walked.
     fn bound(&self, a: &[Real], b: &[Real]) -> Real {
-        self.one_way_bound(a, b).min(self.one_way_bound(b, a))
+        self.one_way_bound(a, b).at_most(self.one_way_bound(b, a))
     }
 
     fn one_way_bound(&self, a: &[Real], b: &[Real]) -> Real {

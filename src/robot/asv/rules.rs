@@ -2,7 +2,7 @@
 
 use super::{AsvRobot, MARGIN};
 use crate::geometry::{Aabb, Shape, Workspace};
-use crate::math::{wrap_angle, Real, Vec2, PI};
+use crate::math::{MinMax, PI, Real, Vec2, wrap_angle};
 use crate::geometry::segment::distance2_point_segment;
 use crate::robot::Verdict;
 
@@ -22,7 +22,7 @@ fn turn(d: Vec2, e: Vec2) -> Real {
 /// box's corners are not all strictly on one side of the segment's line.
 #[inline]
 pub(super) fn segment_meets_box(a: Vec2, b: Vec2, lo: Vec2, hi: Vec2) -> bool {
-    if a.x.max(b.x) < lo.x || a.x.min(b.x) > hi.x || a.y.max(b.y) < lo.y || a.y.min(b.y) > hi.y {
+    if a.x.at_least(b.x) < lo.x || a.x.at_most(b.x) > hi.x || a.y.at_least(b.y) < lo.y || a.y.at_most(b.y) > hi.y {
         return false;
     }
     let d = b - a;
@@ -70,8 +70,8 @@ fn broom_distance(ws: &Workspace, a: Vec2, b: Vec2, cap: Real) -> Real {
                     continue;
                 }
                 // Box-to-box gap first: most rectangles are farther than `best`.
-                let gx = (lo.x - bb.max.x).max(bb.min.x - hi.x).max(0.0);
-                let gy = (lo.y - bb.max.y).max(bb.min.y - hi.y).max(0.0);
+                let gx = (lo.x - bb.max.x).at_least(bb.min.x - hi.x).at_least(0.0);
+                let gy = (lo.y - bb.max.y).at_least(bb.min.y - hi.y).at_least(0.0);
                 if gx * gx + gy * gy >= best * best {
                     continue;
                 }
@@ -80,17 +80,17 @@ fn broom_distance(ws: &Workspace, a: Vec2, b: Vec2, cap: Real) -> Real {
                 }
                 // Apart: the nearest points are an end of the broom or a corner of the box.
                 let to_box = |p: Vec2| {
-                    let dx = (lo.x - p.x).max(p.x - hi.x).max(0.0);
-                    let dy = (lo.y - p.y).max(p.y - hi.y).max(0.0);
+                    let dx = (lo.x - p.x).at_least(p.x - hi.x).at_least(0.0);
+                    let dy = (lo.y - p.y).at_least(p.y - hi.y).at_least(0.0);
                     dx * dx + dy * dy
                 };
-                let mut d2 = to_box(a).min(to_box(b));
+                let mut d2 = to_box(a).at_most(to_box(b));
                 for corner in [lo, Vec2::new(hi.x, lo.y), hi, Vec2::new(lo.x, hi.y)] {
-                    d2 = d2.min(distance2_point_segment(corner, a, b));
+                    d2 = d2.at_most(distance2_point_segment(corner, a, b));
                 }
-                best = best.min(d2.sqrt());
+                best = best.at_most(d2.sqrt());
             }
-            other => best = best.min(other.distance_to_polygon(&[a, b], &bb, best)),
+            other => best = best.at_most(other.distance_to_polygon(&[a, b], &bb, best)),
         }
         if best == 0.0 {
             return 0.0;
@@ -157,21 +157,21 @@ impl AsvRobot {
         }
         let n = pts.len();
         let b = ws.bounds;
-        let mut c = cap.min(0.5 * self.broom);
+        let mut c = cap.at_most(0.5 * self.broom);
         for p in pts {
-            c = c.min(p.x - b.min.x + MARGIN).min(b.max.x + MARGIN - p.x).min(p.y - b.min.y + MARGIN).min(b.max.y + MARGIN - p.y);
+            c = c.at_most(p.x - b.min.x + MARGIN).at_most(b.max.x + MARGIN - p.x).at_most(p.y - b.min.y + MARGIN).at_most(b.max.y + MARGIN - p.y);
         }
         let area2 = signed_area2(pts);
         let closing = pts[0] - pts[n - 1];
         let perimeter = self.broom * (n - 1) as Real + closing.norm();
-        c = c.min((0.5 * area2.abs() - (self.min_area - MARGIN)) / (perimeter + n as Real * cap));
+        c = c.at_most((0.5 * area2.abs() - (self.min_area - MARGIN)) / (perimeter + n as Real * cap));
         if self.convex {
             let len = closing.norm();
             let sigma = if area2 != 0.0 { area2.signum() } else { 0.0 };
             let k = PI * (1.0 / len + 1.0 / self.broom);
-            c = c.min(0.5 * len);
+            c = c.at_most(0.5 * len);
             for t in [turn(pts[n - 1] - pts[n - 2], closing), turn(closing, pts[1] - pts[0])] {
-                c = c.min((sigma * t + MARGIN) / k).min((PI - t.abs()) / k);
+                c = c.at_most((sigma * t + MARGIN) / k).at_most((PI - t.abs()) / k);
             }
         } else {
             for i in 0..n {
@@ -180,7 +180,7 @@ impl AsvRobot {
                         continue;
                     }
                     let d = crate::geometry::segment::distance_segment_segment(pts[i], pts[(i + 1) % n], pts[j], pts[(j + 1) % n]);
-                    c = c.min(0.5 * d);
+                    c = c.at_most(0.5 * d);
                 }
             }
         }
@@ -188,9 +188,9 @@ impl AsvRobot {
             if c <= 0.0 {
                 return 0.0;
             }
-            c = c.min(broom_distance(ws, pts[k], pts[k + 1], c));
+            c = c.at_most(broom_distance(ws, pts[k], pts[k + 1], c));
         }
-        c.max(0.0)
+        c.at_least(0.0)
     }
 
     /// Why the closed polygon is not convex in the course's sense, if it is not: every turn (walking
