@@ -3,9 +3,12 @@
 // build in Node (the same set-ups and seeds; the counts must equal the native ones, bit for bit).
 // Writes bench/results/suite-<UTC stamp>.json (everything) and .md (the tables).
 //
-//   node scripts/bench.mjs [--runs N] [--only id,id] [--quick]
+//   node scripts/bench.mjs [--runs N] [--rounds K] [--only id,id] [--quick]
 //
 // --quick: 5 runs and no horn-20 (a smoke run). Times are wall-clock medians of planning only.
+// The problems compared between native and wasm are run in K rounds (default 3) on each side, and
+// each seed's time is its best round: the machine's noise (±15% between identical runs here) is
+// larger than the differences measured. Every round must give the same runs, count for count.
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, mkdtempSync, readFileSync, writeFileSync, existsSync } from 'node:fs';
 import { tmpdir, cpus } from 'node:os';
@@ -17,6 +20,10 @@ const args = process.argv.slice(2);
 const opt = (name, fallback) => { const i = args.indexOf(name); return i >= 0 ? args[i + 1] : fallback; };
 const quick = args.includes('--quick');
 const runsArg = Number(opt('--runs', quick ? 5 : 20));
+const roundsArg = Math.max(1, Number(opt('--rounds', quick ? 1 : 3)));
+const sameRun = (x, y) => x.checks === y.checks && x.nodes === y.nodes && x.cost === y.cost && x.solved === y.solved;
+// Each seed's best time over the rounds (rounds: arrays of rows, seed by seed).
+const bestOf = (rounds) => rounds[0].map((_, j) => Math.min(...rounds.map((rows) => rows[j].time_ms)));
 const only = opt('--only', null)?.split(',');
 const ASV = join(root, '..', 'shared', 'data', 'asv');
 
@@ -46,6 +53,28 @@ console.log('[bench] cargo build --release');
 execFileSync('cargo', ['build', '--release', '--quiet'], { cwd: root, stdio: 'inherit' });
 
 const tmp = mkdtempSync(join(tmpdir(), 'planarium-suite-'));
+
+// The wasm build in Node: the same set-ups and seeds, events off, as the page's benchmark workers.
+const wasmFile = join(root, 'www', 'pkg', 'planarium_bg.wasm');
+let wasm = null;
+if (SUITE.some((p) => p.wasm && (!only || only.includes(p.id)))) {
+  if (existsSync(wasmFile)) {
+    const { initSync, Run, builtins } = await import(join(root, 'www', 'pkg', 'planarium.js'));
+    initSync({ module: readFileSync(wasmFile) });
+    wasm = { Run, texts: Object.fromEntries(JSON.parse(builtins()).map((b) => [b.id, JSON.stringify(b.scenario)])) };
+  } else {
+    console.log('[bench] www/pkg is not built (node scripts/build.mjs): wasm skipped');
+  }
+}
+const wasmRun = (text, s, seed) => {
+  const run = new wasm.Run(text, s.planner, JSON.stringify(s.params), seed);
+  run.record_events(false);
+  while (run.step(1e9, 1e9) === 'running');
+  const res = JSON.parse(run.result_json());
+  run.free();
+  return { seed, solved: res.solved, time_ms: res.stats.time_ms, nodes: res.stats.nodes, checks: res.stats.checks, cost: res.stats.cost };
+};
+
 const results = [];
 for (const p of SUITE) {
   const name = p.name ?? p.id;
@@ -53,44 +82,39 @@ for (const p of SUITE) {
   if (quick && p.slow) continue;
   if (p.optional && !existsSync(p.id)) { console.log(`[bench] ${name}: ${p.id} not found, skipped`); continue; }
   const runs = Math.min(p.runs ?? runsArg, runsArg);
-  const file = join(tmp, `${name}.json`);
+  const withWasm = p.wasm && wasm;
+  if (withWasm && !wasm.texts[p.id]) throw new Error(`www/pkg has no built-in "${p.id}": rebuild it (node scripts/build.mjs)`);
+  const rounds = withWasm ? roundsArg : 1;
   const started = Date.now();
-  execFileSync(cli, ['bench', p.id, '--runs', String(runs), ...p.setups.flatMap((s) => ['--setup', s]), '--json-file', file], { cwd: root, stdio: ['ignore', 'ignore', 'inherit'] });
-  const report = JSON.parse(readFileSync(file, 'utf8'));
-  console.log(`[bench] ${name}: ${runs} seeds × ${p.setups.length} set-ups natively in ${((Date.now() - started) / 1000).toFixed(1)} s`);
-  results.push({ problem: name, what: p.what, runs, ompl: p.ompl ?? null, omplMs: p.omplMs ?? null, native: report, wasm: null, wasmScenario: p.wasm ? p.id : null });
-}
-
-// The wasm build in Node: the same set-ups and seeds, events off, as the page's benchmark workers.
-const wasmFile = join(root, 'www', 'pkg', 'planarium_bg.wasm');
-if (results.some((r) => r.wasmScenario) && existsSync(wasmFile)) {
-  const { initSync, Run, builtins } = await import(join(root, 'www', 'pkg', 'planarium.js'));
-  initSync({ module: readFileSync(wasmFile) });
-  const texts = Object.fromEntries(JSON.parse(builtins()).map((b) => [b.id, JSON.stringify(b.scenario)]));
-  for (const r of results.filter((x) => x.wasmScenario)) {
-    if (!texts[r.wasmScenario]) throw new Error(`www/pkg has no built-in "${r.wasmScenario}": rebuild it (node scripts/build.mjs)`);
-    r.wasm = r.native.setups.map((s) => {
+  // Rounds alternate native and wasm, so that both sides see the machine in the same state.
+  const reports = [];
+  const wasmRounds = [];
+  for (let k = 0; k < rounds; k++) {
+    const file = join(tmp, `${name}-${k}.json`);
+    execFileSync(cli, ['bench', p.id, '--runs', String(runs), ...p.setups.flatMap((s) => ['--setup', s]), '--json-file', file], { cwd: root, stdio: ['ignore', 'ignore', 'inherit'] });
+    reports.push(JSON.parse(readFileSync(file, 'utf8')));
+    if (!withWasm) continue;
+    wasmRounds.push(reports[0].setups.map((s) => {
       // One untimed run first: the engine compiles the module's hot code on first use.
-      const warm = new Run(texts[r.wasmScenario], s.planner, JSON.stringify(s.params), 1);
-      warm.record_events(false);
-      while (warm.step(1e9, 1e9) === 'running');
-      warm.free();
-      const rows = [];
-      for (let seed = 1; seed <= r.runs; seed++) {
-        const run = new Run(texts[r.wasmScenario], s.planner, JSON.stringify(s.params), seed);
-        run.record_events(false);
-        while (run.step(1e9, 1e9) === 'running');
-        const res = JSON.parse(run.result_json());
-        run.free();
-        rows.push({ seed, solved: res.solved, time_ms: res.stats.time_ms, nodes: res.stats.nodes, checks: res.stats.checks, cost: res.stats.cost });
-      }
-      const same = rows.every((x, i) => x.checks === s.rows[i].checks && x.nodes === s.rows[i].nodes && x.cost === s.rows[i].cost);
-      return { label: s.label, rows, same_as_native: same };
-    });
-    console.log(`[bench] ${r.problem}: wasm in Node ${r.wasm.every((w) => w.same_as_native) ? 'gives the native runs exactly' : 'DIFFERS from the native runs'}`);
+      if (k === 0) wasmRun(wasm.texts[p.id], s, 1);
+      return Array.from({ length: runs }, (_, j) => wasmRun(wasm.texts[p.id], s, j + 1));
+    }));
   }
-} else if (results.some((r) => r.wasmScenario)) {
-  console.log('[bench] www/pkg is not built (node scripts/build.mjs): wasm skipped');
+  const report = reports[0];
+  report.setups.forEach((s, i) => {
+    const all = reports.map((r) => r.setups[i].rows);
+    s.rounds = rounds;
+    s.best_ms = bestOf(all);
+    s.rounds_agree = all.every((rows) => rows.every((x, j) => sameRun(x, s.rows[j])));
+    if (!s.rounds_agree) console.log(`[bench] ${name} ${s.label}: the native rounds DIFFER`);
+  });
+  const wasmResult = withWasm ? report.setups.map((s, i) => {
+    const all = wasmRounds.map((r) => r[i]);
+    return { label: s.label, rows: all[0], best_ms: bestOf(all), same_as_native: all.every((rows) => rows.every((x, j) => sameRun(x, s.rows[j]))) };
+  }) : null;
+  console.log(`[bench] ${name}: ${runs} seeds × ${p.setups.length} set-ups × ${rounds} round(s) ${withWasm ? 'natively and in wasm' : 'natively'} in ${((Date.now() - started) / 1000).toFixed(1)} s`);
+  if (wasmResult) console.log(`[bench] ${name}: wasm in Node ${wasmResult.every((w) => w.same_as_native) ? 'gives the native runs exactly' : 'DIFFERS from the native runs'}`);
+  results.push({ problem: name, what: p.what, runs, ompl: p.ompl ?? null, omplMs: p.omplMs ?? null, native: report, wasm: wasmResult, wasmScenario: withWasm ? p.id : null });
 }
 
 const median = (xs) => { const v = xs.filter(Number.isFinite).sort((a, b) => a - b); const n = v.length; return n ? (n % 2 ? v[(n - 1) / 2] : (v[n / 2 - 1] + v[n / 2]) / 2) : NaN; };
@@ -101,6 +125,7 @@ const lines = [
   `# Benchmark suite, ${new Date().toISOString().slice(0, 16).replace('T', ' ')} UTC`,
   '',
   `Machine: ${host}, Node ${process.version}. Seeds 1..N per set-up; times are medians of planning time (smoothing excluded). `
+  + `Where wasm is measured, both sides ran ${roundsArg} round(s) and each seed's time is its best round. `
   + 'OMPL 1.5.2 figures are issue 7\'s (medians over 20 seeds, same machine kind). Made by `npm run bench`.',
   '',
   '| problem | set-up | solved | median ms (native) | median ms (wasm, Node) | wasm / native | OMPL | median nodes | median checks | median cost |',
@@ -110,9 +135,11 @@ for (const r of results) {
   r.native.setups.forEach((s, k) => {
     const m = s.summary;
     const w = r.wasm?.[k];
-    const wms = w ? median(w.rows.map((x) => x.time_ms)) : NaN;
+    const wms = w ? median(w.best_ms) : NaN;
+    const nms = s.rounds > 1 ? median(s.best_ms) : m.time_ms.median;
     const plannerKey = s.planner;
-    lines.push(`| ${r.problem} | ${s.label} | ${m.solved}/${m.runs} | ${f(m.time_ms.median)} | ${w ? f(wms) : '—'} | ${w ? `${f(wms / m.time_ms.median)}×${w.same_as_native ? '' : ' (runs differ!)'}` : '—'} | ${r.ompl?.[plannerKey] ?? '—'} | ${f(m.nodes.median, 1)} | ${f(m.checks.median, 0)} | ${f(m.cost.median, 4)} |`);
+    const agree = (w ? w.same_as_native : true) && s.rounds_agree;
+    lines.push(`| ${r.problem} | ${s.label} | ${m.solved}/${m.runs} | ${f(nms)} | ${w ? f(wms) : '—'} | ${w ? `${f(wms / nms)}×` : '—'}${agree ? '' : ' (runs differ!)'} | ${r.ompl?.[plannerKey] ?? '—'} | ${f(m.nodes.median, 1)} | ${f(m.checks.median, 0)} | ${f(m.cost.median, 4)} |`);
   });
 }
 lines.push('', 'Problems:', '');

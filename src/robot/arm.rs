@@ -84,14 +84,17 @@ impl ArmRobot {
     pub fn joint_points(&self, q: &[Real], out: &mut [Vec2]) {
         let mut p = self.base;
         let mut theta = 0.0;
+        let (mut s, mut c) = (0.0, 1.0);
         out[0] = p;
         for (i, l) in self.links.iter().enumerate() {
             theta += q[i];
-            p = p + Vec2::new(l * libm::cos(theta), l * libm::sin(theta));
+            // sincos shares one argument reduction; it equals sin and cos bit for bit.
+            (s, c) = libm::sincos(theta);
+            p = p + Vec2::new(l * c, l * s);
             out[i + 1] = p;
         }
         if self.tip > 0.0 {
-            out[self.links.len() + 1] = p + Vec2::new(self.tip * libm::cos(theta), self.tip * libm::sin(theta));
+            out[self.links.len() + 1] = p + Vec2::new(self.tip * c, self.tip * s);
         }
     }
 
@@ -175,7 +178,20 @@ impl ArmRobot {
             }
             if self.self_collision {
                 let segs = pts.len() - 1;
+                // Each segment's box, once (the pairs' broad phase reads them 2·segs times each).
+                let mut stack_boxes = [[0.0; 4]; STACK_POINTS];
+                let mut heap_boxes = Vec::new();
+                let boxes: &mut [[Real; 4]] = if segs <= STACK_POINTS {
+                    &mut stack_boxes[..segs]
+                } else {
+                    heap_boxes.resize(segs, [0.0; 4]);
+                    &mut heap_boxes
+                };
+                for (bx, w) in boxes.iter_mut().zip(pts.windows(2)) {
+                    *bx = [w[0].x.at_most(w[1].x), w[0].x.at_least(w[1].x), w[0].y.at_most(w[1].y), w[0].y.at_least(w[1].y)];
+                }
                 for i in 0..segs {
+                    let bi = boxes[i];
                     for j in i + 1..segs {
                         let tip_pair = self.tip > 0.0 && j == segs - 1 && i == segs - 2;
                         if tip_pair {
@@ -194,14 +210,14 @@ impl ArmRobot {
                         } else {
                             // Broad phase: two links whose boxes are c·rate apart cannot lower c
                             // (the result is the same; most pairs of a long chain are far apart).
-                            let (p, q, r, s) = (pts[i], pts[i + 1], pts[j], pts[j + 1]);
-                            let gx = (p.x.at_most(q.x) - r.x.at_least(s.x)).at_least(r.x.at_most(s.x) - p.x.at_least(q.x)).at_least(0.0);
-                            let gy = (p.y.at_most(q.y) - r.y.at_least(s.y)).at_least(r.y.at_most(s.y) - p.y.at_least(q.y)).at_least(0.0);
+                            let bj = boxes[j];
+                            let gx = (bi[0] - bj[1]).at_least(bj[0] - bi[1]).at_least(0.0);
+                            let gy = (bi[2] - bj[3]).at_least(bj[2] - bi[3]).at_least(0.0);
                             let reach = c * rate;
                             if gx * gx + gy * gy >= reach * reach && gx + gy > 0.0 {
                                 continue;
                             }
-                            distance_segment_segment(p, q, r, s)
+                            distance_segment_segment(pts[i], pts[i + 1], pts[j], pts[j + 1])
                         };
                         c = c.at_most(over(d, rate));
                     }

@@ -31,7 +31,7 @@ impl RigidRobot {
     /// Write the footprint at state `q` into `out`.
     #[inline]
     fn place(&self, q: &[Real], out: &mut [Vec2]) {
-        let (s, c) = (libm::sin(q[2]), libm::cos(q[2]));
+        let (s, c) = libm::sincos(q[2]);
         let t = Vec2::new(q[0], q[1]);
         for (o, p) in out.iter_mut().zip(&self.footprint) {
             *o = p.rotate(c, s) + t;

@@ -106,7 +106,8 @@ impl StateSpace {
             let (mut t, mut p) = (0.0, (0.0, 0.0));
             for (i, l) in links.iter().enumerate() {
                 t += q[i];
-                p = (p.0 + l * libm::cos(t), p.1 + l * libm::sin(t));
+                let (s, c) = libm::sincos(t);
+                p = (p.0 + l * c, p.1 + l * s);
                 out[2 * i] = p.0;
                 out[2 * i + 1] = p.1;
             }
@@ -201,8 +202,9 @@ pub fn chain_moves<'a>(links: &'a [Real], a: &'a [Real], b: &'a [Real]) -> impl 
     links.iter().enumerate().map(move |(i, l)| {
         ta += a[i];
         tb += b[i];
-        pa = (pa.0 + l * libm::cos(ta), pa.1 + l * libm::sin(ta));
-        pb = (pb.0 + l * libm::cos(tb), pb.1 + l * libm::sin(tb));
+        let ((sa, ca), (sb, cb)) = (libm::sincos(ta), libm::sincos(tb));
+        pa = (pa.0 + l * ca, pa.1 + l * sa);
+        pb = (pb.0 + l * cb, pb.1 + l * sb);
         ((pa.0 - pb.0).powi(2) + (pa.1 - pb.1).powi(2)).sqrt()
     })
 }
