@@ -213,14 +213,17 @@ impl KdTree {
             }
             let s = self.split[i] as usize;
             let (near, far) = if q[s] < self.pts[i * d + s] { (self.left[i], self.right[i]) } else { (self.right[i], self.left[i]) };
-            for child in [far, near] {
-                if child != NONE {
-                    let c = child as usize;
-                    let b = space.box_lower_bound(q, &self.lo[c * d..(c + 1) * d], &self.hi[c * d..(c + 1) * d]);
-                    if best.is_none_or(|(_, bd)| b <= bd) {
-                        stack.push((child, b));
-                    }
+            if far != NONE {
+                let c = far as usize;
+                let b = space.box_lower_bound(q, &self.lo[c * d..(c + 1) * d], &self.hi[c * d..(c + 1) * d]);
+                if best.is_none_or(|(_, bd)| b <= bd) {
+                    stack.push((far, b));
                 }
+            }
+            // The near side is searched next: its box lies in this node's, so this node's bound
+            // bounds it too, and computing its own would rarely prune it.
+            if near != NONE {
+                stack.push((near, bound));
             }
         }
         self.stack = stack;
@@ -271,14 +274,16 @@ impl KdTree {
                 // Far side pushed first, so the near side is searched first and tightens the bound.
                 let s = self.split[i] as usize;
                 let (near, far) = if q[s] < self.pts[i * d + s] { (self.left[i], self.right[i]) } else { (self.right[i], self.left[i]) };
-                for child in [far, near] {
-                    if child != NONE {
-                        let c = child as usize;
-                        let cb = space.box_lower_bound(q, &self.lo[c * d..(c + 1) * d], &self.hi[c * d..(c + 1) * d]);
-                        if cb <= bound(&found) {
-                            stack.push((child, cb));
-                        }
+                if far != NONE {
+                    let c = far as usize;
+                    let cb = space.box_lower_bound(q, &self.lo[c * d..(c + 1) * d], &self.hi[c * d..(c + 1) * d]);
+                    if cb <= bound(&found) {
+                        stack.push((far, cb));
                     }
+                }
+                // The near side, next, with this node's bound (as in `nearest_where`).
+                if near != NONE {
+                    stack.push((near, b));
                 }
             }
             self.stack = stack;

@@ -65,7 +65,13 @@ impl StateSpace {
     /// Per-dimension difference `b − a` (the shortest way round for wrapping dimensions).
     #[inline]
     fn delta(&self, i: usize, a: Real, b: Real) -> Real {
-        if self.dims[i].wraps {
+        Self::delta_in(&self.dims[i], a, b)
+    }
+
+    /// `b − a` along dimension `d`.
+    #[inline(always)]
+    fn delta_in(d: &Dim, a: Real, b: Real) -> Real {
+        if d.wraps {
             angle_diff(a, b)
         } else {
             b - a
@@ -76,7 +82,8 @@ impl StateSpace {
     #[inline]
     pub fn distance(&self, a: &[Real], b: &[Real]) -> Real {
         match &self.metric {
-            Metric::Euclidean => (0..a.len()).map(|i| self.delta(i, a[i], b[i]).powi(2)).sum::<Real>().sqrt(),
+            // Zipped rather than indexed: no bounds checks in the nearest-neighbour hot loop.
+            Metric::Euclidean => a.iter().zip(b).zip(&self.dims).map(|((x, y), d)| Self::delta_in(d, *x, *y).powi(2)).sum::<Real>().sqrt(),
             Metric::Weighted { weights } => (0..a.len()).map(|i| (weights[i] * self.delta(i, a[i], b[i])).powi(2)).sum::<Real>().sqrt(),
             Metric::TranslationRotation { weight } => {
                 let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
@@ -127,9 +134,9 @@ impl StateSpace {
     /// Write into `out` the state a fraction `t` of the way from `a` to `b`.
     #[inline]
     pub fn interpolate(&self, a: &[Real], b: &[Real], t: Real, out: &mut [Real]) {
-        for i in 0..a.len() {
-            let v = a[i] + t * self.delta(i, a[i], b[i]);
-            out[i] = if self.dims[i].wraps { wrap_angle(v) } else { v };
+        for (((o, x), y), d) in out.iter_mut().zip(a).zip(b).zip(&self.dims) {
+            let v = x + t * Self::delta_in(d, *x, *y);
+            *o = if d.wraps { wrap_angle(v) } else { v };
         }
     }
 
@@ -169,20 +176,23 @@ impl StateSpace {
     /// with `lo`, `hi` canonical). Used by the nearest-neighbour tree to prune.
     #[inline]
     pub fn box_lower_bound(&self, q: &[Real], lo: &[Real], hi: &[Real]) -> Real {
-        let gap = |i: usize| -> Real {
-            let v = q[i];
-            if v >= lo[i] && v <= hi[i] {
+        #[inline(always)]
+        fn gap_in(d: &Dim, v: Real, lo: Real, hi: Real) -> Real {
+            if v >= lo && v <= hi {
                 0.0
-            } else if self.dims[i].wraps {
-                angle_diff(v, lo[i]).abs().at_most(angle_diff(v, hi[i]).abs())
-            } else if v < lo[i] {
-                lo[i] - v
+            } else if d.wraps {
+                angle_diff(v, lo).abs().at_most(angle_diff(v, hi).abs())
+            } else if v < lo {
+                lo - v
             } else {
-                v - hi[i]
+                v - hi
             }
-        };
+        }
+        let gap = |i: usize| gap_in(&self.dims[i], q[i], lo[i], hi[i]);
         match &self.metric {
-            Metric::Euclidean => (0..q.len()).map(|i| gap(i).powi(2)).sum::<Real>().sqrt(),
+            Metric::Euclidean => {
+                q.iter().zip(lo).zip(hi).zip(&self.dims).map(|(((v, l), h), d)| gap_in(d, *v, *l, *h).powi(2)).sum::<Real>().sqrt()
+            }
             Metric::Weighted { weights } => (0..q.len()).map(|i| (weights[i] * gap(i)).powi(2)).sum::<Real>().sqrt(),
             Metric::TranslationRotation { weight } => (gap(0).powi(2) + gap(1).powi(2)).sqrt() + weight * gap(2),
             // Both chain metrics are at least the move of the first link's end, 2·l₁·sin(|Δq₁|/2).
