@@ -51,6 +51,10 @@ struct MotionRates {
     /// `rel[i * segs + j]` for `i < j`.
     rel: Vec<Real>,
     segs: usize,
+    /// Scratch for [`ArmRobot::clearance_at`], reused across the motion's states: the joint
+    /// points and each segment's box (`[min x, max x, min y, max y]`).
+    pts: Vec<Vec2>,
+    boxes: Vec<[Real; 4]>,
 }
 
 impl ArmRobot {
@@ -143,22 +147,26 @@ impl ArmRobot {
                 rel[i * segs + j] = (i + 1..=joints_of(j)).map(|m| dq[m] * r(m, j)).sum();
             }
         }
-        MotionRates { a: a.to_vec(), b: b.to_vec(), seg, rel, segs }
+        MotionRates { a: a.to_vec(), b: b.to_vec(), seg, rel, segs, pts: Vec::new(), boxes: Vec::new() }
     }
 
     /// The clearance of state `q` on the motion whose `rates` are given, capped at `cap`, in units
     /// of the motion's parameter: each distance (to obstacles, to the bounds, between segments)
     /// divided by how fast it can close, so motions whose links barely move relative to each
     /// other certify in few steps.
-    fn clearance_at(&self, ws: &Workspace, q: &[Real], cap: Real, rates: &MotionRates) -> Real {
+    fn clearance_at(&self, ws: &Workspace, q: &[Real], cap: Real, rates: &mut MotionRates) -> Real {
         if !self.within_limits(q) {
             return 0.0;
         }
-        let seg_rate = |k: usize| rates.seg[k];
-        let pair_rate = |i: usize, j: usize| rates.rel[i * rates.segs + j];
+        let MotionRates { seg, rel, segs, pts, boxes, .. } = rates;
+        let seg_rate = |k: usize| seg[k];
+        let pair_rate = |i: usize, j: usize| rel[i * *segs + j];
         // A distance over a rate, in the clearance's units (a constraint that cannot close: none).
         let over = |dist: Real, rate: Real| if dist <= 0.0 { 0.0 } else if rate <= 0.0 { Real::INFINITY } else { dist / rate };
-        self.with_points(q, |pts| {
+        pts.resize(self.point_count(), Vec2::default());
+        self.joint_points(q, pts);
+        let pts = &pts[..];
+        {
             let b = ws.bounds;
             let mut c = cap;
             // The base never moves: only the other points can leave the bounds (the Technion base
@@ -179,14 +187,7 @@ impl ArmRobot {
             if self.self_collision {
                 let segs = pts.len() - 1;
                 // Each segment's box, once (the pairs' broad phase reads them 2·segs times each).
-                let mut stack_boxes = [[0.0; 4]; STACK_POINTS];
-                let mut heap_boxes = Vec::new();
-                let boxes: &mut [[Real; 4]] = if segs <= STACK_POINTS {
-                    &mut stack_boxes[..segs]
-                } else {
-                    heap_boxes.resize(segs, [0.0; 4]);
-                    &mut heap_boxes
-                };
+                boxes.resize(segs, [0.0; 4]);
                 for (bx, w) in boxes.iter_mut().zip(pts.windows(2)) {
                     *bx = [w[0].x.at_most(w[1].x), w[0].x.at_least(w[1].x), w[0].y.at_most(w[1].y), w[0].y.at_least(w[1].y)];
                 }
@@ -224,7 +225,7 @@ impl ArmRobot {
                 }
             }
             c
-        })
+        }
     }
 
     fn within_limits(&self, q: &[Real]) -> bool {
@@ -295,7 +296,7 @@ impl Robot for ArmRobot {
         if cache.as_ref().is_none_or(|r| r.a != a || r.b != b) {
             *cache = Some(self.motion_rates(a, b));
         }
-        Some(self.clearance_at(ws, q, cap, cache.as_ref().expect("rates just computed")))
+        Some(self.clearance_at(ws, q, cap, cache.as_mut().expect("rates just computed")))
     }
     fn project(&self, q: &[Real]) -> Vec2 {
         // The end effector (the last link's end).
