@@ -67,6 +67,9 @@ impl StateValidity for RobotInWorkspace {
     fn verdict(&self, q: &[Real]) -> Verdict {
         self.robot.verdict(&self.workspace, q)
     }
+    fn is_valid(&self, q: &[Real]) -> bool {
+        self.robot.is_valid(&self.workspace, q)
+    }
     fn sweep_hits(&self, a: &[Real], b: &[Real]) -> Option<bool> {
         self.robot.sweep_hits(&self.workspace, a, b)
     }

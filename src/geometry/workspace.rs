@@ -23,13 +23,18 @@ impl Workspace {
 
     /// The index of the first obstacle that contains `p`, if any.
     pub fn point_hit(&self, p: Vec2) -> Option<usize> {
-        (0..self.obstacles.len()).find(|&i| self.boxes[i].contains(p) && self.obstacles[i].contains_point(p))
+        self.boxes.iter().zip(&self.obstacles).position(|(bx, shape)| bx.contains(p) && shape.contains_point(p))
+    }
+
+    /// Whether the point `p` lies in (or on) an obstacle.
+    pub fn point_hits(&self, p: Vec2) -> bool {
+        self.boxes.iter().zip(&self.obstacles).any(|(bx, shape)| bx.contains(p) && shape.contains_point(p))
     }
 
     /// Whether the closed segment `a b` meets an obstacle.
     pub fn segment_hits(&self, a: Vec2, b: Vec2) -> bool {
         let bb = Aabb::of_points(&[a, b]);
-        (0..self.obstacles.len()).any(|i| self.boxes[i].intersects(&bb) && self.obstacles[i].intersects_segment(a, b))
+        self.boxes.iter().zip(&self.obstacles).any(|(bx, shape)| bx.intersects(&bb) && shape.intersects_segment(a, b))
     }
 
     /// The distance from the closed polygon `poly` to the nearest obstacle, capped at `cap`

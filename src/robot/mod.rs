@@ -51,6 +51,11 @@ pub trait Robot: std::fmt::Debug {
     }
     /// Whether state `q` is valid in `ws`, and if not, why.
     fn verdict(&self, ws: &Workspace, q: &[Real]) -> Verdict;
+    /// Whether state `q` is valid in `ws` (the verdict without its reason: robots whose check is a
+    /// few comparisons answer it without building one).
+    fn is_valid(&self, ws: &Workspace, q: &[Real]) -> bool {
+        self.verdict(ws, q) == Verdict::Valid
+    }
     /// Write a random state into `out` (default: uniform over the space) and return the state
     /// checks it spent (counted like the planner's). Robots whose uniform samples are almost never
     /// valid (the vehicle chain) sample their own way.

@@ -29,6 +29,9 @@ impl Robot for PointRobot {
             None => Verdict::Valid,
         }
     }
+    fn is_valid(&self, ws: &Workspace, q: &[Real]) -> bool {
+        xy_in_bounds(ws, q).is_none() && !ws.point_hits(Vec2::new(q[0], q[1]))
+    }
     fn project(&self, q: &[Real]) -> Vec2 {
         Vec2::new(q[0], q[1])
     }

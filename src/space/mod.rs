@@ -79,7 +79,7 @@ impl StateSpace {
     }
 
     /// The distance between two states.
-    #[inline]
+    #[inline(always)]
     pub fn distance(&self, a: &[Real], b: &[Real]) -> Real {
         match &self.metric {
             // Zipped rather than indexed: no bounds checks in the nearest-neighbour hot loop.
@@ -174,7 +174,7 @@ impl StateSpace {
 
     /// A lower bound on the distance from `q` to any state in the box `lo..=hi` (per dimension,
     /// with `lo`, `hi` canonical). Used by the nearest-neighbour tree to prune.
-    #[inline]
+    #[inline(always)]
     pub fn box_lower_bound(&self, q: &[Real], lo: &[Real], hi: &[Real]) -> Real {
         #[inline(always)]
         fn gap_in(d: &Dim, v: Real, lo: Real, hi: Real) -> Real {
