@@ -118,6 +118,9 @@ for (const p of SUITE) {
 }
 
 const median = (xs) => { const v = xs.filter(Number.isFinite).sort((a, b) => a - b); const n = v.length; return n ? (n % 2 ? v[(n - 1) / 2] : (v[n / 2 - 1] + v[n / 2]) / 2) : NaN; };
+const mean = (xs) => xs.reduce((a, b) => a + b, 0) / xs.length;
+// The sample standard deviation, as the CLI's summaries give it.
+const std = (xs) => (xs.length > 1 ? Math.sqrt(xs.reduce((a, x) => a + (x - mean(xs)) ** 2, 0) / (xs.length - 1)) : 0);
 const f = (v, d = 2) => (Number.isFinite(v) ? (Math.abs(v) >= 1000 ? Math.round(v).toString() : v.toFixed(d)) : '—');
 const stamp = new Date().toISOString().replace(/[-:]/g, '').replace(/\..*/, '').replace('T', '-');
 const host = `${cpus().length} × ${cpus()[0]?.model ?? 'cpu'}`;
@@ -128,8 +131,8 @@ const lines = [
   + `Where wasm is measured, both sides ran ${roundsArg} round(s) and each seed's time is its best round. `
   + 'OMPL 1.5.2 figures are issue 7\'s (medians over 20 seeds, same machine kind). Made by `npm run bench`.',
   '',
-  '| problem | set-up | solved | median ms (native) | median ms (wasm, Node) | wasm / native | OMPL | median nodes | median checks | median cost |',
-  '|---|---|---|---|---|---|---|---|---|---|',
+  '| problem | set-up | solved | median ms (native) | mean ± std ms (native) | median ms (wasm, Node) | wasm / native | OMPL | median nodes | median checks | median cost |',
+  '|---|---|---|---|---|---|---|---|---|---|---|',
 ];
 for (const r of results) {
   r.native.setups.forEach((s, k) => {
@@ -139,7 +142,7 @@ for (const r of results) {
     const nms = s.rounds > 1 ? median(s.best_ms) : m.time_ms.median;
     const plannerKey = s.planner;
     const agree = (w ? w.same_as_native : true) && s.rounds_agree;
-    lines.push(`| ${r.problem} | ${s.label} | ${m.solved}/${m.runs} | ${f(nms)} | ${w ? f(wms) : '—'} | ${w ? `${f(wms / nms)}×` : '—'}${agree ? '' : ' (runs differ!)'} | ${r.ompl?.[plannerKey] ?? '—'} | ${f(m.nodes.median, 1)} | ${f(m.checks.median, 0)} | ${f(m.cost.median, 4)} |`);
+    lines.push(`| ${r.problem} | ${s.label} | ${m.solved}/${m.runs} | ${f(nms)} | ${s.rounds > 1 ? `${f(mean(s.best_ms))} ± ${f(std(s.best_ms))}` : `${f(m.time_ms.mean)} ± ${f(m.time_ms.std)}`} | ${w ? f(wms) : '—'} | ${w ? `${f(wms / nms)}×` : '—'}${agree ? '' : ' (runs differ!)'} | ${r.ompl?.[plannerKey] ?? '—'} | ${f(m.nodes.median, 1)} | ${f(m.checks.median, 0)} | ${f(m.cost.median, 4)} |`);
   });
 }
 lines.push('', 'Problems:', '');

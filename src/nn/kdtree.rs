@@ -57,7 +57,7 @@ impl KdTree {
     }
 
     /// The distance from the query `q` (embedded in `qemb` by [`Self::prepare`]) to point `i`.
-    #[inline]
+    #[inline(always)]
     fn dist(&self, space: &StateSpace, q: &[Real], i: usize) -> Real {
         if self.elen > 0 {
             space.embedded_distance(&self.qemb, &self.emb[i * self.elen..(i + 1) * self.elen])
