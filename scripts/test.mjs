@@ -1,4 +1,5 @@
-// Runs every test: clippy with warnings as errors, native cargo tests, the core compiled to wasm under Node (wasm-pack test --node),
+// Runs every test: clippy with warnings as errors, native cargo tests, one untimed pass of the
+// micro-benchmarks, the core compiled to wasm under Node (wasm-pack test --node),
 // and the JavaScript tests (the wasm build in Node, the worker protocol, the page in headless
 // chromium). Set-up first, so a fresh machine needs nothing else.
 import { execSync } from 'node:child_process';
@@ -13,6 +14,8 @@ const run = (cmd) => {
 run('node scripts/setup.mjs --browser');
 run('cargo clippy --all-targets --release -- -D warnings');
 run('cargo test --release');
+// The micro-benchmarks once each, untimed (criterion's --test): they must keep working.
+run('cargo bench --bench core -- --test');
 run('wasm-pack test --node --release -- --no-default-features');
 run('node scripts/build.mjs');
 run('node --test --test-concurrency=1 tests/js/');

@@ -13,23 +13,27 @@ const LEAF_SCAN: usize = 32;
 #[derive(Clone, Debug, Default)]
 pub struct KdTree {
     dims: usize,
-    /// Flat point coordinates, `dims` per point, in insertion order.
-    pts: Vec<Real>,
+    /// Numbers per key (set by the first insertion): the embedding's length for metrics that
+    /// have one (chain metrics, see [`StateSpace::embed`]), else the state's.
+    kd: usize,
+    /// Whether keys are embeddings. The tree is then built over the embeddings, whose boxes bound
+    /// the chain metric far more tightly than joint-angle boxes do, and each stored state is
+    /// embedded once instead of at every comparison.
+    embedded: bool,
+    /// Flat keys, `kd` per point, in insertion order.
+    keys: Vec<Real>,
     ids: Vec<u32>,
     /// Per point: split dimension, children.
     split: Vec<u8>,
     left: Vec<u32>,
     right: Vec<u32>,
-    /// Per point: bounding box of its subtree (flat, `dims` per point).
+    /// Per point: bounding box of its subtree, in key coordinates (flat, `kd` per point).
     lo: Vec<Real>,
     hi: Vec<Real>,
     root: u32,
     next_rebuild: usize,
     stack: Vec<(u32, Real)>,
-    /// For metrics with an embedding (chain metrics): each point's, flat, `elen` per point, and
-    /// the query's (see [`StateSpace::embed`]).
-    elen: usize,
-    emb: Vec<Real>,
+    /// The query's embedding (when keys are embeddings).
     qemb: Vec<Real>,
 }
 
@@ -51,25 +55,48 @@ impl KdTree {
         *self = KdTree::new(self.dims);
     }
 
-    #[inline]
-    fn p(&self, i: usize) -> &[Real] {
-        &self.pts[i * self.dims..(i + 1) * self.dims]
+    /// Point `i`'s key.
+    #[inline(always)]
+    fn key(&self, i: usize) -> &[Real] {
+        &self.keys[i * self.kd..(i + 1) * self.kd]
     }
 
-    /// The distance from the query `q` (embedded in `qemb` by [`Self::prepare`]) to point `i`.
+    /// The query's key: its embedding (after [`Self::prepare`]), else the state itself.
     #[inline(always)]
-    fn dist(&self, space: &StateSpace, q: &[Real], i: usize) -> Real {
-        if self.elen > 0 {
-            space.embedded_distance(&self.qemb, &self.emb[i * self.elen..(i + 1) * self.elen])
+    fn qkey<'a>(&'a self, q: &'a [Real]) -> &'a [Real] {
+        if self.embedded {
+            &self.qemb
         } else {
-            space.distance(q, self.p(i))
+            q
         }
     }
 
-    /// Embed the query, for metrics that have an embedding.
+    /// A lower bound on the distance from the query (key `qk`) to any point under node `c`.
+    #[inline(always)]
+    fn box_bound(&self, space: &StateSpace, qk: &[Real], c: usize) -> Real {
+        let kd = self.kd;
+        let (lo, hi) = (&self.lo[c * kd..(c + 1) * kd], &self.hi[c * kd..(c + 1) * kd]);
+        if self.embedded {
+            space.embedded_box_lower_bound(qk, lo, hi)
+        } else {
+            space.box_lower_bound(qk, lo, hi)
+        }
+    }
+
+    /// The distance from the query (key `qk`) to point `i`.
+    #[inline(always)]
+    fn dist(&self, space: &StateSpace, qk: &[Real], i: usize) -> Real {
+        if self.embedded {
+            space.embedded_distance(qk, self.key(i))
+        } else {
+            space.distance(qk, self.key(i))
+        }
+    }
+
+    /// Embed the query, when keys are embeddings.
     fn prepare(&mut self, space: &StateSpace, q: &[Real]) {
-        if self.elen > 0 {
-            self.qemb.resize(self.elen, 0.0);
+        if self.embedded {
+            self.qemb.resize(self.kd, 0.0);
             let mut e = std::mem::take(&mut self.qemb);
             space.embed(q, &mut e);
             self.qemb = e;
@@ -80,17 +107,20 @@ impl KdTree {
     pub fn add(&mut self, space: &StateSpace, q: &[Real], id: u32) {
         let n = self.ids.len();
         if n == 0 {
-            self.elen = space.embedding_len();
+            let elen = space.embedding_len();
+            self.embedded = elen > 0;
+            self.kd = if self.embedded { elen } else { self.dims };
         }
-        if self.elen > 0 {
-            let at = self.emb.len();
-            self.emb.resize(at + self.elen, 0.0);
-            space.embed(q, &mut self.emb[at..]);
+        let at = self.keys.len();
+        if self.embedded {
+            self.keys.resize(at + self.kd, 0.0);
+            space.embed(q, &mut self.keys[at..]);
+        } else {
+            self.keys.extend_from_slice(q);
         }
-        self.pts.extend_from_slice(q);
         self.ids.push(id);
-        self.lo.extend_from_slice(q);
-        self.hi.extend_from_slice(q);
+        self.lo.extend_from_slice(&self.keys[at..]);
+        self.hi.extend_from_slice(&self.keys[at..]);
         self.left.push(NONE);
         self.right.push(NONE);
         self.split.push(0);
@@ -102,15 +132,16 @@ impl KdTree {
         if self.root == NONE {
             return; // still in linear-scan mode
         }
-        let d = self.dims;
+        let d = self.kd;
         let mut cur = self.root as usize;
         loop {
-            for (k, &v) in q.iter().enumerate() {
+            for k in 0..d {
+                let v = self.keys[at + k];
                 self.lo[cur * d + k] = self.lo[cur * d + k].at_most(v);
                 self.hi[cur * d + k] = self.hi[cur * d + k].at_least(v);
             }
             let s = self.split[cur] as usize;
-            let go_left = q[s] < self.pts[cur * d + s];
+            let go_left = self.keys[at + s] < self.keys[cur * d + s];
             let child = if go_left { self.left[cur] } else { self.right[cur] };
             if child == NONE {
                 self.split[n] = ((s + 1) % d) as u8;
@@ -134,26 +165,29 @@ impl KdTree {
         if idx.is_empty() {
             return NONE;
         }
-        let d = self.dims;
-        let mut lo = self.p(idx[0] as usize).to_vec();
+        let d = self.kd;
+        let mut lo = self.key(idx[0] as usize).to_vec();
         let mut hi = lo.clone();
         for &i in idx.iter() {
             for k in 0..d {
-                let v = self.pts[i as usize * d + k];
+                let v = self.keys[i as usize * d + k];
                 lo[k] = lo[k].at_most(v);
                 hi[k] = hi[k].at_least(v);
             }
         }
-        // Widest dimension, with the rotation weight of the metric applied to angles.
+        // Widest dimension, with the rotation weight of the metric applied to angles (embedding
+        // coordinates are lengths already).
+        let embedded = self.embedded;
         let weight = |k: usize| match &space.metric {
+            _ if embedded => 1.0,
             crate::space::Metric::TranslationRotation { weight } if k == 2 => *weight,
             crate::space::Metric::Weighted { weights } => weights[k],
             _ => 1.0,
         };
         let s = (0..d).max_by(|&a, &b| ((hi[a] - lo[a]) * weight(a)).total_cmp(&((hi[b] - lo[b]) * weight(b)))).unwrap_or(0);
         let mid = idx.len() / 2;
-        let pts = &self.pts;
-        idx.select_nth_unstable_by(mid, |&a, &b| pts[a as usize * d + s].total_cmp(&pts[b as usize * d + s]).then(a.cmp(&b)));
+        let keys = &self.keys;
+        idx.select_nth_unstable_by(mid, |&a, &b| keys[a as usize * d + s].total_cmp(&keys[b as usize * d + s]).then(a.cmp(&b)));
         let m = idx[mid] as usize;
         let (left, rest) = idx.split_at_mut(mid);
         let l = self.build(space, left);
@@ -175,29 +209,36 @@ impl KdTree {
     /// Like [`nearest`](Self::nearest), among the points whose id passes `keep`.
     pub fn nearest_where(&mut self, space: &StateSpace, q: &[Real], keep: impl Fn(u32) -> bool) -> Option<(u32, Real)> {
         self.prepare(space, q);
+        let mut stack = std::mem::take(&mut self.stack);
+        let best = self.search_nearest(space, self.qkey(q), keep, &mut stack);
+        self.stack = stack;
+        best
+    }
+
+    /// Keep point `i` at distance `dist` if it beats the best so far (ties: the earlier point).
+    #[inline(always)]
+    fn consider(&self, i: usize, dist: Real, best: &mut Option<(u32, Real)>, best_i: &mut usize) {
+        let better = match best {
+            None => true,
+            Some((_, bd)) => dist < *bd || (dist == *bd && i < *best_i),
+        };
+        if better {
+            *best = Some((self.ids[i], dist));
+            *best_i = i;
+        }
+    }
+
+    fn search_nearest(&self, space: &StateSpace, qk: &[Real], keep: impl Fn(u32) -> bool, stack: &mut Vec<(u32, Real)>) -> Option<(u32, Real)> {
         let mut best: Option<(u32, Real)> = None;
         let mut best_i = usize::MAX;
-        let consider = |i: usize, dist: Real, best: &mut Option<(u32, Real)>, best_i: &mut usize| {
-            let better = match best {
-                None => true,
-                Some((_, bd)) => dist < *bd || (dist == *bd && i < *best_i),
-            };
-            if better {
-                *best = Some((self.ids[i], dist));
-                *best_i = i;
-            }
-        };
-        let d = self.dims;
         if self.root == NONE {
             for i in 0..self.ids.len() {
                 if keep(self.ids[i]) {
-                    let dist = self.dist(space, q, i);
-                    consider(i, dist, &mut best, &mut best_i);
+                    self.consider(i, self.dist(space, qk, i), &mut best, &mut best_i);
                 }
             }
             return best;
         }
-        let mut stack = std::mem::take(&mut self.stack);
         stack.clear();
         stack.push((self.root, 0.0));
         while let Some((node, bound)) = stack.pop() {
@@ -208,14 +249,12 @@ impl KdTree {
                 }
             }
             if keep(self.ids[i]) {
-                let dist = self.dist(space, q, i);
-                consider(i, dist, &mut best, &mut best_i);
+                self.consider(i, self.dist(space, qk, i), &mut best, &mut best_i);
             }
             let s = self.split[i] as usize;
-            let (near, far) = if q[s] < self.pts[i * d + s] { (self.left[i], self.right[i]) } else { (self.right[i], self.left[i]) };
+            let (near, far) = if qk[s] < self.keys[i * self.kd + s] { (self.left[i], self.right[i]) } else { (self.right[i], self.left[i]) };
             if far != NONE {
-                let c = far as usize;
-                let b = space.box_lower_bound(q, &self.lo[c * d..(c + 1) * d], &self.hi[c * d..(c + 1) * d]);
+                let b = self.box_bound(space, qk, far as usize);
                 if best.is_none_or(|(_, bd)| b <= bd) {
                     stack.push((far, b));
                 }
@@ -226,7 +265,6 @@ impl KdTree {
                 stack.push((near, bound));
             }
         }
-        self.stack = stack;
         best
     }
 
@@ -246,6 +284,13 @@ impl KdTree {
             return Vec::new();
         }
         self.prepare(space, q);
+        let mut stack = std::mem::take(&mut self.stack);
+        let found = self.search_collect(space, self.qkey(q), k, r, &mut stack);
+        self.stack = stack;
+        found.into_iter().map(|(dist, i)| (self.ids[i], dist)).collect()
+    }
+
+    fn search_collect(&self, space: &StateSpace, qk: &[Real], k: usize, r: Real, stack: &mut Vec<(u32, Real)>) -> Vec<(Real, usize)> {
         // (distance, insertion index), kept sorted; the bound is the k-th distance once full.
         let mut found: Vec<(Real, usize)> = Vec::new();
         let bound = |found: &Vec<(Real, usize)>| if found.len() >= k { found[k - 1].0 } else { r };
@@ -256,38 +301,34 @@ impl KdTree {
                 found.truncate(k);
             }
         };
-        let d = self.dims;
         if self.root == NONE {
             for i in 0..self.ids.len() {
-                offer(self.dist(space, q, i), i, &mut found);
+                offer(self.dist(space, qk, i), i, &mut found);
             }
-        } else {
-            let mut stack = std::mem::take(&mut self.stack);
-            stack.clear();
-            stack.push((self.root, 0.0));
-            while let Some((node, b)) = stack.pop() {
-                if b > bound(&found) {
-                    continue;
-                }
-                let i = node as usize;
-                offer(self.dist(space, q, i), i, &mut found);
-                // Far side pushed first, so the near side is searched first and tightens the bound.
-                let s = self.split[i] as usize;
-                let (near, far) = if q[s] < self.pts[i * d + s] { (self.left[i], self.right[i]) } else { (self.right[i], self.left[i]) };
-                if far != NONE {
-                    let c = far as usize;
-                    let cb = space.box_lower_bound(q, &self.lo[c * d..(c + 1) * d], &self.hi[c * d..(c + 1) * d]);
-                    if cb <= bound(&found) {
-                        stack.push((far, cb));
-                    }
-                }
-                // The near side, next, with this node's bound (as in `nearest_where`).
-                if near != NONE {
-                    stack.push((near, b));
-                }
-            }
-            self.stack = stack;
+            return found;
         }
-        found.into_iter().map(|(dist, i)| (self.ids[i], dist)).collect()
+        stack.clear();
+        stack.push((self.root, 0.0));
+        while let Some((node, b)) = stack.pop() {
+            if b > bound(&found) {
+                continue;
+            }
+            let i = node as usize;
+            offer(self.dist(space, qk, i), i, &mut found);
+            // Far side pushed first, so the near side is searched first and tightens the bound.
+            let s = self.split[i] as usize;
+            let (near, far) = if qk[s] < self.keys[i * self.kd + s] { (self.left[i], self.right[i]) } else { (self.right[i], self.left[i]) };
+            if far != NONE {
+                let cb = self.box_bound(space, qk, far as usize);
+                if cb <= bound(&found) {
+                    stack.push((far, cb));
+                }
+            }
+            // The near side, next, with this node's bound (as in `search_nearest`).
+            if near != NONE {
+                stack.push((near, b));
+            }
+        }
+        found
     }
 }

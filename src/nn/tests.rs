@@ -79,3 +79,60 @@ fn k_nearest_and_within_match_a_sorted_scan() {
         }
     }
 }
+
+/// A chain of `n` links with free joints (the horn's metric spaces).
+fn chain_space(n: usize, metric: fn(Vec<Real>) -> Metric) -> StateSpace {
+    let links: Vec<Real> = (0..n).map(|k| 0.1 + 0.01 * k as Real).collect();
+    StateSpace { dims: vec![Dim { lo: -PI, hi: PI, wraps: true }; n], metric: metric(links) }
+}
+
+#[test]
+fn matches_linear_scan_for_chain_metrics_over_embeddings() {
+    // The tree is built over the link-end embeddings; the answers must be the scan's exactly.
+    check_space(chain_space(10, |links| Metric::ChainSum { links }), 3);
+    check_space(chain_space(10, |links| Metric::ChainMax { links }), 4);
+    check_space(chain_space(3, |links| Metric::ChainSum { links }), 5);
+}
+
+#[test]
+fn chain_k_nearest_and_within_match_a_sorted_scan() {
+    let s = chain_space(6, |links| Metric::ChainSum { links });
+    let mut rng = Rng::new(6);
+    let mut t = KdTree::new(6);
+    let mut pts = Vec::new();
+    for i in 0..400u32 {
+        let mut q = vec![0.0; 6];
+        s.sample_uniform(&mut rng, &mut q);
+        t.add(&s, &q, i);
+        pts.push(q);
+    }
+    for _ in 0..20 {
+        let mut query = vec![0.0; 6];
+        s.sample_uniform(&mut rng, &mut query);
+        let mut all: Vec<(u32, Real)> = pts.iter().enumerate().map(|(j, p)| (j as u32, s.distance(&query, p))).collect();
+        all.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
+        assert_eq!(t.k_nearest(&s, &query, 5), all.iter().take(5).copied().collect::<Vec<_>>());
+        let r = all[30].1;
+        assert_eq!(t.within(&s, &query, r), all.iter().filter(|e| e.1 <= r).copied().collect::<Vec<_>>());
+    }
+}
+
+#[test]
+fn embedded_box_bound_never_exceeds_the_distance_to_a_point_inside() {
+    for s in [chain_space(8, |links| Metric::ChainSum { links }), chain_space(8, |links| Metric::ChainMax { links })] {
+        let mut rng = Rng::new(7);
+        let (mut ea, mut eb, mut eq) = (vec![0.0; 16], vec![0.0; 16], vec![0.0; 16]);
+        for _ in 0..2000 {
+            let mut q = vec![0.0; 8];
+            for e in [&mut ea, &mut eb, &mut eq] {
+                s.sample_uniform(&mut rng, &mut q);
+                s.embed(&q, e);
+            }
+            let lo: Vec<Real> = ea.iter().zip(&eb).map(|(a, b)| a.min(*b)).collect();
+            let hi: Vec<Real> = ea.iter().zip(&eb).map(|(a, b)| a.max(*b)).collect();
+            let bound = s.embedded_box_lower_bound(&eq, &lo, &hi);
+            assert!(bound <= s.embedded_distance(&eq, &ea) && bound <= s.embedded_distance(&eq, &eb));
+            assert_eq!(s.embedded_box_lower_bound(&ea, &lo, &hi), 0.0, "a point inside its box is at 0");
+        }
+    }
+}

@@ -131,6 +131,22 @@ impl StateSpace {
         }
     }
 
+    /// A lower bound on the distance from the embedding `eq` to any embedding in the box
+    /// `lo..=hi` (chain metrics only): each link end moves at least its 2-D distance to its part
+    /// of the box. Computed in the same order as [`embedded_distance`](Self::embedded_distance),
+    /// so in floating point too it never exceeds the distance to a point of the box.
+    #[inline(always)]
+    pub fn embedded_box_lower_bound(&self, eq: &[Real], lo: &[Real], hi: &[Real]) -> Real {
+        let gap = |v: Real, l: Real, h: Real| if v < l { l - v } else if v > h { v - h } else { 0.0 };
+        let moves = eq.chunks_exact(2).zip(lo.chunks_exact(2)).zip(hi.chunks_exact(2)).map(|((e, l), h)| {
+            (gap(e[0], l[0], h[0]).powi(2) + gap(e[1], l[1], h[1]).powi(2)).sqrt()
+        });
+        match &self.metric {
+            Metric::ChainMax { .. } => moves.fold(0.0, Real::max),
+            _ => moves.sum(),
+        }
+    }
+
     /// Write into `out` the state a fraction `t` of the way from `a` to `b`.
     #[inline]
     pub fn interpolate(&self, a: &[Real], b: &[Real], t: Real, out: &mut [Real]) {
