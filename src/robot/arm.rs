@@ -240,9 +240,17 @@ impl ArmRobot {
             return Some("two adjacent links fold onto each other");
         }
         let segs = pts.len() - 1;
+        // Boxes strictly apart: the links cannot meet (most pairs of a long chain; exact).
+        let apart = |p: Vec2, q: Vec2, r: Vec2, s: Vec2| {
+            p.x.at_least(q.x) < r.x.at_most(s.x)
+                || r.x.at_least(s.x) < p.x.at_most(q.x)
+                || p.y.at_least(q.y) < r.y.at_most(s.y)
+                || r.y.at_least(s.y) < p.y.at_most(q.y)
+        };
         for i in 0..segs {
             for j in i + 2..segs {
-                if intersect_segment_segment(pts[i], pts[i + 1], pts[j], pts[j + 1]) {
+                let (p, q, r, s) = (pts[i], pts[i + 1], pts[j], pts[j + 1]);
+                if !apart(p, q, r, s) && intersect_segment_segment(p, q, r, s) {
                     return Some("the arm crosses itself");
                 }
             }
