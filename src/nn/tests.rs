@@ -56,28 +56,36 @@ fn filtered_nearest_skips_excluded_ids() {
     assert_eq!(t.nearest_where(&s, &[0.5, 0.5], |id| id % 2 == 1).unwrap().0, 49);
 }
 
+/// Grow a tree of `n` uniform states; after every `every`-th insertion and the last, compare
+/// `k_nearest(k)` and `within(r)` for a random query with a sorted scan (`r` from the sorted
+/// distances, so that it takes a fair share of points).
+fn check_collect(s: &StateSpace, seed: u64, n: u32, every: u32, k: usize, r: impl Fn(&[(u32, Real)]) -> Real) {
+    let d = s.dim_count();
+    let mut rng = Rng::new(seed);
+    let mut t = KdTree::new(d);
+    let mut pts = Vec::new();
+    for i in 0..n {
+        let mut q = vec![0.0; d];
+        s.sample_uniform(&mut rng, &mut q);
+        t.add(s, &q, i);
+        pts.push(q);
+        if i % every == 0 || i == n - 1 {
+            let mut query = vec![0.0; d];
+            s.sample_uniform(&mut rng, &mut query);
+            let mut all: Vec<(u32, Real)> = pts.iter().enumerate().map(|(j, p)| (j as u32, s.distance(&query, p))).collect();
+            all.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
+            assert_eq!(t.k_nearest(s, &query, k), all.iter().take(k).copied().collect::<Vec<_>>());
+            let r = r(&all);
+            assert_eq!(t.within(s, &query, r), all.iter().filter(|e| e.1 <= r).copied().collect::<Vec<_>>());
+        }
+    }
+}
+
 #[test]
 fn k_nearest_and_within_match_a_sorted_scan() {
     let dims = vec![Dim { lo: 0.0, hi: 1.0, wraps: false }, Dim { lo: 0.0, hi: 1.0, wraps: false }, Dim { lo: -PI, hi: PI, wraps: true }];
     let s = StateSpace { dims, metric: Metric::TranslationRotation { weight: 0.3 } };
-    let mut rng = Rng::new(5);
-    let mut t = KdTree::new(3);
-    let mut pts = Vec::new();
-    for i in 0..500u32 {
-        let mut q = vec![0.0; 3];
-        s.sample_uniform(&mut rng, &mut q);
-        t.add(&s, &q, i);
-        pts.push(q);
-        if i % 50 == 0 || i == 499 {
-            let mut query = vec![0.0; 3];
-            s.sample_uniform(&mut rng, &mut query);
-            let mut all: Vec<(u32, Real)> = pts.iter().enumerate().map(|(j, p)| (j as u32, s.distance(&query, p))).collect();
-            all.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
-            assert_eq!(t.k_nearest(&s, &query, 7), all.iter().take(7).copied().collect::<Vec<_>>());
-            let r = 0.4;
-            assert_eq!(t.within(&s, &query, r), all.iter().filter(|e| e.1 <= r).copied().collect::<Vec<_>>());
-        }
-    }
+    check_collect(&s, 5, 500, 50, 7, |_| 0.4);
 }
 
 /// A chain of `n` links with free joints (the horn's metric spaces).
@@ -97,24 +105,7 @@ fn matches_linear_scan_for_chain_metrics_over_embeddings() {
 #[test]
 fn chain_k_nearest_and_within_match_a_sorted_scan() {
     let s = chain_space(6, |links| Metric::ChainSum { links });
-    let mut rng = Rng::new(6);
-    let mut t = KdTree::new(6);
-    let mut pts = Vec::new();
-    for i in 0..400u32 {
-        let mut q = vec![0.0; 6];
-        s.sample_uniform(&mut rng, &mut q);
-        t.add(&s, &q, i);
-        pts.push(q);
-    }
-    for _ in 0..20 {
-        let mut query = vec![0.0; 6];
-        s.sample_uniform(&mut rng, &mut query);
-        let mut all: Vec<(u32, Real)> = pts.iter().enumerate().map(|(j, p)| (j as u32, s.distance(&query, p))).collect();
-        all.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
-        assert_eq!(t.k_nearest(&s, &query, 5), all.iter().take(5).copied().collect::<Vec<_>>());
-        let r = all[30].1;
-        assert_eq!(t.within(&s, &query, r), all.iter().filter(|e| e.1 <= r).copied().collect::<Vec<_>>());
-    }
+    check_collect(&s, 6, 400, 20, 5, |all| all[all.len().min(31) - 1].1);
 }
 
 #[test]
