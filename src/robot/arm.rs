@@ -166,66 +166,64 @@ impl ArmRobot {
         pts.resize(self.point_count(), Vec2::default());
         self.joint_points(q, pts);
         let pts = &pts[..];
-        {
-            let b = ws.bounds;
-            let mut c = cap;
-            // The base never moves: only the other points can leave the bounds (the Technion base
-            // sits on the bounds' corner).
-            for (k, p) in pts.iter().enumerate().skip(1) {
-                let d = (p.x - b.min.x).at_most(b.max.x - p.x).at_most(p.y - b.min.y).at_most(b.max.y - p.y).at_least(0.0);
-                c = c.at_most(over(d, seg_rate(k - 1)));
-            }
-            for (k, w) in pts.windows(2).enumerate() {
-                if c == 0.0 {
-                    return 0.0;
-                }
-                let rate = seg_rate(k);
-                // Within this segment's reach of c: the capped distance, else only whether it meets.
-                let reach = if rate > 0.0 && c.is_finite() { c * rate } else { Real::MIN_POSITIVE };
-                c = c.at_most(over(ws.segment_clearance(w[0], w[1], reach), rate));
-            }
-            if self.self_collision {
-                let segs = pts.len() - 1;
-                // Each segment's box, once (the pairs' broad phase reads them 2·segs times each).
-                boxes.resize(segs, [0.0; 4]);
-                for (bx, w) in boxes.iter_mut().zip(pts.windows(2)) {
-                    *bx = [w[0].x.at_most(w[1].x), w[0].x.at_least(w[1].x), w[0].y.at_most(w[1].y), w[0].y.at_least(w[1].y)];
-                }
-                for i in 0..segs {
-                    let bi = boxes[i];
-                    for j in i + 1..segs {
-                        let tip_pair = self.tip > 0.0 && j == segs - 1 && i == segs - 2;
-                        if tip_pair {
-                            continue; // the tip continues the last link by construction
-                        }
-                        let rate = pair_rate(i, j);
-                        let d = if j == i + 1 {
-                            // Adjacent links meet at their joint; they fold when either far end
-                            // reaches the other link.
-                            let (a, m, e) = (pts[i], pts[i + 1], pts[i + 2]);
-                            if contains_segment_point(m, e, a) || contains_segment_point(a, m, e) {
-                                0.0
-                            } else {
-                                distance2_point_segment(a, m, e).at_most(distance2_point_segment(e, a, m)).sqrt()
-                            }
-                        } else {
-                            // Broad phase: two links whose boxes are c·rate apart cannot lower c
-                            // (the result is the same; most pairs of a long chain are far apart).
-                            let bj = boxes[j];
-                            let gx = (bi[0] - bj[1]).at_least(bj[0] - bi[1]).at_least(0.0);
-                            let gy = (bi[2] - bj[3]).at_least(bj[2] - bi[3]).at_least(0.0);
-                            let reach = c * rate;
-                            if gx * gx + gy * gy >= reach * reach && gx + gy > 0.0 {
-                                continue;
-                            }
-                            distance_segment_segment(pts[i], pts[i + 1], pts[j], pts[j + 1])
-                        };
-                        c = c.at_most(over(d, rate));
-                    }
-                }
-            }
-            c
+        let b = ws.bounds;
+        let mut c = cap;
+        // The base never moves: only the other points can leave the bounds (the Technion base
+        // sits on the bounds' corner).
+        for (k, p) in pts.iter().enumerate().skip(1) {
+            let d = (p.x - b.min.x).at_most(b.max.x - p.x).at_most(p.y - b.min.y).at_most(b.max.y - p.y).at_least(0.0);
+            c = c.at_most(over(d, seg_rate(k - 1)));
         }
+        for (k, w) in pts.windows(2).enumerate() {
+            if c == 0.0 {
+                return 0.0;
+            }
+            let rate = seg_rate(k);
+            // Within this segment's reach of c: the capped distance, else only whether it meets.
+            let reach = if rate > 0.0 && c.is_finite() { c * rate } else { Real::MIN_POSITIVE };
+            c = c.at_most(over(ws.segment_clearance(w[0], w[1], reach), rate));
+        }
+        if self.self_collision {
+            let segs = pts.len() - 1;
+            // Each segment's box, once (the pairs' broad phase reads them 2·segs times each).
+            boxes.resize(segs, [0.0; 4]);
+            for (bx, w) in boxes.iter_mut().zip(pts.windows(2)) {
+                *bx = [w[0].x.at_most(w[1].x), w[0].x.at_least(w[1].x), w[0].y.at_most(w[1].y), w[0].y.at_least(w[1].y)];
+            }
+            for i in 0..segs {
+                let bi = boxes[i];
+                for j in i + 1..segs {
+                    let tip_pair = self.tip > 0.0 && j == segs - 1 && i == segs - 2;
+                    if tip_pair {
+                        continue; // the tip continues the last link by construction
+                    }
+                    let rate = pair_rate(i, j);
+                    let d = if j == i + 1 {
+                        // Adjacent links meet at their joint; they fold when either far end
+                        // reaches the other link.
+                        let (a, m, e) = (pts[i], pts[i + 1], pts[i + 2]);
+                        if contains_segment_point(m, e, a) || contains_segment_point(a, m, e) {
+                            0.0
+                        } else {
+                            distance2_point_segment(a, m, e).at_most(distance2_point_segment(e, a, m)).sqrt()
+                        }
+                    } else {
+                        // Broad phase: two links whose boxes are c·rate apart cannot lower c
+                        // (the result is the same; most pairs of a long chain are far apart).
+                        let bj = boxes[j];
+                        let gx = (bi[0] - bj[1]).at_least(bj[0] - bi[1]).at_least(0.0);
+                        let gy = (bi[2] - bj[3]).at_least(bj[2] - bi[3]).at_least(0.0);
+                        let reach = c * rate;
+                        if gx * gx + gy * gy >= reach * reach && gx + gy > 0.0 {
+                            continue;
+                        }
+                        distance_segment_segment(pts[i], pts[i + 1], pts[j], pts[j + 1])
+                    };
+                    c = c.at_most(over(d, rate));
+                }
+            }
+        }
+        c
     }
 
     fn within_limits(&self, q: &[Real]) -> bool {
