@@ -26,7 +26,7 @@ pub trait MotionValidator {
 
 /// Visit `1..n` coarse to fine (n/2 first, then n/4 and 3n/4, ...), each index once, stopping at
 /// the first error.
-fn in_bisection_order<E>(n: usize, mut visit: impl FnMut(usize) -> Result<(), E>) -> Result<(), E> {
+pub(crate) fn in_bisection_order<E>(n: usize, mut visit: impl FnMut(usize) -> Result<(), E>) -> Result<(), E> {
     let mut step = n.next_power_of_two();
     while step > 1 {
         let half = step / 2;
@@ -57,18 +57,13 @@ impl SpaceInfo {
     }
 
     fn check_discrete(&self, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real]) -> Result<(), Invalid> {
-        if !self.is_valid(b) {
-            scratch.copy_from_slice(b);
-            return Err(Invalid);
+        let (valid, checks) = self.validity.check_discrete(&self.space, a, b, n, scratch);
+        self.count_checks(checks);
+        if valid {
+            Ok(())
+        } else {
+            Err(Invalid)
         }
-        in_bisection_order(n, |i| {
-            self.interpolate(a, b, i as Real / n as Real, scratch);
-            if self.is_valid(scratch) {
-                Ok(())
-            } else {
-                Err(Invalid)
-            }
-        })
     }
 
     /// Like the discrete check, but computing each state's clearance (capped at the per-step

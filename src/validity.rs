@@ -12,6 +12,8 @@ pub trait StateValidity {
     fn is_valid(&self, q: &[Real]) -> bool {
         self.verdict(q) == Verdict::Valid
     }
+    /// The discrete check of a motion, as [`Robot::check_discrete`] describes it.
+    fn check_discrete(&self, space: &crate::space::StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real]) -> (bool, u64);
     /// Exact swept test of the straight motion `a → b`, when one exists (`Some(true)`: it hits).
     fn sweep_hits(&self, a: &[Real], b: &[Real]) -> Option<bool>;
     /// The workspace point a state is drawn at.
@@ -69,6 +71,9 @@ impl StateValidity for RobotInWorkspace {
     }
     fn is_valid(&self, q: &[Real]) -> bool {
         self.robot.is_valid(&self.workspace, q)
+    }
+    fn check_discrete(&self, space: &crate::space::StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real]) -> (bool, u64) {
+        self.robot.check_discrete(&self.workspace, space, a, b, n, scratch)
     }
     fn sweep_hits(&self, a: &[Real], b: &[Real]) -> Option<bool> {
         self.robot.sweep_hits(&self.workspace, a, b)
