@@ -21,7 +21,7 @@ pub fn contains_segment_point(a: Vec2, b: Vec2, p: Vec2) -> bool {
 }
 
 /// Whether closed segments `p1 p2` and `q1 q2` share a point (touching and overlap count).
-#[inline]
+#[inline(always)]
 pub fn intersect_segment_segment(p1: Vec2, p2: Vec2, q1: Vec2, q2: Vec2) -> bool {
     let d1 = orient(q1, q2, p1);
     let d2 = orient(q1, q2, p2);
@@ -37,7 +37,7 @@ pub fn intersect_segment_segment(p1: Vec2, p2: Vec2, q1: Vec2, q2: Vec2) -> bool
 }
 
 /// Distance between closed segments `a b` and `c d` (0 when they meet).
-#[inline]
+#[inline(always)]
 pub fn distance_segment_segment(a: Vec2, b: Vec2, c: Vec2, d: Vec2) -> Real {
     if intersect_segment_segment(a, b, c, d) {
         return 0.0;
@@ -50,7 +50,7 @@ pub fn distance_segment_segment(a: Vec2, b: Vec2, c: Vec2, d: Vec2) -> Real {
 }
 
 /// Squared distance from `p` to the closed segment `a b`.
-#[inline]
+#[inline(always)]
 pub fn distance2_point_segment(p: Vec2, a: Vec2, b: Vec2) -> Real {
     let ab = b - a;
     let l2 = ab.norm2();
