@@ -31,6 +31,12 @@ impl Aabb {
     pub fn contains(&self, p: Vec2) -> bool {
         p.x >= self.min.x && p.x <= self.max.x && p.y >= self.min.y && p.y <= self.max.y
     }
+    /// How far apart two boxes are along x and along y (0 along an axis where they overlap):
+    /// their distance is at least `√(gx² + gy²)`.
+    #[inline]
+    pub fn gap(&self, o: &Aabb) -> Vec2 {
+        Vec2::new((self.min.x - o.max.x).at_least(o.min.x - self.max.x).at_least(0.0), (self.min.y - o.max.y).at_least(o.min.y - self.max.y).at_least(0.0))
+    }
     /// The box grown by `r` on every side.
     pub fn grown(&self, r: Real) -> Aabb {
         Aabb { min: Vec2::new(self.min.x - r, self.min.y - r), max: Vec2::new(self.max.x + r, self.max.y + r) }

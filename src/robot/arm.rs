@@ -18,7 +18,7 @@
 
 use super::{Robot, Verdict};
 use crate::geometry::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment, intersect_segment_segment};
-use crate::geometry::{SensorPose, Workspace};
+use crate::geometry::{Aabb, SensorPose, Workspace};
 use crate::math::{MinMax, PI, Real, Vec2, angle_diff};
 use crate::scenario::RobotSpec;
 use crate::space::{Dim, Metric, StateSpace};
@@ -38,12 +38,13 @@ pub struct ArmRobot {
     self_collision: bool,
     metric: Metric,
     tip: Real,
-    /// The rates of the latest motion certified (see [`ArmRobot::motion_rates`]).
-    rates: std::cell::RefCell<Option<MotionRates>>,
+    /// The rates of the latest motion certified (see [`ArmRobot::set_motion`]).
+    rates: std::cell::RefCell<MotionRates>,
 }
 
 /// Speed bounds along one motion: per segment, and per pair of segments relative to each other.
-#[derive(Clone, Debug)]
+/// Its vectors are refilled for each motion, never reallocated once grown.
+#[derive(Clone, Debug, Default)]
 struct MotionRates {
     a: Vec<Real>,
     b: Vec<Real>,
@@ -51,10 +52,14 @@ struct MotionRates {
     /// `rel[i * segs + j]` for `i < j`.
     rel: Vec<Real>,
     segs: usize,
-    /// Scratch for [`ArmRobot::clearance_at`], reused across the motion's states: the joint
-    /// points and each segment's box (`[min x, max x, min y, max y]`).
+    /// Scratch for [`ArmRobot::clearance_at`], reused across states and motions: the joint
+    /// points and each segment's box.
     pts: Vec<Vec2>,
-    boxes: Vec<[Real; 4]>,
+    boxes: Vec<Aabb>,
+    /// Scratch for [`ArmRobot::set_motion`]: each joint's turn, and prefix sums of the segments'
+    /// lengths.
+    dq: Vec<Real>,
+    prefix: Vec<Real>,
 }
 
 impl ArmRobot {
@@ -75,7 +80,7 @@ impl ArmRobot {
             self_collision: *self_collision,
             metric,
             tip: *tip,
-            rates: std::cell::RefCell::new(None),
+            rates: std::cell::RefCell::new(MotionRates::default()),
         })
     }
 
@@ -129,25 +134,34 @@ impl ArmRobot {
     /// `j > i` moves only by the joints between them: at most `Σ_{i < m ≤ j} |Δq_m|·R(m, j)`. Two
     /// links next to each other therefore close in only by their shared joint, however fast the
     /// arm as a whole swings.
-    fn motion_rates(&self, a: &[Real], b: &[Real]) -> MotionRates {
+    fn set_motion(&self, rates: &mut MotionRates, a: &[Real], b: &[Real]) {
         let n = self.links.len();
         let segs = self.point_count() - 1;
-        let dq: Vec<Real> = (0..n).map(|i| if self.limits[i].is_some() { (b[i] - a[i]).abs() } else { angle_diff(a[i], b[i]).abs() }).collect();
+        let MotionRates { a: ra, b: rb, seg, rel, segs: rs, dq, prefix, .. } = rates;
+        dq.clear();
+        dq.extend((0..n).map(|i| if self.limits[i].is_some() { (b[i] - a[i]).abs() } else { angle_diff(a[i], b[i]).abs() }));
         // R(m, k), by prefix sums of the segment lengths.
-        let mut prefix = vec![0.0; segs + 1];
+        prefix.clear();
+        prefix.push(0.0);
         for k in 0..segs {
-            prefix[k + 1] = prefix[k] + self.seg_len(k);
+            prefix.push(prefix[k] + self.seg_len(k));
         }
         let r = |m: usize, k: usize| prefix[k + 1] - prefix[m];
         let joints_of = |k: usize| k.min(n - 1); // the tip turns with the last joint
-        let seg = (0..segs).map(|k| (0..=joints_of(k)).map(|m| dq[m] * r(m, k)).sum()).collect();
-        let mut rel = vec![0.0; segs * segs];
+        ra.clear();
+        ra.extend_from_slice(a);
+        rb.clear();
+        rb.extend_from_slice(b);
+        *rs = segs;
+        seg.clear();
+        seg.extend((0..segs).map(|k| (0..=joints_of(k)).map(|m| dq[m] * r(m, k)).sum::<Real>()));
+        rel.clear();
+        rel.resize(segs * segs, 0.0);
         for i in 0..segs {
             for j in i + 1..segs {
                 rel[i * segs + j] = (i + 1..=joints_of(j)).map(|m| dq[m] * r(m, j)).sum();
             }
         }
-        MotionRates { a: a.to_vec(), b: b.to_vec(), seg, rel, segs, pts: Vec::new(), boxes: Vec::new() }
     }
 
     /// The clearance of state `q` on the motion whose `rates` are given, capped at `cap`, in units
@@ -186,10 +200,8 @@ impl ArmRobot {
         if self.self_collision {
             let segs = pts.len() - 1;
             // Each segment's box, once (the pairs' broad phase reads them 2·segs times each).
-            boxes.resize(segs, [0.0; 4]);
-            for (bx, w) in boxes.iter_mut().zip(pts.windows(2)) {
-                *bx = [w[0].x.at_most(w[1].x), w[0].x.at_least(w[1].x), w[0].y.at_most(w[1].y), w[0].y.at_least(w[1].y)];
-            }
+            boxes.clear();
+            boxes.extend(pts.windows(2).map(Aabb::of_points));
             for i in 0..segs {
                 let bi = boxes[i];
                 for j in i + 1..segs {
@@ -210,11 +222,9 @@ impl ArmRobot {
                     } else {
                         // Broad phase: two links whose boxes are c·rate apart cannot lower c
                         // (the result is the same; most pairs of a long chain are far apart).
-                        let bj = boxes[j];
-                        let gx = (bi[0] - bj[1]).at_least(bj[0] - bi[1]).at_least(0.0);
-                        let gy = (bi[2] - bj[3]).at_least(bj[2] - bi[3]).at_least(0.0);
+                        let g = bi.gap(&boxes[j]);
                         let reach = c * rate;
-                        if gx * gx + gy * gy >= reach * reach && gx + gy > 0.0 {
+                        if g.norm2() >= reach * reach && g.x + g.y > 0.0 {
                             continue;
                         }
                         distance_segment_segment(pts[i], pts[i + 1], pts[j], pts[j + 1])
@@ -238,17 +248,11 @@ impl ArmRobot {
             return Some("two adjacent links fold onto each other");
         }
         let segs = pts.len() - 1;
-        // Boxes strictly apart: the links cannot meet (most pairs of a long chain; exact).
-        let apart = |p: Vec2, q: Vec2, r: Vec2, s: Vec2| {
-            p.x.at_least(q.x) < r.x.at_most(s.x)
-                || r.x.at_least(s.x) < p.x.at_most(q.x)
-                || p.y.at_least(q.y) < r.y.at_most(s.y)
-                || r.y.at_least(s.y) < p.y.at_most(q.y)
-        };
         for i in 0..segs {
             for j in i + 2..segs {
+                // Boxes apart: the links cannot meet (most pairs of a long chain; exact).
                 let (p, q, r, s) = (pts[i], pts[i + 1], pts[j], pts[j + 1]);
-                if !apart(p, q, r, s) && intersect_segment_segment(p, q, r, s) {
+                if Aabb::of_points(&[p, q]).intersects(&Aabb::of_points(&[r, s])) && intersect_segment_segment(p, q, r, s) {
                     return Some("the arm crosses itself");
                 }
             }
@@ -298,11 +302,11 @@ impl Robot for ArmRobot {
         true
     }
     fn motion_clearance(&self, ws: &Workspace, a: &[Real], b: &[Real], q: &[Real], cap: Real) -> Option<Real> {
-        let mut cache = self.rates.borrow_mut();
-        if cache.as_ref().is_none_or(|r| r.a != a || r.b != b) {
-            *cache = Some(self.motion_rates(a, b));
+        let mut rates = self.rates.borrow_mut();
+        if rates.a != a || rates.b != b {
+            self.set_motion(&mut rates, a, b);
         }
-        Some(self.clearance_at(ws, q, cap, cache.as_mut().expect("rates just computed")))
+        Some(self.clearance_at(ws, q, cap, &mut rates))
     }
     fn project(&self, q: &[Real]) -> Vec2 {
         // The end effector (the last link's end).
