@@ -11,6 +11,7 @@
 //!   state counted as a check, until it is certified or a collision is found.
 
 use crate::math::Real;
+use crate::space::StateSpace;
 use crate::space_info::SpaceInfo;
 
 /// A motion was found invalid (the state found is in the caller's scratch buffer).
@@ -26,7 +27,7 @@ pub trait MotionValidator {
 
 /// Visit `1..n` coarse to fine (n/2 first, then n/4 and 3n/4, ...), each index once, stopping at
 /// the first error.
-pub(crate) fn in_bisection_order<E>(n: usize, mut visit: impl FnMut(usize) -> Result<(), E>) -> Result<(), E> {
+fn in_bisection_order<E>(n: usize, mut visit: impl FnMut(usize) -> Result<(), E>) -> Result<(), E> {
     let mut step = n.next_power_of_two();
     while step > 1 {
         let half = step / 2;
@@ -38,6 +39,27 @@ pub(crate) fn in_bisection_order<E>(n: usize, mut visit: impl FnMut(usize) -> Re
         step = half;
     }
     Ok(())
+}
+
+/// The discrete check of the motion `a → b` in `n` steps: `b`, then the states `i/n` of the way,
+/// coarse to fine, stopping at the first invalid one, which is left in `scratch`. Returns whether
+/// all were valid, and how many states were checked.
+pub fn check_discrete(space: &StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], mut is_valid: impl FnMut(&[Real]) -> bool) -> (bool, u64) {
+    let mut checks = 1;
+    if !is_valid(b) {
+        scratch.copy_from_slice(b);
+        return (false, checks);
+    }
+    let all = in_bisection_order(n, |i| {
+        space.interpolate(a, b, i as Real / n as Real, scratch);
+        checks += 1;
+        if is_valid(scratch) {
+            Ok(())
+        } else {
+            Err(())
+        }
+    });
+    (all.is_ok(), checks)
 }
 
 /// Deepest bisection when certifying one interval (2^-40 of a resolution step).

@@ -56,27 +56,11 @@ pub trait Robot: std::fmt::Debug {
     fn is_valid(&self, ws: &Workspace, q: &[Real]) -> bool {
         self.verdict(ws, q) == Verdict::Valid
     }
-    /// The discrete check of the motion `a → b` in `n` steps: `b`, then the states `i/n` of the
-    /// way, coarse to fine, stopping at the first invalid one, which is left in `scratch`.
-    /// Returns whether all were valid, and how many states were checked. One call per motion, so
-    /// that each robot's own `is_valid` is called directly in the loop (in wasm, a dynamic call
-    /// per state cost more than the point robot's check itself).
+    /// The discrete check of the motion `a → b` in `n` steps ([`crate::motion::check_discrete`]).
+    /// It is entered once per motion, so that the loop calls each robot's own `is_valid`
+    /// directly (in wasm, a dynamic call per state cost more than the point robot's check itself).
     fn check_discrete(&self, ws: &Workspace, space: &StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real]) -> (bool, u64) {
-        let mut checks = 1;
-        if !self.is_valid(ws, b) {
-            scratch.copy_from_slice(b);
-            return (false, checks);
-        }
-        let all = crate::motion::in_bisection_order(n, |i| {
-            space.interpolate(a, b, i as Real / n as Real, scratch);
-            checks += 1;
-            if self.is_valid(ws, scratch) {
-                Ok(())
-            } else {
-                Err(())
-            }
-        });
-        (all.is_ok(), checks)
+        crate::motion::check_discrete(space, a, b, n, scratch, |q| self.is_valid(ws, q))
     }
     /// Write a random state into `out` (default: uniform over the space) and return the state
     /// checks it spent (counted like the planner's). Robots whose uniform samples are almost never

@@ -211,10 +211,9 @@ impl StateSpace {
             }
             Metric::Weighted { weights } => (0..q.len()).map(|i| (weights[i] * gap(i)).powi(2)).sum::<Real>().sqrt(),
             Metric::TranslationRotation { weight } => (gap(0).powi(2) + gap(1).powi(2)).sqrt() + weight * gap(2),
-            // Both chain metrics are at least the move of the first link's end, 2·l₁·sin(|Δq₁|/2).
-            Metric::ChainSum { links } | Metric::ChainMax { links } => {
-                2.0 * links[0] * libm::sin(0.5 * gap(0).at_most(std::f64::consts::PI))
-            }
+            // A box of joint angles bounds a chain's moves poorly: the tree bounds the chain metrics
+            // over link-end boxes instead (`embedded_box_lower_bound`).
+            Metric::ChainSum { .. } | Metric::ChainMax { .. } => 0.0,
         }
     }
 }
