@@ -70,9 +70,7 @@ fn broom_distance(ws: &Workspace, a: Vec2, b: Vec2, cap: Real) -> Real {
                     continue;
                 }
                 // Box-to-box gap first: most rectangles are farther than `best`.
-                let gx = (lo.x - bb.max.x).at_least(bb.min.x - hi.x).at_least(0.0);
-                let gy = (lo.y - bb.max.y).at_least(bb.min.y - hi.y).at_least(0.0);
-                if gx * gx + gy * gy >= best * best {
+                if (Aabb { min: lo, max: hi }).gap(&bb).norm2() >= best * best {
                     continue;
                 }
                 if segment_meets_box(a, b, lo, hi) {
