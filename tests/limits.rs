@@ -200,7 +200,7 @@ fn the_time_limit_holds_inside_one_long_motion_check() {
     // 20,000 obstacles (each state check scans them all) and the finest resolution allowed: the
     // free motion along the bottom edge to the goal would take seconds. The deadline is looked at
     // inside the check.
-    let v = cluttered(20_000, 1.5e-6);
+    let v = cluttered(20_000, 1.5e-5);
     for (planner, params) in [
         ("rrt", json!({"range": 2.0, "goal_bias": 1.0, "time_limit": 0.3})),
         ("rrt-connect", json!({"range": 2.0, "time_limit": 0.3})),
@@ -221,9 +221,9 @@ fn the_time_limit_holds_inside_one_long_motion_check() {
 fn the_time_limit_holds_in_smoothing() {
     let _turn = TIMED.lock().unwrap_or_else(|e| e.into_inner());
     // A path in the free strip along the bottom edge (y < 0.002): every shortcut between its two
-    // segments is free and about half a map long, so each one checks some 300,000 states against
-    // 2,000 obstacles. Smoothing stops at the deadline with a shorter, still valid path.
-    let mut v = cluttered(2_000, 1.5e-6);
+    // segments is free and about half a map long, so each one checks some 30,000 states against
+    // 20,000 obstacles (about a second). Smoothing stops at the deadline with a shorter, still valid path.
+    let mut v = cluttered(20_000, 1.5e-5);
     v["goal"] = json!([1.0, 0.0]);
     let sc = Scenario::from_value(&v).unwrap();
     let p = Problem::from_scenario(&sc).unwrap();
@@ -249,7 +249,7 @@ fn the_cli_honours_its_time_limit_and_names_bad_input() {
     let dir = std::env::temp_dir().join(format!("planarium-limits-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let slow = dir.join("slow.json");
-    std::fs::write(&slow, cluttered(20_000, 1.5e-6).to_string()).unwrap();
+    std::fs::write(&slow, cluttered(20_000, 1.5e-5).to_string()).unwrap();
     let t = Instant::now();
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_planarium"))
         .args(["plan", slow.to_str().unwrap(), "--planner", "rrt", "--goal-bias", "1", "--range", "2", "--time-limit", "1", "--json"])
