@@ -60,9 +60,16 @@ export const MAX_PAIRS = 1000;
 export const MAX_PROBLEMS = 30;
 export const ECHO_CHARS = 60;
 
-/** `text` cut to `n` characters (code points kept whole), with an ellipsis when cut. */
+/** Bidirectional controls: echoed, they would reverse the rest of the message's line. */
+const BIDI_CONTROLS = /[\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069]/g;
+
+/**
+ * `text` as a message echoes it: bidirectional controls shown as [U+202E] (so an override in a
+ * link cannot turn the message around), cut to `n` characters (code points kept whole) with an
+ * ellipsis when cut.
+ */
 export function cut(text, n = ECHO_CHARS) {
-  const s = String(text);
+  const s = String(text).replace(BIDI_CONTROLS, (c) => `[U+${c.charCodeAt(0).toString(16).toUpperCase().padStart(4, '0')}]`);
   if (s.length <= n) return s;
   let end = n - 1;
   if (/[\uD800-\uDBFF]/.test(s[end - 1])) end--; // never half a surrogate pair

@@ -107,6 +107,7 @@ function checkProblems(problems, input) {
   for (const p of problems) {
     assert.equal(typeof p, 'string');
     assert.ok(p.length <= MAX_PROBLEM_CHARS, `a problem of ${p.length} characters: ${p.slice(0, 120)}`);
+    assert.doesNotMatch(p, /[\u202a-\u202e\u2066-\u2069]/, `a bidirectional control echoed: ${p.slice(0, 120)}`);
   }
 }
 
