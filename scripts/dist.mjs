@@ -9,7 +9,7 @@
 import { cpSync, existsSync, mkdirSync, readdirSync, readFileSync, rmSync, statSync } from 'node:fs';
 import { dirname, join, relative, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { CSP } from './serve.mjs';
+import { CSP_META } from './serve.mjs';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 const www = join(root, 'www');
@@ -53,7 +53,7 @@ function walk(dir) {
     const text = readFileSync(path, 'utf8');
     // a static host sends no CSP header: each page must carry the policy itself, and no inline script or style
     if (name.endsWith('.html')) {
-      if (!text.includes(`<meta http-equiv="Content-Security-Policy" content="${CSP}">`)) {
+      if (!text.includes(CSP_META)) {
         problems.push(`${relative(out, path)}: no <meta http-equiv="Content-Security-Policy"> with the policy of scripts/serve.mjs`);
       }
       if (/<script(?![^>]*\bsrc=)[^>]*>|<style\b|\sstyle\s*=|\son[a-z]+\s*=/i.test(text)) {

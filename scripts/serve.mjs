@@ -1,5 +1,6 @@
 // A small static server for www/ (no dependencies). PORT and HOST may be set in the environment.
-// Every response carries the pages' Content-Security-Policy (CSP below), nosniff and no-referrer.
+// Every response says nosniff and no-referrer; Planarium's pages (and the scripts, for the workers)
+// also carry the pages' Content-Security-Policy (CSP below).
 import { createServer } from 'node:http';
 import { readFile, stat } from 'node:fs/promises';
 import { extname, join, normalize, dirname } from 'node:path';
@@ -20,17 +21,21 @@ const TYPES = {
 export const CSP = "default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; worker-src 'self'; style-src 'self'; "
   + "img-src 'self' data: blob:; media-src 'self' blob:; connect-src 'self'; object-src 'none'; base-uri 'none'; form-action 'none'";
 
+/** The <meta> every page of Planarium carries (scripts/dist.mjs and a test check it). */
+export const CSP_META = `<meta http-equiv="Content-Security-Policy" content="${CSP}">`;
+
 /**
- * Headers for every response: the CSP with frame-ancestors (header-only: embed.html may be framed
- * by any site, the other pages only by the playground's own), no MIME sniffing, no referrer.
+ * Headers for a response: no MIME sniffing, no referrer, and the CSP with frame-ancestors
+ * (header-only: embed.html may be framed by any site, the other pages only by the playground's
+ * own). `body`: an .html file's text: it gets the CSP only if it is one of Planarium's pages (it
+ * carries CSP_META), not a page of course notes that embeds the playground (with its own styles
+ * and scripts, served from here in tests); any other file gets it (it matters for the workers).
  */
-export function securityHeaders(file) {
+export function securityHeaders(file, body = null) {
+  const headers = { 'x-content-type-options': 'nosniff', 'referrer-policy': 'no-referrer' };
+  if (/\.html$/.test(file) && !(body && String(body).includes(CSP_META))) return headers;
   const framed = /(^|[/\\])embed\.html$/.test(file);
-  return {
-    'content-security-policy': `${CSP}; frame-ancestors ${framed ? '*' : "'self'"}`,
-    'x-content-type-options': 'nosniff',
-    'referrer-policy': 'no-referrer',
-  };
+  return { 'content-security-policy': `${CSP}; frame-ancestors ${framed ? '*' : "'self'"}`, ...headers };
 }
 
 export function serve({ port = 8080, host = '127.0.0.1', dir = root } = {}) {
@@ -43,7 +48,7 @@ export function serve({ port = 8080, host = '127.0.0.1', dir = root } = {}) {
       if ((await stat(file).catch(() => null))?.isDirectory()) file = join(file, 'index.html');
       const body = await readFile(file);
       res.writeHead(200, {
-        'content-type': TYPES[extname(file)] || 'application/octet-stream', 'cache-control': 'no-cache', ...securityHeaders(file),
+        'content-type': TYPES[extname(file)] || 'application/octet-stream', 'cache-control': 'no-cache', ...securityHeaders(file, body),
       });
       res.end(body);
     } catch {

@@ -2,7 +2,9 @@
 // playback, the views and the chart, the actions and the frame loop), the panel, the overlay box
 // and the stats; the hover text of cells and potential fields (cells.js), and the note under the
 // canvas when a planner finds no path; the share link (share.js): the state is kept in the URL
-// hash, and a page opened with a hash restores it.
+// hash, and a page opened with a hash restores it. A link with problems stays in the address bar
+// as pasted (and is shown with them) until the state changes; Copy link checks the link reads back
+// and is short enough to paste (share.js checkLink), else offers Save JSON.
 // Read-only state for tests is exposed as window.planarium (nothing else is global).
 
 import { BUTTONS } from './controller.js';

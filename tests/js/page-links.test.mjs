@@ -121,6 +121,15 @@ test('a hash of "a&" × 524,288: a few bounded lines, no freeze, the pasted link
     await page.waitForFunction(() => window.planarium.state() === 'idle');
     const text = await page.textContent('#error-text');
     const longest = await page.evaluate(() => window.__longest);
+    // the reader alone, in the page, on that hash
+    const readMs = await page.evaluate(async () => {
+      const { readShare } = await import('./share.js');
+      const t = performance.now();
+      await readShare(location.hash);
+      return performance.now() - t;
+    });
+    console.log(`readShare on the 1 MB hash in the page: ${readMs.toFixed(0)} ms`);
+    assert.ok(readMs < 3000, `${readMs} ms`);
     console.log(`the message after ${ms} ms (navigation included), longest main-thread task ${longest.toFixed(0)} ms, `
       + `${text.length} characters:\n${text.slice(0, 600)}`);
     assert.ok(text.length < 2000, `${text.length} characters`);
