@@ -64,6 +64,9 @@ input[type="number"] { width: 5rem; font: inherit; padding: 0.15rem 0.3rem; bord
 `;
 
 const el = (tag, props = {}) => Object.assign(document.createElement(tag), props);
+/** `s` with lone surrogates as U+FFFD (encodeURIComponent throws on them; an attribute may hold one). */
+const wellFormed = (s) => (typeof s.toWellFormed === 'function' ? s.toWellFormed()
+  : s.replace(/[\uD800-\uDBFF](?![\uDC00-\uDFFF])|(?<![\uD800-\uDBFF])[\uDC00-\uDFFF]/g, '\uFFFD'));
 
 /**
  * The element's CSS for shadow root `root`: a constructed style sheet, which a page's
@@ -173,7 +176,7 @@ export class PlanariumPlayground extends HTMLElement {
       if (!this.hasAttribute(key)) continue;
       const v = this.getAttribute(key);
       if (FLAGS.includes(key) && v === '') parts.push(key);
-      else parts.push(`${key}=${encodeURIComponent(v)}`);
+      else parts.push(`${key}=${encodeURIComponent(wellFormed(v))}`);
     }
     return parts.join('&');
   }

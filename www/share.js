@@ -114,7 +114,11 @@ export function boundedProblems(texts, max = MAX_PROBLEMS) {
 // Encoding: percent-encoding that keeps `,`, `:`, `+` readable
 
 function encodeValue(v) {
-  return encodeURIComponent(String(v)).replace(/%2C/gi, ',').replace(/%3A/gi, ':').replace(/%2B/gi, '+');
+  const s = String(v);
+  // lone surrogates (encodeURIComponent throws on them) as U+FFFD
+  const text = typeof s.toWellFormed === 'function' ? s.toWellFormed()
+    : s.replace(/[\uD800-\uDBFF](?![\uDC00-\uDFFF])|(?<![\uD800-\uDBFF])[\uDC00-\uDFFF]/g, '\uFFFD');
+  return encodeURIComponent(text).replace(/%2C/gi, ',').replace(/%3A/gi, ':').replace(/%2B/gi, '+');
 }
 
 function safeDecode(text) {

@@ -279,7 +279,7 @@ test('hostile names, notes and link values by file, link and embed: text only, c
       el.setAttribute('scenario', v);
       el.setAttribute('planner', m);
       el.setAttribute('params', `${m}=${m}`);
-      el.setAttribute('seed', m);
+      el.setAttribute('seed', `${m}\ud800`); // a lone surrogate: encodeURIComponent would throw on it
       document.body.replaceChildren(el);
     }, { v: value, m: decodeURIComponent(markup) });
     await embed.waitForFunction(() => /There is no planner/.test(document.querySelector('planarium-playground')?.shadowRoot.querySelector('.message').textContent));

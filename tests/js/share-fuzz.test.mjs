@@ -196,4 +196,7 @@ test('reproductions: 524,288 empty pairs, a link cut mid-base64, long keys are e
   assert.equal(long.problems.length, 3);
   for (const p of long.problems) assert.ok(p.length < 200, p);
   assert.match(long.problems.join('\n'), /no built-in scenario "n{59}…"/);
+  // the writer: a lone surrogate in a value (encodeURIComponent throws on it) is written as U+FFFD
+  const odd = await writeShare({ scenario: { id: 'narrow' }, extra: [['note', 'a\ud800b']] }, registry);
+  assert.equal(odd, 'scenario=narrow&note=a%EF%BF%BDb');
 });
