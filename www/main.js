@@ -81,8 +81,10 @@ const player = new Player({
         panel.apply(block);
         restoreNotes.push(...problems);
         restoring = null;
-        if (restoreNotes.length) showLinkProblems(restoreNotes);
-        else pasted = null;
+        if (restoreNotes.length) {
+          showLinkProblems(restoreNotes);
+          if (pasted) pasted.state = stateHash(); // the state the link restored: the pasted link stays until it changes
+        } else pasted = null;
         restoreNotes = [];
         shareReady = true;
       } else if (applyDefaults) {
@@ -219,7 +221,7 @@ let shareGen = 0;
 let lastHash = null;          // the hash this page wrote last (a hashchange to it is ours)
 // A link opened with problems stays in the address bar, as pasted, until the state shown changes
 // (the hash of the state it restored is `state`), so it can be copied back to whoever sent it.
-let pasted = null;            // {hash, state}
+let pasted = null;            // {hash, state: a promise of the restored state's hash}
 const encodedScenarios = new Map();
 
 /** Keep the hash up to date, a moment after the last change. */
@@ -240,7 +242,22 @@ async function writeHash({ force = false } = {}) {
     return location.href;
   }
   const gen = ++shareGen;
-  const hash = await writeShare({
+  const hash = await stateHash();
+  const restored = pasted && !force ? await pasted.state : null;
+  if (gen !== shareGen) return location.href; // a newer write is on its way
+  const here = `${location.origin}${location.pathname}${location.search}`;
+  const readable = hash.length <= MAX_HASH_CHARS && (source.id || scenarioText.length <= MAX_SCENARIO_BYTES);
+  ui.shareUrl.value = readable && here.length + hash.length < MAX_LINK_CHARS ? `${here}#${hash}` : '';
+  if (restored === hash) return `${here}#${hash}`; // the link as pasted stays in the address bar
+  pasted = null;
+  lastHash = readable ? `#${hash}` : '';
+  if (location.hash !== lastHash) history.replaceState(history.state, '', `${location.pathname}${location.search}${lastHash}`);
+  return `${here}#${hash}`;
+}
+
+/** The hash (without `#`) of the state shown. */
+function stateHash() {
+  return writeShare({
     scenario: source.id ? { id: source.id } : { text: scenarioText },
     config: panel.config(),
     overlays: overlayOptions(),
@@ -249,18 +266,6 @@ async function writeHash({ force = false } = {}) {
       stepSize: stepSize(),
     },
   }, registry, encodedScenarios);
-  if (gen !== shareGen) return location.href; // a newer write is on its way
-  const here = `${location.origin}${location.pathname}${location.search}`;
-  const readable = hash.length <= MAX_HASH_CHARS && (source.id || scenarioText.length <= MAX_SCENARIO_BYTES);
-  ui.shareUrl.value = readable && here.length + hash.length < MAX_LINK_CHARS ? `${here}#${hash}` : '';
-  if (pasted && !force) {
-    pasted.state ??= hash;
-    if (pasted.state === hash) return `${here}#${hash}`; // the link as pasted stays in the address bar
-  }
-  pasted = null;
-  lastHash = readable ? `#${hash}` : '';
-  if (location.hash !== lastHash) history.replaceState(history.state, '', `${location.pathname}${location.search}${lastHash}`);
-  return `${here}#${hash}`;
 }
 
 /** A link's problems (at most a screenful, repeats once), and the link as it was opened, cut. */

@@ -104,10 +104,17 @@ export class Problems {
   }
 }
 
-/** Problem texts (from several sources) as at most `max` lines, repeated ones once: for the page to show. */
+/**
+ * Problem texts (from several sources, some already bounded lists) as at most `max` lines,
+ * repeated ones once, and the count of the rest (a list's own "…and N more problems." included).
+ */
 export function boundedProblems(texts, max = MAX_PROBLEMS) {
   const p = new Problems(max);
-  p.push(...texts);
+  for (const t of texts) {
+    const more = /^…and ([\d,]+) more problems?\.$/.exec(t);
+    if (more) p.dropped += Number(more[1].replace(/,/g, ''));
+    else p.push(t);
+  }
   return p.list();
 }
 

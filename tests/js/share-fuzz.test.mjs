@@ -7,7 +7,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import {
-  readShare, writeShare, decodeScenario, encodeScenario, parsePairs, toBase64url,
+  readShare, writeShare, decodeScenario, encodeScenario, parsePairs, toBase64url, boundedProblems,
   MAX_PAIRS, MAX_PROBLEMS, MAX_HASH_CHARS, MAX_SCENARIO_BYTES,
 } from '../../www/share.js';
 
@@ -196,6 +196,13 @@ test('reproductions: 524,288 empty pairs, a link cut mid-base64, long keys are e
   assert.equal(long.problems.length, 3);
   for (const p of long.problems) assert.ok(p.length < 200, p);
   assert.match(long.problems.join('\n'), /no built-in scenario "n{59}…"/);
+  // 200 distinct unknown overlays and 100 controls: 30 lines from the reader, 12 on the page, every one counted
+  const many = await readShare(`#${Array.from({ length: 200 }, (_, i) => `k${i}`).join('&')}&seed=x`);
+  assert.equal(many.problems.length, MAX_PROBLEMS + 1);
+  assert.equal(many.problems.at(-1), '…and 171 more problems.');
+  const page = boundedProblems([...many.problems, 'one more'], 12);
+  assert.equal(page.length, 13);
+  assert.equal(page.at(-1), `…and ${201 + 1 - 12} more problems.`);
   // the writer: a lone surrogate in a value (encodeURIComponent throws on it) is written as U+FFFD
   const odd = await writeShare({ scenario: { id: 'narrow' }, extra: [['note', 'a\ud800b']] }, registry);
   assert.equal(odd, 'scenario=narrow&note=a%EF%BF%BDb');
