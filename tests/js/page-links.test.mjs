@@ -138,6 +138,7 @@ test('a hash of "a&" × 524,288: a few bounded lines, no freeze, the pasted link
     assert.match(text, /523,288 more parts after the first 1,000/);
     assert.match(text, /The link you opened \(1,048,\d{3} characters; it stays in the address bar until you change something\):\nhttp:\/\/127\.0\.0\.1:\d+\/#a&a&a&.*…$/s);
     assert.ok(longest < 3000, `a ${longest} ms freeze`); // was 10.5 s
+    await page.screenshot({ path: join(SHOTS, 'links-flood-message.png') });
     // the page works: a run to the end
     await page.$eval('#speed', (el) => { el.value = el.max; el.dispatchEvent(new Event('input', { bubbles: true })); });
     // that was a change: the hash now says what is shown
