@@ -277,3 +277,12 @@ fn the_cli_honours_its_time_limit_and_names_bad_input() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn the_benchmark_pages_set_ups_are_capped_and_their_errors_cut() {
+    let many: String = (0..17).map(|i| format!("s{i}: rrt\n")).collect();
+    let e = planarium::run::bench::parse_setup_lines(&many).unwrap_err();
+    assert!(e.starts_with("set-up line 17: more than 16"), "{e}");
+    let e = planarium::run::bench::parse_setup_lines(&format!("rrt --{} 1", "x".repeat(100_000))).unwrap_err();
+    assert!(e.chars().count() < 400, "{} characters", e.len());
+}
