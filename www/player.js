@@ -40,14 +40,22 @@ export class Player {
           if (!this.lane.done && c.fire('fail')) this.lane.clearRun();
         },
         asv: (text) => hooks.asv?.(text),
-        stopped: (message, fatal) => {
-          hooks.stopped?.(message, fatal);
-          if (!fatal) c.fire('load');
+        stopped: (message, fatal, why) => {
+          // Run after Cancel on a worker that did not stop: the run the user asked for starts
+          // as soon as the replacement has the scenario again (not after a crash: it would crash again)
+          this.rerun = why === 'hung' && !fatal && c.state === 'running';
+          hooks.stopped?.(message, fatal, why);
+          c.fire(fatal ? 'stop' : 'load');
         },
         revealed: () => this.maybeFinish(),
         finished: () => c.state === 'finished',
         changed: () => { this.mark(); hooks.changed?.(); },
       },
+    });
+    this.rerun = false;
+    c.onChange((state, from, event) => {
+      if (event === 'loaded' && this.rerun) queueMicrotask(() => this.run());
+      if (event === 'loaded' || event === 'invalid' || event === 'stop') this.rerun = false;
     });
     this.frame = this.frame.bind(this);
   }
@@ -64,14 +72,15 @@ export class Player {
   stop() {
     cancelAnimationFrame(this.raf);
     this.raf = 0;
-    const s = this.lane.session;
-    s.worker?.terminate();
-    s.worker = null;
+    this.lane.session.stop();
   }
 
   // Requests
 
-  /** Send a scenario (JSON text; with `file`, any file the core imports) to the worker. */
+  /**
+   * Send a scenario (JSON text; with `file`, any file the core imports) to the worker (in the
+   * `stopped` state, to a fresh one).
+   */
   load(text, file = null) {
     this.lane.load(text, file);
     this.controller.fire('load');

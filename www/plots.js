@@ -68,11 +68,56 @@ function yAxis(ctx, g, lo, hi, unit) {
   return y;
 }
 
+/** `text` cut with an ellipsis to fit `maxW` px in the context's font. */
+export function fitText(ctx, text, maxW) {
+  if (ctx.measureText(text).width <= maxW) return text;
+  let lo = 0, hi = text.length;
+  while (lo < hi) { // the longest prefix that fits with the ellipsis
+    const mid = Math.ceil((lo + hi) / 2);
+    if (ctx.measureText(`${text.slice(0, mid)}…`).width <= maxW) lo = mid; else hi = mid - 1;
+  }
+  return `${text.slice(0, lo)}…`;
+}
+
+const LABEL_FONT = '11px system-ui, sans-serif';
+const TILT = Math.PI / 5; // crowded labels are drawn at 36°, up to TILT_MAX px long
+const TILT_MAX = 96;
+
+/**
+ * Room for the category labels under a plot: when the longest label is wider than its slot, the
+ * labels are tilted and the bottom margin grows to hold them. Call before the y axis is drawn.
+ */
+function labelRoom(canvas, g, labels) {
+  const { ctx } = g;
+  ctx.font = LABEL_FONT;
+  const slot = (g.w - g.pad.l - g.pad.r) / Math.max(1, labels.length);
+  g.tilt = labels.some((l) => ctx.measureText(l).width > slot - 6);
+  if (g.tilt) g.pad.b = Math.ceil(Math.sin(TILT) * TILT_MAX) + 16;
+  // every label in full, for a pointer's tooltip and a screen reader
+  const full = labels.map((l, i) => `${i + 1}. ${l}`).join('\n');
+  canvas.title = g.tilt || labels.some((l) => ctx.measureText(l).width > slot - 6) ? full : '';
+  canvas.setAttribute('aria-label', `${canvas.getAttribute('aria-label')}; set-ups: ${labels.join(', ')}`);
+}
+
 function xLabels(ctx, g, labels, x) {
   ctx.fillStyle = '#222';
-  ctx.textAlign = 'center';
-  ctx.font = '11px system-ui, sans-serif';
-  labels.forEach((l, i) => ctx.fillText(l.length > 16 ? `${l.slice(0, 15)}…` : l, x(i), g.h - g.pad.b + 14));
+  ctx.font = LABEL_FONT;
+  const slot = (g.w - g.pad.l - g.pad.r) / Math.max(1, labels.length);
+  labels.forEach((l, i) => {
+    if (!g.tilt) {
+      ctx.textAlign = 'center';
+      ctx.fillText(fitText(ctx, l, slot - 6), x(i), g.h - g.pad.b + 14);
+      return;
+    }
+    // tilted: each label ends under its box, and neighbours do not overlap (they are parallel,
+    // slot·sin(TILT) apart, more than the font's height down to a 20 px slot)
+    ctx.save();
+    ctx.translate(x(i) + 4, g.h - g.pad.b + 8);
+    ctx.rotate(-TILT);
+    ctx.textAlign = 'right';
+    ctx.fillText(fitText(ctx, l, TILT_MAX), 0, 4);
+    ctx.restore();
+  });
 }
 
 /** Box plots: `groups` [{label, values}] (empty groups get "no data"). */
@@ -81,6 +126,7 @@ export function boxPlot(canvas, title, unit, groups) {
   const { ctx } = g;
   const all = groups.flatMap((s) => s.values).filter(Number.isFinite);
   if (!all.length) { ctx.fillText('no data', g.pad.l, g.h / 2); return; }
+  labelRoom(canvas, g, groups.map((s) => s.label));
   const y = yAxis(ctx, g, ...extent(all), unit);
   const slot = (g.w - g.pad.l - g.pad.r) / groups.length;
   const x = (i) => g.pad.l + slot * (i + 0.5);
@@ -106,6 +152,7 @@ export function boxPlot(canvas, title, unit, groups) {
 export function successBars(canvas, title, bars) {
   const g = setup(canvas, title);
   const { ctx } = g;
+  labelRoom(canvas, g, bars.map((b) => b.label));
   const y = yAxis(ctx, g, 0, 100, '% solved');
   const slot = (g.w - g.pad.l - g.pad.r) / Math.max(1, bars.length);
   const x = (i) => g.pad.l + slot * (i + 0.5);
@@ -116,7 +163,8 @@ export function successBars(canvas, title, bars) {
     ctx.fillRect(x(i) - bw / 2, y(pct), bw, y(0) - y(pct));
     ctx.fillStyle = '#222';
     ctx.textAlign = 'center';
-    ctx.fillText(`${b.solved}/${b.runs}`, x(i), y(pct) - 4);
+    const count = `${b.solved}/${b.runs}`; // or, where it would run into the next bar's, the percentage
+    ctx.fillText(ctx.measureText(count).width <= slot - 4 ? count : `${Math.round(pct)}%`, x(i), y(pct) - 4);
   });
   xLabels(ctx, g, bars.map((b) => b.label), x);
 }
@@ -145,7 +193,7 @@ function seriesKey(ctx, g, series, marks) {
   ctx.textAlign = 'left';
   series.forEach((s, i) => {
     ctx.fillStyle = SERIES[i % SERIES.length];
-    ctx.fillText(`${marks[i % 2]} ${s.label}`, g.pad.l + 4 + (i % 3) * 110, g.pad.t + 12 + Math.floor(i / 3) * 13);
+    ctx.fillText(fitText(ctx, `${marks[i % 2]} ${s.label}`, 104), g.pad.l + 4 + (i % 3) * 110, g.pad.t + 12 + Math.floor(i / 3) * 13);
   });
 }
 
@@ -156,6 +204,7 @@ export function scatter(canvas, title, xUnit, yUnit, series) {
   const pts = series.flatMap((s) => s.points);
   if (!pts.length) { ctx.fillText('no solved runs', g.pad.l, g.h / 2); return; }
   const { x, y } = xyAxes(ctx, g, pts, xUnit, yUnit);
+  canvas.title = series.map((s, i) => `${['●', '■'][i % 2]} ${s.label}`).join('\n');
   series.forEach((s, i) => {
     ctx.fillStyle = SERIES[i % SERIES.length];
     for (const [t, c] of s.points) {
