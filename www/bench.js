@@ -154,11 +154,11 @@ function num(v) {
   return Math.abs(v) >= 100 ? v.toFixed(1) : Number(v.toPrecision(4)).toString();
 }
 
-/** Runs per set-up as they really ran, short: "40 runs per set-up", or "439–440 runs per set-up". */
+/** Runs per set-up as they really ran, short (plot titles): "40 runs each", or "439–440 runs each". */
 function runsShort(r) {
   const counts = r.setups.map((s) => s.rows.length);
   const lo = Math.min(...counts), hi = Math.max(...counts);
-  return lo === hi ? `${lo} runs per set-up` : `${lo}–${hi} runs per set-up`;
+  return lo === hi ? `${lo} runs each` : `${lo}–${hi} runs each`;
 }
 
 /** The seeds that really ran, in words: "2000 seeds per set-up (1 … 2000)" when whole, else per set-up. */
@@ -199,8 +199,8 @@ function show(r) {
   boxPlot($('plot-time'), `Planning time (${n})`, 'ms', groups((x) => x.time_ms));
   boxPlot($('plot-nodes'), `Nodes (${n})`, 'nodes', groups((x) => x.nodes));
   boxPlot($('plot-checks'), `State checks (${n})`, 'checks', groups((x) => x.checks));
-  boxPlot($('plot-cost'), `Path cost (solved runs of ${n})`, 'cost', groups((x) => x.cost, true));
-  scatter($('plot-cost-time'), `Cost against time (one dot per solved run, ${n})`, 'time (ms)', 'cost',
+  boxPlot($('plot-cost'), `Path cost, solved (${n})`, 'cost', groups((x) => x.cost, true));
+  scatter($('plot-cost-time'), `Cost against time, a dot per solved run (${n})`, 'time (ms)', 'cost',
     r.setups.map((s) => ({ label: s.label, points: s.rows.filter((x) => x.solved).map((x) => [x.time_ms, x.cost]) })));
   const anytime = r.setups.map((s, k) => ({ label: s.label, lines: curves[k] ?? [] })).filter((s) => s.lines.length);
   $('plot-curves').hidden = !anytime.length;

@@ -1,6 +1,8 @@
 // Plots for the benchmark page, drawn on canvases: box plots per metric, success bars, and cost
 // against time (one dot per solved run). Colours are the Okabe–Ito set, distinguishable with the
 // common colour-blindness types; set-ups also differ by position and label, never colour alone.
+// Labels never overlap: too wide for their slot, they are tilted and cut with an ellipsis (the
+// canvas's title, a tooltip, and its aria-label hold them in full); titles are cut to the canvas.
 
 export const SERIES = ['#0072b2', '#e69f00', '#009e73', '#cc79a7', '#56b4e9', '#d55e00', '#f0e442', '#000000'];
 
@@ -28,7 +30,7 @@ function setup(canvas, title) {
   ctx.fillRect(0, 0, w, h);
   ctx.fillStyle = '#222';
   ctx.font = '600 12px system-ui, sans-serif';
-  ctx.fillText(title, 8, 16);
+  ctx.fillText(fitText(ctx, title, w - 16), 8, 16); // the whole title is the canvas's aria-label
   canvas.setAttribute('aria-label', title);
   return { ctx, w, h, pad: { l: 64, r: 12, t: 28, b: 36 } };
 }
@@ -153,8 +155,12 @@ export function successBars(canvas, title, bars) {
   const g = setup(canvas, title);
   const { ctx } = g;
   labelRoom(canvas, g, bars.map((b) => b.label));
-  const y = yAxis(ctx, g, 0, 100, '% solved');
   const slot = (g.w - g.pad.l - g.pad.r) / Math.max(1, bars.length);
+  ctx.font = LABEL_FONT;
+  // where counts are wider than a bar's slot, every other one is raised a line: no two touch
+  const stagger = bars.some((c) => ctx.measureText(`${c.solved}/${c.runs}`).width > slot - 4);
+  if (stagger) g.pad.t += 11;
+  const y = yAxis(ctx, g, 0, 100, '% solved');
   const x = (i) => g.pad.l + slot * (i + 0.5);
   const bw = Math.min(48, slot * 0.6);
   bars.forEach((b, i) => {
@@ -163,8 +169,7 @@ export function successBars(canvas, title, bars) {
     ctx.fillRect(x(i) - bw / 2, y(pct), bw, y(0) - y(pct));
     ctx.fillStyle = '#222';
     ctx.textAlign = 'center';
-    const count = `${b.solved}/${b.runs}`; // or, where it would run into the next bar's, the percentage
-    ctx.fillText(ctx.measureText(count).width <= slot - 4 ? count : `${Math.round(pct)}%`, x(i), y(pct) - 4);
+    ctx.fillText(`${b.solved}/${b.runs}`, x(i), y(pct) - 4 - (stagger && i % 2 ? 11 : 0));
   });
   xLabels(ctx, g, bars.map((b) => b.label), x);
 }
@@ -191,9 +196,10 @@ function xyAxes(ctx, g, pts, xUnit, yUnit) {
 /** The key: each series' label after its mark (`marks` alternate, so colour is not alone). */
 function seriesKey(ctx, g, series, marks) {
   ctx.textAlign = 'left';
+  const col = (g.w - g.pad.l - g.pad.r - 4) / 3; // three to a row, each cut to its column
   series.forEach((s, i) => {
     ctx.fillStyle = SERIES[i % SERIES.length];
-    ctx.fillText(fitText(ctx, `${marks[i % 2]} ${s.label}`, 104), g.pad.l + 4 + (i % 3) * 110, g.pad.t + 12 + Math.floor(i / 3) * 13);
+    ctx.fillText(fitText(ctx, `${marks[i % 2]} ${s.label}`, col - 6), g.pad.l + 4 + (i % 3) * col, g.pad.t + 12 + Math.floor(i / 3) * 13);
   });
 }
 

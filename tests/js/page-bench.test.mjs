@@ -1,7 +1,9 @@
 // The benchmark page in headless chromium, driven like a person: choose a scenario, type set-ups
 // and a number of runs, run them over a pool of workers, and check the table against the native
 // CLI's `bench` for the same seeds; the plots are drawn; the OMPL log parses with a small reader;
-// cancel stops at once and keeps the page usable; a bad set-up line is named.
+// cancel stops at once and keeps the page usable; a bad set-up line is named; a cancelled run
+// reports the runs that really ran (table, caption, plot titles, exports) and eight set-ups'
+// labels do not overlap (each label's drawn box, recorded from fillText; target/page-bench-eight.png).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -191,7 +193,7 @@ test('a cancelled benchmark reports the runs that really ran; eight set-ups\' la
   const table = await fx.page.$$eval('#bench-table tbody tr', (trs) => trs.map((tr) => tr.children[1].textContent));
   table.forEach((cell, k) => assert.match(cell, new RegExp(`/${counts[k]}\\)$`), `table row ${k}: ${cell}`));
   const lo = Math.min(...counts), hi = Math.max(...counts);
-  const n = lo === hi ? `${lo} runs per set-up` : `${lo}–${hi} runs per set-up`;
+  const n = lo === hi ? `${lo} runs each` : `${lo}–${hi} runs each`;
   for (const id of ['plot-success', 'plot-time', 'plot-nodes', 'plot-checks']) {
     assert.ok((await fx.page.getAttribute(`#${id}`, 'aria-label')).includes(n), `${id}'s title says ${n}`);
   }
