@@ -127,6 +127,26 @@ test('a stuck worker during Reset is replaced too; the page is idle with the sce
   await fx.waitStatus('solved');
 });
 
+test('a scenario picked while the worker is stuck is loaded into the replacement', async () => {
+  const { page } = fx;
+  await pickScenario('narrow', 'Narrow passage');
+  await hang(page, 60000);
+  await page.waitForTimeout(200);
+  const t0 = Date.now();
+  await page.selectOption('#scenario', 'slot');
+  await page.waitForFunction(() => /did not take the new scenario within a second/.test(document.getElementById('error-text').textContent));
+  await page.waitForFunction(() => window.planarium.state() === 'idle' &&
+    document.getElementById('scenario-name').textContent === 'Turn to pass the slot', null, { timeout: 20000 });
+  const recovered = Date.now() - t0;
+  console.log(`# stuck load: the picked scenario is shown, idle, ${recovered} ms after picking it`);
+  assert.ok(recovered < 3 * WATCHDOG_MS + 2000, `recovered in ${recovered} ms`);
+  assert.equal(await page.inputValue('#scenario'), 'slot');
+  await setRange(page, 'speed', 100);
+  await page.click('#run');
+  await fx.waitStatus('solved');
+  assert.equal(await page.textContent('#scenario-name'), 'Turn to pass the slot');
+});
+
 test('reproduction 3: four crashes leave the page `stopped`, and picking a built-in starts a fresh worker', async () => {
   const { page } = fx;
   await pickScenario('narrow', 'Narrow passage');
