@@ -2,7 +2,9 @@
 // playback, the views and the chart, the actions and the frame loop), the panel, the overlay box
 // and the stats; the hover text of cells and potential fields (cells.js), and the note under the
 // canvas when a planner finds no path; the share link (share.js): the state is kept in the URL
-// hash, and a page opened with a hash restores it.
+// hash, and a page opened with a hash restores it. When the worker crashed or was replaced (the
+// session's watchdog), the message says so and offers "Open the default scenario instead", which
+// leaves the hash's state (a crashing scenario would otherwise come back with every reload).
 // Read-only state for tests is exposed as window.planarium (nothing else is global).
 
 import { BUTTONS } from './controller.js';

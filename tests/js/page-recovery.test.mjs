@@ -6,7 +6,8 @@
 // - a scenario from a link that crashes the core is left with one click on "Open the default
 //   scenario instead";
 // - the embed keeps its crash message, and after repeated crashes says `stopped`, not `running`
-//   (reproduction 4);
+//   (reproduction 4); the compare page also ends in `stopped` and is left by picking a scenario;
+// - a scenario picked while the worker is stuck reaches the replacement;
 // - the `max_nodes` field refuses more than the page's ceiling (limits.js), and the page's stores'
 //   bytes per node are measured and printed (reproduction 7, page side).
 // A stuck worker is the worker's test-only `debug-hang` (a busy loop); a crash is `debug-panic`, or
@@ -219,6 +220,36 @@ test('a scenario from a link that crashes the core is left with one click', asyn
     await page.reload();
     await page.waitForFunction(() => window.planarium?.state() === 'idle', null, { timeout: 30000 });
     assert.notEqual(await page.textContent('#scenario-name'), 'crash-on-run test');
+  } finally {
+    await page.close();
+  }
+});
+
+test('the compare page: a set-up whose worker keeps crashing leaves it `stopped`, and picking a scenario starts both again', async () => {
+  const page = await fx.env.browser.newPage({ viewport: { width: 1280, height: 800 } });
+  try {
+    await page.goto(`${fx.env.base}compare.html`);
+    await page.waitForFunction(() => window.planarium?.state() === 'idle', null, { timeout: 30000 });
+    // always the newest worker: set-up B's, then each of its replacements
+    let crashes = 0;
+    while (await page.evaluate(() => window.planarium.state()) !== 'stopped') {
+      assert.ok(crashes < 8, 'the page stops replacing a worker that keeps crashing');
+      await page.waitForFunction(() => window.planarium.state() === 'idle');
+      const w = page.workers().at(-1);
+      const message = `compare crash ${++crashes}`;
+      await w.evaluate((m) => { setTimeout(() => self.onmessage({ data: { type: 'debug-panic', message: m } }), 0); }, message).catch(() => {});
+      await page.waitForFunction((m) => document.getElementById('error-text').textContent.includes(m), message);
+      await page.waitForFunction(() => ['idle', 'loading', 'stopped'].includes(window.planarium.state()));
+    }
+    assert.match(await page.textContent('#error-text'), /keeps stopping .*Pick a scenario to start it again/s);
+    assert.equal(await page.isDisabled('#run'), true);
+    const t0 = Date.now();
+    await page.selectOption('#scenario', 'slot');
+    await page.waitForFunction(() => window.planarium.state() === 'idle' &&
+      document.getElementById('scenario-name').textContent === 'Turn to pass the slot', null, { timeout: 20000 });
+    console.log(`# compare page: stopped after ${crashes} crashes; idle ${Date.now() - t0} ms after picking a scenario`);
+    await page.click('#run');
+    await page.waitForFunction(() => window.planarium.state() === 'finished', null, { timeout: 120000 });
   } finally {
     await page.close();
   }
