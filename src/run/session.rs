@@ -124,7 +124,7 @@ impl Session {
             Some(Status::TimeLimit)
         } else if self.iterations >= l.iterations {
             Some(Status::IterationLimit)
-        } else if self.planner.node_count() >= l.nodes {
+        } else if self.planner.node_count() >= l.nodes || self.planner.out_of_nodes() {
             Some(Status::NodeLimit)
         } else {
             None

@@ -39,6 +39,8 @@ impl<'a> Obj<'a> {
     fn new(path: &str, v: &'a Value) -> Result<Self> {
         match v {
             Value::Object(map) => Ok(Obj { path: path.to_string(), map, used: Vec::new() }),
+            // The document itself: it starts at line 1, column 1.
+            other if path.is_empty() => Err(ScenarioError::document(format!("must be an object, found {}", describe(other)))),
             other => Err(ScenarioError::at(path, format!("must be an object, found {}", describe(other)))),
         }
     }
@@ -46,9 +48,10 @@ impl<'a> Obj<'a> {
         self.used.push(key);
         self.map.get(key).map(|v| (v, join(&self.path, key)))
     }
+    /// A required key; when it is missing, the error's path is where it belongs (`robot.kind`).
     fn req(&mut self, key: &'static str) -> Result<(&'a Value, String)> {
-        let path = self.path.clone();
-        self.get(key).ok_or_else(|| ScenarioError::at(path, format!("missing required key \"{key}\"")))
+        let path = join(&self.path, key);
+        self.get(key).ok_or_else(|| ScenarioError::at(path, "is missing (a required key)"))
     }
     /// Every key not read is an unknown key: almost always a typo.
     fn finish(self) -> Result<()> {
@@ -205,7 +208,7 @@ fn positive(o: &mut Obj, key: &'static str, default: Option<Real>) -> Result<Rea
             }
             Ok(x)
         }
-        None => default.ok_or_else(|| ScenarioError::at(o.path.clone(), format!("missing required key \"{key}\""))),
+        None => default.ok_or_else(|| ScenarioError::at(join(&o.path, key), "is missing (a required key)")),
     }
 }
 
@@ -325,7 +328,7 @@ fn inspection(v: &Value, path: &str) -> Result<Inspection> {
 
 fn planner(v: &Value, path: &str) -> Result<PlannerDefaults> {
     let map = v.as_object().ok_or_else(|| ScenarioError::at(path, format!("must be an object, found {}", describe(v))))?;
-    let name = string(map.get("name").ok_or_else(|| ScenarioError::at(path, "missing required key \"name\""))?, &join(path, "name"))?;
+    let name = string(map.get("name").ok_or_else(|| ScenarioError::at(join(path, "name"), "is missing (a required key)"))?, &join(path, "name"))?;
     let spec = crate::planners::find(&name)
         .ok_or_else(|| ScenarioError::at(join(path, "name"), format!("unknown planner \"{}\" (known: {})", limits::cut(&name, 100), crate::planners::names().join(", "))))?;
     let seed = match map.get("seed") {
@@ -346,7 +349,7 @@ impl Scenario {
     /// becomes a [`Problem`](crate::problem::Problem).)
     pub fn from_json(text: &str) -> Result<Scenario> {
         if let Some(why) = limits::text_too_large(text) {
-            return Err(ScenarioError::at("", why));
+            return Err(ScenarioError::document(why));
         }
         let value: Value = serde_json::from_str(text).map_err(|e| ScenarioError::syntax(&e))?;
         Scenario::from_value(&value)
@@ -440,7 +443,7 @@ impl Scenario {
             None => None,
         };
         if goal.is_none() && inspection.is_none() {
-            return Err(ScenarioError::at("", "missing required key \"goal\" (only an inspection task may omit it)"));
+            return Err(ScenarioError::at("goal", "is missing (only an inspection task may omit it)"));
         }
         let planner = match o.get("planner") {
             Some((v, p)) => Some(planner(v, &p)?),
