@@ -1,6 +1,6 @@
-use super::circle::intersect_segment_circle;
+use super::circle::{interior_meets_segment_circle, intersect_segment_circle};
 use super::polygon::{contains_polygon_point, interior_meets_segment_polygon, intersect_segment_polygon};
-use super::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment, intersect_segment_segment, orient};
+use super::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment, intersect_segment_segment, orient_sign};
 use super::Aabb;
 use crate::math::{MinMax, Real, Vec2};
 
@@ -43,7 +43,7 @@ impl Shape {
         match self {
             Shape::Rect(b) => b.contains(p),
             Shape::Polygon(poly) => contains_polygon_point(poly, p),
-            Shape::Circle(c, r) => (p - *c).norm2() <= r * r,
+            Shape::Circle(c, r) => intersect_segment_circle(p, p, *c, *r),
             Shape::Segment(a, b) => contains_segment_point(*a, *b, p),
         }
     }
@@ -92,26 +92,18 @@ impl Shape {
     pub fn interior_meets_segment(&self, a: Vec2, b: Vec2) -> bool {
         match self {
             Shape::Rect(r) => {
-                let (mut lo, mut hi) = (Real::NEG_INFINITY, Real::INFINITY);
-                for (p, d, min, max) in [(a.x, b.x - a.x, r.min.x, r.max.x), (a.y, b.y - a.y, r.min.y, r.max.y)] {
-                    if d == 0.0 {
-                        if !(p > min && p < max) {
-                            return false;
-                        }
-                    } else {
-                        let (t0, t1) = ((min - p) / d, (max - p) / d);
-                        lo = lo.at_least(t0.at_most(t1));
-                        hi = hi.at_most(t0.at_least(t1));
-                    }
+                if !(r.min.x < r.max.x && r.min.y < r.max.y) {
+                    return false; // a flat rectangle has no interior
                 }
-                lo < hi && lo < 1.0 && hi > 0.0
+                let c = [r.min, Vec2::new(r.max.x, r.min.y), r.max, Vec2::new(r.min.x, r.max.y)];
+                interior_meets_segment_polygon(&c, a, b)
             }
             Shape::Polygon(poly) => interior_meets_segment_polygon(poly, a, b),
-            Shape::Circle(c, r) => distance2_point_segment(*c, a, b) < r * r,
+            Shape::Circle(c, r) => interior_meets_segment_circle(a, b, *c, *r),
             Shape::Segment(c, d) => {
-                let (d1, d2) = (orient(*c, *d, a), orient(*c, *d, b));
-                let (d3, d4) = (orient(a, b, *c), orient(a, b, *d));
-                d1 * d2 < 0.0 && d3 * d4 < 0.0
+                let (d1, d2) = (orient_sign(*c, *d, a), orient_sign(*c, *d, b));
+                let (d3, d4) = (orient_sign(a, b, *c), orient_sign(a, b, *d));
+                d1 * d2 < 0 && d3 * d4 < 0
             }
         }
     }
