@@ -31,6 +31,28 @@ pub fn segment_disc_cmp(a: Vec2, b: Vec2, c: Vec2, r: Real) -> Ordering {
     segment_disc_cmp_exact((a.x, a.y), (b.x, b.y), (c.x, c.y), r)
 }
 
+/// How the distance from the point `p` to the point `c` compares with `r` (`r ≥ 0`), exactly.
+///
+/// `|p − c|²` takes four roundings and `r²` one, so each is within `2ε` (relative) of its exact
+/// value unless something underflows; a relative filter of `8ε` then decides, and the rest (and
+/// anything below `1e-280`) is compared exactly.
+#[inline]
+pub fn point_disc_cmp(p: Vec2, c: Vec2, r: Real) -> Ordering {
+    const REL: Real = 8.0 * Real::EPSILON;
+    const TINY: Real = 1e-280;
+    let d2 = (p - c).norm2();
+    let r2 = r * r;
+    if r2 > TINY && d2 > TINY {
+        if d2 > r2 * (1.0 + REL) {
+            return Ordering::Greater;
+        }
+        if d2 < r2 * (1.0 - REL) {
+            return Ordering::Less;
+        }
+    }
+    segment_disc_cmp_exact((p.x, p.y), (p.x, p.y), (c.x, c.y), r)
+}
+
 /// Whether the closed segment `a b` meets the closed disc of centre `c` and radius `r` (exact).
 #[inline]
 pub fn intersect_segment_circle(a: Vec2, b: Vec2, c: Vec2, r: Real) -> bool {

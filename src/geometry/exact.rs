@@ -165,6 +165,8 @@ pub fn orient_sign_exact(a: (f64, f64), b: (f64, f64), c: (f64, f64)) -> i8 {
 
 /// The exact comparison of the squared distance from `p` to the closed segment `a b` with `r²`:
 /// `Less`, `Equal` or `Greater`, for `f64` points given as `(x, y)` and `r ≥ 0`.
+#[cold]
+#[inline(never)]
 pub fn segment_disc_cmp_exact(a: (f64, f64), b: (f64, f64), p: (f64, f64), r: f64) -> Ordering {
     let f = Dyadic::from_f64;
     let d = |u: f64, v: f64| f(u).sub(&f(v));

@@ -41,12 +41,21 @@ pub fn contains_segment_point(a: Vec2, b: Vec2, p: Vec2) -> bool {
 }
 
 /// Whether closed segments `p1 p2` and `q1 q2` share a point (touching and overlap count).
+///
+/// Both ends of one strictly on the same side of the other's line is the common answer and
+/// returns after two orientation tests (exact signs make the early exits agree with the full test).
 #[inline(always)]
 pub fn intersect_segment_segment(p1: Vec2, p2: Vec2, q1: Vec2, q2: Vec2) -> bool {
     let d1 = orient(q1, q2, p1);
     let d2 = orient(q1, q2, p2);
+    if (d1 > 0.0 && d2 > 0.0) || (d1 < 0.0 && d2 < 0.0) {
+        return false;
+    }
     let d3 = orient(p1, p2, q1);
     let d4 = orient(p1, p2, q2);
+    if (d3 > 0.0 && d4 > 0.0) || (d3 < 0.0 && d4 < 0.0) {
+        return false;
+    }
     if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0)) {
         return true;
     }
@@ -62,6 +71,14 @@ pub fn distance_segment_segment(a: Vec2, b: Vec2, c: Vec2, d: Vec2) -> Real {
     if intersect_segment_segment(a, b, c, d) {
         return 0.0;
     }
+    distance_segment_segment_apart(a, b, c, d)
+}
+
+/// Distance between closed segments `a b` and `c d` known not to meet (the nearest points are
+/// then an end of one and a point of the other): [`distance_segment_segment`] without its
+/// intersection test.
+#[inline(always)]
+pub fn distance_segment_segment_apart(a: Vec2, b: Vec2, c: Vec2, d: Vec2) -> Real {
     distance2_point_segment(a, c, d)
         .at_most(distance2_point_segment(b, c, d))
         .at_most(distance2_point_segment(c, a, b))

@@ -1,6 +1,8 @@
-use super::circle::{interior_meets_segment_circle, intersect_segment_circle};
+use std::cmp::Ordering;
+
+use super::circle::{interior_meets_segment_circle, intersect_segment_circle, point_disc_cmp};
 use super::polygon::{contains_polygon_point, interior_meets_segment_polygon, intersect_segment_polygon};
-use super::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment, intersect_segment_segment, orient_sign};
+use super::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment_apart, intersect_segment_segment, orient_sign};
 use super::Aabb;
 use crate::math::{MinMax, Real, Vec2};
 
@@ -39,11 +41,12 @@ impl Shape {
     }
 
     /// Whether the closed shape contains `p`.
+    #[inline(always)]
     pub fn contains_point(&self, p: Vec2) -> bool {
         match self {
             Shape::Rect(b) => b.contains(p),
             Shape::Polygon(poly) => contains_polygon_point(poly, p),
-            Shape::Circle(c, r) => intersect_segment_circle(p, p, *c, *r),
+            Shape::Circle(c, r) => point_disc_cmp(p, *c, *r) != Ordering::Greater,
             Shape::Segment(a, b) => contains_segment_point(*a, *b, p),
         }
     }
@@ -77,10 +80,10 @@ impl Shape {
         match self {
             Shape::Rect(r) => {
                 let c = [r.min, Vec2::new(r.max.x, r.min.y), r.max, Vec2::new(r.min.x, r.max.y)];
-                (0..4).for_each(|i| best = best.at_most(distance_segment_segment(a, b, c[i], c[(i + 1) % 4])));
+                (0..4).for_each(|i| best = best.at_most(distance_segment_segment_apart(a, b, c[i], c[(i + 1) % 4])));
             }
-            Shape::Polygon(p) => (0..p.len()).for_each(|i| best = best.at_most(distance_segment_segment(a, b, p[i], p[(i + 1) % p.len()]))),
-            Shape::Segment(c, d) => best = best.at_most(distance_segment_segment(a, b, *c, *d)),
+            Shape::Polygon(p) => (0..p.len()).for_each(|i| best = best.at_most(distance_segment_segment_apart(a, b, p[i], p[(i + 1) % p.len()]))),
+            Shape::Segment(c, d) => best = best.at_most(distance_segment_segment_apart(a, b, *c, *d)),
             Shape::Circle(c, r) => best = best.at_most(distance2_point_segment(*c, a, b).sqrt() - r),
         }
         best.at_least(0.0)
@@ -121,7 +124,7 @@ impl Shape {
         let mut best = cap;
         let mut edge = |a: Vec2, b: Vec2| {
             for i in 0..n {
-                best = best.at_most(distance_segment_segment(a, b, poly[i], poly[(i + 1) % n]));
+                best = best.at_most(distance_segment_segment_apart(a, b, poly[i], poly[(i + 1) % n]));
             }
         };
         match self {

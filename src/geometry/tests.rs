@@ -103,7 +103,7 @@ fn segment_distance_to_shapes() {
 // ---------------------------------------------------------------------------------------------
 // Exactness (issue 13): the predicates against exact integer arithmetic.
 
-use super::circle::segment_disc_cmp;
+use super::circle::{point_disc_cmp, segment_disc_cmp};
 use super::exact::{orient_sign_exact, segment_disc_cmp_exact};
 use crate::rng::Rng;
 use std::cmp::Ordering;
@@ -307,6 +307,15 @@ fn disc_predicates_are_exact_near_tangency() {
     let disc = Shape::Circle(v(0., 0.), 1.0);
     assert!(disc.intersects_segment(v(-1., 1.), v(1., 1.)) && !disc.interior_meets_segment(v(-1., 1.), v(1., 1.)));
     assert!(disc.contains_point(v(1., 0.)) && disc.contains_point(v(0., -1.)) && !disc.contains_point(v(1., 1e-300)));
+    // Points near the circle: contains_point against the exact comparison.
+    for i in 0..20_000 {
+        let (c, r) = (v(rng.uniform(-5.0, 5.0), rng.uniform(-5.0, 5.0)), rng.uniform(0.01, 2.0));
+        let th = rng.uniform(0.0, 6.3);
+        let p = c + v(libm::cos(th), libm::sin(th)).scale(r);
+        let want = segment_disc_cmp_exact((p.x, p.y), (p.x, p.y), (c.x, c.y), r);
+        assert_eq!(point_disc_cmp(p, c, r), want, "point {i}: {p:?} disc {c:?} {r}");
+        assert_eq!(Shape::Circle(c, r).contains_point(p), want != Ordering::Greater);
+    }
 }
 
 /// Whether the segment `a b` meets the open polygon, in exact integer arithmetic by a different
