@@ -69,9 +69,12 @@ impl<'a> Obj<'a> {
     }
 }
 
-/// A finite number within [`limits::MAX_MAGNITUDE`].
+/// A finite number within [`limits::MAX_MAGNITUDE`], and 0 or at least [`limits::MIN_MAGNITUDE`].
 fn number(v: &Value, path: &str) -> Result<Real> {
     match v.as_f64() {
+        Some(x) if x != 0.0 && x.abs() < limits::MIN_MAGNITUDE => {
+            Err(ScenarioError::at(path, format!("{x:e} is too small: numbers other than 0 must be at least 1e-100 in size")))
+        }
         Some(x) if x.is_finite() && x.abs() <= limits::MAX_MAGNITUDE => Ok(x),
         Some(x) => Err(ScenarioError::at(path, format!("{x:e} is too large: numbers must lie between -1e9 and 1e9"))),
         None => Err(ScenarioError::at(path, format!("must be a number, found {}", describe(v)))),

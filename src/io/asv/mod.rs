@@ -86,6 +86,7 @@ fn numbers(line: usize, words: &[(usize, &str)], count: usize, what: &str) -> Re
     words[..count]
         .iter()
         .map(|(c, w)| match w.parse::<Real>() {
+            Ok(x) if x != 0.0 && x.abs() < crate::limits::MIN_MAGNITUDE => Err(at(line, *c, format!("{what}: {x:e} is too small: numbers other than 0 must be at least 1e-100 in size"))),
             Ok(x) if x.is_finite() && x.abs() <= crate::limits::MAX_MAGNITUDE => Ok(x),
             Ok(x) if x.is_finite() => Err(at(line, *c, format!("{what}: {x:e} is too large: numbers must lie between -1e9 and 1e9"))),
             _ => Err(at(line, *c, format!("{what}: expected a number, found \"{}\"", crate::limits::cut(w, 40)))),
