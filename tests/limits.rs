@@ -297,3 +297,24 @@ fn numbers_too_small_for_exact_predicates_are_refused() {
     v["obstacles"][0]["rect"][1] = json!(0.0);
     assert!(Scenario::from_value(&v).is_ok(), "0 itself is fine");
 }
+
+#[test]
+fn hex_potential_never_passes_max_nodes() {
+    // The coarse tiling alone would pass a small node limit: refused up front, with the reason.
+    let v = builtin_value("hex-open");
+    let e = session(&v, "hex-potential", json!({"max_nodes": 5}), 1).err().expect("refused");
+    assert!(e.contains("max_nodes"), "{e}");
+    // Refinement stops at the limit: a split that may not fit ends the run at its node limit.
+    let coarse = {
+        let mut s = session(&v, "hex-potential", json!({"max_iterations": 1}), 1).unwrap();
+        s.run_to_end();
+        s.result().stats.nodes
+    };
+    for extra in [1, 3, 6, 7, 20] {
+        let limit = coarse + extra;
+        let mut s = session(&v, "hex-potential", json!({"max_nodes": limit}), 1).unwrap();
+        s.run_to_end();
+        let r = s.result();
+        assert!(r.stats.nodes <= limit, "{} nodes past max_nodes {limit}", r.stats.nodes);
+    }
+}

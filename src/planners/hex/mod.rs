@@ -166,6 +166,11 @@ impl HexPotential {
             ));
         }
         let dec = Decomposition::tiling(&b, s0);
+        // Cells count as nodes: the coarse tiling alone must fit under the node limit.
+        let max_nodes = params.real("max_nodes");
+        if dec.cells.len() as Real > max_nodes {
+            return Err(format!("the coarse tiling has {} cells, more than max_nodes ({max_nodes}): raise max_nodes or cell_size", dec.cells.len()));
+        }
         let queue = (0..dec.cells.len()).collect();
         let region = Region::new(p0, r0, &ws.obstacles, t, b, g);
         let counted = ws.obstacles.iter().map(|s| region.counts(s)).collect();
