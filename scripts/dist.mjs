@@ -9,6 +9,7 @@
 import { cpSync, existsSync, mkdirSync, readdirSync, readFileSync, rmSync, statSync } from 'node:fs';
 import { dirname, join, relative, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { CSP_META } from './serve.mjs';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 const www = join(root, 'www');
@@ -37,7 +38,8 @@ cpSync(www, out, {
   filter: (src) => src === www || !skip(src.split(sep).pop()),
 });
 
-// Every URL relative: no "/…" (root of the host) and no "http(s)://" in src/href, imports, workers or fetches.
+// Every URL relative: no "/…" (root of the host) and no "http(s)://" in src/href, imports, workers or fetches;
+// every page with the CSP <meta> and nothing inline.
 const problems = [];
 let files = 0, bytes = 0;
 function walk(dir) {
@@ -49,6 +51,15 @@ function walk(dir) {
     bytes += st.size;
     if (!/\.(html|m?js|css)$/.test(name)) continue;
     const text = readFileSync(path, 'utf8');
+    // a static host sends no CSP header: each page must carry the policy itself, and no inline script or style
+    if (name.endsWith('.html')) {
+      if (!text.includes(CSP_META)) {
+        problems.push(`${relative(out, path)}: no <meta http-equiv="Content-Security-Policy"> with the policy of scripts/serve.mjs`);
+      }
+      if (/<script(?![^>]*\bsrc=)[^>]*>|<style\b|\sstyle\s*=|\son[a-z]+\s*=/i.test(text)) {
+        problems.push(`${relative(out, path)}: an inline script, style or event handler (the CSP forbids them)`);
+      }
+    }
     const rules = [
       [/\b(?:src|href|data-src)\s*=\s*["'](\/[^/"']|\/\/|https?:)/g, 'an absolute src/href'],
       [/\bimport\s*(?:[\w{}*\s,]+from\s*)?["'](\/|https?:)/g, 'an absolute import'],
@@ -66,6 +77,6 @@ function walk(dir) {
   }
 }
 walk(out);
-if (problems.length) fail(`URLs must be relative for a static host under any sub-path:\n  ${problems.join('\n  ')}`);
+if (problems.length) fail(`URLs must be relative for a static host under any sub-path, pages must carry the CSP:\n  ${problems.join('\n  ')}`);
 console.log(`[dist] ${files} files, ${(bytes / 1024).toFixed(0)} KiB → ${relative(process.cwd(), out) || '.'}`);
 console.log('[dist] copy that folder to any static host (it must serve .wasm; application/wasm is best); open index.html or embed.html#scenario=narrow');

@@ -1,4 +1,6 @@
 // A small static server for www/ (no dependencies). PORT and HOST may be set in the environment.
+// Every response says nosniff and no-referrer; Planarium's pages (and the scripts, for the workers)
+// also carry the pages' Content-Security-Policy (CSP below).
 import { createServer } from 'node:http';
 import { readFile, stat } from 'node:fs/promises';
 import { extname, join, normalize, dirname } from 'node:path';
@@ -11,19 +13,46 @@ const TYPES = {
   '.svg': 'image/svg+xml',
 };
 
+/**
+ * The pages' Content-Security-Policy (each .html in www/ carries the same as a <meta>, for static
+ * hosts; a test checks they agree): the page's own files only, WebAssembly compiled from them, the
+ * module workers, exports as blob: URLs, no plugins, no <base>, no forms.
+ */
+export const CSP = "default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; worker-src 'self'; style-src 'self'; "
+  + "img-src 'self' data: blob:; media-src 'self' blob:; connect-src 'self'; object-src 'none'; base-uri 'none'; form-action 'none'";
+
+/** The <meta> every page of Planarium carries (scripts/dist.mjs and a test check it). */
+export const CSP_META = `<meta http-equiv="Content-Security-Policy" content="${CSP}">`;
+
+/**
+ * Headers for a response: no MIME sniffing, no referrer, and the CSP with frame-ancestors
+ * (header-only: embed.html may be framed by any site, the other pages only by the playground's
+ * own). `body`: an .html file's text: it gets the CSP only if it is one of Planarium's pages (it
+ * carries CSP_META), not a page of course notes that embeds the playground (with its own styles
+ * and scripts, served from here in tests); any other file gets it (it matters for the workers).
+ */
+export function securityHeaders(file, body = null) {
+  const headers = { 'x-content-type-options': 'nosniff', 'referrer-policy': 'no-referrer' };
+  if (/\.html$/.test(file) && !(body && String(body).includes(CSP_META))) return headers;
+  const framed = /(^|[/\\])embed\.html$/.test(file);
+  return { 'content-security-policy': `${CSP}; frame-ancestors ${framed ? '*' : "'self'"}`, ...headers };
+}
+
 export function serve({ port = 8080, host = '127.0.0.1', dir = root } = {}) {
   const server = createServer(async (req, res) => {
     try {
       const url = new URL(req.url, 'http://x');
       let path = normalize(decodeURIComponent(url.pathname)).replace(/^(\.\.[/\\])+/, '');
       let file = join(dir, path);
-      if (!file.startsWith(dir)) { res.writeHead(403).end(); return; }
+      if (!file.startsWith(dir)) { res.writeHead(403, securityHeaders('')).end(); return; }
       if ((await stat(file).catch(() => null))?.isDirectory()) file = join(file, 'index.html');
       const body = await readFile(file);
-      res.writeHead(200, { 'content-type': TYPES[extname(file)] || 'application/octet-stream', 'cache-control': 'no-cache' });
+      res.writeHead(200, {
+        'content-type': TYPES[extname(file)] || 'application/octet-stream', 'cache-control': 'no-cache', ...securityHeaders(file, body),
+      });
       res.end(body);
     } catch {
-      res.writeHead(404, { 'content-type': 'text/plain' }).end('not found');
+      res.writeHead(404, { 'content-type': 'text/plain', ...securityHeaders('') }).end('not found');
     }
   });
   return new Promise((resolve) => server.listen(port, host, () => resolve(server)));

@@ -12,7 +12,7 @@
 
 use crate::math::Real;
 use crate::space::StateSpace;
-use crate::space_info::SpaceInfo;
+use crate::space_info::{Deadline, SpaceInfo, CLOCK_EVERY};
 
 /// A motion was found invalid (the state found is in the caller's scratch buffer).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -25,10 +25,22 @@ pub trait MotionValidator {
     fn check_motion(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Invalid>;
 }
 
+/// How a discrete motion check ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Discrete {
+    /// Every state checked was valid.
+    Valid,
+    /// An invalid state was found (it is in the caller's scratch).
+    Invalid,
+    /// The deadline passed before every state was checked: the motion is refused.
+    OutOfTime,
+}
+
 /// Visit `1..n` coarse to fine (n/2 first, then n/4 and 3n/4, ...), each index once, stopping at
-/// the first error.
+/// the first error. (`n` is at most [`crate::limits::MAX_MOTION_STEPS`]; the power of two is
+/// computed checked all the same, since a wrapped one would visit nothing.)
 fn in_bisection_order<E>(n: usize, mut visit: impl FnMut(usize) -> Result<(), E>) -> Result<(), E> {
-    let mut step = n.next_power_of_two();
+    let mut step = n.checked_next_power_of_two().unwrap_or(1 << (usize::BITS - 1));
     while step > 1 {
         let half = step / 2;
         let mut i = half;
@@ -43,23 +55,37 @@ fn in_bisection_order<E>(n: usize, mut visit: impl FnMut(usize) -> Result<(), E>
 
 /// The discrete check of the motion `a → b` in `n` steps: `b`, then the states `i/n` of the way,
 /// coarse to fine, stopping at the first invalid one, which is left in `scratch`. Returns whether
-/// all were valid, and how many states were checked.
-pub fn check_discrete(space: &StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], mut is_valid: impl FnMut(&[Real]) -> bool) -> (bool, u64) {
+/// all were valid, and how many states were checked. Every [`CLOCK_EVERY`] states it looks at
+/// `deadline`, and once that has passed it stops and refuses the motion.
+#[allow(clippy::too_many_arguments)]
+pub fn check_discrete(space: &StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], deadline: Deadline, mut is_valid: impl FnMut(&[Real]) -> bool) -> (Discrete, u64) {
     let mut checks = 1;
     if !is_valid(b) {
         scratch.copy_from_slice(b);
-        return (false, checks);
+        return (Discrete::Invalid, checks);
     }
+    let mut late = false;
     let all = in_bisection_order(n, |i| {
         space.interpolate(a, b, i as Real / n as Real, scratch);
         checks += 1;
+        if checks % CLOCK_EVERY == 0 && deadline.passed() {
+            late = true;
+            return Err(());
+        }
         if is_valid(scratch) {
             Ok(())
         } else {
             Err(())
         }
     });
-    (all.is_ok(), checks)
+    (
+        match (all, late) {
+            (Ok(()), _) => Discrete::Valid,
+            (Err(()), false) => Discrete::Invalid,
+            (Err(()), true) => Discrete::OutOfTime,
+        },
+        checks,
+    )
 }
 
 /// Deepest bisection when certifying one interval (2^-40 of a resolution step).
@@ -71,6 +97,10 @@ impl SpaceInfo {
     #[inline]
     fn clearance_checked(&self, motion: Option<(&[Real], &[Real])>, q: &[Real], cap: Real) -> Real {
         self.checks.set(self.checks.get() + 1);
+        // Past the deadline, a clearance of 0 refuses the motion (and the run stops).
+        if self.tick(1) {
+            return 0.0;
+        }
         match motion {
             Some((a, b)) => self.validity.motion_clearance(a, b, q, cap),
             None => self.validity.clearance(q, cap),
@@ -79,12 +109,15 @@ impl SpaceInfo {
     }
 
     fn check_discrete(&self, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real]) -> Result<(), Invalid> {
-        let (valid, checks) = self.validity.check_discrete(&self.space, a, b, n, scratch);
+        let (outcome, checks) = self.validity.check_discrete(&self.space, a, b, n, scratch, self.deadline());
         self.count_checks(checks);
-        if valid {
-            Ok(())
-        } else {
-            Err(Invalid)
+        match outcome {
+            Discrete::Valid => Ok(()),
+            Discrete::Invalid => Err(Invalid),
+            Discrete::OutOfTime => {
+                self.out_of_time();
+                Err(Invalid)
+            }
         }
     }
 
@@ -144,8 +177,18 @@ impl SpaceInfo {
 
 impl MotionValidator for SpaceInfo {
     fn check_motion(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Invalid> {
+        // Cut short by the deadline: refuse at once, accept nothing unchecked.
+        if self.interrupted() {
+            scratch.copy_from_slice(b);
+            return Err(Invalid);
+        }
         let d = self.distance(a, b);
-        let n = self.validity.motion_steps(a, b, d, self.resolution).max(1);
+        // More steps than can be checked (unreachable for states in bounds: `Problem` refuses
+        // such a resolution): refuse the motion rather than check it more coarsely.
+        let Some(n) = self.validity.motion_steps(a, b, d, self.resolution) else {
+            self.interpolate(a, b, 0.5, scratch);
+            return Err(Invalid);
+        };
         match self.validity.sweep_hits(a, b) {
             // A robot with an exact swept test: discrete checks (the contract), then the sweep.
             Some(hit) => {

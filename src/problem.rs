@@ -1,6 +1,7 @@
 //! A planning problem: a scenario turned into a workspace, a robot, a space, a start and a goal.
 
 use crate::geometry::{Aabb, Shape, Workspace};
+use crate::limits;
 use crate::math::{Real, Vec2};
 use crate::robot::{self, Robot, Verdict};
 use crate::scenario::{ObstacleSpec, Scenario, ScenarioError};
@@ -44,6 +45,34 @@ fn obstacle_kind(o: &ObstacleSpec) -> &'static str {
     }
 }
 
+/// Refuse a resolution (a vehicle chain's `max_step`) so fine that the longest motion would be
+/// checked in more than [`limits::MAX_MOTION_STEPS`] states: such a motion check would take
+/// minutes, and its step count would not fit the buffers that hold it.
+fn check_resolution(sc: &Scenario, space: &crate::space::StateSpace) -> Result<(), ScenarioError> {
+    let b = sc.bounds;
+    let diagonal = ((b[2] - b[0]).powi(2) + (b[3] - b[1]).powi(2)).sqrt();
+    let mut checks = vec![("resolution", space.max_extent(), sc.resolution)];
+    if let crate::scenario::RobotSpec::Asv { count, broom, max_step, .. } = &sc.robot {
+        // No vehicle moves farther than the centroid does plus its distance to the centroid at
+        // either end (at most the whole chain's length each).
+        checks.push(("robot.max_step", diagonal + 2.0 * *count as Real * broom, *max_step));
+    }
+    for (path, extent, step) in checks {
+        let n = extent / step;
+        if n.is_nan() || n > limits::MAX_MOTION_STEPS {
+            return Err(ScenarioError::at(
+                path,
+                format!(
+                    "{step:e} is too fine: the longest motion in this robot's space measures {extent:.6e} (in its metric), which would be checked in {n:.3e} states; the limit is {:e}, so it must be at least {:.3e}",
+                    limits::MAX_MOTION_STEPS,
+                    extent / limits::MAX_MOTION_STEPS
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
 impl Problem {
     /// A planning path as scenario states.
     pub fn decode_path(&self, path: &[Vec<Real>]) -> Vec<Vec<Real>> {
@@ -61,6 +90,7 @@ impl Problem {
         workspace.open = sc.touching_allowed;
         let robot: Rc<dyn Robot> = robot::from_spec(&sc.robot, sc.body_in_bounds).map_err(|e| ScenarioError::at("robot.kind", e))?.into();
         let space = robot.space(&workspace);
+        check_resolution(sc, &space)?;
         let check = |name: &str, q: &[Real]| -> Result<Vec<Real>, ScenarioError> {
             let dims = robot.external_dims();
             if q.len() != dims {

@@ -7,6 +7,33 @@ use crate::rng::Rng;
 use crate::space::StateSpace;
 use crate::validity::StateValidity;
 use std::cell::{Cell, RefCell};
+use web_time::Instant;
+
+/// When long work must stop: the run's time limit, as an instant (none: no limit). Loops that can
+/// run long inside one planner iteration (a motion check's states, smoothing, a heat map) look at
+/// it every so often, so a time limit holds inside them too.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Deadline(pub Option<Instant>);
+
+impl Deadline {
+    /// No deadline.
+    pub const NONE: Deadline = Deadline(None);
+    /// `ms` milliseconds from now (none when `ms` is infinite or too large for the clock).
+    pub fn in_ms(ms: f64) -> Deadline {
+        if !(ms.is_finite() && ms < 1e12) {
+            return Deadline::NONE;
+        }
+        Deadline(Instant::now().checked_add(std::time::Duration::from_secs_f64(ms.max(0.0) / 1000.0)))
+    }
+    /// Whether it has passed (reads the clock: call it every few hundred units of work).
+    #[inline]
+    pub fn passed(&self) -> bool {
+        self.0.is_some_and(|t| Instant::now() >= t)
+    }
+}
+
+/// Units of work (states checked, shortcuts tried) between two looks at the clock.
+pub const CLOCK_EVERY: u64 = 256;
 
 /// The state space, validity checker and motion resolution, with the count of state checks.
 pub struct SpaceInfo {
@@ -18,12 +45,61 @@ pub struct SpaceInfo {
     pub(crate) checks: Cell<u64>,
     /// Scratch for the clearances along a motion (reused, so checking does not allocate).
     pub(crate) clearances: RefCell<Vec<Real>>,
+    /// The run's deadline (see [`Deadline`]), and whether work was cut short by it.
+    deadline: Cell<Deadline>,
+    interrupted: Cell<bool>,
+    /// Units of work since the clock was last read.
+    ticks: Cell<u64>,
 }
 
 impl SpaceInfo {
     /// A bundle over a space and validity checker.
     pub fn new(space: StateSpace, validity: Box<dyn StateValidity>, resolution: Real) -> Self {
-        SpaceInfo { space, resolution, validity, checks: Cell::new(0), clearances: RefCell::new(Vec::new()) }
+        SpaceInfo {
+            space,
+            resolution,
+            validity,
+            checks: Cell::new(0),
+            clearances: RefCell::new(Vec::new()),
+            deadline: Cell::new(Deadline::NONE),
+            interrupted: Cell::new(false),
+            ticks: Cell::new(0),
+        }
+    }
+    /// Set the deadline of the work that follows, and forget an earlier interruption.
+    pub fn set_deadline(&self, deadline: Deadline) {
+        self.deadline.set(deadline);
+        self.interrupted.set(false);
+    }
+    /// The current deadline.
+    pub fn deadline(&self) -> Deadline {
+        self.deadline.get()
+    }
+    /// Whether the deadline has passed (reading the clock now). Once it has, work in progress
+    /// is cut short: motion checks refuse at once, so nothing unchecked is ever accepted, and the
+    /// run stops with its time limit.
+    pub fn out_of_time(&self) -> bool {
+        if !self.interrupted.get() && self.deadline.get().passed() {
+            self.interrupted.set(true);
+        }
+        self.interrupted.get()
+    }
+    /// Whether work was cut short by the deadline (without reading the clock).
+    pub fn interrupted(&self) -> bool {
+        self.interrupted.get()
+    }
+    /// Count `units` of work; every [`CLOCK_EVERY`] of them, read the clock. Returns whether the
+    /// deadline has passed.
+    #[inline]
+    pub fn tick(&self, units: u64) -> bool {
+        let t = self.ticks.get() + units;
+        if t >= CLOCK_EVERY {
+            self.ticks.set(0);
+            self.out_of_time()
+        } else {
+            self.ticks.set(t);
+            self.interrupted.get()
+        }
     }
     /// Numbers per state.
     #[inline]

@@ -13,7 +13,7 @@ pub trait StateValidity {
         self.verdict(q) == Verdict::Valid
     }
     /// The discrete check of a motion, as [`Robot::check_discrete`] describes it.
-    fn check_discrete(&self, space: &crate::space::StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real]) -> (bool, u64);
+    fn check_discrete(&self, space: &crate::space::StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], deadline: crate::space_info::Deadline) -> (crate::motion::Discrete, u64);
     /// Exact swept test of the straight motion `a → b`, when one exists (`Some(true)`: it hits).
     fn sweep_hits(&self, a: &[Real], b: &[Real]) -> Option<bool>;
     /// The workspace point a state is drawn at.
@@ -22,8 +22,9 @@ pub trait StateValidity {
     fn sample(&self, space: &crate::space::StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) -> u64;
     /// A Gaussian neighbour drawn the robot's own way, if it has one (`false`: it has none).
     fn sample_gaussian(&self, space: &crate::space::StateSpace, rng: &mut crate::rng::Rng, centre: &[Real], sigma: Real, out: &mut [Real]) -> bool;
-    /// Steps a motion of length `d` is checked in.
-    fn motion_steps(&self, a: &[Real], b: &[Real], d: Real, resolution: Real) -> usize;
+    /// Steps a motion of length `d` is checked in (`None`: more than can be checked; see
+    /// [`Robot::motion_steps`]).
+    fn motion_steps(&self, a: &[Real], b: &[Real], d: Real, resolution: Real) -> Option<usize>;
     /// Distance to the nearest obstacle capped at `cap` (0: invalid), when the robot has it.
     fn clearance(&self, q: &[Real], cap: Real) -> Option<Real>;
     /// Bound on how far any body point moves along `a → b`, for robots with a clearance.
@@ -72,8 +73,8 @@ impl StateValidity for RobotInWorkspace {
     fn is_valid(&self, q: &[Real]) -> bool {
         self.robot.is_valid(&self.workspace, q)
     }
-    fn check_discrete(&self, space: &crate::space::StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real]) -> (bool, u64) {
-        self.robot.check_discrete(&self.workspace, space, a, b, n, scratch)
+    fn check_discrete(&self, space: &crate::space::StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], deadline: crate::space_info::Deadline) -> (crate::motion::Discrete, u64) {
+        self.robot.check_discrete(&self.workspace, space, a, b, n, scratch, deadline)
     }
     fn sweep_hits(&self, a: &[Real], b: &[Real]) -> Option<bool> {
         self.robot.sweep_hits(&self.workspace, a, b)
@@ -87,7 +88,7 @@ impl StateValidity for RobotInWorkspace {
     fn sample_gaussian(&self, space: &crate::space::StateSpace, rng: &mut crate::rng::Rng, centre: &[Real], sigma: Real, out: &mut [Real]) -> bool {
         self.robot.sample_gaussian(space, rng, centre, sigma, out)
     }
-    fn motion_steps(&self, a: &[Real], b: &[Real], d: Real, resolution: Real) -> usize {
+    fn motion_steps(&self, a: &[Real], b: &[Real], d: Real, resolution: Real) -> Option<usize> {
         self.robot.motion_steps(a, b, d, resolution)
     }
     fn clearance(&self, q: &[Real], cap: Real) -> Option<Real> {

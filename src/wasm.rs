@@ -63,6 +63,12 @@ pub fn planners() -> String {
     format!("{{\"planners\": {}, \"run_params\": {}}}", planners::registry_json(), serde_json::to_string(&run).unwrap())
 }
 
+/// The input limits as JSON (`docs/limits.md`), for the page's checks before it sends anything.
+#[wasm_bindgen]
+pub fn limits() -> String {
+    crate::limits::to_json().to_string()
+}
+
 /// The event kinds as JSON `{NAME: number}` and the record stride (checked against `www/events.js`).
 #[wasm_bindgen]
 pub fn event_kinds() -> String {
@@ -153,6 +159,9 @@ impl Scene {
     /// The robot's outline at scenario state `q`, flat: `[n_polygons, n_1, x, y, ..., n_2, ...]`
     /// (empty when `q` is not a state of this robot).
     pub fn outline(&self, q: &[f64]) -> Vec<f64> {
+        if q.len() != self.inner.robot.external_dims() || q.iter().any(|v| !v.is_finite()) {
+            return Vec::new();
+        }
         match self.inner.robot.encode(q) {
             Ok(internal) => flat_outline(&self.inner, &internal),
             Err(_) => Vec::new(),
@@ -246,9 +255,17 @@ impl Run {
             }
         }
         let dims = p.si.dims();
+        // The spacing grows so that a long path (or a long tree branch) stays within
+        // `MAX_PATH_FRAMES` frames; step counts are computed checked.
+        let length: f64 = path.windows(2).map(|w| p.si.distance(&w[0], &w[1])).sum();
+        let most = crate::limits::MAX_PATH_FRAMES as f64;
+        let spacing = spacing.max(1e-9).max(length / most);
         let mut states: Vec<Vec<f64>> = Vec::new();
         for w in path.windows(2) {
-            let n = ((p.si.distance(&w[0], &w[1]) / spacing.max(1e-9)).ceil() as usize).clamp(1, 10_000);
+            if states.len() >= crate::limits::MAX_PATH_FRAMES {
+                break;
+            }
+            let n = crate::limits::steps(p.si.distance(&w[0], &w[1]), spacing, 10_000.0).unwrap_or(10_000);
             for i in 0..n {
                 let mut q = vec![0.0; dims];
                 p.si.interpolate(&w[0], &w[1], i as f64 / n as f64, &mut q);

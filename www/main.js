@@ -2,7 +2,9 @@
 // playback, the views and the chart, the actions and the frame loop), the panel, the overlay box
 // and the stats; the hover text of cells and potential fields (cells.js), and the note under the
 // canvas when a planner finds no path; the share link (share.js): the state is kept in the URL
-// hash, and a page opened with a hash restores it.
+// hash, and a page opened with a hash restores it. A link with problems stays in the address bar
+// as pasted (and is shown with them) until the state changes; Copy link checks the link reads back
+// and is short enough to paste (share.js checkLink), else offers Save JSON.
 // Read-only state for tests is exposed as window.planarium (nothing else is global).
 
 import { BUTTONS } from './controller.js';
@@ -21,7 +23,7 @@ import { createStats } from './stats.js';
 import { createOverlays } from './overlays.js';
 import { cellLegend, cellSummary } from './cells.js';
 import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend } from './shared.js';
-import { readShare, setupFor, writeShare, VIEW_DEFAULTS } from './share.js';
+import { readShare, setupFor, writeShare, checkLink, boundedProblems, cut, VIEW_DEFAULTS, MAX_HASH_CHARS, MAX_LINK_CHARS, MAX_SCENARIO_BYTES } from './share.js';
 import { OVERLAYS } from './palette.js';
 
 const $ = (id) => document.getElementById(id);
@@ -33,7 +35,7 @@ const ui = {
   animSpeed: $('anim-speed'), animOut: $('anim-speed-out'), animRaw: $('anim-raw'), overlays: $('overlays'),
   stats: $('stats'), chartBox: $('chart-box'), chart: $('chart'), chartTitle: $('chart-title'), compare: $('to-compare'),
   tip: $('cell-tip'), runNote: $('run-note'), back: $('step-back'), copyLink: $('copy-link'), shareUrl: $('share-url'),
-  copyStatus: $('copy-status'),
+  copyStatus: $('copy-status'), saveJson: $('save-json'),
 };
 const { show: showError, clear: clearError } = errorBox(ui.error, ui.errorText);
 
@@ -79,7 +81,10 @@ const player = new Player({
         panel.apply(block);
         restoreNotes.push(...problems);
         restoring = null;
-        if (restoreNotes.length) showError(`Some of this link could not be used:\n• ${restoreNotes.join('\n• ')}`);
+        if (restoreNotes.length) {
+          showLinkProblems(restoreNotes);
+          if (pasted) pasted.state = stateHash(); // the state the link restored: the pasted link stays until it changes
+        } else pasted = null;
         restoreNotes = [];
         shareReady = true;
       } else if (applyDefaults) {
@@ -178,6 +183,7 @@ async function restoreHash(hash) {
   shareReady = false;
   clearTimeout(shareTimer);
   const share = await readShare(hash, { builtins });
+  pasted = { hash, state: null };
   restoring = share;
   restoreNotes = [...share.problems];
   applyView(share);
@@ -213,6 +219,9 @@ function applyView(share) {
 let shareTimer = 0;
 let shareGen = 0;
 let lastHash = null;          // the hash this page wrote last (a hashchange to it is ours)
+// A link opened with problems stays in the address bar, as pasted, until the state shown changes
+// (the hash of the state it restored is `state`), so it can be copied back to whoever sent it.
+let pasted = null;            // {hash, state: a promise of the restored state's hash}
 const encodedScenarios = new Map();
 
 /** Keep the hash up to date, a moment after the last change. */
@@ -222,14 +231,33 @@ function scheduleShare() {
   shareTimer = setTimeout(() => { writeHash(); }, 250);
 }
 
-/** Write the current state into the hash now; resolves to the page's full link. */
-async function writeHash() {
+/**
+ * Write the current state into the hash now; resolves to the page's full link. A hash too long to
+ * be read back is not written (the address bar loses its hash: a reload shows the first built-in);
+ * `force`: write it even over a pasted link with problems (Copy link).
+ */
+async function writeHash({ force = false } = {}) {
   clearTimeout(shareTimer);
   if (!shareReady || !panel || !scenarioText || !source || controller.state === 'invalid' || controller.state === 'loading') {
     return location.href;
   }
   const gen = ++shareGen;
-  const hash = await writeShare({
+  const hash = await stateHash();
+  const restored = pasted && !force ? await pasted.state : null;
+  if (gen !== shareGen) return location.href; // a newer write is on its way
+  const here = `${location.origin}${location.pathname}${location.search}`;
+  const readable = hash.length <= MAX_HASH_CHARS && (source.id || scenarioText.length <= MAX_SCENARIO_BYTES);
+  ui.shareUrl.value = readable && here.length + hash.length < MAX_LINK_CHARS ? `${here}#${hash}` : '';
+  if (restored === hash) return `${here}#${hash}`; // the link as pasted stays in the address bar
+  pasted = null;
+  lastHash = readable ? `#${hash}` : '';
+  if (location.hash !== lastHash) history.replaceState(history.state, '', `${location.pathname}${location.search}${lastHash}`);
+  return `${here}#${hash}`;
+}
+
+/** The hash (without `#`) of the state shown. */
+function stateHash() {
+  return writeShare({
     scenario: source.id ? { id: source.id } : { text: scenarioText },
     config: panel.config(),
     overlays: overlayOptions(),
@@ -238,15 +266,29 @@ async function writeHash() {
       stepSize: stepSize(),
     },
   }, registry, encodedScenarios);
-  if (gen !== shareGen) return location.href; // a newer write is on its way
-  lastHash = `#${hash}`;
-  if (location.hash !== lastHash) history.replaceState(history.state, '', `${location.pathname}${location.search}${lastHash}`);
-  ui.shareUrl.value = location.href;
-  return location.href;
+}
+
+/** A link's problems (at most a screenful, repeats once), and the link as it was opened, cut. */
+function showLinkProblems(notes) {
+  const lines = boundedProblems(notes, 12);
+  const link = pasted ? `${location.origin}${location.pathname}${location.search}${pasted.hash}` : '';
+  showError(`Some of this link could not be used:\n• ${lines.join('\n• ')}`
+    + (link ? `\nThe link you opened (${link.length.toLocaleString('en')} characters; it stays in the address bar until you change something):\n${cut(link, 300)}` : ''));
 }
 
 ui.copyLink.addEventListener('click', async () => {
-  const link = await writeHash();
+  ui.copyStatus.textContent = '';
+  ui.saveJson.hidden = true;
+  const link = await writeHash({ force: true });
+  // the link must read back as it is (the reader's limits) and survive pasting (its length)
+  const why = await checkLink(link, source?.id ? null : scenarioText);
+  if (why) {
+    ui.shareUrl.value = '';
+    ui.copyStatus.textContent = `No link copied: ${why}. Save the scenario as a JSON file instead and share the file `
+      + '(Open file… opens it).';
+    ui.saveJson.hidden = false;
+    return;
+  }
   ui.shareUrl.value = link;
   try {
     await navigator.clipboard.writeText(link);
@@ -255,6 +297,13 @@ ui.copyLink.addEventListener('click', async () => {
     ui.shareUrl.select();
     ui.copyStatus.textContent = 'Copy the selected link (the clipboard is not available here).';
   }
+});
+
+// a scenario too large for a link: offered as a file (the scenario as the worker normalised it)
+ui.saveJson.addEventListener('click', () => {
+  if (!scenarioText) return;
+  const name = (loaded?.name || 'scenario').replace(/[^\w.-]+/g, '-').toLowerCase().slice(0, 60) || 'scenario';
+  downloadText(`${JSON.stringify(JSON.parse(scenarioText), null, 2)}\n`, `${name}.json`);
 });
 
 // someone pastes another link into the address bar of this tab

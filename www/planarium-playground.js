@@ -23,7 +23,7 @@ import { View } from './view.js';
 import { Player } from './player.js';
 import { fitViews } from './stage.js';
 import { speedRate, animFps, describeSpeed } from './shared.js';
-import { readShare, setupFor, configOf, overlayOptions, DEFAULT_CONTROLS, VIEW_DEFAULTS } from './share.js';
+import { readShare, setupFor, configOf, overlayOptions, boundedProblems, DEFAULT_CONTROLS, VIEW_DEFAULTS } from './share.js';
 
 const KEYS = ['scenario', 'planner', 'seed', 'speed', 'anim', 'overlays', 'step-size', 'raw-path', 'autoplay', 'click', 'controls'];
 const FLAGS = ['raw-path', 'autoplay', 'click'];
@@ -59,11 +59,29 @@ input[type="number"] { width: 5rem; font: inherit; padding: 0.15rem 0.3rem; bord
 .status { margin-left: auto; font-size: 0.85rem; color: #5d6470; font-variant-numeric: tabular-nums; }
 .status[data-status="solved"] { color: #007a5a; }
 .message { margin: 0.35rem 0 0; padding: 0.3rem 0.5rem; border: 1px solid #a8362b; border-radius: 4px; background: #fdecea;
-  color: #5a1710; font-size: 0.82rem; white-space: pre-wrap; overflow-wrap: anywhere; }
+  color: #5a1710; font-size: 0.82rem; white-space: pre-wrap; overflow-wrap: anywhere; max-height: 12em; overflow: auto; flex: none; }
 [hidden] { display: none !important; }
 `;
 
 const el = (tag, props = {}) => Object.assign(document.createElement(tag), props);
+/** `s` with lone surrogates as U+FFFD (encodeURIComponent throws on them; an attribute may hold one). */
+const wellFormed = (s) => (typeof s.toWellFormed === 'function' ? s.toWellFormed()
+  : s.replace(/[\uD800-\uDBFF](?![\uDC00-\uDFFF])|(?<![\uD800-\uDBFF])[\uDC00-\uDFFF]/g, '\uFFFD'));
+
+/**
+ * The element's CSS for shadow root `root`: a constructed style sheet, which a page's
+ * Content-Security-Policy (style-src without 'unsafe-inline', as Planarium's own pages) allows;
+ * a <style> element (returned, to append) only where constructed sheets are missing.
+ */
+let sheet = null;
+function adoptStyle(root) {
+  if ('adoptedStyleSheets' in Document.prototype && typeof CSSStyleSheet.prototype.replaceSync === 'function') {
+    if (!sheet) { sheet = new CSSStyleSheet(); sheet.replaceSync(CSS); }
+    root.adoptedStyleSheets = [sheet];
+    return null;
+  }
+  return el('style', { textContent: CSS });
+}
 
 export class PlanariumPlayground extends HTMLElement {
   static get observedAttributes() { return [...KEYS, 'params', 'link']; }
@@ -71,7 +89,7 @@ export class PlanariumPlayground extends HTMLElement {
   constructor() {
     super();
     const root = this.attachShadow({ mode: 'open' });
-    const style = el('style', { textContent: CSS });
+    const style = adoptStyle(root);
     this.canvas = el('canvas');
     this.canvas.setAttribute('role', 'img');
     this.canvas.setAttribute('part', 'canvas');
@@ -82,7 +100,7 @@ export class PlanariumPlayground extends HTMLElement {
     this.bar = el('div', { className: 'bar' });
     this.message = el('p', { className: 'message', hidden: true });
     this.message.setAttribute('role', 'alert');
-    root.append(style, this.stage, this.bar, this.message);
+    root.append(...(style ? [style] : []), this.stage, this.bar, this.message);
     this.player = null;
     this.share = null;
     this.registry = null;
@@ -158,7 +176,7 @@ export class PlanariumPlayground extends HTMLElement {
       if (!this.hasAttribute(key)) continue;
       const v = this.getAttribute(key);
       if (FLAGS.includes(key) && v === '') parts.push(key);
-      else parts.push(`${key}=${encodeURIComponent(v)}`);
+      else parts.push(`${key}=${encodeURIComponent(wellFormed(v))}`);
     }
     return parts.join('&');
   }
@@ -204,7 +222,7 @@ export class PlanariumPlayground extends HTMLElement {
     this.player.configure(this.config);
     this.player.controller.fire('loaded');
     this.problems.push(...problems);
-    this.say(this.problems.length ? `Some of this embed's settings could not be used:\n• ${this.problems.join('\n• ')}` : '');
+    this.say(this.problems.length ? `Some of this embed's settings could not be used:\n• ${boundedProblems(this.problems, 8).join('\n• ')}` : '');
     if (this.share.autoplay && !this.started) {
       this.started = true;
       this.player.run();

@@ -26,6 +26,13 @@
 //              pause, step, back, reset; empty: none)
 // Unknown keys and bad values are reported as problems (text for the page to show) and left out;
 // nothing here throws on what a link says.
+//
+// Limits (docs/embedding.md, "Link limits"): a link the page writes is at most MAX_LINK_CHARS
+// characters long, whole URL, and its scenario at most MAX_SCENARIO_BYTES when decompressed
+// (checkLink() says why not, and the page offers the scenario as a file instead). The reader reads
+// hashes up to MAX_HASH_CHARS (Chromium's own URL limit), the first MAX_PAIRS pairs, decodes only the
+// last `scenario=` it sees, and gives back at most MAX_PROBLEMS problems: identical ones once, with
+// how many more were like it, every key or value echoed cut to ECHO_CHARS characters.
 
 import { parseParam, plannerFits, taskOf } from './panel.js';
 import { OVERLAYS } from './palette.js';
@@ -37,29 +44,133 @@ export const DEFAULT_CONTROLS = Object.freeze(['run', 'pause', 'step', 'back', '
 export const RESERVED = Object.freeze(['scenario', 'planner', 'seed', 'overlays', 'speed', 'anim', 'raw-path',
   'step-size', 'autoplay', 'click', 'controls']);
 
-const MAX_SCENARIO_BYTES = 4 << 20; // decompressed: no scenario is anywhere near this
+/** The largest scenario (UTF-8 bytes of its JSON, decompressed) a link may carry: no built-in is near it. */
+export const MAX_SCENARIO_BYTES = 4 << 20;
+/**
+ * The longest link (whole URL) the page writes: Chromium opens up to 2 MB, but a link is pasted
+ * into chats, forums, e-mails and course pages, whose fields hold far less (Slack's API cuts a message at
+ * 40,000 characters); 32,000 characters carry an edited scenario of about 2,500 rectangles (an
+ * edited built-in takes at most about 2,100).
+ */
+export const MAX_LINK_CHARS = 32000;
+/** The longest hash the reader reads: Chromium's URL limit (2 MiB); a longer one is refused whole. */
+export const MAX_HASH_CHARS = 2 * 1024 * 1024;
+/** Pairs read from one hash (a link the page writes has fewer than 50); the rest are counted only. */
+export const MAX_PAIRS = 1000;
+/** Problems given back (distinct texts), and how much of a key or value a problem echoes. */
+export const MAX_PROBLEMS = 30;
+export const ECHO_CHARS = 60;
+
+/** Bidirectional controls: echoed, they would reverse the rest of the message's line. */
+const BIDI_CONTROLS = /[\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069]/g;
+
+/**
+ * `text` as a message echoes it: bidirectional controls shown as [U+202E] (so an override in a
+ * link cannot turn the message around), cut to `n` characters (code points kept whole) with an
+ * ellipsis when cut.
+ */
+export function cut(text, n = ECHO_CHARS) {
+  const s = String(text).replace(BIDI_CONTROLS, (c) => `[U+${c.charCodeAt(0).toString(16).toUpperCase().padStart(4, '0')}]`);
+  if (s.length <= n) return s;
+  let end = n - 1;
+  if (/[\uD800-\uDBFF]/.test(s[end - 1])) end--; // never half a surrogate pair
+  return `${s.slice(0, end)}…`;
+}
+
+/**
+ * A bounded list of problems: `push(text)` as on an array; identical texts are kept once and
+ * counted, at most `max` distinct ones are kept. `list()`: the texts, "(and N more like it)" added
+ * where repeated, and a last line counting those left out.
+ */
+export class Problems {
+  constructor(max = MAX_PROBLEMS) { this.max = max; this.counts = new Map(); this.dropped = 0; }
+
+  push(...texts) {
+    for (const text of texts) {
+      const t = String(text);
+      if (this.counts.has(t)) this.counts.set(t, this.counts.get(t) + 1);
+      else if (this.counts.size < this.max) this.counts.set(t, 1);
+      else this.dropped++;
+    }
+  }
+
+  get length() { return this.counts.size + this.dropped; }
+
+  list() {
+    const n = (k) => k.toLocaleString('en');
+    const out = [...this.counts].map(([t, c]) => (c > 1 ? `${t} (…and ${n(c - 1)} more like it)` : t));
+    if (this.dropped) out.push(`…and ${n(this.dropped)} more problem${this.dropped === 1 ? '' : 's'}.`);
+    return out;
+  }
+}
+
+/**
+ * Problem texts (from several sources, some already bounded lists) as at most `max` lines,
+ * repeated ones once, and the count of the rest (a list's own "…and N more problems." included).
+ */
+export function boundedProblems(texts, max = MAX_PROBLEMS) {
+  const p = new Problems(max);
+  for (const t of texts) {
+    const more = /^…and ([\d,]+) more problems?\.$/.exec(t);
+    if (more) p.dropped += Number(more[1].replace(/,/g, ''));
+    else p.push(t);
+  }
+  return p.list();
+}
 
 // Encoding: percent-encoding that keeps `,`, `:`, `+` readable
 
 function encodeValue(v) {
-  return encodeURIComponent(String(v)).replace(/%2C/gi, ',').replace(/%3A/gi, ':').replace(/%2B/gi, '+');
+  const s = String(v);
+  // lone surrogates (encodeURIComponent throws on them) as U+FFFD
+  const text = typeof s.toWellFormed === 'function' ? s.toWellFormed()
+    : s.replace(/[\uD800-\uDBFF](?![\uDC00-\uDFFF])|(?<![\uD800-\uDBFF])[\uDC00-\uDFFF]/g, '\uFFFD');
+  return encodeURIComponent(text).replace(/%2C/gi, ',').replace(/%3A/gi, ':').replace(/%2B/gi, '+');
 }
 
 function safeDecode(text) {
   try { return decodeURIComponent(text); } catch { return null; }
 }
 
-/** `#a=1&b&c=x` → [[key, value or null], ...] (decoded; pairs that do not decode are reported). */
+/**
+ * `#a=1&b&c=x` → [[key, value or null], ...] (decoded; pairs that do not decode are reported). At
+ * most MAX_PAIRS pairs are read (the rest are counted in one problem); a hash over MAX_HASH_CHARS
+ * is not read at all. `problems`: anything with push(text).
+ */
 export function parsePairs(hash, problems = []) {
-  const text = String(hash || '').replace(/^#/, '');
+  const text = String(hash ?? '').replace(/^#/, '');
   const out = [];
-  for (const part of text.split('&')) {
-    if (!part) continue;
+  if (text.length > MAX_HASH_CHARS) {
+    problems.push(`This link is ${text.length.toLocaleString('en')} characters long: more than the `
+      + `${MAX_HASH_CHARS.toLocaleString('en')} a link may have (it is cut short or not a Planarium link); nothing in it was used.`);
+    return out;
+  }
+  let read = 0;
+  for (let at = 0; at < text.length;) {
+    const start = at;
+    let end = text.indexOf('&', at);
+    if (end < 0) end = text.length;
+    at = end + 1;
+    if (end === start) continue;
+    if (read === MAX_PAIRS) {
+      let rest = 0; // the non-empty parts from here on, counted without reading them
+      for (let i = start; i < text.length;) {
+        let e = text.indexOf('&', i);
+        if (e < 0) e = text.length;
+        if (e > i) rest++;
+        i = e + 1;
+      }
+      problems.push(`This link has ${rest.toLocaleString('en')} more parts after the first ${MAX_PAIRS.toLocaleString('en')} `
+        + '(a link the page writes has fewer than 50); they were left out.');
+      break;
+    }
+    read++;
+    const part = text.slice(start, end);
     const eq = part.indexOf('=');
     const key = safeDecode(eq < 0 ? part : part.slice(0, eq));
     const value = eq < 0 ? null : safeDecode(part.slice(eq + 1));
     if (key === null || (eq >= 0 && value === null)) {
-      problems.push(`"${part.slice(0, 40)}" is not a valid part of a link; it was left out.`);
+      problems.push(`"${cut(part)}" is not a valid part of a link (a bad %-escape); it was left out.`);
       continue;
     }
     out.push([key.trim(), value]);
@@ -75,10 +186,18 @@ export function toBase64url(bytes) {
   return btoa(bin).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
 }
 
+/** base64url text → bytes; throws Error(why, in words) on anything else (never atob's own exception). */
 export function fromBase64url(text) {
-  if (!/^[A-Za-z0-9_-]*$/.test(text)) throw new Error('it is not base64url');
+  const bad = /[^A-Za-z0-9_-]/.exec(text);
+  if (bad) {
+    const c = bad[0].codePointAt(0);
+    const shown = c > 32 && c < 127 ? `"${bad[0]}"` : `U+${c.toString(16).toUpperCase().padStart(4, '0')}`;
+    throw new Error(`it has ${shown} at character ${bad.index + 1}, which base64url text never has`);
+  }
+  if (text.length % 4 === 1) throw new Error('its base64url text stops in the middle of a character group');
   const b64 = text.replace(/-/g, '+').replace(/_/g, '/') + '='.repeat((4 - (text.length % 4)) % 4);
-  const bin = atob(b64);
+  let bin;
+  try { bin = atob(b64); } catch { throw new Error('its base64url text does not decode'); }
   const out = new Uint8Array(bin.length);
   for (let i = 0; i < bin.length; i++) out[i] = bin.charCodeAt(i);
   return out;
@@ -115,23 +234,31 @@ export async function encodeScenario(text) {
   return `base64:${toBase64url(bytes)}`;
 }
 
-/** A link's `deflate:` / `base64:` value → the scenario's JSON text; throws Error(why). */
+/**
+ * A link's `deflate:` / `base64:` value → the scenario's JSON text; throws Error(why, in words),
+ * with `damaged` (the why alone) when the value is cut short or corrupted.
+ */
 export async function decodeScenario(value) {
-  const colon = value.indexOf(':');
-  const kind = value.slice(0, colon);
-  const bytes = fromBase64url(value.slice(colon + 1));
+  const text = String(value);
+  const colon = text.indexOf(':');
+  const kind = colon < 0 ? '' : text.slice(0, colon);
+  if (kind !== 'deflate' && kind !== 'base64') throw new Error(`"${cut(kind || text, 20)}:" is not a known encoding (deflate: or base64:)`);
+  const damaged = (why) => Object.assign(new Error(`it is cut short or damaged: ${why}`), { damaged: why });
+  if (text.length - colon - 1 > MAX_HASH_CHARS) throw new Error('it is too large');
+  let bytes;
+  try { bytes = fromBase64url(text.slice(colon + 1)); } catch (e) { throw damaged(e.message); }
   let out;
   if (kind === 'deflate') {
     if (!hasStream('DecompressionStream')) throw new Error('this browser cannot decompress it (no DecompressionStream)');
     try { out = await pipeBytes(bytes, new DecompressionStream('deflate-raw')); } catch (e) {
-      throw new Error(/too large/.test(e.message) ? e.message : 'it does not decompress (the link may be cut short)');
+      throw /too large/.test(e?.message) ? new Error(`it is too large (over ${MAX_SCENARIO_BYTES >> 20} MB decompressed)`)
+        : damaged('its compressed data does not decompress');
     }
-  } else if (kind === 'base64') {
-    out = bytes;
   } else {
-    throw new Error(`"${kind}:" is not a known encoding (deflate: or base64:)`);
+    if (bytes.length > MAX_SCENARIO_BYTES) throw new Error(`it is too large (over ${MAX_SCENARIO_BYTES >> 20} MB)`);
+    out = bytes;
   }
-  try { return new TextDecoder('utf-8', { fatal: true }).decode(out); } catch { throw new Error('it is not text'); }
+  try { return new TextDecoder('utf-8', { fatal: true }).decode(out); } catch { throw damaged('it is not UTF-8 text'); }
 }
 
 // Reading a link
@@ -145,7 +272,7 @@ function wholeNumber(text, lo, hi) {
 function flag(key, value, problems) {
   if (value === null || /^(1|true|yes|on|)$/i.test(value)) return true;
   if (/^(0|false|no|off)$/i.test(value)) return false;
-  problems.push(`${key}=${value}: write ${key} alone (on) or ${key}=0 (off); it was left out.`);
+  problems.push(`${key}=${cut(value)}: write ${key} alone (on) or ${key}=0 (off); it was left out.`);
   return null;
 }
 
@@ -161,61 +288,49 @@ function overlayById(name) {
  * autoplay, click, controls: [names] | null, problems: [text]}.
  */
 export async function readShare(hash, { builtins = null } = {}) {
-  const problems = [];
+  const problems = new Problems();
   const share = {
     scenario: null, planner: null, seed: null, params: [], overlays: {}, view: {},
-    autoplay: false, click: false, controls: null, problems,
+    autoplay: false, click: false, controls: null, problems: [],
   };
   const needs = (key, value) => {
     if (value !== null && value !== '') return true;
-    problems.push(`"${key}" needs a value (${key}=…); it was left out.`);
+    problems.push(`"${cut(key)}" needs a value (${cut(key)}=…); it was left out.`);
     return false;
   };
+  const params = new Map();
+  let scenario = null; // the last scenario= value: only it is decoded
   for (const [key, value] of parsePairs(hash, problems)) {
     switch (key) {
-      case 'scenario': {
-        if (!needs(key, value)) break;
-        if (/^[a-z0-9]+:/i.test(value)) {
-          try {
-            share.scenario = { text: await decodeScenario(value) };
-          } catch (e) {
-            share.scenario = null;
-            problems.push(`The link's scenario could not be read: ${e.message}.`);
-          }
-        } else if (builtins && !builtins.some((b) => b.id === value)) {
-          share.scenario = null;
-          problems.push(`There is no built-in scenario "${value}".`);
-        } else {
-          share.scenario = { id: value };
-        }
+      case 'scenario':
+        if (needs(key, value)) scenario = value;
         break;
-      }
       case 'planner':
         if (needs(key, value)) share.planner = value;
         break;
       case 'seed': {
         if (!needs(key, value)) break;
         const v = wholeNumber(value, 0, Number.MAX_SAFE_INTEGER);
-        if (v === null) problems.push(`seed=${value}: the seed must be a whole number ≥ 0; the scenario's seed is used.`);
+        if (v === null) problems.push(`seed=${cut(value)}: the seed must be a whole number ≥ 0; the scenario's seed is used.`);
         else share.seed = v;
         break;
       }
       case 'overlays':
         if (!needs(key, value)) break;
-        for (let item of value.split(',')) {
+        for (let item of value.split(',', 100)) { // the overlay box has a dozen
           item = item.trim();
           if (!item) continue;
           // a `+` that went through form decoding arrives as a space (trimmed away): no sign means on
           const on = item[0] !== '-';
           const o = overlayById(/^[+-]/.test(item) ? item.slice(1) : item);
-          if (!o) problems.push(`overlays: there is no overlay "${item.replace(/^[+-]/, '')}"; it was left out.`);
+          if (!o) problems.push(`overlays: there is no overlay "${cut(item.replace(/^[+-]/, ''))}"; it was left out.`);
           else share.overlays[o.option] = on;
         }
         break;
       case 'speed': case 'anim': {
         if (!needs(key, value)) break;
         const v = Number(value);
-        if (!Number.isFinite(v) || v < 0 || v > 100) problems.push(`${key}=${value}: it must be a number from 0 to 100; left at its default.`);
+        if (!Number.isFinite(v) || v < 0 || v > 100) problems.push(`${key}=${cut(value)}: it must be a number from 0 to 100; left at its default.`);
         else share.view[key] = Math.round(v);
         break;
       }
@@ -227,7 +342,7 @@ export async function readShare(hash, { builtins = null } = {}) {
       case 'step-size': {
         if (!needs(key, value)) break;
         const v = wholeNumber(value, 1, 1000000);
-        if (v === null) problems.push(`step-size=${value}: it must be a whole number from 1 to 1000000; left at 1.`);
+        if (v === null) problems.push(`step-size=${cut(value)}: it must be a whole number from 1 to 1000000; left at 1.`);
         else share.view.stepSize = v;
         break;
       }
@@ -237,18 +352,38 @@ export async function readShare(hash, { builtins = null } = {}) {
         break;
       }
       case 'controls': {
-        const names = (value || '').split(',').map((s) => s.trim()).filter(Boolean);
-        const bad = names.filter((n) => !CONTROLS.includes(n));
-        if (bad.length) problems.push(`controls: ${bad.join(', ')} ${bad.length === 1 ? 'is' : 'are'} not a control (${CONTROLS.join(', ')}).`);
-        share.controls = names.filter((n, i) => CONTROLS.includes(n) && names.indexOf(n) === i);
+        const names = (value || '').split(',', 100).map((s) => s.trim()).filter(Boolean);
+        const bad = [...new Set(names.filter((n) => !CONTROLS.includes(n)))];
+        if (bad.length) {
+          const shown = bad.slice(0, 5).map((n) => cut(n, 20)).join(', ') + (bad.length > 5 ? ` and ${bad.length - 5} more` : '');
+          problems.push(`controls: ${shown} ${bad.length === 1 ? 'is' : 'are'} not a control (${CONTROLS.join(', ')}).`);
+        }
+        share.controls = CONTROLS.filter((n) => names.includes(n)).sort((x, y) => names.indexOf(x) - names.indexOf(y));
         break;
       }
       default:
         if (!key) break;
-        if (value === null) { problems.push(`"${key}" needs a value (${key}=…); it was left out.`); break; }
-        share.params = share.params.filter(([k]) => k !== key).concat([[key, value]]);
+        if (value === null) { problems.push(`"${cut(key)}" needs a value (${cut(key)}=…); it was left out.`); break; }
+        params.delete(key); // the last one counts, in its place
+        params.set(key, value);
     }
   }
+  share.params = [...params];
+  if (scenario !== null) {
+    if (/^[a-z0-9]+:/i.test(scenario)) {
+      try {
+        share.scenario = { text: await decodeScenario(scenario) };
+      } catch (e) {
+        problems.push(e.damaged ? `The link's scenario is cut short or damaged (${e.damaged}): copy the whole link again, or ask for the scenario as a file.`
+          : `The link's scenario could not be read: ${e.message}.`);
+      }
+    } else if (builtins && !builtins.some((b) => b.id === scenario)) {
+      problems.push(`There is no built-in scenario "${cut(scenario)}".`);
+    } else {
+      share.scenario = { id: scenario };
+    }
+  }
+  share.problems = problems.list();
   return share;
 }
 
@@ -264,7 +399,7 @@ export function paramSpecs(p, registry) {
  * scenario names one that fits (the panel's current one; else the first that fits).
  */
 export function setupFor(share, scenario, registry, fallback = null) {
-  const problems = [];
+  const problems = new Problems();
   const planners = registry.planners;
   const task = taskOf(scenario);
   const fits = (p) => plannerFits(p, task);
@@ -275,7 +410,7 @@ export function setupFor(share, scenario, registry, fallback = null) {
   if (share.planner !== null) {
     p = byName(share.planner);
     if (!p) {
-      problems.push(`There is no planner "${share.planner}" (${planners.map((q) => q.name).join(', ')}).`);
+      problems.push(`There is no planner "${cut(share.planner)}" (${planners.map((q) => q.name).join(', ')}).`);
     } else if (!fits(p)) {
       problems.push(`${p.label} does not fit this scenario (it needs ${p.task === 'inspection' ? 'inspection points' : 'a goal'}).`);
       p = null;
@@ -294,17 +429,17 @@ export function setupFor(share, scenario, registry, fallback = null) {
   for (const [key, text] of share.params) {
     const spec = specs.find((s) => s.name === key);
     if (!spec) {
-      problems.push(`"${key}" is not a parameter of ${p.label}; it was left out.`);
+      problems.push(`"${cut(key)}" is not a parameter of ${p.label}; it was left out.`);
       continue;
     }
     const parsed = parseParam(spec, text);
     if (!parsed.ok || parsed.value === undefined) {
-      problems.push(`${key}=${text}: ${spec.label} must be ${parsed.ok ? 'given' : parsed.why}; left at its default.`);
+      problems.push(`${key}=${cut(text)}: ${spec.label} must be ${parsed.ok ? 'given' : parsed.why}; left at its default.`);
       continue;
     }
     block[key] = parsed.value;
   }
-  return { block, problems };
+  return { block, problems: problems.list() };
 }
 
 /** A block from setupFor as the worker's `configure` request {planner, params, seed}. */
@@ -361,4 +496,28 @@ export async function writeShare({ scenario, config, overlays = {}, view = {}, e
   if (view.stepSize !== undefined && view.stepSize !== VIEW_DEFAULTS.stepSize) pairs.push(['step-size', view.stepSize]);
   pairs.push(...extra);
   return pairs.map(([k, v]) => (v === null ? encodeValue(k) : `${encodeValue(k)}=${encodeValue(v)}`)).join('&');
+}
+
+/**
+ * Why `url` (a link the page wrote, whose scenario is `scenarioText` or a built-in's id) should not
+ * be offered as a link, in words; null when it can: it is at most MAX_LINK_CHARS long, its scenario
+ * at most MAX_SCENARIO_BYTES, and read back it gives no problem and the same scenario text.
+ */
+export async function checkLink(url, scenarioText = null) {
+  const n = (k) => k.toLocaleString('en');
+  if (scenarioText !== null) {
+    const bytes = new TextEncoder().encode(scenarioText).length;
+    if (bytes > MAX_SCENARIO_BYTES) {
+      return `this scenario is ${(bytes / (1 << 20)).toFixed(1)} MB of JSON, more than the ${MAX_SCENARIO_BYTES >> 20} MB a link may carry`;
+    }
+  }
+  if (url.length > MAX_LINK_CHARS) {
+    return `the link would be ${n(url.length)} characters long, more than the ${n(MAX_LINK_CHARS)} that survive being pasted `
+      + 'into a chat, a forum or a course page';
+  }
+  const hash = url.includes('#') ? url.slice(url.indexOf('#')) : '';
+  const back = await readShare(hash);
+  if (back.problems.length) return `the link does not read back (${back.problems[0]})`;
+  if (scenarioText !== null && back.scenario?.text !== scenarioText) return 'the link does not read back the same scenario';
+  return null;
 }

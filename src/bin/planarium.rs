@@ -96,9 +96,22 @@ fn cli() -> Command {
         .subcommand(Command::new("list").about("List built-in scenarios and planners"))
 }
 
+/// A file's text, refused past [`planarium::limits::MAX_TEXT_BYTES`] without reading the rest.
+fn read_limited(path: &str) -> Result<String, String> {
+    use std::io::Read;
+    let max = planarium::limits::MAX_TEXT_BYTES as u64;
+    let file = std::fs::File::open(path).map_err(|e| format!("{path}: {e}"))?;
+    let mut bytes = Vec::new();
+    file.take(max + 1).read_to_end(&mut bytes).map_err(|e| format!("{path}: {e}"))?;
+    if bytes.len() as u64 > max {
+        return Err(format!("{path}: the file is larger than the limit of {max} bytes (16 MiB)"));
+    }
+    String::from_utf8(bytes).map_err(|e| format!("{path}: not UTF-8 text (byte {})", e.utf8_error().valid_up_to()))
+}
+
 fn load(arg: &str) -> Result<Scenario, String> {
     if std::path::Path::new(arg).exists() {
-        let text = std::fs::read_to_string(arg).map_err(|e| format!("{arg}: {e}"))?;
+        let text = read_limited(arg)?;
         let stem = std::path::Path::new(arg).file_stem().and_then(|s| s.to_str()).unwrap_or(arg);
         planarium::io::import(&text, stem).map_err(|e| format!("{arg}: {e}"))
     } else if scenario::builtin_names().contains(&arg) {

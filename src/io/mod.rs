@@ -35,9 +35,13 @@ pub fn detect(text: &str) -> Format {
 /// Read any supported document as a scenario; `name` (a file name) titles scenarios whose format
 /// has no name of its own.
 pub fn import(text: &str, name: &str) -> Result<Scenario, ScenarioError> {
+    if let Some(why) = crate::limits::text_too_large(text) {
+        return Err(ScenarioError::at("", why));
+    }
     match detect(text) {
         Format::Scenario => Scenario::from_json(text),
         Format::TechnionMap => technion::import_map(text, name),
         Format::AsvProblem => asv::import_problem(text, name),
     }
 }
+

@@ -24,7 +24,7 @@ pub fn import_map(text: &str, name: &str) -> Result<Scenario, ScenarioError> {
     let map = v.as_object().ok_or_else(|| ScenarioError::at("", "a Technion map is a JSON object"))?;
     for k in map.keys() {
         if !["WIDTH", "HEIGHT", "OBSTACLES", "START", "GOAL", "INSPECTION_POINTS"].contains(&k.as_str()) {
-            return Err(ScenarioError::at(k.clone(), "unknown key in a Technion map"));
+            return Err(ScenarioError::at(crate::limits::cut(k, 100), "unknown key in a Technion map"));
         }
     }
     let dim = |k: &str| -> Result<f64, ScenarioError> {
@@ -43,7 +43,7 @@ pub fn import_map(text: &str, name: &str) -> Result<Scenario, ScenarioError> {
     let task = if inspection.is_some() { "inspection" } else { "motion planning" };
     let mut sc = json!({
         "format": crate::scenario::FORMAT,
-        "name": format!("Technion HW3 {task} map ({name})"),
+        "name": format!("Technion HW3 {task} map ({})", crate::limits::cut(name, 100)),
         "notes": format!("The manipulator of the Technion course's third homework: four links of 80, 70, 40 and 40 from a base at the corner, every joint wrapping around. Links may touch the obstacle but not cross it, and the arm may not cross itself. Cost is measured in joint space; edges are checked every 0.05 rad.{}",
             if inspection.is_some() { " The task is to see the inspection points with the end effector's sensor (60 far, ±30°)." } else { "" }),
         "bounds": [0.0, 0.0, w - 1.0, h - 1.0],

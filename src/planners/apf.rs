@@ -311,6 +311,10 @@ impl PotentialField {
         let h = cx.si.resolution;
         let mut q = self.start.clone();
         for j in 0..n {
+            // A row costs n potentials and their gradients: past the time limit, stop drawing.
+            if cx.si.out_of_time() {
+                return;
+            }
             for i in 0..n {
                 let (x, y) = (b.min.x + (i as Real + 0.5) * dx, b.min.y + (j as Real + 0.5) * dy);
                 q[0] = x;

@@ -114,8 +114,15 @@ impl Sensor {
         if count(skip) as usize == n {
             return;
         }
-        let steps = ((si.distance(a, b) / si.resolution).ceil() as usize).max(1);
+        // At most `MAX_MOTION_STEPS` (the problem's resolution check), each looking at every
+        // point: the run's deadline is looked at as it goes.
+        let Some(steps) = crate::limits::steps(si.distance(a, b), si.resolution, crate::limits::MAX_MOTION_STEPS) else {
+            return;
+        };
         for i in 1..=steps {
+            if si.tick(n as u64 + 1) {
+                return;
+            }
             if i == steps {
                 buf.copy_from_slice(b);
             } else {
@@ -160,7 +167,7 @@ pub fn shortcut(si: &SpaceInfo, task: &InspectionTask, path: &[Vec<Real>], attem
     let must = seen_along(si, task, path);
     let mut path = path.to_vec();
     for _ in 0..attempts {
-        if path.len() < 3 {
+        if path.len() < 3 || si.out_of_time() {
             break;
         }
         let next = super::smoothing::shortcut(si, &path, 1, rng);

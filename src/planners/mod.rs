@@ -202,5 +202,5 @@ pub static RUN_PARAMS: &[ParamSpec] = &[
     ParamSpec::int("shortcut_attempts", "Shortcut attempts", 0.0, 10000.0, 100.0, "Random shortcut smoothing attempts on the found path (0: no smoothing)."),
     ParamSpec::real("time_limit", "Time limit (s)", 0.01, 3600.0, 30.0, "Stop after this much planning time."),
     ParamSpec::int("max_iterations", "Iteration limit", 1.0, 1e9, 1e7, "Stop after this many iterations."),
-    ParamSpec::int("max_nodes", "Node limit", 2.0, 1e8, 1e6, "Stop when the trees hold this many nodes."),
+    ParamSpec::int("max_nodes", "Node limit", 2.0, crate::limits::MAX_NODES, 1e6, "Stop when the trees hold this many nodes (at most a million: see docs/limits.md)."),
 ];

@@ -95,7 +95,7 @@ impl Params {
             let ps = spec.param(k).ok_or_else(|| {
                 let mut known: Vec<&str> = spec.all_params().map(|p| p.name).collect();
                 known.dedup();
-                (k.clone(), format!("unknown parameter of {} (known: {})", spec.name, known.join(", ")))
+                (crate::limits::cut(k, 100), format!("unknown parameter of {} (known: {})", spec.name, known.join(", ")))
             })?;
             values.insert(k.clone(), ps.check(val).map_err(|m| (k.clone(), m))?);
         }

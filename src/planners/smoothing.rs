@@ -26,12 +26,14 @@ fn point_at(si: &SpaceInfo, path: &[Vec<Real>], cum: &[Real], s: Real) -> (usize
 }
 
 /// Shorten `path` by random shortcuts; the result starts and ends where `path` does, and every
-/// motion in it has been checked.
+/// motion in it has been checked. Past the run's deadline ([`SpaceInfo::out_of_time`]) it stops
+/// and returns what it has.
 pub fn shortcut(si: &SpaceInfo, path: &[Vec<Real>], attempts: usize, rng: &mut Rng) -> Vec<Vec<Real>> {
     let mut path = path.to_vec();
     let mut scratch = vec![0.0; si.dims()];
     for _ in 0..attempts {
-        if path.len() < 3 {
+        // The run's time limit holds here too: the path so far is valid, keep it.
+        if path.len() < 3 || si.out_of_time() {
             break;
         }
         let mut cum = vec![0.0];
@@ -75,6 +77,11 @@ pub fn reduce_vertices(si: &SpaceInfo, path: &[Vec<Real>], scratch: &mut [Real])
     let mut out = vec![path[0].clone()];
     let mut i = 0;
     while i + 1 < path.len() {
+        if si.out_of_time() {
+            // Out of time: the rest of the path as it is (every motion in it was checked).
+            out.extend_from_slice(&path[i + 1..]);
+            break;
+        }
         let mut next = i + 1;
         for j in (i + 2..path.len()).rev() {
             if si.check_motion(&path[i], &path[j], scratch).is_ok() {

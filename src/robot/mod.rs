@@ -18,6 +18,7 @@ use crate::geometry::{SensorPose, Workspace};
 use crate::math::{Real, Vec2};
 use crate::scenario::RobotSpec;
 use crate::space::StateSpace;
+use crate::space_info::Deadline;
 
 /// Why a state is or is not valid.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -59,8 +60,10 @@ pub trait Robot: std::fmt::Debug {
     /// The discrete check of the motion `a → b` in `n` steps ([`crate::motion::check_discrete`]).
     /// It is entered once per motion, so that the loop calls each robot's own `is_valid`
     /// directly (in wasm, a dynamic call per state cost more than the point robot's check itself).
-    fn check_discrete(&self, ws: &Workspace, space: &StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real]) -> (bool, u64) {
-        crate::motion::check_discrete(space, a, b, n, scratch, |q| self.is_valid(ws, q))
+    /// Past `deadline` it stops and refuses the motion.
+    #[allow(clippy::too_many_arguments)]
+    fn check_discrete(&self, ws: &Workspace, space: &StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], deadline: Deadline) -> (crate::motion::Discrete, u64) {
+        crate::motion::check_discrete(space, a, b, n, scratch, deadline, |q| self.is_valid(ws, q))
     }
     /// Write a random state into `out` (default: uniform over the space) and return the state
     /// checks it spent (counted like the planner's). Robots whose uniform samples are almost never
@@ -76,9 +79,12 @@ pub trait Robot: std::fmt::Debug {
         false
     }
     /// How many steps a motion `a → b` of length `d` is checked in (default: `ceil(d / resolution)`);
-    /// a robot with its own step rule (no vehicle moves more than `max_step`) overrides it.
-    fn motion_steps(&self, _a: &[Real], _b: &[Real], d: Real, resolution: Real) -> usize {
-        ((d / resolution).ceil() as usize).max(1)
+    /// a robot with its own step rule (no vehicle moves more than `max_step`) overrides it. `None`
+    /// when the count is not a number or exceeds [`crate::limits::MAX_MOTION_STEPS`] (the problem's
+    /// checks make that unreachable for states in bounds; the motion is then refused, never
+    /// checked more coarsely).
+    fn motion_steps(&self, _a: &[Real], _b: &[Real], d: Real, resolution: Real) -> Option<usize> {
+        crate::limits::steps(d, resolution, crate::limits::MAX_MOTION_STEPS)
     }
     /// The point of the workspace a state is drawn at (trees are projected onto it).
     fn project(&self, q: &[Real]) -> Vec2;

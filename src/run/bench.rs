@@ -109,19 +109,29 @@ pub fn parse_setup(text: &str, base: impl Fn(&'static PlannerSpec) -> Result<Par
 /// Parse the page's set-up lines (one per line; blank lines and `#` comments skipped) on top of
 /// each planner's defaults; an error names its line (`set-up line 2: ...`).
 pub fn parse_setup_lines(text: &str) -> Result<Vec<Setup>, String> {
+    if let Some(why) = crate::limits::text_too_large(text) {
+        return Err(why);
+    }
     let mut out = Vec::new();
     for (i, line) in text.lines().enumerate() {
         let line = line.trim();
         if line.is_empty() || line.starts_with('#') {
             continue;
         }
-        out.push(parse_setup(line, |spec| Ok(Params::defaults(spec))).map_err(|e| format!("set-up line {}: {e}", i + 1))?);
+        if out.len() == MAX_SETUPS {
+            return Err(format!("set-up line {}: more than {MAX_SETUPS} set-ups (compare fewer at a time)", i + 1));
+        }
+        let setup = parse_setup(line, |spec| Ok(Params::defaults(spec)));
+        out.push(setup.map_err(|e| format!("set-up line {}: {}", i + 1, crate::limits::cut(&e, 300)))?);
     }
     if out.is_empty() {
         return Err("no set-up: write one per line, e.g. \"rrt-connect\" or \"biased: rrt --goal-bias 0.2\"".into());
     }
     Ok(out)
 }
+
+/// Set-ups compared in one benchmark (the page's plots label each one).
+pub const MAX_SETUPS: usize = 16;
 
 /// Run `planner` with `params` on `scenario` for seeds `1..=runs`.
 pub fn bench_planner(scenario: &Scenario, planner: &str, params: &Params, runs: u64) -> Result<PlannerBench, String> {

@@ -5,6 +5,7 @@ use crate::planners::{self, smoothing, Context, InspectionTask, Params, Planner,
 use crate::sampler::Sampler;
 use crate::problem::Problem;
 use crate::rng::Rng;
+use crate::space_info::Deadline;
 use crate::status::Status;
 use web_time::Instant;
 
@@ -77,10 +78,12 @@ impl Session {
         }
         let task = Task { start: problem.start.clone(), goal: problem.goal.clone(), goal_tolerance: problem.goal_tolerance, inspection };
         problem.si.reset_checks();
-        let planner = (spec.make)(&problem.si, &task, &config.params).map_err(|e| format!("{}: {e}", spec.label))?;
-        let sampler = Sampler::from_params(&problem.si, task.goal.as_deref(), &config.params);
         let p = &config.params;
         let limits = Limits { time_ms: p.real("time_limit") * 1000.0, iterations: p.real("max_iterations") as u64, nodes: p.real("max_nodes") as usize };
+        // Setting a planner up may be long work too (a decomposition's tiling): the time limit holds.
+        problem.si.set_deadline(Deadline::in_ms(limits.time_ms));
+        let planner = (spec.make)(&problem.si, &task, &config.params).map_err(|e| format!("{}: {e}", spec.label))?;
+        let sampler = Sampler::from_params(&problem.si, task.goal.as_deref(), &config.params);
         Ok(Session {
             limits,
             sampler,
@@ -117,7 +120,7 @@ impl Session {
 
     fn limits_status(&self) -> Option<Status> {
         let l = &self.limits;
-        if self.elapsed_ms >= l.time_ms {
+        if self.elapsed_ms >= l.time_ms || self.problem.si.interrupted() {
             Some(Status::TimeLimit)
         } else if self.iterations >= l.iterations {
             Some(Status::IterationLimit)
@@ -137,6 +140,8 @@ impl Session {
         }
         let begin = Instant::now();
         let base = self.elapsed_ms;
+        // The time limit also holds inside an iteration's long loops (and smoothing after it).
+        self.problem.si.set_deadline(Deadline::in_ms(self.limits.time_ms - base));
         let mut done = 0;
         while done < max_iterations {
             if let Some(s) = self.limits_status() {
@@ -155,6 +160,16 @@ impl Session {
             let found = self.planner.iterate(&mut cx);
             self.iterations += 1;
             done += 1;
+            if self.problem.si.interrupted() {
+                // The deadline cut the iteration short: whatever it found was checked in full
+                // (a refused motion is never part of a path), but the run is out of time.
+                self.elapsed_ms = base + begin.elapsed().as_secs_f64() * 1000.0;
+                match found {
+                    Some(path) => self.finish_solved(path),
+                    None => self.stop(Status::TimeLimit),
+                }
+                return self.status;
+            }
             if let Some(path) = found {
                 self.elapsed_ms = base + begin.elapsed().as_secs_f64() * 1000.0;
                 self.finish_solved(path);

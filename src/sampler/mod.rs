@@ -54,7 +54,7 @@ pub static SAMPLER_PARAMS: &[ParamSpec] = &[
     ParamSpec::real("collision_sigma", "Collision sigma", 0.0, 1.0, 0.03, "Near-collision sampler: standard deviation around the last collision point (fraction of each range)."),
     ParamSpec::real("random_sigma", "Random sigma", 0.0, 10.0, 0.5, "Near-collision sampler: standard deviation around a random centre (fraction of each range)."),
     ParamSpec::int("perseverance", "Perseverance", 1.0, 1e6, 20.0, "Near-collision sampler: samples around one centre before re-centring at random."),
-    ParamSpec::int("sampler_tries", "Sampler tries", 1.0, 1e6, 100.0, "Attempts (of one or two draws) a validity-checking sampler makes for one sample before giving up."),
+    ParamSpec::int("sampler_tries", "Sampler tries", 1.0, 1e4, 100.0, "Attempts (of one or two draws) a validity-checking sampler makes for one sample before giving up."),
 ];
 
 /// The sampler parameters as a group of the page's parameter panel.

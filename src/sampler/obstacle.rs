@@ -35,9 +35,13 @@ pub(super) fn draw(s: &mut Sampler, d: &mut Draw, out: &mut [Real]) -> bool {
     }
     // Walk a → b over the states a + k/steps·(b − a), 0 < k < steps; `out` keeps the last free one.
     let dist = d.si.distance(&s.a, &s.b);
-    let steps = ((dist / d.si.resolution).ceil() as usize).max(1);
+    // At most `MAX_MOTION_STEPS` (the problem's resolution check); the run's deadline holds.
+    let steps = crate::limits::steps(dist, d.si.resolution, crate::limits::MAX_MOTION_STEPS).unwrap_or(1);
     out.copy_from_slice(&s.a);
     for k in 1..steps {
+        if d.si.tick(1) {
+            break;
+        }
         d.si.interpolate(&s.a, &s.b, k as Real / steps as Real, &mut s.c);
         if !d.check(&s.c) {
             break;

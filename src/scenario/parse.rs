@@ -3,6 +3,7 @@
 use super::types::*;
 use super::ScenarioError;
 use crate::geometry::polygon::is_simple;
+use crate::limits;
 use crate::math::{Real, Vec2};
 use serde_json::{Map, Value};
 
@@ -56,7 +57,7 @@ impl<'a> Obj<'a> {
                 let mut known: Vec<&str> = self.used.clone();
                 known.sort_unstable();
                 return Err(ScenarioError::at(
-                    join(&self.path, k),
+                    join(&self.path, &limits::cut(k, 100)),
                     format!("unknown key (known keys here: {})", known.join(", ")),
                 ));
             }
@@ -65,15 +66,29 @@ impl<'a> Obj<'a> {
     }
 }
 
+/// A finite number within [`limits::MAX_MAGNITUDE`].
 fn number(v: &Value, path: &str) -> Result<Real> {
     match v.as_f64() {
-        Some(x) if x.is_finite() => Ok(x),
-        _ => Err(ScenarioError::at(path, format!("must be a number, found {}", describe(v)))),
+        Some(x) if x.is_finite() && x.abs() <= limits::MAX_MAGNITUDE => Ok(x),
+        Some(x) => Err(ScenarioError::at(path, format!("{x:e} is too large: numbers must lie between -1e9 and 1e9"))),
+        None => Err(ScenarioError::at(path, format!("must be a number, found {}", describe(v)))),
     }
 }
 
+/// An array of at most `max` items (`what` names them in the error).
+fn array<'a>(v: &'a Value, path: &str, expected: &str, max: usize, what: &str) -> Result<&'a Vec<Value>> {
+    let arr = v.as_array().ok_or_else(|| ScenarioError::at(path, format!("must be {expected}, found {}", describe(v))))?;
+    if arr.len() > max {
+        return Err(ScenarioError::at(path, format!("has {} {what}; the limit is {max}", arr.len())));
+    }
+    Ok(arr)
+}
+
+/// Numbers in a state or a list: a state has at most a few hundred (64 vehicles' positions).
+const MAX_NUMBERS: usize = 1_000;
+
 fn numbers(v: &Value, path: &str) -> Result<Vec<Real>> {
-    let arr = v.as_array().ok_or_else(|| ScenarioError::at(path, format!("must be an array of numbers, found {}", describe(v))))?;
+    let arr = array(v, path, "an array of numbers", MAX_NUMBERS, "numbers")?;
     arr.iter().enumerate().map(|(i, x)| number(x, &format!("{path}[{i}]"))).collect()
 }
 
@@ -82,13 +97,23 @@ fn fixed<const N: usize>(v: &Value, path: &str, what: &str) -> Result<[Real; N]>
     xs.try_into().map_err(|xs: Vec<Real>| ScenarioError::at(path, format!("must be {what} ({N} numbers), found {} numbers", xs.len())))
 }
 
-fn points(v: &Value, path: &str) -> Result<Vec<[Real; 2]>> {
-    let arr = v.as_array().ok_or_else(|| ScenarioError::at(path, format!("must be an array of [x, y] points, found {}", describe(v))))?;
+fn points(v: &Value, path: &str, max: usize) -> Result<Vec<[Real; 2]>> {
+    let arr = array(v, path, "an array of [x, y] points", max, "points")?;
     arr.iter().enumerate().map(|(i, p)| fixed::<2>(p, &format!("{path}[{i}]"), "a point [x, y]")).collect()
 }
 
 fn string(v: &Value, path: &str) -> Result<String> {
     v.as_str().map(str::to_string).ok_or_else(|| ScenarioError::at(path, format!("must be a string, found {}", describe(v))))
+}
+
+/// A string of at most `max` characters.
+fn text(v: &Value, path: &str, max: usize) -> Result<String> {
+    let s = string(v, path)?;
+    let n = s.chars().count();
+    if n > max {
+        return Err(ScenarioError::at(path, format!("has {n} characters; the limit is {max}")));
+    }
+    Ok(s)
 }
 
 fn boolean(v: &Value, path: &str) -> Result<bool> {
@@ -118,7 +143,7 @@ fn obstacle(v: &Value, path: &str) -> Result<ObstacleSpec> {
         }
         ObstacleSpec::Rect(r)
     } else if let Some((v, p)) = o.get("polygon") {
-        let pts = points(v, &p)?;
+        let pts = points(v, &p, limits::MAX_POLYGON_VERTICES)?;
         polygon_check(&pts, &p)?;
         ObstacleSpec::Polygon(pts)
     } else if let Some((v, p)) = o.get("circle") {
@@ -134,7 +159,7 @@ fn obstacle(v: &Value, path: &str) -> Result<ObstacleSpec> {
         }
         ObstacleSpec::Segment(s)
     } else {
-        let k = o.map.keys().next().cloned().unwrap_or_default();
+        let k = o.map.keys().next().map(|k| limits::cut(k, 100)).unwrap_or_default();
         return Err(ScenarioError::at(join(path, &k), "unknown obstacle kind (use rect, polygon, circle or segment)"));
     };
     o.finish()?;
@@ -149,7 +174,7 @@ fn robot(v: &Value, path: &str) -> Result<RobotSpec> {
         "point" => RobotSpec::Point,
         "rigid" => {
             let (fv, fp) = o.req("footprint")?;
-            let footprint = points(fv, &fp)?;
+            let footprint = points(fv, &fp, limits::MAX_POLYGON_VERTICES)?;
             polygon_check(&footprint, &fp)?;
             let rotation_weight = match o.get("rotation_weight") {
                 Some((v, p)) => {
@@ -165,7 +190,7 @@ fn robot(v: &Value, path: &str) -> Result<RobotSpec> {
         }
         "arm" => arm(&mut o)?,
         "asv" => asv(&mut o)?,
-        other => return Err(ScenarioError::at(kp, format!("unknown robot kind \"{other}\" (use point, rigid, arm or asv)"))),
+        other => return Err(ScenarioError::at(kp, format!("unknown robot kind \"{}\" (use point, rigid, arm or asv)", limits::cut(other, 100)))),
     };
     o.finish()?;
     Ok(spec)
@@ -191,6 +216,9 @@ fn arm(o: &mut Obj) -> Result<RobotSpec> {
     };
     let (lv, lp) = o.req("links")?;
     let links = numbers(lv, &lp)?;
+    if links.len() > limits::MAX_LINKS {
+        return Err(ScenarioError::at(lp, format!("has {} links; the limit is {}", links.len(), limits::MAX_LINKS)));
+    }
     if links.is_empty() {
         return Err(ScenarioError::at(lp, "needs at least one link"));
     }
@@ -251,7 +279,11 @@ fn arm(o: &mut Obj) -> Result<RobotSpec> {
 
 fn asv(o: &mut Obj) -> Result<RobotSpec> {
     let (cv, cp) = o.req("count")?;
-    let count = cv.as_u64().filter(|c| *c >= 2).ok_or_else(|| ScenarioError::at(&cp, "must be a whole number, 2 or more"))? as usize;
+    let count = cv.as_u64().filter(|c| *c >= 2).ok_or_else(|| ScenarioError::at(&cp, "must be a whole number, 2 or more"))?;
+    if count > limits::MAX_VEHICLES as u64 {
+        return Err(ScenarioError::at(&cp, format!("{count} vehicles; the limit is {}", limits::MAX_VEHICLES)));
+    }
+    let count = count as usize;
     let broom = positive(o, "broom", Some(0.05))?;
     let min_area = match o.get("min_area") {
         Some((v, p)) => {
@@ -274,7 +306,7 @@ fn asv(o: &mut Obj) -> Result<RobotSpec> {
 fn inspection(v: &Value, path: &str) -> Result<Inspection> {
     let mut o = Obj::new(path, v)?;
     let (pv, pp) = o.req("points")?;
-    let points = points(pv, &pp)?;
+    let points = points(pv, &pp, limits::MAX_INSPECTION_POINTS)?;
     let mut num = |key: &'static str, default: Real| -> Result<Real> {
         match o.get(key) {
             Some((v, p)) => number(v, &p),
@@ -295,7 +327,7 @@ fn planner(v: &Value, path: &str) -> Result<PlannerDefaults> {
     let map = v.as_object().ok_or_else(|| ScenarioError::at(path, format!("must be an object, found {}", describe(v))))?;
     let name = string(map.get("name").ok_or_else(|| ScenarioError::at(path, "missing required key \"name\""))?, &join(path, "name"))?;
     let spec = crate::planners::find(&name)
-        .ok_or_else(|| ScenarioError::at(join(path, "name"), format!("unknown planner \"{name}\" (known: {})", crate::planners::names().join(", "))))?;
+        .ok_or_else(|| ScenarioError::at(join(path, "name"), format!("unknown planner \"{}\" (known: {})", limits::cut(&name, 100), crate::planners::names().join(", "))))?;
     let seed = match map.get("seed") {
         Some(s) => Some(s.as_u64().ok_or_else(|| ScenarioError::at(join(path, "seed"), "must be a non-negative integer"))?),
         None => None,
@@ -313,6 +345,9 @@ impl Scenario {
     /// other error names its JSON path. (Start and goal validity are checked when the scenario
     /// becomes a [`Problem`](crate::problem::Problem).)
     pub fn from_json(text: &str) -> Result<Scenario> {
+        if let Some(why) = limits::text_too_large(text) {
+            return Err(ScenarioError::at("", why));
+        }
         let value: Value = serde_json::from_str(text).map_err(|e| ScenarioError::syntax(&e))?;
         Scenario::from_value(&value)
     }
@@ -323,15 +358,15 @@ impl Scenario {
         if let Some((f, p)) = o.get("format") {
             let f = string(f, &p)?;
             if f != FORMAT {
-                return Err(ScenarioError::at(p, format!("unsupported format \"{f}\" (this version reads \"{FORMAT}\")")));
+                return Err(ScenarioError::at(p, format!("unsupported format \"{}\" (this version reads \"{FORMAT}\")", limits::cut(&f, 100))));
             }
         }
         let name = match o.get("name") {
-            Some((v, p)) => string(v, &p)?,
+            Some((v, p)) => text(v, &p, limits::MAX_NAME_CHARS)?,
             None => "Untitled".to_string(),
         };
         let notes = match o.get("notes") {
-            Some((v, p)) => string(v, &p)?,
+            Some((v, p)) => text(v, &p, limits::MAX_NOTES_CHARS)?,
             None => String::new(),
         };
         let (bv, bp) = o.req("bounds")?;
@@ -341,8 +376,25 @@ impl Scenario {
         }
         let obstacles = match o.get("obstacles") {
             Some((v, p)) => {
-                let arr = v.as_array().ok_or_else(|| ScenarioError::at(&p, format!("must be an array, found {}", describe(v))))?;
-                arr.iter().enumerate().map(|(i, x)| obstacle(x, &format!("{p}[{i}]"))).collect::<Result<Vec<_>>>()?
+                let arr = array(v, &p, "an array", limits::MAX_OBSTACLES, "obstacles")?;
+                let mut vertices = 0;
+                let mut out = Vec::with_capacity(arr.len());
+                for (i, x) in arr.iter().enumerate() {
+                    let path = format!("{p}[{i}]");
+                    let o = obstacle(x, &path)?;
+                    vertices += match &o {
+                        ObstacleSpec::Polygon(pts) => pts.len(),
+                        _ => 4,
+                    };
+                    if vertices > limits::MAX_TOTAL_VERTICES {
+                        return Err(ScenarioError::at(
+                            path,
+                            format!("the obstacles up to here have {vertices} vertices (a rect counts 4); the limit is {}", limits::MAX_TOTAL_VERTICES),
+                        ));
+                    }
+                    out.push(o);
+                }
+                out
             }
             None => Vec::new(),
         };

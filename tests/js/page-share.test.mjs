@@ -106,7 +106,7 @@ test('the link grammar: every key round-trips, defaults are left out, no paramet
   assert.equal(bad.problems.length, 8, bad.problems.join('\n'));
   const worse = await readShare('#scenario=deflate:AAAA_not-deflate&planner=rrt');
   assert.equal(worse.scenario, null);
-  assert.match(worse.problems[0], /could not be read/);
+  assert.match(worse.problems[0], /cut short or damaged/);
 });
 
 test('a link restores scenario, planner, parameter, seed, overlay and speed, and the run gives the same path', async () => {

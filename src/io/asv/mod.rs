@@ -86,8 +86,9 @@ fn numbers(line: usize, words: &[(usize, &str)], count: usize, what: &str) -> Re
     words[..count]
         .iter()
         .map(|(c, w)| match w.parse::<Real>() {
-            Ok(x) if x.is_finite() => Ok(x),
-            _ => Err(at(line, *c, format!("{what}: expected a number, found \"{w}\""))),
+            Ok(x) if x.is_finite() && x.abs() <= crate::limits::MAX_MAGNITUDE => Ok(x),
+            Ok(x) if x.is_finite() => Err(at(line, *c, format!("{what}: {x:e} is too large: numbers must lie between -1e9 and 1e9"))),
+            _ => Err(at(line, *c, format!("{what}: expected a number, found \"{}\"", crate::limits::cut(w, 40)))),
         })
         .collect()
 }
@@ -112,13 +113,19 @@ pub fn import_problem(text: &str, name: &str) -> Result<Scenario, ScenarioError>
     let mut lines = Lines::new(text);
     let (l, w) = lines.next("the number of vehicles")?;
     let n = count(l, &w, "the number of vehicles", 3)?;
+    if n > crate::limits::MAX_VEHICLES {
+        return Err(at(l, w[0].0, format!("{n} vehicles; the limit is {}", crate::limits::MAX_VEHICLES)));
+    }
     let (l, w) = lines.next("the initial positions")?;
     let start = numbers(l, &w, 2 * n, "the initial positions")?;
     let (l, w) = lines.next("the goal positions")?;
     let goal = numbers(l, &w, 2 * n, "the goal positions")?;
     let (l, w) = lines.next("the number of obstacles")?;
     let k = count(l, &w, "the number of obstacles", 0)?;
-    let mut obstacles = Vec::with_capacity(k);
+    if k > crate::limits::MAX_OBSTACLES {
+        return Err(at(l, w[0].0, format!("{k} obstacles; the limit is {}", crate::limits::MAX_OBSTACLES)));
+    }
+    let mut obstacles = Vec::with_capacity(k.min(lines.total));
     for i in 0..k {
         let what = format!("obstacle {} of {k}", i + 1);
         let (l, w) = lines.next(&format!("{what} (four corners)"))?;
@@ -129,7 +136,7 @@ pub fn import_problem(text: &str, name: &str) -> Result<Scenario, ScenarioError>
         let max = |v: [Real; 4]| v.iter().copied().fold(Real::NEG_INFINITY, Real::max);
         obstacles.push(ObstacleSpec::Rect([min(xs), min(ys), max(xs), max(ys)]));
     }
-    let title = if name.trim().is_empty() { "ASV problem".to_string() } else { name.to_string() };
+    let title = if name.trim().is_empty() { "ASV problem".to_string() } else { crate::limits::cut(name, 100) };
     let area = min_area(n);
     let mut params = serde_json::Map::new();
     params.insert("range".into(), serde_json::json!(DEFAULT_RANGE));
@@ -202,7 +209,10 @@ pub fn primitive_steps(problem: &Problem, path: &[Vec<Real>]) -> Result<Vec<Vec<
     for w in path.windows(2) {
         let (a, b) = (&w[0], &w[1]);
         // The same states `SpaceInfo::check_motion` checked: i/n of the way for i in 1..n, then b.
-        let n = robot.motion_steps(a, b, si.distance(a, b), si.resolution).max(1);
+        let n = robot.motion_steps(a, b, si.distance(a, b), si.resolution).ok_or("a motion of the path has too many primitive steps to write")?;
+        if configs.len().saturating_add(n) > crate::limits::MAX_SOLUTION_STEPS {
+            return Err(format!("the solution would have more than {} steps", crate::limits::MAX_SOLUTION_STEPS));
+        }
         for i in 1..n {
             si.interpolate(a, b, i as Real / n as Real, &mut q);
             check(&q)?;
@@ -235,7 +245,11 @@ pub fn read_solution(text: &str) -> Result<Vec<Vec<Real>>, String> {
     let mut lines = Lines::new(text);
     let (l, w) = lines.next("the line \"m cost\"").map_err(|e| e.to_string())?;
     let m = count(l, &w, "the number of steps", 0).map_err(|e| e.to_string())?;
-    let mut configs: Vec<Vec<Real>> = Vec::with_capacity(m + 1);
+    if m >= crate::limits::MAX_SOLUTION_STEPS {
+        return Err(format!("line {l}: {m} steps; the limit is {}", crate::limits::MAX_SOLUTION_STEPS - 1));
+    }
+    // Room for what the text can hold, not for what its first line claims.
+    let mut configs: Vec<Vec<Real>> = Vec::with_capacity((m + 1).min(lines.total));
     for i in 0..=m {
         let (l, w) = lines.next(&format!("configuration {i} of {m} steps")).map_err(|e| e.to_string())?;
         let c = numbers(l, &w, w.len(), &format!("configuration {i}")).map_err(|e| e.to_string())?;

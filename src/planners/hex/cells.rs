@@ -13,7 +13,7 @@ use crate::geometry::{Aabb, Shape, Workspace};
 use crate::math::{Real, Vec2};
 
 /// √3.
-const SQRT3: Real = 1.732_050_807_568_877_2;
+pub(super) const SQRT3: Real = 1.732_050_807_568_877_2;
 
 /// What a cell holds, from the workspace's obstacles alone.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

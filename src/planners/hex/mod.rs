@@ -155,6 +155,14 @@ impl HexPotential {
             k3: params.real("k3"),
             trap: (trap >= 0.0).then_some((trap as usize, side)),
         };
+        // The coarse tiling's size, computed before it is built.
+        let coarse = ((b.max.x - b.min.x) / (cells::SQRT3 * s0) + 3.0) * ((b.max.y - b.min.y) / (1.5 * s0) + 2.0);
+        if coarse.is_nan() || coarse > crate::limits::MAX_COARSE_CELLS as Real {
+            return Err(format!(
+                "cell_size {s0:e} is too small for this map: its coarse tiling would have about {coarse:.3e} hexagons; the limit is {}",
+                crate::limits::MAX_COARSE_CELLS
+            ));
+        }
         let dec = Decomposition::tiling(&b, s0);
         let queue = (0..dec.cells.len()).collect();
         let region = Region::new(p0, r0, &ws.obstacles, t, b, g);

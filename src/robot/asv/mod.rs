@@ -289,9 +289,9 @@ impl Robot for AsvRobot {
         sampler::sample_gaussian(self, space, rng, centre, sigma, out);
         true
     }
-    fn motion_steps(&self, a: &[Real], b: &[Real], _d: Real, _resolution: Real) -> usize {
+    fn motion_steps(&self, a: &[Real], b: &[Real], _d: Real, _resolution: Real) -> Option<usize> {
         // A hair of slack for rounding in the bound.
-        ((self.bound(a, b) * (1.0 + 1e-9) / self.max_step).ceil() as usize).max(1)
+        crate::limits::steps(self.bound(a, b) * (1.0 + 1e-9), self.max_step, crate::limits::MAX_MOTION_STEPS)
     }
     fn clearance(&self, ws: &Workspace, q: &[Real], cap: Real) -> Option<Real> {
         Some(self.with_chain(q, |pts| self.clearance_of(ws, &q[3..], pts, cap)))

@@ -1,0 +1,111 @@
+//! Input limits: every number and count a user can type, open or link is bounded, so that every
+//! size derived from them fits, no step count wraps, and one planner iteration stays short.
+//! `docs/limits.md` lists each limit, why it has its value, and the message a user gets; the page
+//! reads them through the wasm export `limits()`.
+//!
+//! What cannot be represented is refused up front, with the JSON path (or line and column) of the
+//! value that asks for it: a scenario within these limits never makes a motion check skip states,
+//! an allocation fail or an index wrap.
+
+use crate::math::Real;
+
+/// Bytes of one scenario or course file's text (the page's editor, "Open file…", a link's
+/// decompressed scenario, the CLI's file argument). 100,000 rectangles written compactly take
+/// about 4 MB; pretty-printed about 12 MB.
+pub const MAX_TEXT_BYTES: usize = 16 << 20;
+
+/// Largest magnitude of any number in a scenario: coordinates, sizes, lengths, angles, gains.
+/// Squares and cross products of such numbers (1e18) stay far inside `f64`, and a distance never
+/// overflows to infinity.
+pub const MAX_MAGNITUDE: Real = 1e9;
+
+/// Obstacles in one scenario (issue 15 makes state checks with this many fast).
+pub const MAX_OBSTACLES: usize = 100_000;
+
+/// Vertices of one polygon (an obstacle or a rigid robot's footprint). Checking that a polygon is
+/// simple costs `n²/2` segment tests: 500,000 at this limit.
+pub const MAX_POLYGON_VERTICES: usize = 1_000;
+
+/// Vertices of all polygon obstacles together (a rectangle counts 4): bounds the memory of the
+/// workspace and the time to validate it (at most 400 polygons of the largest size).
+pub const MAX_TOTAL_VERTICES: usize = 400_000;
+
+/// Links of an arm (OMPL's hardest kinematic chain benchmark has 20).
+pub const MAX_LINKS: usize = 64;
+
+/// Vehicles of a vehicle chain (the ASV course's top band asks for more than 15).
+pub const MAX_VEHICLES: usize = 64;
+
+/// Inspection points.
+pub const MAX_INSPECTION_POINTS: usize = 10_000;
+
+/// Characters of a scenario's name.
+pub const MAX_NAME_CHARS: usize = 500;
+
+/// Characters of a scenario's notes.
+pub const MAX_NOTES_CHARS: usize = 20_000;
+
+/// The most states one motion check may visit: the longest motion in the robot's space (its
+/// extent, `StateSpace::max_extent`) divided by the scenario's `resolution` (a vehicle chain's
+/// `max_step`) must stay at or below this. The finest built-in needs 1,486 (the ASV chains); a
+/// point robot among a few obstacles checks 100,000 states in about 1 ms, among 20,000 (a linear
+/// scan until issue 15's broad phase) in about 3 s.
+pub const MAX_MOTION_STEPS: Real = 100_000.0;
+
+/// The largest `max_nodes` a run accepts: a tree of a million nodes holds about 200 MB in the
+/// core and in the page's record store together; 1e8 took 5.2 GB and minutes.
+pub const MAX_NODES: f64 = 1e6;
+
+/// Cells of a hexagonal decomposition's coarse tiling (`cell_size` against the map's size).
+pub const MAX_COARSE_CELLS: usize = 100_000;
+
+/// States in a vehicle chain's solution file (its primitive steps), read or written.
+pub const MAX_SOLUTION_STEPS: usize = 5_000_000;
+
+/// Animation frames the worker sends for one path (the spacing grows to stay within it).
+pub const MAX_PATH_FRAMES: usize = 100_000;
+
+/// The limits as JSON, for the page (`limits()` in the wasm binding) and `docs/limits.md`.
+pub fn to_json() -> serde_json::Value {
+    serde_json::json!({
+        "max_text_bytes": MAX_TEXT_BYTES,
+        "max_magnitude": MAX_MAGNITUDE,
+        "max_obstacles": MAX_OBSTACLES,
+        "max_polygon_vertices": MAX_POLYGON_VERTICES,
+        "max_total_vertices": MAX_TOTAL_VERTICES,
+        "max_links": MAX_LINKS,
+        "max_vehicles": MAX_VEHICLES,
+        "max_inspection_points": MAX_INSPECTION_POINTS,
+        "max_name_chars": MAX_NAME_CHARS,
+        "max_notes_chars": MAX_NOTES_CHARS,
+        "max_motion_steps": MAX_MOTION_STEPS,
+        "max_nodes": MAX_NODES,
+        "max_coarse_cells": MAX_COARSE_CELLS,
+        "max_solution_steps": MAX_SOLUTION_STEPS,
+        "max_path_frames": MAX_PATH_FRAMES,
+    })
+}
+
+/// The error for a text over [`MAX_TEXT_BYTES`], or `None`.
+pub fn text_too_large(text: &str) -> Option<String> {
+    (text.len() > MAX_TEXT_BYTES).then(|| format!("the file is {} bytes; the limit is {} bytes (16 MiB)", text.len(), MAX_TEXT_BYTES))
+}
+
+/// `(x / step).ceil()` as a step count, or `None` when it is not a finite number at most `max`
+/// (NaN, infinite, or too many): callers refuse what they cannot count instead of wrapping.
+pub fn steps(x: Real, step: Real, max: Real) -> Option<usize> {
+    let n = (x / step).ceil();
+    (n.is_finite() && n <= max).then(|| (n as usize).max(1))
+}
+
+/// `text` cut to at most `max` characters (an ellipsis marks the cut): keys, names and words
+/// echoed in titles and error messages, so a hostile file cannot make an error megabytes long.
+pub fn cut(text: &str, max: usize) -> String {
+    if text.chars().count() <= max {
+        text.to_string()
+    } else {
+        let mut s: String = text.chars().take(max.saturating_sub(1)).collect();
+        s.push('…');
+        s
+    }
+}
