@@ -23,6 +23,7 @@ let pool = [];
 let job = null;   // the benchmark being run: {report, queue, done, total, started}
 let report = null; // the last finished (or cancelled) report
 let curves = [];   // per set-up, RRT*'s best cost against time per run: [[[ms, cost], ...], ...]
+let asked = null;  // the last report's {runs: seeds asked per set-up, total: runs asked, done: runs done}
 
 function showError(text) {
   ui.error.textContent = text;
@@ -123,11 +124,14 @@ function finish(problem) {
   job = null;
   setRunning(false);
   const limit = j.setups[0]?.params.time_limit ?? registry.run_params.find((p) => p.name === 'time_limit').default;
+  const rows = j.rows.map((r) => r.sort((a, b) => a.seed - b.seed));
   report = {
     scenario: j.scenario.name, scenario_id: j.scenario.id, date: new Date().toISOString().replace('T', ' ').slice(0, 19),
-    host: 'browser', time_limit_s: limit, runs: j.runs,
-    setups: j.setups.map((s, k) => ({ label: s.label, planner: s.planner, params: s.params, rows: j.rows[k].sort((a, b) => a.seed - b.seed) })),
+    // the seeds that really ran (a cancelled benchmark ran fewer than asked): the exports' "runs per set-up"
+    host: 'browser', time_limit_s: limit, runs: Math.max(0, ...rows.map((r) => r.length)),
+    setups: j.setups.map((s, k) => ({ label: s.label, planner: s.planner, params: s.params, rows: rows[k] })),
   };
+  asked = { runs: j.runs, total: j.total, done: j.done };
   curves = j.curves;
   const secs = ((performance.now() - j.started) / 1000).toFixed(1);
   if (problem) showError(problem);
@@ -150,6 +154,23 @@ function num(v) {
   return Math.abs(v) >= 100 ? v.toFixed(1) : Number(v.toPrecision(4)).toString();
 }
 
+/** Runs per set-up as they really ran, short (plot titles): "40 runs each", or "439–440 runs each". */
+function runsShort(r) {
+  const counts = r.setups.map((s) => s.rows.length);
+  const lo = Math.min(...counts), hi = Math.max(...counts);
+  return lo === hi ? `${lo} runs each` : `${lo}–${hi} runs each`;
+}
+
+/** The seeds that really ran, in words: "2000 seeds per set-up (1 … 2000)" when whole, else per set-up. */
+function seedsRun(r) {
+  const whole = (s) => s.rows.every((row, i) => row.seed === i + 1);
+  const counts = r.setups.map((s) => s.rows.length);
+  if (r.setups.every(whole) && counts.every((c) => c === counts[0])) {
+    return `${counts[0]} seeds per set-up (1 … ${counts[0]})`;
+  }
+  return `seeds run per set-up: ${r.setups.map((s) => `${s.label} ${s.rows.length}`).join(', ')}`;
+}
+
 /** The table in the courses' form and the plots, from the core's summaries. */
 function show(r) {
   const full = JSON.parse(benchExport(JSON.stringify(r), 'json'));
@@ -167,16 +188,19 @@ function show(r) {
     });
     return tr;
   }));
-  ui.caption.textContent = `${r.scenario}: ${r.runs} seeds per set-up (1 … ${r.runs}); medians over all runs, costs over solved runs`;
+  const ran = seedsRun(r);
+  const partial = asked && asked.done < asked.total ? ` (stopped after ${asked.done} of ${asked.total} runs)` : '';
+  ui.caption.textContent = `${r.scenario}: ${ran}${partial}; medians over all runs, costs over solved runs`;
   ui.table.hidden = false;
   ui.plots.hidden = false;
   const groups = (f, solvedOnly = false) => r.setups.map((s) => ({ label: s.label, values: s.rows.filter((x) => !solvedOnly || x.solved).map(f) }));
-  successBars($('plot-success'), 'Success', r.setups.map((s) => ({ label: s.label, solved: s.rows.filter((x) => x.solved).length, runs: s.rows.length })));
-  boxPlot($('plot-time'), 'Planning time', 'ms', groups((x) => x.time_ms));
-  boxPlot($('plot-nodes'), 'Nodes', 'nodes', groups((x) => x.nodes));
-  boxPlot($('plot-checks'), 'State checks', 'checks', groups((x) => x.checks));
-  boxPlot($('plot-cost'), 'Path cost (solved runs)', 'cost', groups((x) => x.cost, true));
-  scatter($('plot-cost-time'), 'Cost against time (one dot per solved run)', 'time (ms)', 'cost',
+  successBars($('plot-success'), `Success (${runsShort(r)})`, r.setups.map((s) => ({ label: s.label, solved: s.rows.filter((x) => x.solved).length, runs: s.rows.length })));
+  const n = runsShort(r);
+  boxPlot($('plot-time'), `Planning time (${n})`, 'ms', groups((x) => x.time_ms));
+  boxPlot($('plot-nodes'), `Nodes (${n})`, 'nodes', groups((x) => x.nodes));
+  boxPlot($('plot-checks'), `State checks (${n})`, 'checks', groups((x) => x.checks));
+  boxPlot($('plot-cost'), `Path cost, solved (${n})`, 'cost', groups((x) => x.cost, true));
+  scatter($('plot-cost-time'), `Cost against time, a dot per solved run (${n})`, 'time (ms)', 'cost',
     r.setups.map((s) => ({ label: s.label, points: s.rows.filter((x) => x.solved).map((x) => [x.time_ms, x.cost]) })));
   const anytime = r.setups.map((s, k) => ({ label: s.label, lines: curves[k] ?? [] })).filter((s) => s.lines.length);
   $('plot-curves').hidden = !anytime.length;

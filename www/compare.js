@@ -14,6 +14,7 @@ import { Lane } from './lane.js';
 import { createStats } from './stats.js';
 import { createOverlays } from './overlays.js';
 import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend } from './shared.js';
+import { applyPageLimits } from './limits.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
@@ -57,11 +58,13 @@ function makeSide(key) {
         showError(`Set-up ${key.toUpperCase()}: ${message}`);
         if (!side.lane.done && controller.fire('fail')) for (const s of sides) s.lane.resetRun();
       },
-      stopped(message, fatal) {
-        showError(fatal ? `The planning worker of set-up ${key.toUpperCase()} keeps stopping (${message}). Reload the page.`
-          : `The planning worker of set-up ${key.toUpperCase()} stopped: ${message}`);
+      stopped(message, fatal, why) {
+        const what = why === 'hung' ? `Set-up ${key.toUpperCase()}: ${message}`
+          : `The planning worker of set-up ${key.toUpperCase()} stopped: ${message}`;
+        showError(fatal ? `The planning worker of set-up ${key.toUpperCase()} keeps stopping (${message}). Pick a scenario to start it again.`
+          : what);
         side.ready = false;
-        if (!fatal) controller.fire('load');
+        controller.fire(fatal ? 'stop' : 'load');
       },
       revealed: () => maybeFinish(),
       finished: () => controller.state === 'finished',
@@ -84,7 +87,7 @@ const sides = [makeSide('a'), makeSide('b')];
 function onReady(side, msg) {
   side.ready = true;
   if (!registry) {
-    registry = msg.planners;
+    registry = applyPageLimits(msg.planners);
     builtins = msg.builtins;
     for (const s of sides) {
       s.panel = createPanel($(`${s.key}-panel`), registry, () => { configure([s]); clearError(); },
@@ -94,6 +97,7 @@ function onReady(side, msg) {
   }
   // load once every worker is ready (again, after a crash: same scenario, same set-ups)
   if (!sides.every((s) => s.ready)) return;
+  if (sides.some((s) => s.lane.session.loadsPending > 0)) return; // the user's load is on its way
   if (scenarioText) load(scenarioText, false);
   else {
     const b = builtins.find((x) => x.id === ui.scenario.value) || builtins[0];

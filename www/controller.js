@@ -5,37 +5,43 @@
 //
 //   idle → running ⇄ paused → finished, plus
 //   loading  while a scenario is being validated by the worker,
-//   invalid  when the scenario the user opened has errors (only loading another one leaves it).
+//   invalid  when the scenario the user opened has errors (only loading another one leaves it),
+//   stopped  when the planning worker kept dying (session.js `fatal`): nothing runs, and loading
+//            a scenario (a built-in, a file) starts a fresh worker.
 //
 // Events: load (a scenario was sent to the worker), loaded / invalid (its answer), configure
 // (planner, parameters or seed changed), run, pause, step (N planner iterations), stepEvent
 // (reveal one more buffered event), finish (the planner stopped and playback caught up), cancel,
-// reset, fail (the worker refused to start the run).
+// reset, fail (the worker refused to start the run), stop (the worker kept dying).
 
-export const STATES = Object.freeze(['loading', 'idle', 'running', 'paused', 'finished', 'invalid']);
+export const STATES = Object.freeze(['loading', 'idle', 'running', 'paused', 'finished', 'invalid', 'stopped']);
 
 export const TRANSITIONS = Object.freeze({
   loading: Object.freeze({
-    load: 'loading', loaded: 'idle', invalid: 'invalid',
+    load: 'loading', loaded: 'idle', invalid: 'invalid', stop: 'stopped',
   }),
   idle: Object.freeze({
     run: 'running', step: 'paused', configure: 'idle',
-    load: 'loading', loaded: 'idle', invalid: 'invalid',
+    load: 'loading', loaded: 'idle', invalid: 'invalid', stop: 'stopped',
   }),
   running: Object.freeze({
     pause: 'paused', finish: 'finished', cancel: 'finished', reset: 'idle', fail: 'idle',
-    configure: 'idle', load: 'loading', loaded: 'idle', invalid: 'invalid',
+    configure: 'idle', load: 'loading', loaded: 'idle', invalid: 'invalid', stop: 'stopped',
   }),
   paused: Object.freeze({
     run: 'running', step: 'paused', stepEvent: 'paused', finish: 'finished', cancel: 'finished',
     reset: 'idle', fail: 'idle', configure: 'idle', load: 'loading', loaded: 'idle', invalid: 'invalid',
+    stop: 'stopped',
   }),
   finished: Object.freeze({
     run: 'running', reset: 'idle', configure: 'idle',
-    load: 'loading', loaded: 'idle', invalid: 'invalid',
+    load: 'loading', loaded: 'idle', invalid: 'invalid', stop: 'stopped',
   }),
   invalid: Object.freeze({
-    configure: 'invalid', load: 'loading', loaded: 'idle', invalid: 'invalid',
+    configure: 'invalid', load: 'loading', loaded: 'idle', invalid: 'invalid', stop: 'stopped',
+  }),
+  stopped: Object.freeze({
+    load: 'loading',
   }),
 });
 

@@ -205,7 +205,6 @@ export class CSpaceView {
   drawRecords(from, to, edges = true) {
     if (!this.space || !this.width || to <= from) return;
     const { ctx } = this.treeLayer;
-    const d = this.store.data;
     const dims = this.space.dims;
     const P = this.palette;
     const node = Math.max(1, Math.round(this.px(2)));
@@ -215,8 +214,7 @@ export class CSpaceView {
       const color = tree ? P.tree1 : P.tree0;
       ctx.beginPath();
       ctx.fillStyle = color;
-      for (let i = from; i < to; i++) {
-        const o = i * STRIDE;
+      for (const [d, o0, o1] of this.store.spans(from, to)) for (let o = o0; o < o1; o += STRIDE) {
         if (d[o] !== EventKind.NODE_ADDED || (d[o + 1] > 0 ? 1 : 0) !== tree) continue;
         if (d[o + 3] >= 0) {
           for (const [a0, a1, b0, b1] of wrapSegments(dims, d[o + 10], d[o + 11], d[o + 8], d[o + 9])) {
@@ -233,8 +231,7 @@ export class CSpaceView {
     }
     if (this.options.showRejected) {
       ctx.fillStyle = P.rejected;
-      for (let i = from; i < to; i++) {
-        const o = i * STRIDE;
+      for (const [d, o0, o1] of this.store.spans(from, to)) for (let o = o0; o < o1; o += STRIDE) {
         if (d[o] !== EventKind.SAMPLE_REJECTED) continue;
         ctx.fillRect(Math.round(this.sx(wrapInto(d[o + 8], dims[0])) - node / 2),
           Math.round(this.sy(wrapInto(d[o + 9], dims[1])) - node / 2), node, node);
@@ -243,8 +240,7 @@ export class CSpaceView {
     if (this.options.showCollisions) {
       const cs = this.px(2.5);
       ctx.beginPath();
-      for (let i = from; i < to; i++) {
-        const o = i * STRIDE;
+      for (const [d, o0, o1] of this.store.spans(from, to)) for (let o = o0; o < o1; o += STRIDE) {
         if (d[o] !== EventKind.COLLISION) continue;
         const x = this.sx(wrapInto(d[o + 8], dims[0])), y = this.sy(wrapInto(d[o + 9], dims[1]));
         ctx.moveTo(x - cs, y - cs); ctx.lineTo(x + cs, y + cs);

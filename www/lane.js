@@ -33,7 +33,7 @@ export class Lane {
         hooks.error?.(message);
       },
       asv: (text) => hooks.asv?.(text),
-      stopped: (message, fatal) => { this.clearRun(); hooks.stopped?.(message, fatal); },
+      stopped: (message, fatal, why) => { this.clearRun(); hooks.stopped?.(message, fatal, why); },
     });
     this.clearRun(false);
   }
@@ -79,7 +79,7 @@ export class Lane {
   /** Stop the planner now (or, when it already stopped, show the rest). */
   cancel() {
     if (!this.done) {
-      this.session.send({ type: 'cancel' });
+      this.session.cancel();
       this.finalStatus = 'cancelled';
     }
     this.reveal(this.playback.revealAll());

@@ -4,7 +4,10 @@
 // canvas when a planner finds no path; the share link (share.js): the state is kept in the URL
 // hash, and a page opened with a hash restores it. A link with problems stays in the address bar
 // as pasted (and is shown with them) until the state changes; Copy link checks the link reads back
-// and is short enough to paste (share.js checkLink), else offers Save JSON.
+// and is short enough to paste (share.js checkLink), else offers Save JSON. When the worker
+// crashed or was replaced (the session's watchdog), the message says so and offers "Open the
+// default scenario instead", which leaves the hash's state (a crashing scenario would otherwise
+// come back with every reload).
 // Read-only state for tests is exposed as window.planarium (nothing else is global).
 
 import { BUTTONS } from './controller.js';
@@ -25,6 +28,7 @@ import { cellLegend, cellSummary } from './cells.js';
 import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend } from './shared.js';
 import { readShare, setupFor, writeShare, checkLink, boundedProblems, cut, VIEW_DEFAULTS, MAX_HASH_CHARS, MAX_LINK_CHARS, MAX_SCENARIO_BYTES } from './share.js';
 import { OVERLAYS } from './palette.js';
+import { applyPageLimits } from './limits.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
@@ -35,9 +39,11 @@ const ui = {
   animSpeed: $('anim-speed'), animOut: $('anim-speed-out'), animRaw: $('anim-raw'), overlays: $('overlays'),
   stats: $('stats'), chartBox: $('chart-box'), chart: $('chart'), chartTitle: $('chart-title'), compare: $('to-compare'),
   tip: $('cell-tip'), runNote: $('run-note'), back: $('step-back'), copyLink: $('copy-link'), shareUrl: $('share-url'),
-  copyStatus: $('copy-status'), saveJson: $('save-json'),
+  copyStatus: $('copy-status'), saveJson: $('save-json'), defaultScenario: $('error-default'),
 };
-const { show: showError, clear: clearError } = errorBox(ui.error, ui.errorText);
+const errors = errorBox(ui.error, ui.errorText);
+const showError = (text) => { ui.defaultScenario.hidden = true; errors.show(text); };
+const clearError = () => { ui.defaultScenario.hidden = true; errors.clear(); };
 
 const playback = new Playback();
 const view = new View(ui.canvas, playback.store, playback.model);
@@ -106,10 +112,7 @@ const player = new Player({
     },
     error(message) { showError(message); },
     asv(text) { downloadText(text, `${(loaded?.name || 'solution').replace(/[^\w.-]+/g, '_')}-solution.txt`); },
-    stopped(message, fatal) {
-      showError(fatal ? `The planning worker keeps stopping (${message}). Reload the page to try again.`
-        : `The planning worker stopped: ${message}`);
-    },
+    stopped: showStopped,
     changed: () => { updateStats(); syncDownload(); },
     frame() {
       if (!chart.kind && playback.model.costs.length) syncChart(); // a planner that reports costs
@@ -122,7 +125,7 @@ const { controller, lane } = player;
 
 function onReady(msg) {
   if (!registry) {
-    registry = msg.planners;
+    registry = applyPageLimits(msg.planners);
     builtins = msg.builtins;
     panel = createPanel(ui.panel, registry, () => { configure(); clearError(); syncChart(); });
     const first = fillScenarioPicker(ui.scenario, builtins);
@@ -131,9 +134,38 @@ function onReady(msg) {
       load(JSON.stringify(first.scenario), true, { course: first.course, source: { id: first.id } });
       shareReady = true;
     }
-  } else if (scenarioText) {
-    load(scenarioText, false, { course }); // after a crash: same scenario, same configuration
+  } else if (!lane.session.loadsPending) { // after a crash (unless the user's load is on its way)
+    if (scenarioText) load(scenarioText, false, { course }); // same scenario, same configuration
+    else if (restoring) restoreScenario(restoring); // a link's scenario crashed on load: again (a crash
+    // each time ends in `stopped`, where the picker and "Open the default scenario instead" work)
   }
+}
+
+/**
+ * The worker crashed or was replaced (why: 'crashed' | 'hung'): say so, and offer the default
+ * scenario in one click (a scenario from a link that crashes the core would otherwise come back
+ * with every reload, restored from the hash). `fatal`: it kept crashing; nothing runs until the
+ * user loads a scenario (that starts a fresh worker).
+ */
+function showStopped(message, fatal, why) {
+  const text = why === 'hung' ? message : `The planning worker stopped: ${message}`;
+  showError(fatal ? `The planning worker keeps stopping (${message}). Pick a scenario or open a file to start it again.`
+    : text);
+  ui.defaultScenario.hidden = false;
+}
+
+/** "Open the default scenario instead": forget the link's state, load the first built-in as shipped. */
+function openDefaultScenario() {
+  history.replaceState(history.state, '', `${location.pathname}${location.search}`);
+  lastHash = null;
+  restoring = null;
+  restoreNotes = [];
+  clearError();
+  removeCustomOptions();
+  const b = builtins[0];
+  ui.scenario.value = b.id;
+  load(JSON.stringify(b.scenario), true, { course: b.course, source: { id: b.id } });
+  shareReady = true;
 }
 
 // Requests
@@ -443,6 +475,7 @@ ui.download.addEventListener('click', () => { if (lane.session.alive && lane.res
 for (const [id, event] of Object.entries(BUTTONS)) $(id).addEventListener('click', () => actions[event]());
 ui.back.addEventListener('click', () => actions.back());
 ui.errorClose.addEventListener('click', clearError);
+ui.defaultScenario.addEventListener('click', openDefaultScenario);
 
 ui.scenario.addEventListener('change', () => {
   const b = builtins.find((x) => x.id === ui.scenario.value);
@@ -541,6 +574,8 @@ Object.defineProperty(window, 'planarium', {
     result: () => (lane.result ? structuredClone(lane.result) : null),
     scenario: () => (editor.scenario ? structuredClone(editor.scenario) : null),
     nodeCount: () => playback.nodeCount,
+    /** Bytes held by the page's stores for the run: {records, trees, queued}. */
+    memory: () => playback.bytes(),
     /** Iterations whose events are all shown (step back goes back from here). */
     shownIterations: () => player.shownIterations,
     /** The link to this state (the hash is kept up to date a moment after each change). */

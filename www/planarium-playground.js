@@ -24,6 +24,7 @@ import { Player } from './player.js';
 import { fitViews } from './stage.js';
 import { speedRate, animFps, describeSpeed } from './shared.js';
 import { readShare, setupFor, configOf, overlayOptions, boundedProblems, DEFAULT_CONTROLS, VIEW_DEFAULTS } from './share.js';
+import { applyPageLimits } from './limits.js';
 
 const KEYS = ['scenario', 'planner', 'seed', 'speed', 'anim', 'overlays', 'step-size', 'raw-path', 'autoplay', 'click', 'controls'];
 const FLAGS = ['raw-path', 'autoplay', 'click'];
@@ -106,6 +107,7 @@ export class PlanariumPlayground extends HTMLElement {
     this.registry = null;
     this.builtins = [];
     this.started = false; // autoplay / click: the run has been started once
+    this.crashNote = '';  // why the worker stopped, kept until the user acts
     this.pending = 0;
     this.aspect = 1;
     this.shown = [];
@@ -131,7 +133,7 @@ export class PlanariumPlayground extends HTMLElement {
         loaded: (msg) => this.onLoaded(msg),
         invalid: (error) => this.onInvalid(error),
         error: (message) => this.say(message),
-        stopped: (message, fatal) => this.say(fatal ? `The planning worker keeps stopping (${message}).` : `The planning worker stopped: ${message}`),
+        stopped: (message, fatal, why) => this.onStopped(message, fatal, why),
         changed: () => this.sync(),
       },
     });
@@ -185,26 +187,53 @@ export class PlanariumPlayground extends HTMLElement {
 
   onReady(msg) {
     const first = !this.registry;
-    this.registry = msg.planners;
+    this.registry = applyPageLimits(msg.planners);
     this.builtins = msg.builtins;
     if (first) this.restore();
-    else if (this.scenarioText) this.player.load(this.scenarioText); // after a crash: the same again
+    else if (!this.player.lane.session.loadsPending) { // after a crash: the same again
+      if (this.scenarioText) this.player.load(this.scenarioText);
+      else if (this.share) this.loadShared(); // it crashed on load: try again (repeated crashes end in `stopped`)
+    }
+  }
+
+  /**
+   * The worker crashed or was replaced: the note stays (the reload that follows, and its
+   * `loaded`, do not wipe it) until the user acts; after repeated crashes (`fatal`) nothing runs
+   * and the status says `stopped`.
+   */
+  onStopped(message, fatal, why) {
+    const what = why === 'hung' ? message : `The planning worker stopped: ${message}`;
+    this.crashNote = fatal
+      ? `The planning worker keeps stopping (${message}). Reload the page to try again.`
+      : what;
+    this.say(this.notes());
+  }
+
+  /** The crash note (if any) and the settings that could not be used, as one message. */
+  notes() {
+    const problems = this.problems?.length ? `Some of this embed's settings could not be used:\n• ${boundedProblems(this.problems, 8).join('\n• ')}` : '';
+    return [this.crashNote, problems].filter(Boolean).join('\n');
   }
 
   async restore() {
     const share = await readShare(this.linkText(), { builtins: this.builtins });
     this.share = share;
     this.problems = [...share.problems];
+    this.crashNote = '';
     this.started = false;
     this.buildControls(share.controls ?? DEFAULT_CONTROLS);
     this.view.setOptions({ ...overlayOptions(share.overlays), animateRaw: !!share.view.rawPath });
+    if (!share.scenario) this.problems.push('No scenario given (scenario=…): the first built-in is shown.');
+    this.loadShared();
+  }
+
+  /** Load the scenario the link names: its JSON, a built-in, or the first built-in. */
+  loadShared() {
+    const share = this.share;
     const b = share.scenario?.id ? this.builtins.find((x) => x.id === share.scenario.id) : null;
     if (share.scenario?.text) this.player.load(share.scenario.text);
     else if (b) this.player.load(JSON.stringify(b.scenario));
-    else {
-      if (!share.scenario) this.problems.push('No scenario given (scenario=…): the first built-in is shown.');
-      this.player.load(JSON.stringify(this.builtins[0].scenario));
-    }
+    else this.player.load(JSON.stringify(this.builtins[0].scenario));
   }
 
   onLoaded(msg) {
@@ -222,7 +251,7 @@ export class PlanariumPlayground extends HTMLElement {
     this.player.configure(this.config);
     this.player.controller.fire('loaded');
     this.problems.push(...problems);
-    this.say(this.problems.length ? `Some of this embed's settings could not be used:\n• ${boundedProblems(this.problems, 8).join('\n• ')}` : '');
+    this.say(this.notes());
     if (this.share.autoplay && !this.started) {
       this.started = true;
       this.player.run();
@@ -297,6 +326,7 @@ export class PlanariumPlayground extends HTMLElement {
     const p = this.player;
     if (!p) return false;
     this.started = true;
+    if (this.crashNote && p.controller.state !== 'stopped') { this.crashNote = ''; this.say(this.notes()); }
     switch (name) {
       case 'run': return p.run();
       case 'pause': return p.pause();

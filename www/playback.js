@@ -1,6 +1,6 @@
 // Event playback: batches from the worker are queued, then revealed at the page's pace
 // (PathFinding.js style: pausing is playback-only, the records stay). Revealed records are kept in
-// one growable Float64Array, so the view can redraw everything from them after a resize.
+// a chunked store (RecordStore), so the view can redraw everything from them after a resize.
 //
 // Every revealed record also goes through a RunModel: what the records say so far, kept so the
 // views need not re-read the whole log: a mirror of each tree (node points and parents: a REWIRE
@@ -11,27 +11,67 @@
 
 import { EventKind, STRIDE } from './events.js';
 import { CellMirror } from './cells.js';
+import { STORE_CHUNK_RECORDS } from './limits.js';
 
+/**
+ * The revealed records, in chunks of STORE_CHUNK_RECORDS (limits.js): growing adds a chunk and
+ * never copies what is held (a doubling array froze the page for seconds per doubling past a few
+ * million records). Read them with spans(from, to).
+ */
 export class RecordStore {
-  constructor() {
-    this.data = new Float64Array(STRIDE * 4096);
+  constructor(chunkRecords = STORE_CHUNK_RECORDS) {
+    this.chunkRecords = chunkRecords;
+    this.chunkSize = chunkRecords * STRIDE; // numbers per chunk
+    this.chunks = [];
     this.length = 0; // records
   }
 
-  clear() { this.length = 0; }
+  /** Forget the records; the first chunk is kept for the next run, the rest are let go. */
+  clear() {
+    this.length = 0;
+    this.chunks.length = Math.min(this.chunks.length, 1);
+  }
 
   append(src, from, count) {
-    const need = (this.length + count) * STRIDE;
-    if (need > this.data.length) {
-      let size = this.data.length;
-      while (size < need) size *= 2;
-      const next = new Float64Array(size);
-      next.set(this.data.subarray(0, this.length * STRIDE));
-      this.data = next;
+    let at = this.length * STRIDE;
+    let s = from * STRIDE;
+    const end = (from + count) * STRIDE;
+    while (s < end) {
+      const c = Math.floor(at / this.chunkSize);
+      if (c === this.chunks.length) this.chunks.push(new Float64Array(this.chunkSize));
+      const o = at - c * this.chunkSize;
+      const n = Math.min(end - s, this.chunkSize - o);
+      this.chunks[c].set(src.subarray(s, s + n), o);
+      s += n;
+      at += n;
     }
-    this.data.set(src.subarray(from * STRIDE, (from + count) * STRIDE), this.length * STRIDE);
     this.length += count;
   }
+
+  /**
+   * Records [from, to) as spans [data, start, end]: offsets into one chunk's numbers, a record
+   * every STRIDE numbers (for (const [d, o0, o1] of store.spans(a, b)) for (let o = o0; o < o1; o += STRIDE) …).
+   */
+  *spans(from, to) {
+    const hi = Math.min(to, this.length);
+    for (let r = Math.max(0, from); r < hi;) {
+      const c = Math.floor(r / this.chunkRecords);
+      const first = r - c * this.chunkRecords;
+      const last = Math.min(this.chunkRecords, hi - c * this.chunkRecords);
+      yield [this.chunks[c], first * STRIDE, last * STRIDE];
+      r = c * this.chunkRecords + last;
+    }
+  }
+
+  /** Record `i`'s numbers (a view, no copy). */
+  record(i) {
+    const c = Math.floor(i / this.chunkRecords);
+    const o = (i - c * this.chunkRecords) * STRIDE;
+    return this.chunks[c].subarray(o, o + STRIDE);
+  }
+
+  /** Bytes held. */
+  get bytes() { return this.chunks.length * this.chunkSize * 8; }
 }
 
 const KNOWN = 1;     // the node's point is known
@@ -255,6 +295,16 @@ export class Playback {
   }
 
   revealAll() { return this.reveal(this.pending); }
+
+  /** Bytes the page holds for the run: {records, trees, queued} (typed arrays, by capacity). */
+  bytes() {
+    const perNode = 4 * 8 + 4 + 8 + 1; // x, y, c0, c1, parent, radius, flags
+    return {
+      records: this.store.bytes,
+      trees: this.model.trees.reduce((s, t) => s + t.cap * perNode, 0),
+      queued: this.queue.reduce((s, q) => s + q.data.byteLength, 0),
+    };
+  }
 
   /** Reveal what `rate` records per second owes after `dt` seconds (Infinity: everything). */
   tick(rate, dt) {

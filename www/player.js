@@ -32,22 +32,41 @@ export class Player {
     this.lane = new Lane({
       playback, views, chart,
       hooks: {
-        ready: (m) => hooks.ready?.(m),
-        loaded: (m) => hooks.loaded?.(m),
-        invalid: (e) => hooks.invalid?.(e),
+        ready: (m) => {
+          // a load the replaced worker never read goes to the new one (the page's own reload of
+          // its last scenario then stands aside: a load is pending)
+          const again = this.resend;
+          this.resend = null;
+          if (again) this.lane.load(again.text, again.file);
+          hooks.ready?.(m);
+        },
+        loaded: (m) => { this.pendingLoad = null; hooks.loaded?.(m); },
+        invalid: (e) => { this.pendingLoad = null; hooks.invalid?.(e); },
         error: (message) => {
           hooks.error?.(message);
           if (!this.lane.done && c.fire('fail')) this.lane.clearRun();
         },
         asv: (text) => hooks.asv?.(text),
-        stopped: (message, fatal) => {
-          hooks.stopped?.(message, fatal);
-          if (!fatal) c.fire('load');
+        stopped: (message, fatal, why) => {
+          // Run after Cancel on a worker that did not stop: the run the user asked for starts
+          // as soon as the replacement has the scenario again (not after a crash: it would crash again)
+          this.rerun = why === 'hung' && !fatal && c.state === 'running';
+          // not after a crash: the scenario being loaded may be what crashed the core
+          this.resend = why === 'hung' && !fatal ? this.pendingLoad : null;
+          hooks.stopped?.(message, fatal, why);
+          c.fire(fatal ? 'stop' : 'load');
         },
         revealed: () => this.maybeFinish(),
         finished: () => c.state === 'finished',
         changed: () => { this.mark(); hooks.changed?.(); },
       },
+    });
+    this.rerun = false;
+    this.pendingLoad = null; // {text, file}: the latest load, until its answer
+    this.resend = null;
+    c.onChange((state, from, event) => {
+      if (event === 'loaded' && this.rerun) queueMicrotask(() => this.run());
+      if (event === 'loaded' || event === 'invalid' || event === 'stop') this.rerun = false;
     });
     this.frame = this.frame.bind(this);
   }
@@ -64,15 +83,17 @@ export class Player {
   stop() {
     cancelAnimationFrame(this.raf);
     this.raf = 0;
-    const s = this.lane.session;
-    s.worker?.terminate();
-    s.worker = null;
+    this.lane.session.stop();
   }
 
   // Requests
 
-  /** Send a scenario (JSON text; with `file`, any file the core imports) to the worker. */
+  /**
+   * Send a scenario (JSON text; with `file`, any file the core imports) to the worker (in the
+   * `stopped` state, to a fresh one).
+   */
   load(text, file = null) {
+    this.pendingLoad = { text, file };
     this.lane.load(text, file);
     this.controller.fire('load');
   }

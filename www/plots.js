@@ -1,6 +1,8 @@
 // Plots for the benchmark page, drawn on canvases: box plots per metric, success bars, and cost
 // against time (one dot per solved run). Colours are the Okabe–Ito set, distinguishable with the
 // common colour-blindness types; set-ups also differ by position and label, never colour alone.
+// Labels never overlap: too wide for their slot, they are tilted and cut with an ellipsis (the
+// canvas's title, a tooltip, and its aria-label hold them in full); titles are cut to the canvas.
 
 export const SERIES = ['#0072b2', '#e69f00', '#009e73', '#cc79a7', '#56b4e9', '#d55e00', '#f0e442', '#000000'];
 
@@ -28,7 +30,7 @@ function setup(canvas, title) {
   ctx.fillRect(0, 0, w, h);
   ctx.fillStyle = '#222';
   ctx.font = '600 12px system-ui, sans-serif';
-  ctx.fillText(title, 8, 16);
+  ctx.fillText(fitText(ctx, title, w - 16), 8, 16); // the whole title is the canvas's aria-label
   canvas.setAttribute('aria-label', title);
   return { ctx, w, h, pad: { l: 64, r: 12, t: 28, b: 36 } };
 }
@@ -68,11 +70,56 @@ function yAxis(ctx, g, lo, hi, unit) {
   return y;
 }
 
+/** `text` cut with an ellipsis to fit `maxW` px in the context's font. */
+export function fitText(ctx, text, maxW) {
+  if (ctx.measureText(text).width <= maxW) return text;
+  let lo = 0, hi = text.length;
+  while (lo < hi) { // the longest prefix that fits with the ellipsis
+    const mid = Math.ceil((lo + hi) / 2);
+    if (ctx.measureText(`${text.slice(0, mid)}…`).width <= maxW) lo = mid; else hi = mid - 1;
+  }
+  return `${text.slice(0, lo)}…`;
+}
+
+const LABEL_FONT = '11px system-ui, sans-serif';
+const TILT = Math.PI / 5; // crowded labels are drawn at 36°, up to TILT_MAX px long
+const TILT_MAX = 96;
+
+/**
+ * Room for the category labels under a plot: when the longest label is wider than its slot, the
+ * labels are tilted and the bottom margin grows to hold them. Call before the y axis is drawn.
+ */
+function labelRoom(canvas, g, labels) {
+  const { ctx } = g;
+  ctx.font = LABEL_FONT;
+  const slot = (g.w - g.pad.l - g.pad.r) / Math.max(1, labels.length);
+  g.tilt = labels.some((l) => ctx.measureText(l).width > slot - 6);
+  if (g.tilt) g.pad.b = Math.ceil(Math.sin(TILT) * TILT_MAX) + 16;
+  // every label in full, for a pointer's tooltip and a screen reader
+  const full = labels.map((l, i) => `${i + 1}. ${l}`).join('\n');
+  canvas.title = g.tilt || labels.some((l) => ctx.measureText(l).width > slot - 6) ? full : '';
+  canvas.setAttribute('aria-label', `${canvas.getAttribute('aria-label')}; set-ups: ${labels.join(', ')}`);
+}
+
 function xLabels(ctx, g, labels, x) {
   ctx.fillStyle = '#222';
-  ctx.textAlign = 'center';
-  ctx.font = '11px system-ui, sans-serif';
-  labels.forEach((l, i) => ctx.fillText(l.length > 16 ? `${l.slice(0, 15)}…` : l, x(i), g.h - g.pad.b + 14));
+  ctx.font = LABEL_FONT;
+  const slot = (g.w - g.pad.l - g.pad.r) / Math.max(1, labels.length);
+  labels.forEach((l, i) => {
+    if (!g.tilt) {
+      ctx.textAlign = 'center';
+      ctx.fillText(fitText(ctx, l, slot - 6), x(i), g.h - g.pad.b + 14);
+      return;
+    }
+    // tilted: each label ends under its box, and neighbours do not overlap (they are parallel,
+    // slot·sin(TILT) apart, more than the font's height down to a 20 px slot)
+    ctx.save();
+    ctx.translate(x(i) + 4, g.h - g.pad.b + 8);
+    ctx.rotate(-TILT);
+    ctx.textAlign = 'right';
+    ctx.fillText(fitText(ctx, l, TILT_MAX), 0, 4);
+    ctx.restore();
+  });
 }
 
 /** Box plots: `groups` [{label, values}] (empty groups get "no data"). */
@@ -81,6 +128,7 @@ export function boxPlot(canvas, title, unit, groups) {
   const { ctx } = g;
   const all = groups.flatMap((s) => s.values).filter(Number.isFinite);
   if (!all.length) { ctx.fillText('no data', g.pad.l, g.h / 2); return; }
+  labelRoom(canvas, g, groups.map((s) => s.label));
   const y = yAxis(ctx, g, ...extent(all), unit);
   const slot = (g.w - g.pad.l - g.pad.r) / groups.length;
   const x = (i) => g.pad.l + slot * (i + 0.5);
@@ -106,8 +154,13 @@ export function boxPlot(canvas, title, unit, groups) {
 export function successBars(canvas, title, bars) {
   const g = setup(canvas, title);
   const { ctx } = g;
-  const y = yAxis(ctx, g, 0, 100, '% solved');
+  labelRoom(canvas, g, bars.map((b) => b.label));
   const slot = (g.w - g.pad.l - g.pad.r) / Math.max(1, bars.length);
+  ctx.font = LABEL_FONT;
+  // where counts are wider than a bar's slot, every other one is raised a line: no two touch
+  const stagger = bars.some((c) => ctx.measureText(`${c.solved}/${c.runs}`).width > slot - 4);
+  if (stagger) g.pad.t += 11;
+  const y = yAxis(ctx, g, 0, 100, '% solved');
   const x = (i) => g.pad.l + slot * (i + 0.5);
   const bw = Math.min(48, slot * 0.6);
   bars.forEach((b, i) => {
@@ -116,7 +169,7 @@ export function successBars(canvas, title, bars) {
     ctx.fillRect(x(i) - bw / 2, y(pct), bw, y(0) - y(pct));
     ctx.fillStyle = '#222';
     ctx.textAlign = 'center';
-    ctx.fillText(`${b.solved}/${b.runs}`, x(i), y(pct) - 4);
+    ctx.fillText(`${b.solved}/${b.runs}`, x(i), y(pct) - 4 - (stagger && i % 2 ? 11 : 0));
   });
   xLabels(ctx, g, bars.map((b) => b.label), x);
 }
@@ -143,9 +196,10 @@ function xyAxes(ctx, g, pts, xUnit, yUnit) {
 /** The key: each series' label after its mark (`marks` alternate, so colour is not alone). */
 function seriesKey(ctx, g, series, marks) {
   ctx.textAlign = 'left';
+  const col = (g.w - g.pad.l - g.pad.r - 4) / 3; // three to a row, each cut to its column
   series.forEach((s, i) => {
     ctx.fillStyle = SERIES[i % SERIES.length];
-    ctx.fillText(`${marks[i % 2]} ${s.label}`, g.pad.l + 4 + (i % 3) * 110, g.pad.t + 12 + Math.floor(i / 3) * 13);
+    ctx.fillText(fitText(ctx, `${marks[i % 2]} ${s.label}`, col - 6), g.pad.l + 4 + (i % 3) * col, g.pad.t + 12 + Math.floor(i / 3) * 13);
   });
 }
 
@@ -156,6 +210,7 @@ export function scatter(canvas, title, xUnit, yUnit, series) {
   const pts = series.flatMap((s) => s.points);
   if (!pts.length) { ctx.fillText('no solved runs', g.pad.l, g.h / 2); return; }
   const { x, y } = xyAxes(ctx, g, pts, xUnit, yUnit);
+  canvas.title = series.map((s, i) => `${['●', '■'][i % 2]} ${s.label}`).join('\n');
   series.forEach((s, i) => {
     ctx.fillStyle = SERIES[i % SERIES.length];
     for (const [t, c] of s.points) {

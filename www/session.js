@@ -7,18 +7,40 @@
 // load/configure/reset requests are still unanswered: events and results are passed on only when
 // they belong to the latest counter and nothing is pending. Only the answer to the latest load
 // is passed on.
+//
+// Watchdog: cancel, reset, configure and load/import carry `ack: n`, which the worker answers as
+// soon as it reads the message. A worker that has not acknowledged one within WATCHDOG_MS (a
+// planning batch that does not end) is terminated and replaced, as after a crash, and `stopped`
+// says so in words. Deaths (crashes and replacements) are counted: after more than CRASH_LIMIT
+// within CRASH_WINDOW_MS the session stops replacing the worker on its own (`fatal`), and the next
+// load() starts a fresh one (a user who picks a scenario or opens a file always gets a worker).
+
+import { WATCHDOG_MS, CRASH_LIMIT, CRASH_WINDOW_MS } from './limits.js';
+
+/** What `stopped` says when a worker did not acknowledge a message in time, per message type. */
+const HUNG = {
+  cancel: 'The planner did not stop within a second; it was restarted.',
+  reset: 'The planner did not reset within a second; it was restarted.',
+  configure: 'The planner did not take the new set-up within a second; it was restarted.',
+  load: 'The planner did not take the new scenario within a second; it was restarted.',
+};
+HUNG.import = HUNG.load;
 
 export class WorkerSession {
   /**
    * `hooks`: {ready(msg), loaded(msg), invalid(error), events(msg), result(msg), error(message),
-   * asv(text), stopped(message, fatal)}; `stopped` is called when the worker died (a panic or a
-   * failed start): the session starts a new one, whose `ready` follows, unless the worker keeps
-   * dying (`fatal`: more than 3 times in 10 s).
+   * asv(text), stopped(message, fatal, why)}; `stopped` is called when the worker died (why:
+   * 'crashed', a panic or a failed start) or was replaced by the watchdog (why: 'hung'; the message
+   * says so in words): the session starts a new one, whose `ready` follows, unless the worker keeps
+   * dying (`fatal`: more than CRASH_LIMIT times in CRASH_WINDOW_MS; the next load() starts one).
    */
   constructor(hooks) {
     this.hooks = hooks;
     this.worker = null;
     this.crashes = [];
+    this.acks = new Map(); // ack number → {type, sent}: watched messages not yet acknowledged
+    this.ackSeq = 0;
+    this.watchdog = 0;
   }
 
   start() {
@@ -27,6 +49,8 @@ export class WorkerSession {
     this.latestRun = -1;      // `run` of the latest status/loaded/invalid message
     this.bumpsPending = 0;    // load/configure/reset sent, not yet answered: drop events until answered
     this.loadsPending = 0;
+    this.acks.clear();
+    clearTimeout(this.watchdog);
     w.onmessage = (e) => { if (w === this.worker) this.onMessage(e.data); };
     w.onerror = (e) => {
       e.preventDefault();
@@ -39,44 +63,98 @@ export class WorkerSession {
 
   send(msg) { this.worker?.postMessage(msg); }
 
-  /** Send a scenario (or, with `file`, any file the core imports). */
-  load(text, file = null) {
+  /** Send `msg` and expect the worker to acknowledge it within WATCHDOG_MS. */
+  sendWatched(msg) {
     if (!this.worker) return;
+    const ack = ++this.ackSeq;
+    this.acks.set(ack, { type: msg.type, sent: performance.now() });
+    this.send({ ...msg, ack });
+    this.armWatchdog();
+  }
+
+  /** Time the oldest unacknowledged message. */
+  armWatchdog() {
+    clearTimeout(this.watchdog);
+    const oldest = this.acks.values().next().value;
+    if (!oldest) return;
+    const left = Math.max(0, oldest.sent + WATCHDOG_MS - performance.now());
+    const due = performance.now() + left + 5;
+    this.watchdog = setTimeout(() => {
+      const late = this.acks.values().next().value;
+      if (!late || !this.worker) return;
+      if (performance.now() - late.sent < WATCHDOG_MS) { this.armWatchdog(); return; }
+      // The page itself was busy past the deadline (a long task): the worker's ack may be queued
+      // behind this timer. Look again once the queue has had a moment, rather than kill a healthy worker.
+      if (performance.now() - due > 50 && !late.graced) {
+        late.graced = true;
+        this.watchdog = setTimeout(() => this.armWatchdog(), 100);
+        return;
+      }
+      this.recover(HUNG[late.type] || HUNG.cancel, 'hung');
+    }, left + 5);
+  }
+
+  /**
+   * Send a scenario (or, with `file`, any file the core imports). Without a worker (it kept
+   * crashing: `fatal`), a fresh one is started first, the crash count forgotten.
+   */
+  load(text, file = null) {
+    if (!this.worker) {
+      this.crashes = [];
+      this.start();
+    }
     this.loadsPending++;
     this.bumpsPending++;
-    this.send(file ? { type: 'import', text, name: file } : { type: 'load', text });
+    this.sendWatched(file ? { type: 'import', text, name: file } : { type: 'load', text });
   }
 
   /** Choose the planner set-up {planner, params, seed}. */
   configure(config) {
     if (!this.worker) return;
     this.bumpsPending++;
-    this.send({ type: 'configure', ...config });
+    this.sendWatched({ type: 'configure', ...config });
   }
 
   reset() {
     if (!this.worker) return;
     this.bumpsPending++;
-    this.send({ type: 'reset' });
+    this.sendWatched({ type: 'reset' });
   }
+
+  /** Stop the run now (the worker's events and result with status `cancelled` follow). */
+  cancel() { this.sendWatched({ type: 'cancel' }); }
 
   /** Whether a reply for a run (events, result) is current. */
   current(msg) { return msg.run === this.latestRun && !this.bumpsPending; }
 
-  recover(message) {
+  recover(message, why = 'crashed') {
     this.worker.terminate();
     this.worker = null;
+    this.acks.clear();
+    clearTimeout(this.watchdog);
     const now = performance.now();
-    this.crashes = this.crashes.filter((t) => now - t < 10000).concat(now);
-    const fatal = this.crashes.length > 3;
-    this.hooks.stopped?.(message, fatal);
+    this.crashes = this.crashes.filter((t) => now - t < CRASH_WINDOW_MS).concat(now);
+    const fatal = this.crashes.length > CRASH_LIMIT;
+    this.hooks.stopped?.(message, fatal, why);
     if (!fatal) this.start(); // its `ready` lets the page reload the scenario and configuration
+  }
+
+  /** Stop the worker for good (an element taken out of the page). */
+  stop() {
+    this.worker?.terminate();
+    this.worker = null;
+    this.acks.clear();
+    clearTimeout(this.watchdog);
   }
 
   onMessage(msg) {
     const h = this.hooks;
     switch (msg.type) {
       case 'ready': h.ready?.(msg); return;
+      case 'ack':
+        this.acks.delete(msg.ack);
+        this.armWatchdog();
+        return;
       case 'loaded':
       case 'invalid':
         this.latestRun = msg.run;

@@ -181,12 +181,10 @@ export class View {
     this.drawTreeRecords(from, to);
     this.drawUnder(from, to);
     this.drawOver(from, to);
-    const d = this.store.data;
     const flash = this.options.showRewires;
     const now = performance.now();
     // markers: few, kept as world coordinates and drawn on top every frame
-    for (let i = from; i < to; i++) {
-      const o = i * STRIDE;
+    for (const [d, o0, o1] of this.store.spans(from, to)) for (let o = o0; o < o1; o += STRIDE) {
       const kind = d[o];
       if (kind === EventKind.SAMPLE || kind === EventKind.SAMPLE_REJECTED) this.lastSample = [d[o + 4], d[o + 5]];
       else if (kind === EventKind.TREES_CONNECTED || kind === EventKind.SOLVED) this.markers.push([kind, d[o + 4], d[o + 5]]);
@@ -200,15 +198,13 @@ export class View {
   drawTreeRecords(from, to) {
     const { ctx } = this.treeLayer;
     const L = this.layout;
-    const d = this.store.data;
     const edge = STYLE[EventKind.NODE_ADDED];
     const node = Math.max(1, Math.round(L.px(edge.size)));
     // one path per colour: O(new records) work, a handful of stroke calls
     for (let tree = 0; tree < 2; tree++) {
       ctx.beginPath();
       ctx.fillStyle = edge.colors[tree];
-      for (let i = from; i < to; i++) {
-        const o = i * STRIDE;
+      for (const [d, o0, o1] of this.store.spans(from, to)) for (let o = o0; o < o1; o += STRIDE) {
         if (d[o] !== EventKind.NODE_ADDED || this.treeGroup(d[o + 1]) !== tree) continue;
         const x = L.sx(d[o + 4]), y = L.sy(d[o + 5]);
         if (d[o + 3] >= 0) {
@@ -223,8 +219,7 @@ export class View {
     }
     if (this.options.showExhausted) {
       const pts = [];
-      for (let i = from; i < to; i++) {
-        const o = i * STRIDE;
+      for (const [d, o0, o1] of this.store.spans(from, to)) for (let o = o0; o < o1; o += STRIDE) {
         if (d[o] === EventKind.EXHAUSTED) pts.push(d[o + 4], d[o + 5]);
       }
       drawExhausted(ctx, L, pts);
@@ -289,14 +284,12 @@ export class View {
   drawUnder(from, to) {
     const { ctx } = this.underLayer;
     const L = this.layout;
-    const d = this.store.data;
     const { showAccepted, showRejected, showTries } = this.options;
     const rej = STYLE[EventKind.SAMPLE_REJECTED];
     const tries = STYLE[EventKind.SAMPLE_TRY];
     const rs = Math.max(1, Math.round(L.px(rej.size)));
     const ts = Math.max(1, Math.round(L.px(tries.size)));
-    for (let i = from; i < to; i++) {
-      const o = i * STRIDE;
+    for (const [d, o0, o1] of this.store.spans(from, to)) for (let o = o0; o < o1; o += STRIDE) {
       const kind = d[o];
       if (kind === EventKind.SAMPLE) {
         if (this.pendingSample && showAccepted) this.drawAccepted(ctx, this.pendingSample);
@@ -328,12 +321,10 @@ export class View {
     if (!this.options.showCollisions) return;
     const { ctx } = this.overLayer;
     const L = this.layout;
-    const d = this.store.data;
     const col = STYLE[EventKind.COLLISION];
     const cs = L.px(col.size);
     ctx.beginPath();
-    for (let i = from; i < to; i++) {
-      const o = i * STRIDE;
+    for (const [d, o0, o1] of this.store.spans(from, to)) for (let o = o0; o < o1; o += STRIDE) {
       if (d[o] !== EventKind.COLLISION) continue;
       const x = L.sx(d[o + 4]), y = L.sy(d[o + 5]);
       ctx.moveTo(x - cs, y - cs); ctx.lineTo(x + cs, y + cs);
@@ -395,9 +386,7 @@ export class View {
     this.redrawOver();
     this.redrawDomains();
     this.cells.redraw(this.layout, this.options);
-    const d = this.store.data;
-    for (let i = 0; i < this.store.length; i++) {
-      const o = i * STRIDE;
+    for (const [d, o0, o1] of this.store.spans(0, this.store.length)) for (let o = o0; o < o1; o += STRIDE) {
       if (d[o] === EventKind.TREES_CONNECTED || d[o] === EventKind.SOLVED) this.markers.push([d[o], d[o + 4], d[o + 5]]);
     }
     this.dirty = true;

@@ -11,6 +11,12 @@
 //   reset     {}                             drop the run (the next run starts from the seed)
 //   cancel    {}                             stop the run now; it is finished
 //   asv-solution {}                          the finished run's path as an ASV solution file
+//   debug-panic  {message}                   tests only: make the core panic (a `crashed` reply)
+//   debug-hang   {ms}                        tests only: stay busy for `ms` milliseconds without
+//                                            reading messages (a batch that never ends)
+// Any message may carry `ack: n`: the worker then replies {type: 'ack', ack: n} as soon as it reads
+// it, before doing the work (the page's watchdog, session.js, replaces a worker that does not
+// acknowledge cancel, reset, configure or load within a second).
 // Messages out {type, run, ...}:
 //   ready     {builtins, planners, eventKinds}
 //   loaded    {scenario, start, goal, space, cspace?}  normalised scenario; start/goal outlines
@@ -25,6 +31,7 @@
 //                                            millions of draws cannot swamp the page
 //   result    {result, frames: Float64Array, rawFrames: Float64Array}
 //   status    {status}
+//   ack       {ack}                          the message carrying `ack` was read
 //   asv-solution {text}
 //   error     {message}                      a bad request; the worker stays usable
 //   crashed   {message}                      the core panicked; the page must replace this worker
@@ -92,6 +99,11 @@ function loop(id) {
   });
 }
 
+/** A panic (or a trap) must reach guarded() as a crash, not be answered as a refused request. */
+function rethrowPanic(e) {
+  if (last_panic() || e instanceof WebAssembly.RuntimeError) throw e;
+}
+
 function parseError(e) {
   try { return JSON.parse(e.message); } catch { return { message: String(e.message || e), text: String(e.message || e) }; }
 }
@@ -103,6 +115,7 @@ function load(text) {
   try {
     next = new Scene(text);
   } catch (e) {
+    rethrowPanic(e);
     post({ type: 'invalid', run: runId, error: parseError(e) });
     return;
   }
@@ -135,6 +148,7 @@ function handle(msg) {
       try {
         text = import_file(String(msg.text), String(msg.name || ''));
       } catch (e) {
+        rethrowPanic(e);
         freeRun();
         runId++;
         post({ type: 'invalid', run: runId, error: parseError(e) });
@@ -150,7 +164,7 @@ function handle(msg) {
       post({ type: 'status', run: runId, status: 'idle' });
       return;
     case 'run':
-      try { ensureRun(); } catch (e) { post({ type: 'error', run: runId, message: parseError(e).text }); return; }
+      try { ensureRun(); } catch (e) { rethrowPanic(e); post({ type: 'error', run: runId, message: parseError(e).text }); return; }
       if (!running) {
         running = true;
         const id = runId;
@@ -163,7 +177,7 @@ function handle(msg) {
       return;
     case 'step': {
       running = false;
-      try { ensureRun(); } catch (e) { post({ type: 'error', run: runId, message: parseError(e).text }); return; }
+      try { ensureRun(); } catch (e) { rethrowPanic(e); post({ type: 'error', run: runId, message: parseError(e).text }); return; }
       const status = run.step(Math.max(1, msg.iterations | 0), 1e9);
       flush(status);
       return;
@@ -186,6 +200,11 @@ function handle(msg) {
     case 'debug-panic':
       debug_panic(msg.message || 'debug panic requested');
       return;
+    case 'debug-hang': { // a busy loop: the worker reads no message until it ends
+      const end = performance.now() + Math.max(0, Number(msg.ms) || 0);
+      while (performance.now() < end) { /* busy */ }
+      return;
+    }
     default:
       post({ type: 'error', run: runId, message: `unknown message type ${msg.type}` });
   }
@@ -207,6 +226,7 @@ function guarded(fn) {
 }
 
 self.onmessage = async (e) => {
+  if (e.data?.ack != null) post({ type: 'ack', ack: e.data.ack }); // read, even before the core is ready
   try {
     await ready;
   } catch (err) {

@@ -1,7 +1,9 @@
 // The benchmark page in headless chromium, driven like a person: choose a scenario, type set-ups
 // and a number of runs, run them over a pool of workers, and check the table against the native
 // CLI's `bench` for the same seeds; the plots are drawn; the OMPL log parses with a small reader;
-// cancel stops at once and keeps the page usable; a bad set-up line is named.
+// cancel stops at once and keeps the page usable; a bad set-up line is named; a cancelled run
+// reports the runs that really ran (table, caption, plot titles, exports) and eight set-ups'
+// labels do not overlap (each label's drawn box, recorded from fillText; target/page-bench-eight.png).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -144,4 +146,93 @@ test('RRT*: the best cost against time, one falling line per run, ending at the 
   const costs = report.setups[0].rows.map((r) => r.cost).sort((a, b) => a - b);
   assert.deepEqual(finals, costs);
   assert.equal(await fx.page.$eval('#plot-curves', (c) => c.hidden), false);
+});
+
+// Reproduction 8 of issue 13: a benchmark cancelled part-way reports the seeds that really ran
+// (table, caption, plot titles, exports), and eight set-ups' labels do not overlap on the plots.
+test('a cancelled benchmark reports the runs that really ran; eight set-ups\' labels do not overlap', async () => {
+  // every label the plots draw: its text, the canvas, the transform and the measured width
+  await fx.page.addInitScript(() => {
+    const C = CanvasRenderingContext2D.prototype;
+    const fill = C.fillText;
+    const clear = C.clearRect;
+    window.plotTexts = {};
+    C.clearRect = function (...a) {
+      if (this.canvas.classList.contains('plot')) window.plotTexts[this.canvas.id] = [];
+      return clear.apply(this, a);
+    };
+    C.fillText = function (text, x, y, ...rest) {
+      if (this.canvas.classList.contains('plot')) {
+        const m = this.getTransform();
+        (window.plotTexts[this.canvas.id] ||= []).push({ text, x, y, align: this.textAlign, width: this.measureText(text).width,
+          m: [m.a, m.b, m.c, m.d, m.e, m.f] });
+      }
+      return fill.call(this, text, x, y, ...rest);
+    };
+  });
+  await openBench();
+  await fx.page.fill('#workers', '2');
+  const labels = [0.02, 0.03, 0.05, 0.08, 0.1, 0.15, 0.2, 0.3].map((r, i) => [`${i % 2 ? 'connect' : 'plain rrt'} with range ${r}`, r]);
+  const setups = labels.map(([l, r], i) => `${l}: ${i % 2 ? 'rrt-connect' : 'rrt'} --range ${r}`).join('\n');
+  await runBench('narrow', setups, 400);
+  await fx.page.waitForFunction(() => Number(document.getElementById('bench-progress').value) >= 40, null, { timeout: 120000 });
+  await fx.page.click('#bench-cancel');
+  await fx.page.waitForFunction(() => window.planarium.state() === 'idle' && window.planarium.report(), null, { timeout: 10000 });
+  const report = await fx.page.evaluate(() => window.planarium.report());
+  const counts = report.setups.map((s) => s.rows.length);
+  const done = counts.reduce((a, b) => a + b, 0);
+  assert.ok(done >= 40 && done < 3200, `${done} runs done`);
+  assert.match(await fx.page.textContent('#bench-status'), new RegExp(`^Cancelled after ${done} of 3200 runs$`));
+  assert.equal(report.runs, Math.max(...counts), 'the report says the runs that ran, not the 400 asked');
+  const caption = await fx.page.textContent('#bench-caption');
+  assert.doesNotMatch(caption, /400 seeds/);
+  assert.match(caption, new RegExp(`stopped after ${done} of 3200 runs`));
+  for (const [k, s] of report.setups.entries()) {
+    if (!caption.includes('seeds per set-up')) assert.ok(caption.includes(`${s.label} ${counts[k]}`), `caption names ${s.label}'s ${counts[k]} runs`);
+  }
+  const table = await fx.page.$$eval('#bench-table tbody tr', (trs) => trs.map((tr) => tr.children[1].textContent));
+  table.forEach((cell, k) => assert.match(cell, new RegExp(`/${counts[k]}\\)$`), `table row ${k}: ${cell}`));
+  const lo = Math.min(...counts), hi = Math.max(...counts);
+  const n = lo === hi ? `${lo} runs each` : `${lo}–${hi} runs each`;
+  for (const id of ['plot-success', 'plot-time', 'plot-nodes', 'plot-checks']) {
+    assert.ok((await fx.page.getAttribute(`#${id}`, 'aria-label')).includes(n), `${id}'s title says ${n}`);
+  }
+  const json = JSON.parse(await fx.page.evaluate(() => window.planarium.exported('json')));
+  assert.equal(json.runs, hi);
+  json.setups.forEach((s, k) => assert.equal(s.summary.runs, counts[k]));
+  const ompl = await fx.page.evaluate(() => window.planarium.exported('ompl'));
+  assert.match(ompl, new RegExp(`^${hi} runs per planner$`, 'm'));
+  assert.doesNotMatch(ompl, /^400 runs per planner$/m);
+  // The labels under each plot: none overlaps another (text boxes, as drawn, tilted or not).
+  const texts = await fx.page.evaluate(() => window.plotTexts);
+  const names = labels.map(([l]) => l);
+  const isLabel = (t) => names.includes(t) || (t.endsWith('…') && names.some((l) => l.startsWith(t.slice(0, -1))));
+  const box = ({ x, y, align, width, m: [a, b, c, d, e, f] }) => {
+    const left = align === 'center' ? x - width / 2 : align === 'right' || align === 'end' ? x - width : x;
+    return [[left, y - 9], [left + width, y - 9], [left + width, y + 2], [left, y + 2]]
+      .map(([px, py]) => [a * px + c * py + e, b * px + d * py + f]);
+  };
+  const overlap = (p, q) => { // separating axis test for convex quads
+    for (const poly of [p, q]) {
+      for (let i = 0; i < 4; i++) {
+        const [x1, y1] = poly[i], [x2, y2] = poly[(i + 1) % 4];
+        const axis = [y2 - y1, x1 - x2];
+        const proj = (r) => r.map(([x, y]) => x * axis[0] + y * axis[1]);
+        const [pa, qa] = [proj(p), proj(q)];
+        if (Math.max(...pa) <= Math.min(...qa) || Math.max(...qa) <= Math.min(...pa)) return false;
+      }
+    }
+    return true;
+  };
+  for (const id of ['plot-success', 'plot-time', 'plot-nodes', 'plot-checks']) {
+    const drawn = (texts[id] || []).filter((t) => isLabel(t.text));
+    assert.equal(drawn.length, 8, `${id}: eight labels drawn`);
+    const boxes = drawn.map(box);
+    for (let i = 0; i < 8; i++) for (let j = i + 1; j < 8; j++) {
+      assert.ok(!overlap(boxes[i], boxes[j]), `${id}: "${drawn[i].text}" and "${drawn[j].text}" overlap`);
+    }
+    assert.match(await fx.page.getAttribute(`#${id}`, 'title'), /1\. plain rrt with range 0\.02\n2\. connect with range 0\.03/);
+  }
+  await fx.page.locator('#plots').screenshot({ path: join(SHOTS, 'page-bench-eight.png') });
+  console.log(`# reproduction 8: cancelled after ${done} of 3200 runs; runs per set-up ${counts.join(', ')}`);
 });

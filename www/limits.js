@@ -1,0 +1,54 @@
+// The page's own limits, in one place, each with why it has the value it has. The core has its
+// own (its ParamSpec ranges, docs/limits.md); these are what the page, its worker session and its
+// stores can hold or wait for.
+
+/**
+ * How long a worker may take to acknowledge cancel, reset, configure or load/import (the `ack`
+ * reply, posted as soon as the message is read) before it is terminated and replaced. A worker
+ * reads messages between batches of BATCH_MS (12 ms) planning, so a healthy one answers within a
+ * few tens of milliseconds even on a loaded machine; one second is long enough never to replace a
+ * healthy worker and short enough that Cancel, then Run, starts a fresh run at once.
+ */
+export const WATCHDOG_MS = 1000;
+
+/**
+ * Worker deaths (crashes and watchdog replacements) within CRASH_WINDOW_MS after which the page
+ * stops replacing the worker on its own (the `stopped` state): a scenario that crashes the core
+ * on load would otherwise be reloaded, and crash it, forever. Any user action that loads a
+ * scenario starts a fresh worker again.
+ */
+export const CRASH_LIMIT = 3;
+export const CRASH_WINDOW_MS = 10000;
+
+/**
+ * The page's ceiling on the `max_nodes` run parameter, from a memory budget. Measured in chromium
+ * (tests/js/page-recovery.test.mjs, "reproduction 7"): RRT* on narrow grown to 20,000 nodes
+ * reveals about 3 records per node (samples, rejections, nodes; 96 bytes each) and keeps 45 bytes
+ * per node in the tree mirror: 336 bytes per node in use, 388 held (chunks are allocated whole),
+ * and the JS heap grew by about 508 bytes per node. At 500 bytes per node, 1,000,000 nodes keep the
+ * page's stores near 0.5 GB, what a laptop's renderer can hold beside the worker's own copy of the
+ * trees; issue 13's 9.7 M nodes took 5.2 GB. The ceiling equals the core's own maximum for
+ * `max_nodes`, and it stays here so that the figure, and a lower ceiling if the stores ever grow,
+ * live in one place (panel fields and links are held to it: applyPageLimits).
+ */
+export const PAGE_BYTES_PER_NODE = 500;
+export const PAGE_MAX_NODES = 1000000;
+
+/**
+ * Records per chunk of the page's record store (playback.js RecordStore): 16,384 records of 12
+ * numbers are 1.5 MB. The store grows by adding chunks, never by copying what it holds, so a run of
+ * millions of records never freezes the page while the store grows.
+ */
+export const STORE_CHUNK_RECORDS = 16384;
+
+/**
+ * The registry the worker posted, with the page's ceilings applied to the run parameters (the
+ * panel and share links then refuse larger values with the parameter's range in words).
+ */
+export function applyPageLimits(registry) {
+  const clamp = (spec) => (spec.name === 'max_nodes' && spec.max > PAGE_MAX_NODES
+    ? { ...spec, max: PAGE_MAX_NODES, default: Math.min(spec.default, PAGE_MAX_NODES),
+      doc: `${spec.doc} This page holds at most ${PAGE_MAX_NODES.toLocaleString('en')} (memory).` }
+    : spec);
+  return { ...registry, run_params: (registry.run_params || []).map(clamp) };
+}
