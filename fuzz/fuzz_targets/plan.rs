@@ -18,7 +18,10 @@ fuzz_target!(|data: &[u8]| {
         if let harness::Outcome::Problem(p) = expect(harness::check_import(&doc)) {
             if let Some(r) = expect(harness::plan(*p, &budget)) {
                 if r.wall_s > budget.time_s + FUZZ_TIME_SLACK_S {
-                    panic!("hang: {} ran {:.3} s with a time limit of {} s ({:?})", r.planner, r.wall_s, budget.time_s, r.status);
+                    panic!(
+                        "hang: {} ran {:.3} s with a time limit of {} s ({:?})",
+                        r.planner, r.wall_s, budget.time_s, r.status
+                    );
                 }
             }
         }

@@ -28,18 +28,29 @@ pub fn expect<T>(r: Result<T, String>) -> T {
 /// so `scripts/fuzz.sh` can report the slowest unit of every input run, not only the corpus's.
 pub fn timed(target: &str, data: &[u8], f: impl FnOnce()) {
     static INIT: std::sync::Once = std::sync::Once::new();
-    INIT.call_once(|| harness::set_require_location(std::env::var("PLANARIUM_FUZZ_LOCATION").map_or(true, |v| v != "0")));
+    INIT.call_once(|| {
+        harness::set_require_location(
+            std::env::var("PLANARIUM_FUZZ_LOCATION").map_or(true, |v| v != "0"),
+        )
+    });
     let t = std::time::Instant::now();
     f();
     let secs = t.elapsed().as_secs_f64();
-    let Some(dir) = std::env::var_os("PLANARIUM_FUZZ_SLOWEST") else { return };
+    let Some(dir) = std::env::var_os("PLANARIUM_FUZZ_SLOWEST") else {
+        return;
+    };
     let dir = std::path::PathBuf::from(dir);
     thread_local! {
         static SLOWEST: std::cell::Cell<Option<f64>> = const { std::cell::Cell::new(None) };
     }
     let stats = dir.join(format!("{target}.slowest.txt"));
     let best = SLOWEST.with(|s| {
-        s.get().unwrap_or_else(|| std::fs::read_to_string(&stats).ok().and_then(|t| t.split_whitespace().next()?.parse().ok()).unwrap_or(0.0))
+        s.get().unwrap_or_else(|| {
+            std::fs::read_to_string(&stats)
+                .ok()
+                .and_then(|t| t.split_whitespace().next()?.parse().ok())
+                .unwrap_or(0.0)
+        })
     });
     if secs > best {
         SLOWEST.with(|s| s.set(Some(secs)));
