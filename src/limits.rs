@@ -19,6 +19,11 @@ pub const MAX_TEXT_BYTES: usize = 16 << 20;
 /// overflows to infinity.
 pub const MAX_MAGNITUDE: Real = 1e9;
 
+/// Smallest size of a number other than 0: the exact predicates (`robust::orient2d`) are exact
+/// as long as products of coordinate differences do not underflow, which holds for numbers between
+/// 1e-100 and 1e9 (the smallest difference of two such is about 1e-116).
+pub const MIN_MAGNITUDE: Real = 1e-100;
+
 /// Obstacles in one scenario (issue 15 makes state checks with this many fast).
 pub const MAX_OBSTACLES: usize = 100_000;
 
@@ -70,6 +75,7 @@ pub fn to_json() -> serde_json::Value {
     serde_json::json!({
         "max_text_bytes": MAX_TEXT_BYTES,
         "max_magnitude": MAX_MAGNITUDE,
+        "min_magnitude": MIN_MAGNITUDE,
         "max_obstacles": MAX_OBSTACLES,
         "max_polygon_vertices": MAX_POLYGON_VERTICES,
         "max_total_vertices": MAX_TOTAL_VERTICES,

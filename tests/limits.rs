@@ -286,3 +286,14 @@ fn the_benchmark_pages_set_ups_are_capped_and_their_errors_cut() {
     let e = planarium::run::bench::parse_setup_lines(&format!("rrt --{} 1", "x".repeat(100_000))).unwrap_err();
     assert!(e.chars().count() < 400, "{} characters", e.len());
 }
+
+#[test]
+fn numbers_too_small_for_exact_predicates_are_refused() {
+    let mut v = builtin_value("open-field");
+    v["obstacles"][0]["rect"][1] = json!(5e-324);
+    let e = problem_error(&v);
+    assert_eq!(e.path, "obstacles[0].rect[1]");
+    assert!(e.message.contains("too small"), "{e}");
+    v["obstacles"][0]["rect"][1] = json!(0.0);
+    assert!(Scenario::from_value(&v).is_ok(), "0 itself is fine");
+}

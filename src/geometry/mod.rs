@@ -7,6 +7,7 @@
 
 mod aabb;
 pub mod circle;
+pub mod exact;
 pub mod polygon;
 pub mod segment;
 mod shape;

@@ -1,27 +1,56 @@
 //! Point/polygon and segment/polygon predicates for simple polygons, convex or not, either winding.
+//!
+//! Exact: every decision is the sign of an [`orient`] test (no intersection point is ever
+//! constructed), so a point on an edge is on it, and a segment that grazes a vertex grazes it.
 
-use super::segment::{contains_segment_point, intersect_segment_segment};
+use super::segment::{contains_segment_point, intersect_segment_segment, orient, orient_sign};
 use crate::math::Vec2;
 
-/// Whether `p` lies in the closed polygon `poly` (boundary included).
-pub fn contains_polygon_point(poly: &[Vec2], p: Vec2) -> bool {
+/// Where a point lies with respect to a closed polygon.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Location {
+    /// Outside the closed polygon.
+    Outside,
+    /// On an edge or a vertex.
+    Boundary,
+    /// Strictly inside.
+    Inside,
+}
+
+/// Where `p` lies with respect to the polygon `poly` (exact; crossing number with orientation
+/// tests instead of constructed crossings).
+pub fn locate_polygon_point(poly: &[Vec2], p: Vec2) -> Location {
     let n = poly.len();
     let mut inside = false;
     let mut j = n - 1;
     for i in 0..n {
         let (a, b) = (poly[j], poly[i]);
-        if contains_segment_point(a, b, p) {
-            return true;
-        }
         if (b.y > p.y) != (a.y > p.y) {
-            let x = b.x + (p.y - b.y) * (a.x - b.x) / (a.y - b.y);
-            if p.x < x {
+            // The edge spans `p`'s horizontal line (half-open in y): `p` is on it, or left of
+            // where it crosses (the ray to +x crosses it), or right of it.
+            let o = orient(a, b, p);
+            if o == 0.0 {
+                return Location::Boundary;
+            }
+            if (o > 0.0) == (b.y > a.y) {
                 inside = !inside;
             }
+        } else if (a.y == p.y || b.y == p.y) && contains_segment_point(a, b, p) {
+            // A horizontal edge, or an end point on `p`'s line: the only other ways to hold `p`.
+            return Location::Boundary;
         }
         j = i;
     }
-    inside
+    if inside {
+        Location::Inside
+    } else {
+        Location::Outside
+    }
+}
+
+/// Whether `p` lies in the closed polygon `poly` (boundary included).
+pub fn contains_polygon_point(poly: &[Vec2], p: Vec2) -> bool {
+    locate_polygon_point(poly, p) != Location::Outside
 }
 
 /// Whether the closed segment `a b` meets the closed polygon `poly`.
@@ -40,35 +69,75 @@ pub fn intersect_segment_polygon(a: Vec2, b: Vec2, poly: &[Vec2]) -> bool {
 
 /// Whether `p` lies strictly inside the polygon (not on its boundary).
 pub fn strictly_contains_polygon_point(poly: &[Vec2], p: Vec2) -> bool {
-    let n = poly.len();
-    (0..n).all(|i| !contains_segment_point(poly[i], poly[(i + 1) % n], p)) && contains_polygon_point(poly, p)
+    locate_polygon_point(poly, p) == Location::Inside
 }
 
-/// Whether the segment `a b` meets the polygon's interior (touching the boundary allowed): the
-/// segment is cut where it meets the boundary, and each piece's midpoint is tested.
-pub fn interior_meets_segment_polygon(poly: &[Vec2], a: Vec2, b: Vec2) -> bool {
+/// The polygon's winding, exactly: 1 counter-clockwise, -1 clockwise (0 only for a degenerate
+/// polygon). The turn at the lowest-leftmost vertex has the polygon's orientation.
+pub fn winding(poly: &[Vec2]) -> i8 {
     let n = poly.len();
-    let d = b - a;
-    let mut ts = vec![0.0, 1.0];
+    let k = (0..n).min_by(|&i, &j| poly[i].x.total_cmp(&poly[j].x).then(poly[i].y.total_cmp(&poly[j].y))).unwrap_or(0);
+    orient_sign(poly[(k + n - 1) % n], poly[k], poly[(k + 1) % n])
+}
+
+/// Whether the direction from vertex `v` (edges `p → v → q`, polygon winding `w`) toward `t`
+/// points strictly into the polygon's interior.
+#[inline]
+fn enters_at_vertex(p: Vec2, v: Vec2, q: Vec2, t: Vec2, w: i8) -> bool {
+    // orient(p, v, t) has the sign of (v − p) × (t − v): the direction against the incoming edge.
+    let left_in = w * orient_sign(p, v, t) > 0;
+    let left_out = w * orient_sign(v, q, t) > 0;
+    match w * orient_sign(p, v, q) {
+        1 => left_in && left_out,
+        -1 => left_in || left_out,
+        _ => left_in,
+    }
+}
+
+/// Whether the closed segment `a b` meets the polygon's interior (touching the boundary allowed),
+/// exactly. A proper crossing of an edge meets it. Otherwise the boundary meets the segment only
+/// at *contact points* (a vertex on the segment, or an end of the segment on an edge) and along
+/// collinear overlaps; every piece of the segment between them starts at a contact point, and it
+/// lies in the interior exactly when its direction there points into the interior (the wedge
+/// between the vertex's edges, or the inner side of the edge). With no contact at all, the
+/// segment is wholly inside or wholly outside.
+pub fn interior_meets_segment_polygon(poly: &[Vec2], a: Vec2, b: Vec2) -> bool {
+    if a == b {
+        return strictly_contains_polygon_point(poly, a);
+    }
+    let n = poly.len();
+    let w = winding(poly);
+    let mut contact = false;
     for i in 0..n {
-        let (c, e) = (poly[i], poly[(i + 1) % n]);
-        if !intersect_segment_segment(a, b, c, e) {
-            continue;
+        let (c, e, f) = (poly[i], poly[(i + 1) % n], poly[(i + 2) % n]);
+        let (d1, d2) = (orient_sign(c, e, a), orient_sign(c, e, b));
+        let (d3, d4) = (orient_sign(a, b, c), orient_sign(a, b, e));
+        if d1 * d2 < 0 && d3 * d4 < 0 {
+            return true;
         }
-        let s = e - c;
-        let den = d.cross(s);
-        if den != 0.0 {
-            ts.push(((c - a).cross(s) / den).clamp(0.0, 1.0));
-        } else {
-            // Collinear overlap: cut at the edge's end points, projected on the segment.
-            let l2 = d.norm2();
-            for p in [c, e] {
-                ts.push(((p - a).dot(d) / l2).clamp(0.0, 1.0));
+        // An end of the segment inside the edge `c e` (not at a vertex): the segment leaves it
+        // toward the other end, into the interior when that end is on the inner side.
+        if d1 == 0 && a != c && a != e && contains_segment_point(c, e, a) {
+            contact = true;
+            if w * d2 > 0 {
+                return true;
+            }
+        }
+        if d2 == 0 && b != c && b != e && contains_segment_point(c, e, b) {
+            contact = true;
+            if w * d1 > 0 {
+                return true;
+            }
+        }
+        // The vertex `e` on the segment: the segment leaves it toward either end.
+        if d4 == 0 && contains_segment_point(a, b, e) {
+            contact = true;
+            if (e != a && enters_at_vertex(c, e, f, a, w)) || (e != b && enters_at_vertex(c, e, f, b, w)) {
+                return true;
             }
         }
     }
-    ts.sort_by(f64::total_cmp);
-    ts.windows(2).any(|w| w[1] > w[0] && strictly_contains_polygon_point(poly, a + d.scale(0.5 * (w[0] + w[1]))))
+    !contact && strictly_contains_polygon_point(poly, a)
 }
 
 /// Whether the closed polygons `p` and `q` share a point.

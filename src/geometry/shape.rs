@@ -1,6 +1,8 @@
-use super::circle::intersect_segment_circle;
+use std::cmp::Ordering;
+
+use super::circle::{interior_meets_segment_circle, intersect_segment_circle, point_disc_cmp};
 use super::polygon::{contains_polygon_point, interior_meets_segment_polygon, intersect_segment_polygon};
-use super::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment, intersect_segment_segment, orient};
+use super::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment_apart, intersect_segment_segment, orient_sign};
 use super::Aabb;
 use crate::math::{MinMax, Real, Vec2};
 
@@ -39,11 +41,12 @@ impl Shape {
     }
 
     /// Whether the closed shape contains `p`.
+    #[inline(always)]
     pub fn contains_point(&self, p: Vec2) -> bool {
         match self {
             Shape::Rect(b) => b.contains(p),
             Shape::Polygon(poly) => contains_polygon_point(poly, p),
-            Shape::Circle(c, r) => (p - *c).norm2() <= r * r,
+            Shape::Circle(c, r) => point_disc_cmp(p, *c, *r) != Ordering::Greater,
             Shape::Segment(a, b) => contains_segment_point(*a, *b, p),
         }
     }
@@ -77,10 +80,10 @@ impl Shape {
         match self {
             Shape::Rect(r) => {
                 let c = [r.min, Vec2::new(r.max.x, r.min.y), r.max, Vec2::new(r.min.x, r.max.y)];
-                (0..4).for_each(|i| best = best.at_most(distance_segment_segment(a, b, c[i], c[(i + 1) % 4])));
+                (0..4).for_each(|i| best = best.at_most(distance_segment_segment_apart(a, b, c[i], c[(i + 1) % 4])));
             }
-            Shape::Polygon(p) => (0..p.len()).for_each(|i| best = best.at_most(distance_segment_segment(a, b, p[i], p[(i + 1) % p.len()]))),
-            Shape::Segment(c, d) => best = best.at_most(distance_segment_segment(a, b, *c, *d)),
+            Shape::Polygon(p) => (0..p.len()).for_each(|i| best = best.at_most(distance_segment_segment_apart(a, b, p[i], p[(i + 1) % p.len()]))),
+            Shape::Segment(c, d) => best = best.at_most(distance_segment_segment_apart(a, b, *c, *d)),
             Shape::Circle(c, r) => best = best.at_most(distance2_point_segment(*c, a, b).sqrt() - r),
         }
         best.at_least(0.0)
@@ -92,26 +95,18 @@ impl Shape {
     pub fn interior_meets_segment(&self, a: Vec2, b: Vec2) -> bool {
         match self {
             Shape::Rect(r) => {
-                let (mut lo, mut hi) = (Real::NEG_INFINITY, Real::INFINITY);
-                for (p, d, min, max) in [(a.x, b.x - a.x, r.min.x, r.max.x), (a.y, b.y - a.y, r.min.y, r.max.y)] {
-                    if d == 0.0 {
-                        if !(p > min && p < max) {
-                            return false;
-                        }
-                    } else {
-                        let (t0, t1) = ((min - p) / d, (max - p) / d);
-                        lo = lo.at_least(t0.at_most(t1));
-                        hi = hi.at_most(t0.at_least(t1));
-                    }
+                if !(r.min.x < r.max.x && r.min.y < r.max.y) {
+                    return false; // a flat rectangle has no interior
                 }
-                lo < hi && lo < 1.0 && hi > 0.0
+                let c = [r.min, Vec2::new(r.max.x, r.min.y), r.max, Vec2::new(r.min.x, r.max.y)];
+                interior_meets_segment_polygon(&c, a, b)
             }
             Shape::Polygon(poly) => interior_meets_segment_polygon(poly, a, b),
-            Shape::Circle(c, r) => distance2_point_segment(*c, a, b) < r * r,
+            Shape::Circle(c, r) => interior_meets_segment_circle(a, b, *c, *r),
             Shape::Segment(c, d) => {
-                let (d1, d2) = (orient(*c, *d, a), orient(*c, *d, b));
-                let (d3, d4) = (orient(a, b, *c), orient(a, b, *d));
-                d1 * d2 < 0.0 && d3 * d4 < 0.0
+                let (d1, d2) = (orient_sign(*c, *d, a), orient_sign(*c, *d, b));
+                let (d3, d4) = (orient_sign(a, b, *c), orient_sign(a, b, *d));
+                d1 * d2 < 0 && d3 * d4 < 0
             }
         }
     }
@@ -129,7 +124,7 @@ impl Shape {
         let mut best = cap;
         let mut edge = |a: Vec2, b: Vec2| {
             for i in 0..n {
-                best = best.at_most(distance_segment_segment(a, b, poly[i], poly[(i + 1) % n]));
+                best = best.at_most(distance_segment_segment_apart(a, b, poly[i], poly[(i + 1) % n]));
             }
         };
         match self {

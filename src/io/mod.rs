@@ -36,7 +36,7 @@ pub fn detect(text: &str) -> Format {
 /// has no name of its own.
 pub fn import(text: &str, name: &str) -> Result<Scenario, ScenarioError> {
     if let Some(why) = crate::limits::text_too_large(text) {
-        return Err(ScenarioError::at("", why));
+        return Err(ScenarioError::document(why));
     }
     match detect(text) {
         Format::Scenario => Scenario::from_json(text),

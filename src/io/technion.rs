@@ -15,13 +15,13 @@ use serde_json::{json, Value};
 pub const LINKS: [f64; 4] = [80.0, 70.0, 40.0, 40.0];
 
 fn key<'a>(map: &'a serde_json::Map<String, Value>, k: &str) -> Result<&'a Value, ScenarioError> {
-    map.get(k).ok_or_else(|| ScenarioError::at("", format!("a Technion map needs the key \"{k}\"")))
+    map.get(k).ok_or_else(|| ScenarioError::at(k, "is missing (a Technion map needs it)"))
 }
 
 /// Read a Technion map as a scenario; `name` (the file's name) becomes part of its title.
 pub fn import_map(text: &str, name: &str) -> Result<Scenario, ScenarioError> {
     let v: Value = serde_json::from_str(text).map_err(|e| ScenarioError::syntax(&e))?;
-    let map = v.as_object().ok_or_else(|| ScenarioError::at("", "a Technion map is a JSON object"))?;
+    let map = v.as_object().ok_or_else(|| ScenarioError::document("a Technion map is a JSON object"))?;
     for k in map.keys() {
         if !["WIDTH", "HEIGHT", "OBSTACLES", "START", "GOAL", "INSPECTION_POINTS"].contains(&k.as_str()) {
             return Err(ScenarioError::at(crate::limits::cut(k, 100), "unknown key in a Technion map"));

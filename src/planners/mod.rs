@@ -111,6 +111,11 @@ pub trait Planner {
     fn coverage(&self) -> Option<Real> {
         None
     }
+    /// Whether the next step would add more nodes than `Context::nodes_left` allows (a planner
+    /// that adds several at once): the session then stops at its node limit.
+    fn out_of_nodes(&self) -> bool {
+        false
+    }
     /// For planners that can conclude "no path" by their method (cell decomposition, potential
     /// fields): why they gave up. The session stops with [`Status::NoPath`](crate::status::Status)
     /// and reports the reason.

@@ -124,7 +124,7 @@ impl Session {
             Some(Status::TimeLimit)
         } else if self.iterations >= l.iterations {
             Some(Status::IterationLimit)
-        } else if self.planner.node_count() >= l.nodes {
+        } else if self.planner.node_count() >= l.nodes || self.planner.out_of_nodes() {
             Some(Status::NodeLimit)
         } else {
             None
@@ -143,6 +143,7 @@ impl Session {
         // The time limit also holds inside an iteration's long loops (and smoothing after it).
         self.problem.si.set_deadline(Deadline::in_ms(self.limits.time_ms - base));
         let mut done = 0;
+        let (mut every, mut last_look) = (16, 0.0);
         while done < max_iterations {
             if let Some(s) = self.limits_status() {
                 self.stop(s);
@@ -181,13 +182,19 @@ impl Session {
                 self.status = Status::NoPath;
                 return self.status;
             }
-            // Reading the clock costs more than a cheap iteration: look every 16.
-            if done % 16 == 0 {
+            // Reading the clock costs more than a cheap iteration: look every 16, or after every
+            // iteration once 16 of them took more than an eighth of the batch (so a batch of slow
+            // iterations overshoots by one iteration, not by fifteen).
+            if done % every == 0 {
                 let spent = begin.elapsed().as_secs_f64() * 1000.0;
                 self.elapsed_ms = base + spent;
                 if spent >= max_ms {
                     break;
                 }
+                if spent - last_look > max_ms / 8.0 {
+                    every = 1;
+                }
+                last_look = spent;
             }
         }
         self.elapsed_ms = base + begin.elapsed().as_secs_f64() * 1000.0;

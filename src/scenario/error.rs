@@ -18,6 +18,10 @@ impl ScenarioError {
     pub fn syntax(e: &serde_json::Error) -> Self {
         ScenarioError { path: String::new(), message: format!("invalid JSON: {e}"), line: Some(e.line()), column: Some(e.column()) }
     }
+    /// An error about the document as a whole (not an object, too large): at line 1, column 1.
+    pub fn document(message: impl Into<String>) -> Self {
+        ScenarioError { path: String::new(), message: message.into(), line: Some(1), column: Some(1) }
+    }
     /// An error at a JSON path.
     pub fn at(path: impl Into<String>, message: impl Into<String>) -> Self {
         ScenarioError { path: path.into(), message: message.into(), line: None, column: None }

@@ -39,6 +39,8 @@ impl<'a> Obj<'a> {
     fn new(path: &str, v: &'a Value) -> Result<Self> {
         match v {
             Value::Object(map) => Ok(Obj { path: path.to_string(), map, used: Vec::new() }),
+            // The document itself: it starts at line 1, column 1.
+            other if path.is_empty() => Err(ScenarioError::document(format!("must be an object, found {}", describe(other)))),
             other => Err(ScenarioError::at(path, format!("must be an object, found {}", describe(other)))),
         }
     }
@@ -46,9 +48,10 @@ impl<'a> Obj<'a> {
         self.used.push(key);
         self.map.get(key).map(|v| (v, join(&self.path, key)))
     }
+    /// A required key; when it is missing, the error's path is where it belongs (`robot.kind`).
     fn req(&mut self, key: &'static str) -> Result<(&'a Value, String)> {
-        let path = self.path.clone();
-        self.get(key).ok_or_else(|| ScenarioError::at(path, format!("missing required key \"{key}\"")))
+        let path = join(&self.path, key);
+        self.get(key).ok_or_else(|| ScenarioError::at(path, "is missing (a required key)"))
     }
     /// Every key not read is an unknown key: almost always a typo.
     fn finish(self) -> Result<()> {
@@ -66,9 +69,12 @@ impl<'a> Obj<'a> {
     }
 }
 
-/// A finite number within [`limits::MAX_MAGNITUDE`].
+/// A finite number within [`limits::MAX_MAGNITUDE`], and 0 or at least [`limits::MIN_MAGNITUDE`].
 fn number(v: &Value, path: &str) -> Result<Real> {
     match v.as_f64() {
+        Some(x) if x != 0.0 && x.abs() < limits::MIN_MAGNITUDE => {
+            Err(ScenarioError::at(path, format!("{x:e} is too small: numbers other than 0 must be at least 1e-100 in size")))
+        }
         Some(x) if x.is_finite() && x.abs() <= limits::MAX_MAGNITUDE => Ok(x),
         Some(x) => Err(ScenarioError::at(path, format!("{x:e} is too large: numbers must lie between -1e9 and 1e9"))),
         None => Err(ScenarioError::at(path, format!("must be a number, found {}", describe(v)))),
@@ -205,7 +211,7 @@ fn positive(o: &mut Obj, key: &'static str, default: Option<Real>) -> Result<Rea
             }
             Ok(x)
         }
-        None => default.ok_or_else(|| ScenarioError::at(o.path.clone(), format!("missing required key \"{key}\""))),
+        None => default.ok_or_else(|| ScenarioError::at(join(&o.path, key), "is missing (a required key)")),
     }
 }
 
@@ -325,7 +331,7 @@ fn inspection(v: &Value, path: &str) -> Result<Inspection> {
 
 fn planner(v: &Value, path: &str) -> Result<PlannerDefaults> {
     let map = v.as_object().ok_or_else(|| ScenarioError::at(path, format!("must be an object, found {}", describe(v))))?;
-    let name = string(map.get("name").ok_or_else(|| ScenarioError::at(path, "missing required key \"name\""))?, &join(path, "name"))?;
+    let name = string(map.get("name").ok_or_else(|| ScenarioError::at(join(path, "name"), "is missing (a required key)"))?, &join(path, "name"))?;
     let spec = crate::planners::find(&name)
         .ok_or_else(|| ScenarioError::at(join(path, "name"), format!("unknown planner \"{}\" (known: {})", limits::cut(&name, 100), crate::planners::names().join(", "))))?;
     let seed = match map.get("seed") {
@@ -346,7 +352,7 @@ impl Scenario {
     /// becomes a [`Problem`](crate::problem::Problem).)
     pub fn from_json(text: &str) -> Result<Scenario> {
         if let Some(why) = limits::text_too_large(text) {
-            return Err(ScenarioError::at("", why));
+            return Err(ScenarioError::document(why));
         }
         let value: Value = serde_json::from_str(text).map_err(|e| ScenarioError::syntax(&e))?;
         Scenario::from_value(&value)
@@ -440,7 +446,7 @@ impl Scenario {
             None => None,
         };
         if goal.is_none() && inspection.is_none() {
-            return Err(ScenarioError::at("", "missing required key \"goal\" (only an inspection task may omit it)"));
+            return Err(ScenarioError::at("goal", "is missing (only an inspection task may omit it)"));
         }
         let planner = match o.get("planner") {
             Some((v, p)) => Some(planner(v, &p)?),

@@ -43,7 +43,7 @@ fn errors_name_their_json_path() {
     assert_eq!(err(r#"{"bounds": [0,0,1,1], "robot": {"kind": "point", "size": 2}, "start": [0.1,0.1], "goal": [0.2,0.2]}"#).split(':').next().unwrap(), "robot.size");
     assert_eq!(err(r#"{"bounds": [0,0,1,1], "robot": {"kind": "tank"}, "start": [0.1,0.1], "goal": [0.2,0.2]}"#), "robot.kind: unknown robot kind \"tank\" (use point, rigid, arm or asv)");
     assert_eq!(err(r#"{"bounds": [1,0,0,1], "robot": {"kind": "point"}, "start": [0.1,0.1], "goal": [0.2,0.2]}"#), "bounds: needs xmin < xmax and ymin < ymax");
-    assert_eq!(err(r#"{"bounds": [0,0,1,1], "robot": {"kind": "point"}, "start": [0.1,0.1]}"#), "missing required key \"goal\" (only an inspection task may omit it)");
+    assert_eq!(err(r#"{"bounds": [0,0,1,1], "robot": {"kind": "point"}, "start": [0.1,0.1]}"#), "goal: is missing (only an inspection task may omit it)");
     assert_eq!(err(&with(r#", "planner": {"name": "rrt", "goal_bias": 2}"#)), "planner.goal_bias: must be between 0 and 1");
     assert!(err(&with(r#", "planner": {"name": "prm"}"#)).starts_with("planner.name: unknown planner \"prm\""));
 }

@@ -1,7 +1,9 @@
 //! An independent checker of paths, written apart from the crate's geometry: its own point and
-//! polygon tests (winding numbers, parametric intersections, Liang–Barsky clipping) on the
-//! scenario's numbers, and motions sampled twice as finely as the planner's resolution; point
-//! robots' motions are also checked exactly.
+//! polygon tests (winding numbers, orientation-sign intersections, a separating-axis box test) on
+//! the scenario's numbers, and motions sampled twice as finely as the planner's resolution; point
+//! robots' motions are also checked exactly. Its orientation signs come straight from
+//! `robust::orient2d` (exact, as the crate's are, but not through the crate's code), so segment,
+//! box and polygon decisions are exact; disc tests compare an `f64` distance and are not.
 #![allow(dead_code)]
 
 use planarium::scenario::{ObstacleSpec, RobotSpec, Scenario};
@@ -9,17 +11,13 @@ use planarium::scenario::{ObstacleSpec, RobotSpec, Scenario};
 /// A point.
 pub type P = (f64, f64);
 
+/// The exact orientation sign of `o, a, b` (> 0 counter-clockwise), as an `f64`.
 pub fn cross(o: P, a: P, b: P) -> f64 {
-    (a.0 - o.0) * (b.1 - o.1) - (a.1 - o.1) * (b.0 - o.0)
+    robust::orient2d(robust::Coord { x: o.0, y: o.1 }, robust::Coord { x: a.0, y: a.1 }, robust::Coord { x: b.0, y: b.1 })
 }
 
 fn on_segment(a: P, b: P, p: P) -> bool {
-    let len = ((b.0 - a.0).powi(2) + (b.1 - a.1).powi(2)).sqrt();
-    cross(a, b, p).abs() <= 1e-12 * len.max(1.0)
-        && p.0 >= a.0.min(b.0) - 1e-12
-        && p.0 <= a.0.max(b.0) + 1e-12
-        && p.1 >= a.1.min(b.1) - 1e-12
-        && p.1 <= a.1.max(b.1) + 1e-12
+    cross(a, b, p) == 0.0 && p.0 >= a.0.min(b.0) && p.0 <= a.0.max(b.0) && p.1 >= a.1.min(b.1) && p.1 <= a.1.max(b.1)
 }
 
 /// Winding number of `poly` around `p` (nonzero: inside), boundary counted as inside.
@@ -42,17 +40,15 @@ pub fn in_polygon(poly: &[P], p: P) -> bool {
     w != 0
 }
 
-/// Parametric intersection of closed segments.
+/// Whether closed segments meet: each one's ends not strictly on one side of the other's line,
+/// or (all four collinear) overlapping bounding boxes.
 fn segments_meet(a: P, b: P, c: P, d: P) -> bool {
-    let r = (b.0 - a.0, b.1 - a.1);
-    let s = (d.0 - c.0, d.1 - c.1);
-    let den = r.0 * s.1 - r.1 * s.0;
-    if den.abs() < 1e-15 {
+    let s = |x: f64| x.partial_cmp(&0.0).unwrap() as i8;
+    let (d1, d2, d3, d4) = (s(cross(c, d, a)), s(cross(c, d, b)), s(cross(a, b, c)), s(cross(a, b, d)));
+    if d1 == 0 && d2 == 0 && d3 == 0 && d4 == 0 {
         return on_segment(a, b, c) || on_segment(a, b, d) || on_segment(c, d, a) || on_segment(c, d, b);
     }
-    let t = ((c.0 - a.0) * s.1 - (c.1 - a.1) * s.0) / den;
-    let u = ((c.0 - a.0) * r.1 - (c.1 - a.1) * r.0) / den;
-    (-1e-12..=1.0 + 1e-12).contains(&t) && (-1e-12..=1.0 + 1e-12).contains(&u)
+    d1 * d2 <= 0 && d3 * d4 <= 0
 }
 
 pub fn dist_point_segment(p: P, a: P, b: P) -> f64 {
@@ -81,25 +77,14 @@ fn point_hits(o: &ObstacleSpec, p: P) -> bool {
     }
 }
 
-/// Liang–Barsky: does segment a-b meet the closed box?
+/// Separating axes: does segment a-b meet the closed box? The x and y extents overlap, and the
+/// box's corners are not all strictly on one side of the segment's line.
 fn clip_box(a: P, b: P, x0: f64, y0: f64, x1: f64, y1: f64) -> bool {
-    let (mut t0, mut t1) = (0.0f64, 1.0f64);
-    let d = (b.0 - a.0, b.1 - a.1);
-    for (p, q) in [(-d.0, a.0 - x0), (d.0, x1 - a.0), (-d.1, a.1 - y0), (d.1, y1 - a.1)] {
-        if p == 0.0 {
-            if q < 0.0 {
-                return false;
-            }
-        } else {
-            let r = q / p;
-            if p < 0.0 {
-                t0 = t0.max(r);
-            } else {
-                t1 = t1.min(r);
-            }
-        }
+    if a.0.max(b.0) < x0 || a.0.min(b.0) > x1 || a.1.max(b.1) < y0 || a.1.min(b.1) > y1 {
+        return false;
     }
-    t0 <= t1
+    let sides = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)].map(|c| cross(a, b, c));
+    !(sides.iter().all(|&v| v > 0.0) || sides.iter().all(|&v| v < 0.0))
 }
 
 fn segment_hits(o: &ObstacleSpec, a: P, b: P) -> bool {

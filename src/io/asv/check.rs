@@ -79,7 +79,11 @@ fn convex(p: &[P]) -> Result<(), String> {
 /// Whether no two non-adjacent edges of the closed polygon meet (for chains that may be concave).
 fn simple(p: &[P]) -> bool {
     let n = p.len();
-    let cross = |o: P, a: P, b: P| (a.0 - o.0) * (b.1 - o.1) - (a.1 - o.1) * (b.0 - o.0);
+    // The exact orientation sign (robust, not the crate's geometry: this checker stays independent).
+    let cross = |o: P, a: P, b: P| {
+        let d = robust::orient2d(robust::Coord { x: o.0, y: o.1 }, robust::Coord { x: a.0, y: a.1 }, robust::Coord { x: b.0, y: b.1 });
+        (d > 0.0) as i8 as Real - (d < 0.0) as i8 as Real
+    };
     for i in 0..n {
         for j in i + 2..n {
             if i == 0 && j == n - 1 {

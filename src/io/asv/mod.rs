@@ -86,6 +86,7 @@ fn numbers(line: usize, words: &[(usize, &str)], count: usize, what: &str) -> Re
     words[..count]
         .iter()
         .map(|(c, w)| match w.parse::<Real>() {
+            Ok(x) if x != 0.0 && x.abs() < crate::limits::MIN_MAGNITUDE => Err(at(line, *c, format!("{what}: {x:e} is too small: numbers other than 0 must be at least 1e-100 in size"))),
             Ok(x) if x.is_finite() && x.abs() <= crate::limits::MAX_MAGNITUDE => Ok(x),
             Ok(x) if x.is_finite() => Err(at(line, *c, format!("{what}: {x:e} is too large: numbers must lie between -1e9 and 1e9"))),
             _ => Err(at(line, *c, format!("{what}: expected a number, found \"{}\"", crate::limits::cut(w, 40)))),
@@ -134,7 +135,13 @@ pub fn import_problem(text: &str, name: &str) -> Result<Scenario, ScenarioError>
         let ys = [c[1], c[3], c[5], c[7]];
         let min = |v: [Real; 4]| v.iter().copied().fold(Real::INFINITY, Real::min);
         let max = |v: [Real; 4]| v.iter().copied().fold(Real::NEG_INFINITY, Real::max);
-        obstacles.push(ObstacleSpec::Rect([min(xs), min(ys), max(xs), max(ys)]));
+        let rect = [min(xs), min(ys), max(xs), max(ys)];
+        // A scenario's rect has an area (a wall of none is a segment): refuse what would not read
+        // back when the imported problem is saved or shared.
+        if rect[0] == rect[2] || rect[1] == rect[3] {
+            return Err(at(l, w[0].0, format!("{what} has zero width or height: its corners lie on one line")));
+        }
+        obstacles.push(ObstacleSpec::Rect(rect));
     }
     let title = if name.trim().is_empty() { "ASV problem".to_string() } else { crate::limits::cut(name, 100) };
     let area = min_area(n);

@@ -117,6 +117,8 @@ pub struct HexPotential {
     trees: Vec<Tree>,
     steps: usize,
     failure: Option<String>,
+    /// A split would have passed `max_nodes` (the run ends at its node limit).
+    out_of_nodes: bool,
 }
 
 impl HexPotential {
@@ -193,6 +195,7 @@ impl HexPotential {
             trees: Vec::new(),
             steps: 0,
             failure: None,
+            out_of_nodes: false,
             ws,
         })
     }
@@ -217,6 +220,13 @@ impl HexPotential {
         let can_split = cell.level < self.max_level && cell.radius / 2.0 >= self.min_radius;
         if split_free && can_split {
             label = CellLabel::Mixed;
+        }
+        // A split adds up to 7 cells, which count as nodes: when they may not fit under
+        // `max_nodes`, the cell goes back and the run ends at its node limit.
+        if label == CellLabel::Mixed && can_split && cx.nodes_left < 7 {
+            self.queue.push_front(i);
+            self.out_of_nodes = true;
+            return;
         }
         self.dec.cells[i].label = label;
         emit_cell(cx, &self.dec, i);
@@ -462,6 +472,9 @@ impl Planner for HexPotential {
     }
     fn gave_up(&self) -> Option<String> {
         self.failure.clone()
+    }
+    fn out_of_nodes(&self) -> bool {
+        self.out_of_nodes
     }
 }
 

@@ -25,8 +25,7 @@ pub(super) fn segment_meets_box(a: Vec2, b: Vec2, lo: Vec2, hi: Vec2) -> bool {
     if a.x.at_least(b.x) < lo.x || a.x.at_most(b.x) > hi.x || a.y.at_least(b.y) < lo.y || a.y.at_most(b.y) > hi.y {
         return false;
     }
-    let d = b - a;
-    let side = |c: Vec2| d.cross(c - a);
+    let side = |c: Vec2| crate::geometry::segment::orient(a, b, c);
     let s = [side(lo), side(Vec2::new(hi.x, lo.y)), side(hi), side(Vec2::new(lo.x, hi.y))];
     !(s.iter().all(|&v| v > 0.0) || s.iter().all(|&v| v < 0.0))
 }
