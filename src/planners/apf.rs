@@ -434,11 +434,9 @@ impl PotentialField {
             self.next.copy_from_slice(&self.goal);
             self.add_step(cx, 0);
         }
-        let tree = self.tree.as_ref().expect("the chain exists");
-        let mut path = tree.path_to(self.current);
-        if cx.si.distance(path.last().expect("the root"), &self.goal) > 0.0 {
-            path.push(self.goal.clone());
-        }
+        // Within the goal tolerance the path ends where the robot is (a jump to the goal would be
+        // a motion nobody checked).
+        let path = self.tree.as_ref().expect("the chain exists").path_to(self.current);
         cx.events.at(EventKind::Solved, 0, cx.si.project(&self.goal), &self.goal);
         path
     }

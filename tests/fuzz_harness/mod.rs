@@ -241,8 +241,15 @@ pub fn plan(problem: Problem, budget: &Budget) -> Result<Option<RunReport>, Stri
     if r.solved {
         path_frames(&s, false);
         path_frames(&s, true);
-        if s.problem().robot.kind() == "asv" {
-            let text = io::asv::solution_text(s.problem(), s.planning_path(false))?;
+        let written = match io::asv::solution_text(s.problem(), s.planning_path(false)) {
+            // With a goal tolerance the path ends in the goal region, not always within a primitive
+            // step of the exact goal the course's file must end at: saying so is right. A path
+            // with an invalid state is never right.
+            Err(e) if s.problem().goal_tolerance > 0.0 && !e.contains("invalid state") => None,
+            other => Some(other),
+        };
+        if let (true, Some(text)) = (s.problem().robot.kind() == "asv", written) {
+            let text = text?;
             let configs = io::asv::read_solution(&text).map_err(|e| {
                 format!(
                     "{}: the solution file written does not read back: {e}",

@@ -95,10 +95,9 @@ impl Planner for Rrt {
             first = false;
             let to_goal = cx.si.distance(tree.state(id), goal);
             if to_goal <= self.task.goal_tolerance {
-                let mut path = tree.path_to(id);
-                if to_goal > 0.0 {
-                    path.push(goal.to_vec());
-                }
+                // Within the tolerance, the path ends at the node: the goal region is reached, and
+                // a jump to the goal itself would be a motion nobody checked.
+                let path = tree.path_to(id);
                 cx.events.at(EventKind::Solved, 0, cx.si.project(goal), goal);
                 return Some(path);
             }

@@ -301,14 +301,11 @@ impl RrtStar {
         }
     }
 
-    /// The path to the best goal node, ending at the goal.
+    /// The path to the best goal node (within the goal tolerance; never a jump to the goal itself,
+    /// which would be a motion nobody checked).
     fn best_path(&self) -> Option<Vec<Vec<Real>>> {
-        let (g, _, to_goal) = self.best?;
-        let mut path = self.tree.as_ref()?.path_to(g);
-        if to_goal > 0.0 {
-            path.push(self.task.goal().to_vec());
-        }
-        Some(path)
+        let (g, _, _) = self.best?;
+        Some(self.tree.as_ref()?.path_to(g))
     }
 }
 
