@@ -18,6 +18,8 @@
 //! The cases run in worker processes (the ignored test `worker`, started by the test itself): a
 //! case that aborts the process (an allocation failure, which Rust cannot catch) or hangs (still
 //! running after `WATCHDOG_S` seconds) is recorded with its seed, and a new worker goes on after it.
+// Worker processes and files: native only (wasm-pack test builds every test for wasm32).
+#![cfg(not(target_arch = "wasm32"))]
 
 mod fuzz_harness;
 
