@@ -165,6 +165,10 @@ impl EventLog {
     pub fn is_empty(&self) -> bool {
         self.data.is_empty()
     }
+    /// Forget the records after the first `events` (a suspended batch's, see [`crate::journal`]).
+    pub fn truncate(&mut self, events: usize) {
+        self.data.truncate(events * STRIDE);
+    }
     /// Take every waiting record, leaving the log empty.
     pub fn drain(&mut self) -> Vec<f64> {
         std::mem::take(&mut self.data)

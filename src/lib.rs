@@ -26,6 +26,7 @@
 pub mod events;
 pub mod geometry;
 pub mod io;
+pub mod journal;
 pub mod limits;
 pub mod math;
 pub mod motion;

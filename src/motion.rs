@@ -12,7 +12,8 @@
 
 use crate::math::Real;
 use crate::space::StateSpace;
-use crate::space_info::{Deadline, SpaceInfo, CLOCK_EVERY};
+use crate::journal::Entry;
+use crate::space_info::SpaceInfo;
 
 /// A motion was found invalid (the state found is in the caller's scratch buffer).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -54,37 +55,46 @@ fn in_bisection_order<E>(n: usize, mut visit: impl FnMut(usize) -> Result<(), E>
 }
 
 /// The discrete check of the motion `a → b` in `n` steps: `b`, then the states `i/n` of the way,
-/// coarse to fine, stopping at the first invalid one, which is left in `scratch`. Returns whether
-/// all were valid, and how many states were checked. Every [`CLOCK_EVERY`] states it looks at
-/// `deadline`, and once that has passed it stops and refuses the motion.
+/// coarse to fine, stopping at the first invalid one, which is left in `scratch`. Returns how it
+/// ended and how many states it visited (all valid but the last, when one was invalid).
+///
+/// The first `skip` states in that order are taken as checked already (a check resumed by the
+/// batch journal, [`crate::journal`]): they are counted but not computed. Every 16 new states it
+/// calls `stop` with the units done; once that says so, it ends with [`Discrete::OutOfTime`],
+/// having visited (all valid) the states counted.
 #[allow(clippy::too_many_arguments)]
-pub fn check_discrete(space: &StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], deadline: Deadline, mut is_valid: impl FnMut(&[Real]) -> bool) -> (Discrete, u64) {
-    let mut checks = 1;
-    if !is_valid(b) {
-        scratch.copy_from_slice(b);
-        return (Discrete::Invalid, checks);
-    }
+pub fn check_discrete(space: &StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], skip: u64, stop: &dyn Fn(u64) -> bool, mut is_valid: impl FnMut(&[Real]) -> bool) -> (Discrete, u64) {
+    const EVERY: u64 = 16;
+    let mut visited = 0u64;
     let mut late = false;
-    let all = in_bisection_order(n, |i| {
-        space.interpolate(a, b, i as Real / n as Real, scratch);
-        checks += 1;
-        if checks % CLOCK_EVERY == 0 && deadline.passed() {
+    let mut visit = |q: Option<usize>, scratch: &mut [Real]| -> Result<(), ()> {
+        if visited < skip {
+            visited += 1;
+            return Ok(());
+        }
+        if visited > skip && (visited - skip) % EVERY == 0 && stop(EVERY) {
             late = true;
             return Err(());
         }
+        match q {
+            Some(i) => space.interpolate(a, b, i as Real / n as Real, scratch),
+            None => scratch.copy_from_slice(b),
+        }
+        visited += 1;
         if is_valid(scratch) {
             Ok(())
         } else {
             Err(())
         }
-    });
+    };
+    let all = visit(None, scratch).and_then(|()| in_bisection_order(n, |i| visit(Some(i), scratch)));
     (
         match (all, late) {
             (Ok(()), _) => Discrete::Valid,
             (Err(()), false) => Discrete::Invalid,
             (Err(()), true) => Discrete::OutOfTime,
         },
-        checks,
+        visited,
     )
 }
 
@@ -98,24 +108,42 @@ impl SpaceInfo {
     fn clearance_checked(&self, motion: Option<(&[Real], &[Real])>, q: &[Real], cap: Real) -> Real {
         self.checks.set(self.checks.get() + 1);
         // Past the deadline, a clearance of 0 refuses the motion (and the run stops).
-        if self.tick(1) {
+        if self.interrupted() {
             return 0.0;
         }
-        match motion {
-            Some((a, b)) => self.validity.motion_clearance(a, b, q, cap),
-            None => self.validity.clearance(q, cap),
-        }
-        .unwrap_or(0.0)
+        self.journalled(
+            |e| if let Entry::Clear(c) = e { Some(*c) } else { None },
+            Entry::Clear,
+            0.0,
+            || match motion {
+                Some((a, b)) => self.validity.motion_clearance(a, b, q, cap),
+                None => self.validity.clearance(q, cap),
+            }
+            .unwrap_or(0.0),
+        )
     }
 
     fn check_discrete(&self, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real]) -> Result<(), Invalid> {
-        let (outcome, checks) = self.validity.check_discrete(&self.space, a, b, n, scratch, self.deadline());
+        // A check cut short in an earlier batch resumes after the states it visited.
+        let mark = self.journal_on().then(|| self.journal.borrow().mark());
+        let skip = match self.journal_on().then(|| self.journal.borrow().peek().cloned()).flatten() {
+            Some(Entry::Partial { visited }) => {
+                self.journal.borrow_mut().next();
+                visited
+            }
+            _ => 0,
+        };
+        let (outcome, checks) = self.validity.check_discrete(&self.space, a, b, n, scratch, skip, &|units| self.fresh_work(units));
         self.count_checks(checks);
         match outcome {
             Discrete::Valid => Ok(()),
             Discrete::Invalid => Err(Invalid),
             Discrete::OutOfTime => {
-                self.out_of_time();
+                if let (Some(mark), true) = (mark, self.suspended() && !self.interrupted()) {
+                    // Resumed at this state in the next batch (in place of where it resumed).
+                    self.journal.borrow_mut().compact(mark, Entry::Partial { visited: checks }, None);
+                }
+                scratch.copy_from_slice(b);
                 Err(Invalid)
             }
         }
@@ -177,11 +205,44 @@ impl SpaceInfo {
 
 impl MotionValidator for SpaceInfo {
     fn check_motion(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Invalid> {
-        // Cut short by the deadline: refuse at once, accept nothing unchecked.
-        if self.interrupted() {
+        // Cut short by the deadline (or a suspended batch): refuse at once, accept nothing
+        // unchecked.
+        if self.stopped() {
             scratch.copy_from_slice(b);
             return Err(Invalid);
         }
+        if !self.journal_on() {
+            return self.check_motion_now(a, b, scratch);
+        }
+        // In a bounded batch: a finished check is answered from the journal, one cut short
+        // resumes where it stopped, and a check that finishes is kept as one entry.
+        let mark = self.journal.borrow().mark();
+        let done = match self.journal.borrow().peek() {
+            Some(&Entry::Motion { ok, checks, at }) => Some((ok, checks, at)),
+            _ => None,
+        };
+        if let Some((ok, checks, at)) = done {
+            self.journal.borrow_mut().next();
+            self.count_checks(checks);
+            if ok {
+                return Ok(());
+            }
+            self.journal.borrow().load(at, scratch);
+            return Err(Invalid);
+        }
+        let before = self.checks();
+        let outcome = self.check_motion_now(a, b, scratch);
+        if !self.stopped() {
+            let entry = Entry::Motion { ok: outcome.is_ok(), checks: self.checks() - before, at: 0 };
+            self.journal.borrow_mut().compact(mark, entry, outcome.is_err().then_some(&*scratch));
+        }
+        outcome
+    }
+}
+
+impl SpaceInfo {
+    /// The motion check itself.
+    fn check_motion_now(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Invalid> {
         let d = self.distance(a, b);
         // More steps than can be checked (unreachable for states in bounds: `Problem` refuses
         // such a resolution): refuse the motion rather than check it more coarsely.
@@ -189,7 +250,12 @@ impl MotionValidator for SpaceInfo {
             self.interpolate(a, b, 0.5, scratch);
             return Err(Invalid);
         };
-        match self.validity.sweep_hits(a, b) {
+        let sweep = self.journalled(|e| if let Entry::Hit(h) = e { Some(*h) } else { None }, Entry::Hit, Some(true), || self.validity.sweep_hits(a, b));
+        if self.stopped() {
+            scratch.copy_from_slice(b);
+            return Err(Invalid);
+        }
+        match sweep {
             // A robot with an exact swept test: discrete checks (the contract), then the sweep.
             Some(hit) => {
                 self.check_discrete(a, b, n, scratch)?;

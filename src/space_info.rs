@@ -2,6 +2,7 @@
 //! (OMPL's `SpaceInformation`). Planners import this, never scenario or robot types.
 
 use crate::geometry::SensorPose;
+use crate::journal::{Entry, Journal};
 use crate::math::{Real, Vec2};
 use crate::rng::Rng;
 use crate::space::StateSpace;
@@ -32,8 +33,13 @@ impl Deadline {
     }
 }
 
-/// Units of work (states checked, shortcuts tried) between two looks at the clock.
+/// Most units of work (states checked, shortcuts tried) between two looks at the clock. When a
+/// unit is slow (a state check among 100,000 obstacles), the clock is read more often: the
+/// interval halves while looks are more than [`SLOW_LOOK_MS`] apart, down to every unit.
 pub const CLOCK_EVERY: u64 = 256;
+
+/// Looks at the clock further apart than this make the interval between them shorter.
+pub const SLOW_LOOK_MS: f64 = 0.5;
 
 /// The state space, validity checker and motion resolution, with the count of state checks.
 pub struct SpaceInfo {
@@ -48,8 +54,17 @@ pub struct SpaceInfo {
     /// The run's deadline (see [`Deadline`]), and whether work was cut short by it.
     deadline: Cell<Deadline>,
     interrupted: Cell<bool>,
-    /// Units of work since the clock was last read.
+    /// Units of work since the clock was last read, the units between two reads, and the last read.
     ticks: Cell<u64>,
+    every: Cell<u64>,
+    last_look: Cell<Option<Instant>>,
+    /// The bounded batch's journal (see [`crate::journal`]), whether it is in use, when the batch
+    /// is suspended, whether it was, and the units of new work done in the batch.
+    pub(crate) journal: RefCell<Journal>,
+    journal_on: Cell<bool>,
+    suspend_at: Cell<Deadline>,
+    suspended: Cell<bool>,
+    fresh: Cell<u64>,
 }
 
 impl SpaceInfo {
@@ -64,6 +79,13 @@ impl SpaceInfo {
             deadline: Cell::new(Deadline::NONE),
             interrupted: Cell::new(false),
             ticks: Cell::new(0),
+            every: Cell::new(CLOCK_EVERY),
+            last_look: Cell::new(None),
+            journal: RefCell::new(Journal::default()),
+            journal_on: Cell::new(false),
+            suspend_at: Cell::new(Deadline::NONE),
+            suspended: Cell::new(false),
+            fresh: Cell::new(0),
         }
     }
     /// Set the deadline of the work that follows, and forget an earlier interruption.
@@ -75,31 +97,150 @@ impl SpaceInfo {
     pub fn deadline(&self) -> Deadline {
         self.deadline.get()
     }
-    /// Whether the deadline has passed (reading the clock now). Once it has, work in progress
-    /// is cut short: motion checks refuse at once, so nothing unchecked is ever accepted, and the
-    /// run stops with its time limit.
+    /// Whether work in progress must wind down, reading the clock now: the deadline has passed
+    /// (or the bounded batch was suspended). Once it has, motion checks refuse at once, so nothing
+    /// unchecked is ever accepted, and the run stops with its time limit.
     pub fn out_of_time(&self) -> bool {
-        if !self.interrupted.get() && self.deadline.get().passed() {
-            self.interrupted.set(true);
-        }
-        self.interrupted.get()
+        self.look();
+        self.stopped()
     }
     /// Whether work was cut short by the deadline (without reading the clock).
     pub fn interrupted(&self) -> bool {
         self.interrupted.get()
     }
-    /// Count `units` of work; every [`CLOCK_EVERY`] of them, read the clock. Returns whether the
-    /// deadline has passed.
+    /// Whether work in progress must wind down: the run is out of time, or the batch was
+    /// suspended (see [`crate::journal`]). Without reading the clock.
+    #[inline]
+    pub fn stopped(&self) -> bool {
+        self.interrupted.get() || self.suspended.get()
+    }
+    /// Whether the bounded batch was suspended (its iteration is thrown away and done again).
+    pub fn suspended(&self) -> bool {
+        self.suspended.get()
+    }
+    /// Count `units` of new work; every so often (see [`CLOCK_EVERY`]), read the clock. Returns
+    /// whether work in progress must wind down ([`SpaceInfo::stopped`]).
     #[inline]
     pub fn tick(&self, units: u64) -> bool {
         let t = self.ticks.get() + units;
-        if t >= CLOCK_EVERY {
+        if t >= self.every.get() {
             self.ticks.set(0);
-            self.out_of_time()
+            self.look();
         } else {
             self.ticks.set(t);
-            self.interrupted.get()
         }
+        self.stopped()
+    }
+    /// Count `units` of new work in a bounded batch (answers computed, not replayed): a batch is
+    /// suspended only after some, so every batch advances the run. Returns [`SpaceInfo::tick`]'s.
+    #[inline]
+    pub(crate) fn fresh_work(&self, units: u64) -> bool {
+        self.fresh.set(self.fresh.get() + units);
+        self.tick(units)
+    }
+    /// Journal a unit of work that fills `out` (a sensor's look, a sweep): replayed when recorded,
+    /// else computed by `compute` and kept as one entry in place of the answers it asked for.
+    /// `unit` tells its kind apart from the units it is made of.
+    pub(crate) fn journalled_bits(&self, unit: u8, out: &mut [u64], compute: impl FnOnce(&mut [u64])) {
+        if !self.journal_on.get() {
+            return compute(out);
+        }
+        let at = match self.journal.borrow().peek() {
+            Some(&Entry::Bits { unit: u, at }) if u == unit => Some(at),
+            _ => None,
+        };
+        if let Some(at) = at {
+            let mut j = self.journal.borrow_mut();
+            j.next();
+            j.load_bits(at, out);
+            return;
+        }
+        let mark = self.journal.borrow().mark();
+        compute(out);
+        if !self.stopped() {
+            let mut j = self.journal.borrow_mut();
+            j.compact_bits(mark, unit, out);
+        }
+    }
+    /// Read the clock: the run's deadline, the batch's suspension, and how often to look again.
+    fn look(&self) {
+        let now = Instant::now();
+        if !self.interrupted.get() && self.deadline.get().0.is_some_and(|t| now >= t) {
+            self.interrupted.set(true);
+        }
+        // A batch is suspended only once it has done new work, so every batch advances the run.
+        if self.journal_on.get() && !self.suspended.get() && self.fresh.get() > 0 && self.suspend_at.get().0.is_some_and(|t| now >= t) && self.journal.borrow().on() {
+            self.suspended.set(true);
+        }
+        if let Some(last) = self.last_look.get() {
+            let ms = now.saturating_duration_since(last).as_secs_f64() * 1000.0;
+            let every = self.every.get();
+            self.every.set(if ms > SLOW_LOOK_MS { (every / 2).max(1) } else if ms < SLOW_LOOK_MS / 8.0 { (every * 2).min(CLOCK_EVERY) } else { every });
+        }
+        self.last_look.set(Some(now));
+    }
+    /// Start a bounded batch: questions are journalled, and past `suspend_at` (once the batch has
+    /// done new work) the batch is suspended. See [`crate::journal`].
+    pub fn begin_batch(&self, suspend_at: Deadline) {
+        self.journal.borrow_mut().begin();
+        self.journal_on.set(true);
+        self.suspend_at.set(suspend_at);
+        self.suspended.set(false);
+        self.fresh.set(0);
+    }
+    /// End a bounded batch; returns whether it was suspended (its answers are then kept for the
+    /// next batch, which replays them).
+    pub fn end_batch(&self) -> bool {
+        let suspended = self.suspended.get() && !self.interrupted.get();
+        let mut j = self.journal.borrow_mut();
+        if suspended {
+            j.pause();
+        } else {
+            j.finish();
+        }
+        self.journal_on.set(false);
+        self.suspended.set(false);
+        self.suspend_at.set(Deadline::NONE);
+        suspended
+    }
+    /// Whether questions go through the batch journal.
+    #[inline]
+    pub(crate) fn journal_on(&self) -> bool {
+        self.journal_on.get()
+    }
+    /// Restore the state-check count (a suspended batch's checks are counted again when its
+    /// iterations are replayed).
+    pub(crate) fn set_checks(&self, n: u64) {
+        self.checks.set(n);
+    }
+    /// Answer a question through the journal: replayed when recorded, else computed (and counted
+    /// as a unit of new work), or `refuse` once the batch is suspended.
+    #[inline]
+    pub(crate) fn journalled<T: Copy>(&self, get: impl Fn(&Entry) -> Option<T>, make: impl Fn(T) -> Entry, refuse: T, compute: impl FnOnce() -> T) -> T {
+        if !self.journal_on.get() {
+            return compute();
+        }
+        let next = self.journal.borrow_mut().next();
+        if let Some(e) = next {
+            if let Some(v) = get(&e) {
+                return v;
+            }
+            self.desync();
+        }
+        if self.suspended.get() {
+            return refuse;
+        }
+        let v = compute();
+        self.journal.borrow_mut().push(make(v));
+        self.fresh_work(1);
+        v
+    }
+    /// A replayed answer was not the question asked: a planner is not deterministic. Stop
+    /// replaying (answers are computed from here) and say so in debug builds.
+    #[cold]
+    pub(crate) fn desync(&self) {
+        debug_assert!(false, "the journal's answers do not match the questions replayed");
+        self.journal.borrow_mut().mode = crate::journal::Mode::Full;
     }
     /// Numbers per state.
     #[inline]
@@ -110,7 +251,7 @@ impl SpaceInfo {
     #[inline]
     pub fn is_valid(&self, q: &[Real]) -> bool {
         self.checks.set(self.checks.get() + 1);
-        self.validity.is_valid(q)
+        self.journalled(|e| if let Entry::Valid(v) = e { Some(*v) } else { None }, Entry::Valid, false, || self.validity.is_valid(q))
     }
     /// State checks so far.
     pub fn checks(&self) -> u64 {
@@ -134,8 +275,34 @@ impl SpaceInfo {
     /// better). The checks the robot's sampler spends count as state checks.
     #[inline]
     pub fn sample(&self, rng: &mut Rng, out: &mut [Real]) {
-        let spent = self.validity.sample(&self.space, rng, out);
+        let spent = if self.journal_on.get() { self.sample_journalled(rng, out) } else { self.validity.sample(&self.space, rng, out) };
         self.checks.set(self.checks.get() + spent);
+    }
+    fn sample_journalled(&self, rng: &mut Rng, out: &mut [Real]) -> u64 {
+        let mut j = self.journal.borrow_mut();
+        if let Some(e) = j.next() {
+            if let Entry::Sample { spent, at, rng: after } = e {
+                j.load(at, out);
+                *rng = after;
+                return spent;
+            }
+            drop(j);
+            self.desync();
+        } else {
+            drop(j);
+        }
+        if self.suspended.get() {
+            // Winding down: a uniform state, unchecked (the iteration is thrown away).
+            self.space.sample_uniform(rng, out);
+            return 0;
+        }
+        let spent = self.validity.sample(&self.space, rng, out);
+        let mut j = self.journal.borrow_mut();
+        let at = j.store(out);
+        j.push(Entry::Sample { spent, at, rng: rng.clone() });
+        drop(j);
+        self.fresh_work(1);
+        spent
     }
     /// A Gaussian neighbour of `centre` (spread `sigma` × each coordinate's range) drawn the
     /// robot's own way, when it has one (OMPL's `StateSampler::sampleGaussian`); `false`: the
@@ -177,6 +344,6 @@ impl SpaceInfo {
     /// Not counted as a state check.
     #[inline]
     pub fn sees(&self, pose: &SensorPose, p: Vec2, fov: Real, range: Real) -> bool {
-        pose.in_view(p, fov, range) && self.validity.sight_clear(pose.at, p)
+        pose.in_view(p, fov, range) && self.journalled(|e| if let Entry::Sight(v) = e { Some(*v) } else { None }, Entry::Sight, false, || self.validity.sight_clear(pose.at, p))
     }
 }

@@ -13,7 +13,8 @@ pub trait StateValidity {
         self.verdict(q) == Verdict::Valid
     }
     /// The discrete check of a motion, as [`Robot::check_discrete`] describes it.
-    fn check_discrete(&self, space: &crate::space::StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], deadline: crate::space_info::Deadline) -> (crate::motion::Discrete, u64);
+    #[allow(clippy::too_many_arguments)]
+    fn check_discrete(&self, space: &crate::space::StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], skip: u64, stop: &dyn Fn(u64) -> bool) -> (crate::motion::Discrete, u64);
     /// Exact swept test of the straight motion `a → b`, when one exists (`Some(true)`: it hits).
     fn sweep_hits(&self, a: &[Real], b: &[Real]) -> Option<bool>;
     /// The workspace point a state is drawn at.
@@ -73,8 +74,8 @@ impl StateValidity for RobotInWorkspace {
     fn is_valid(&self, q: &[Real]) -> bool {
         self.robot.is_valid(&self.workspace, q)
     }
-    fn check_discrete(&self, space: &crate::space::StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], deadline: crate::space_info::Deadline) -> (crate::motion::Discrete, u64) {
-        self.robot.check_discrete(&self.workspace, space, a, b, n, scratch, deadline)
+    fn check_discrete(&self, space: &crate::space::StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], skip: u64, stop: &dyn Fn(u64) -> bool) -> (crate::motion::Discrete, u64) {
+        self.robot.check_discrete(&self.workspace, space, a, b, n, scratch, skip, stop)
     }
     fn sweep_hits(&self, a: &[Real], b: &[Real]) -> Option<bool> {
         self.robot.sweep_hits(&self.workspace, a, b)

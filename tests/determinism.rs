@@ -3,7 +3,7 @@
 //! `wasm-pack test --node`), the Node tests and the browser test check too.
 //! `PLANARIUM_BLESS=1 cargo test --test determinism` rewrites the file after a deliberate change.
 
-use planarium::run::{fingerprint, Fingerprint};
+use planarium::run::{fingerprint, fingerprint_in_batches, Fingerprint};
 use planarium::scenario::builtin;
 use serde_json::Value;
 
@@ -32,4 +32,50 @@ fn a_second_run_is_identical() {
     for case in cases() {
         assert_eq!(run(&case), run(&case));
     }
+}
+
+/// The page's worker plans in bounded batches; a batch that runs long is suspended in the middle
+/// of an iteration and replayed by the next (src/journal.rs). With batches of a few microseconds
+/// nearly every batch is suspended, and every pinned run must come out the same, bit for bit.
+#[test]
+fn runs_in_suspended_batches_match_the_pinned_fingerprints() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/golden/runs.json");
+    let want: Vec<Value> = serde_json::from_str(&std::fs::read_to_string(path).expect("tests/golden/runs.json")).unwrap();
+    let mut suspended = 0;
+    for (case, want) in cases().iter().zip(&want) {
+        let sc = builtin(case["scenario"].as_str().unwrap()).unwrap();
+        let (got, n) = fingerprint_in_batches(&sc, case["planner"].as_str().unwrap(), &case["params"], case["seed"].as_u64().unwrap(), 0.002).unwrap();
+        assert_eq!(&serde_json::to_value(&got).unwrap(), want, "{case}: {n} batches suspended");
+        suspended += u64::from(n > 0);
+    }
+    assert!(suspended * 2 > want.len() as u64, "only {suspended} of {} runs had a batch suspended: the test does not exercise the journal", want.len());
+}
+
+/// The same, beyond the pinned runs: every robot's way of checking motions (the point's exact
+/// sweep, the arm's and the rigid body's clearances, the vehicle chain's own sampler), RRT*'s
+/// rewiring, inspection's sensor sweeps, the samplers that check states, and the tree variants,
+/// each compared with the same run in one go.
+#[test]
+fn every_robot_and_planner_gives_the_same_run_in_suspended_batches() {
+    let cases = [
+        ("arm-2", "rrt-connect", serde_json::json!({})),
+        ("arm-3", "rrt", serde_json::json!({ "goal_bias": 0.2 })),
+        ("ompl-rect", "rrt-connect", serde_json::json!({})),
+        ("asv-3-easy", "rrt-connect", serde_json::json!({})),
+        ("narrow", "rrt-star", serde_json::json!({ "max_iterations": 1500 })),
+        ("technion-ip", "inspection", serde_json::json!({ "max_iterations": 300 })),
+        ("narrow", "rrt", serde_json::json!({ "sampler": "bridge", "dd_radius": 0.3, "exhausted": 3 })),
+        ("slot", "rrt-connect", serde_json::json!({ "sampler": "gaussian" })),
+        ("slot", "rrt", serde_json::json!({ "sampler": "obstacle", "exhausted": 2, "exhausted_policy": "weighted", "max_iterations": 1000 })),
+        ("hex-trap", "hex-potential", serde_json::json!({})),
+    ];
+    let mut suspended = 0;
+    for (name, planner, params) in &cases {
+        let sc = builtin(name).unwrap();
+        let whole = fingerprint(&sc, planner, params, 3).unwrap();
+        let (got, n) = fingerprint_in_batches(&sc, planner, params, 3, 0.002).unwrap();
+        assert_eq!(got, whole, "{name} {planner} {params}: {n} batches suspended");
+        suspended += u64::from(n > 0);
+    }
+    assert!(suspended as usize * 2 > cases.len(), "only {suspended} of {} runs had a batch suspended", cases.len());
 }

@@ -132,6 +132,7 @@ enum Mode {
 }
 
 /// The artificial potential field planner.
+#[derive(Clone)]
 pub struct PotentialField {
     goal: Vec<Real>,
     start: Vec<Real>,
@@ -458,6 +459,9 @@ fn clearance(si: &SpaceInfo, q: &[Real], cap: Real) -> Real {
 }
 
 impl Planner for PotentialField {
+    fn snapshot(&self) -> Box<dyn Planner> {
+        Box::new(self.clone())
+    }
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         if self.reason.is_some() {
             return None;

@@ -96,19 +96,27 @@ struct Sensor {
 
 impl Sensor {
     /// Set in `out` every point not in `skip` or `out` that the sensor sees at `q`.
+    /// (One unit of the batch journal: a bounded batch replays it without looking again.)
     fn look(&self, si: &SpaceInfo, q: &[Real], skip: &Bits, out: &mut Bits) {
-        let pose = si.sensor(q);
-        for (j, p) in self.points.iter().enumerate() {
-            if !has(skip, j) && !has(out, j) && si.sees(&pose, *p, self.fov, self.range) {
-                set(out, j);
+        si.journalled_bits(0, out, |out| {
+            let pose = si.sensor(q);
+            for (j, p) in self.points.iter().enumerate() {
+                if !has(skip, j) && !has(out, j) && si.sees(&pose, *p, self.fov, self.range) {
+                    set(out, j);
+                }
             }
-        }
+        })
     }
 
     /// Set in `out` (cleared first) every point not in `skip` that the sensor sees along the motion
     /// `a → b`, at every state at most the motion resolution apart, `b` included and `a` excluded
     /// (its own are its branch's).
+    /// (One unit of the batch journal, like [`Sensor::look`].)
     fn sweep(&self, si: &SpaceInfo, a: &[Real], b: &[Real], skip: &Bits, out: &mut Bits, buf: &mut [Real]) {
+        si.journalled_bits(1, out, |out| self.sweep_now(si, a, b, skip, out, buf))
+    }
+
+    fn sweep_now(&self, si: &SpaceInfo, a: &[Real], b: &[Real], skip: &Bits, out: &mut Bits, buf: &mut [Real]) {
         out.fill(0);
         let n = self.points.len();
         if count(skip) as usize == n {
@@ -179,6 +187,7 @@ pub fn shortcut(si: &SpaceInfo, task: &InspectionTask, path: &[Vec<Real>], attem
 }
 
 /// The inspection planner.
+#[derive(Clone)]
 pub struct Inspection {
     start: Vec<Real>,
     sensor: Sensor,
@@ -392,6 +401,9 @@ impl Inspection {
 }
 
 impl Planner for Inspection {
+    fn snapshot(&self) -> Box<dyn Planner> {
+        Box::new(self.clone())
+    }
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         let mut tree = match self.tree.take() {
             Some(t) => t,

@@ -98,6 +98,9 @@ impl Context<'_> {
 pub trait Planner {
     /// Run one iteration; `Some(path)` when it found a solution (start first, goal last).
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>>;
+    /// A copy of the planner as it stands (the session keeps one at the start of a bounded batch,
+    /// to go back to when the batch is suspended: see [`crate::journal`]).
+    fn snapshot(&self) -> Box<dyn Planner>;
     /// Nodes in all trees.
     fn node_count(&self) -> usize;
     /// The trees, for drawing and checking.

@@ -18,7 +18,6 @@ use crate::geometry::{SensorPose, Workspace};
 use crate::math::{Real, Vec2};
 use crate::scenario::RobotSpec;
 use crate::space::StateSpace;
-use crate::space_info::Deadline;
 
 /// Why a state is or is not valid.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -60,10 +59,10 @@ pub trait Robot: std::fmt::Debug {
     /// The discrete check of the motion `a → b` in `n` steps ([`crate::motion::check_discrete`]).
     /// It is entered once per motion, so that the loop calls each robot's own `is_valid`
     /// directly (in wasm, a dynamic call per state cost more than the point robot's check itself).
-    /// Past `deadline` it stops and refuses the motion.
+    /// It resumes after `skip` states and calls `stop` as it goes (see the function).
     #[allow(clippy::too_many_arguments)]
-    fn check_discrete(&self, ws: &Workspace, space: &StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], deadline: Deadline) -> (crate::motion::Discrete, u64) {
-        crate::motion::check_discrete(space, a, b, n, scratch, deadline, |q| self.is_valid(ws, q))
+    fn check_discrete(&self, ws: &Workspace, space: &StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], skip: u64, stop: &dyn Fn(u64) -> bool) -> (crate::motion::Discrete, u64) {
+        crate::motion::check_discrete(space, a, b, n, scratch, skip, stop, |q| self.is_valid(ws, q))
     }
     /// Write a random state into `out` (default: uniform over the space) and return the state
     /// checks it spent (counted like the planner's). Robots whose uniform samples are almost never

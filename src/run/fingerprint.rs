@@ -38,22 +38,33 @@ pub struct Fingerprint {
 
 /// Run `planner` with `params` (a JSON object) and `seed` on `scenario` to the end, and fingerprint it.
 pub fn fingerprint(scenario: &Scenario, planner: &str, params: &serde_json::Value, seed: u64) -> Result<Fingerprint, String> {
+    fingerprint_in_batches(scenario, planner, params, seed, f64::INFINITY).map(|(f, _)| f)
+}
+
+/// Like [`fingerprint`], but run in bounded batches of `max_ms` (as the page's worker does), which
+/// may be suspended and replayed ([`crate::journal`]); also returns how many were suspended.
+pub fn fingerprint_in_batches(scenario: &Scenario, planner: &str, params: &serde_json::Value, seed: u64, max_ms: f64) -> Result<(Fingerprint, u64), String> {
     let spec = planners::find(planner).ok_or("unknown planner")?;
     let params = Params::from_json(spec, params).map_err(|(k, e)| format!("{k}: {e}"))?;
     let problem = Problem::from_scenario(scenario).map_err(|e| e.to_string())?;
     let mut s = Session::new(problem, RunConfig { planner: planner.into(), params, seed, record_events: true })?;
-    s.run_to_end();
-    let events = fnv1a(FNV_OFFSET, &s.drain_events());
+    let mut log = Vec::new();
+    while !s.step(u64::MAX, max_ms).is_finished() {
+        log.extend(s.drain_events());
+    }
+    log.extend(s.drain_events());
+    let events = fnv1a(FNV_OFFSET, &log);
     let r = s.result();
     let mut h = FNV_OFFSET;
     for q in r.path.iter().chain(&r.smoothed) {
         h = fnv1a(h, q);
     }
-    Ok(Fingerprint {
+    let f = Fingerprint {
         events: format!("{events:016x}"),
         path: format!("{h:016x}"),
         iterations: r.stats.iterations,
         nodes: r.stats.nodes,
         checks: r.stats.checks,
-    })
+    };
+    Ok((f, s.suspensions()))
 }

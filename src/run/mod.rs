@@ -12,7 +12,7 @@ mod result;
 mod session;
 
 pub use export::{BenchReport, RunRow, SetupReport, SetupSummary};
-pub use fingerprint::{fingerprint, fnv1a, Fingerprint, FNV_OFFSET};
+pub use fingerprint::{fingerprint, fingerprint_in_batches, fnv1a, Fingerprint, FNV_OFFSET};
 pub use result::{PlanResult, SamplerSummary, Stats};
 pub use session::{RunConfig, Session};
 

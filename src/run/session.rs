@@ -25,6 +25,21 @@ pub struct RunConfig {
 /// Seed offset of the smoothing generator, so the tree does not depend on smoothing.
 const SMOOTHING_STREAM: u64 = 0x5EED_5A00_7415_0001;
 
+/// A bounded batch is suspended (its iteration thrown away and done again in the next batch, see
+/// [`crate::journal`]) once it has run this many times its budget: a batch asked for 12 ms ends
+/// within about 24 ms plus one state check, whatever one iteration costs.
+pub const SUSPEND_AFTER: f64 = 2.0;
+
+/// What a bounded batch changes, kept at its start to go back to when it is suspended.
+struct Snapshot {
+    planner: Box<dyn Planner>,
+    rng: Rng,
+    sampler: Sampler,
+    events: usize,
+    iterations: u64,
+    checks: u64,
+}
+
 /// The run's limits, read from its parameters once (they are checked before every iteration).
 #[derive(Clone, Copy, Debug)]
 struct Limits {
@@ -54,6 +69,10 @@ pub struct Session {
     smoothed: Vec<Vec<Real>>,
     /// Why the planner gave up, when it did.
     reason: Option<String>,
+    /// Bounded batches suspended so far.
+    suspensions: u64,
+    /// Iterations between two looks at the clock in a batch.
+    look_every: u64,
 }
 
 impl Session {
@@ -102,6 +121,8 @@ impl Session {
             path: Vec::new(),
             smoothed: Vec::new(),
             reason: None,
+            suspensions: 0,
+            look_every: 16,
         })
     }
 
@@ -134,16 +155,62 @@ impl Session {
     /// Run at most `max_iterations` iterations, for at most about `max_ms` milliseconds, and return
     /// the status. Limits are checked before every iteration; time spent outside `step` (paused)
     /// does not count.
+    ///
+    /// A finite `max_ms` makes the batch *bounded*: however long one iteration would take, the
+    /// batch ends within about [`SUSPEND_AFTER`] × `max_ms` (plus one state check). An iteration
+    /// still running then is thrown away and done again by the next batch, which replays the
+    /// answers already computed ([`crate::journal`]), so the run is the same as in one go, bit
+    /// for bit, only its iteration count lags until the iteration completes.
     pub fn step(&mut self, max_iterations: u64, max_ms: f64) -> Status {
         if self.status.is_finished() {
             return self.status;
         }
+        if !max_ms.is_finite() {
+            return self.run_batch(max_iterations, max_ms);
+        }
+        let si = &self.problem.si;
+        let kept = Snapshot {
+            planner: self.planner.snapshot(),
+            rng: self.rng.clone(),
+            sampler: self.sampler.clone(),
+            events: self.events.len(),
+            iterations: self.iterations,
+            checks: si.checks(),
+        };
+        si.begin_batch(Deadline::in_ms(max_ms.max(0.0) * SUSPEND_AFTER));
+        let status = self.run_batch(max_iterations, max_ms);
+        if self.problem.si.end_batch() {
+            // Suspended: back to the batch's start; the next batch replays it from the journal.
+            self.planner = kept.planner;
+            self.rng = kept.rng;
+            self.sampler = kept.sampler;
+            self.events.truncate(kept.events);
+            self.iterations = kept.iterations;
+            self.problem.si.set_checks(kept.checks);
+            self.status = Status::Running;
+            self.planning_checks = None;
+            self.path.clear();
+            self.smoothed.clear();
+            self.smoothing_ms = 0.0;
+            self.reason = None;
+            self.suspensions += 1;
+            return self.status;
+        }
+        status
+    }
+
+    /// Bounded batches suspended so far (each one's iteration was done again in the next batch).
+    pub fn suspensions(&self) -> u64 {
+        self.suspensions
+    }
+
+    fn run_batch(&mut self, max_iterations: u64, max_ms: f64) -> Status {
         let begin = Instant::now();
         let base = self.elapsed_ms;
         // The time limit also holds inside an iteration's long loops (and smoothing after it).
         self.problem.si.set_deadline(Deadline::in_ms(self.limits.time_ms - base));
         let mut done = 0;
-        let (mut every, mut last_look) = (16, 0.0);
+        let (mut last_look, mut at16) = (0.0, 0.0);
         while done < max_iterations {
             if let Some(s) = self.limits_status() {
                 self.stop(s);
@@ -161,6 +228,11 @@ impl Session {
             let found = self.planner.iterate(&mut cx);
             self.iterations += 1;
             done += 1;
+            if self.problem.si.suspended() && !self.problem.si.interrupted() {
+                // Thrown away by `step`, which goes back to the batch's start.
+                self.elapsed_ms = base + begin.elapsed().as_secs_f64() * 1000.0;
+                return self.status;
+            }
             if self.problem.si.interrupted() {
                 // The deadline cut the iteration short: whatever it found was checked in full
                 // (a refused motion is never part of a path), but the run is out of time.
@@ -183,18 +255,24 @@ impl Session {
                 return self.status;
             }
             // Reading the clock costs more than a cheap iteration: look every 16, or after every
-            // iteration once 16 of them took more than an eighth of the batch (so a batch of slow
-            // iterations overshoots by one iteration, not by fifteen).
-            if done % every == 0 {
+            // iteration once 16 of them took more than an eighth of a batch (so a batch of slow
+            // iterations overshoots by one iteration, not by fifteen), until 16 take less than
+            // a hundredth of one again. (Kept from batch to batch.)
+            if done % self.look_every == 0 {
                 let spent = begin.elapsed().as_secs_f64() * 1000.0;
                 self.elapsed_ms = base + spent;
+                if spent - last_look > max_ms / 8.0 {
+                    self.look_every = 1;
+                } else if self.look_every == 1 && done % 16 == 0 && spent - at16 < max_ms / 100.0 {
+                    self.look_every = 16;
+                }
+                if done % 16 == 0 {
+                    at16 = spent;
+                }
+                last_look = spent;
                 if spent >= max_ms {
                     break;
                 }
-                if spent - last_look > max_ms / 8.0 {
-                    every = 1;
-                }
-                last_look = spent;
             }
         }
         self.elapsed_ms = base + begin.elapsed().as_secs_f64() * 1000.0;

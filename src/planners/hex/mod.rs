@@ -86,6 +86,7 @@ enum Phase {
 }
 
 /// The planner.
+#[derive(Clone)]
 pub struct HexPotential {
     ws: Workspace,
     t: Real,
@@ -457,6 +458,9 @@ fn emit_cell(cx: &mut Context, dec: &Decomposition, i: usize) {
 }
 
 impl Planner for HexPotential {
+    fn snapshot(&self) -> Box<dyn Planner> {
+        Box::new(self.clone())
+    }
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         if self.failure.is_some() {
             return None;

@@ -43,6 +43,7 @@ pub const PARAMS: &[ParamSpec] = &[
 ];
 
 /// The RRT planner.
+#[derive(Clone)]
 pub struct Rrt {
     task: Task,
     range: Real,
@@ -72,6 +73,9 @@ impl Rrt {
 }
 
 impl Planner for Rrt {
+    fn snapshot(&self) -> Box<dyn Planner> {
+        Box::new(self.clone())
+    }
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         let opts = self.opts;
         let tree = self.tree.get_or_insert_with(|| Tree::with_options(cx, &self.task.start, 0, opts));

@@ -32,6 +32,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
 pub const PARAMS: &[ParamSpec] = &[RANGE];
 
 /// The RRT-Connect planner.
+#[derive(Clone)]
 pub struct RrtConnect {
     task: Task,
     range: Real,
@@ -64,6 +65,9 @@ impl RrtConnect {
 }
 
 impl Planner for RrtConnect {
+    fn snapshot(&self) -> Box<dyn Planner> {
+        Box::new(self.clone())
+    }
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         if self.trees.is_empty() {
             let o = self.opts;

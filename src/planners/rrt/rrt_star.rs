@@ -63,6 +63,7 @@ pub const PARAMS: &[ParamSpec] = &[
 const NO_PARENT: u32 = u32::MAX;
 
 /// The RRT* planner.
+#[derive(Clone)]
 pub struct RrtStar {
     task: Task,
     range: Real,
@@ -310,6 +311,9 @@ impl RrtStar {
 }
 
 impl Planner for RrtStar {
+    fn snapshot(&self) -> Box<dyn Planner> {
+        Box::new(self.clone())
+    }
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         if self.tree.is_none() {
             let tree = Tree::new(cx, &self.task.start, 0);
