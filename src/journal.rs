@@ -146,7 +146,7 @@ impl Journal {
     }
     /// The next recorded answer (advancing the cursor), if replaying.
     #[inline]
-    pub fn next(&mut self) -> Option<Entry> {
+    pub fn take(&mut self) -> Option<Entry> {
         if !self.replaying() {
             return None;
         }

@@ -72,7 +72,7 @@ pub fn check_discrete(space: &StateSpace, a: &[Real], b: &[Real], n: usize, scra
             visited += 1;
             return Ok(());
         }
-        if visited > skip && (visited - skip) % EVERY == 0 && stop(EVERY) {
+        if visited > skip && (visited - skip).is_multiple_of(EVERY) && stop(EVERY) {
             late = true;
             return Err(());
         }
@@ -128,7 +128,7 @@ impl SpaceInfo {
         let mark = self.journal_on().then(|| self.journal.borrow().mark());
         let skip = match self.journal_on().then(|| self.journal.borrow().peek().cloned()).flatten() {
             Some(Entry::Partial { visited }) => {
-                self.journal.borrow_mut().next();
+                self.journal.borrow_mut().take();
                 visited
             }
             _ => 0,
@@ -222,7 +222,7 @@ impl MotionValidator for SpaceInfo {
             _ => None,
         };
         if let Some((ok, checks, at)) = done {
-            self.journal.borrow_mut().next();
+            self.journal.borrow_mut().take();
             self.count_checks(checks);
             if ok {
                 return Ok(());

@@ -151,7 +151,7 @@ impl SpaceInfo {
         };
         if let Some(at) = at {
             let mut j = self.journal.borrow_mut();
-            j.next();
+            j.take();
             j.load_bits(at, out);
             return;
         }
@@ -220,7 +220,7 @@ impl SpaceInfo {
         if !self.journal_on.get() {
             return compute();
         }
-        let next = self.journal.borrow_mut().next();
+        let next = self.journal.borrow_mut().take();
         if let Some(e) = next {
             if let Some(v) = get(&e) {
                 return v;
@@ -280,7 +280,7 @@ impl SpaceInfo {
     }
     fn sample_journalled(&self, rng: &mut Rng, out: &mut [Real]) -> u64 {
         let mut j = self.journal.borrow_mut();
-        if let Some(e) = j.next() {
+        if let Some(e) = j.take() {
             if let Entry::Sample { spent, at, rng: after } = e {
                 j.load(at, out);
                 *rng = after;

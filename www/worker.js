@@ -11,6 +11,7 @@
 //   reset     {}                             drop the run (the next run starts from the seed)
 //   cancel    {}                             stop the run now; it is finished
 //   asv-solution {}                          the finished run's path as an ASV solution file
+//   ping      {}                             nothing (with `ack`: shows the worker reads messages)
 //   debug-panic  {message}                   tests only: make the core panic (a `crashed` reply)
 //   debug-hang   {ms}                        tests only: stay busy for `ms` milliseconds without
 //                                            reading messages (a batch that never ends)
@@ -53,6 +54,8 @@ let runId = 0;
 let running = false;
 let dead = false;
 let tries = { seen: 0, sent: 0 }; // the current run's raw tries: drawn by the core, sent to the page
+let stepping = null;    // a `step` in progress: {token, target} (it runs in bounded batches too)
+let stepToken = 0;
 
 const ready = init().then(() => {
   install_panic_hook();
@@ -99,6 +102,26 @@ function loop(id) {
   });
 }
 
+/**
+ * A `step` of n iterations runs in bounded batches like a run, so a slow iteration never keeps
+ * the worker from reading its messages (a batch the core suspends mid-iteration is replayed by
+ * the next: src/journal.rs). It flushes once, when the iterations are done or the run ends.
+ */
+function stepLoop(token) {
+  if (!stepping || stepping.token !== token || dead || !run) return;
+  guarded(() => {
+    const before = JSON.parse(run.stats_json()).iterations;
+    const status = run.step(Math.max(0, stepping.target - before), BATCH_MS);
+    const after = JSON.parse(run.stats_json()).iterations;
+    if (status === 'running' && after < stepping.target) {
+      setTimeout(() => stepLoop(token), 0);
+      return;
+    }
+    stepping = null;
+    flush(status);
+  });
+}
+
 /** A panic (or a trap) must reach guarded() as a crash, not be answered as a refused request. */
 function rethrowPanic(e) {
   if (last_panic() || e instanceof WebAssembly.RuntimeError) throw e;
@@ -139,6 +162,8 @@ function load(text) {
 }
 
 function handle(msg) {
+  // Any request but another step ends a step in progress.
+  if (msg.type !== 'step' && msg.type !== 'asv-solution' && msg.type !== 'ping') stepping = null;
   switch (msg.type) {
     case 'load':
       load(msg.text);
@@ -178,8 +203,10 @@ function handle(msg) {
     case 'step': {
       running = false;
       try { ensureRun(); } catch (e) { rethrowPanic(e); post({ type: 'error', run: runId, message: parseError(e).text }); return; }
-      const status = run.step(Math.max(1, msg.iterations | 0), 1e9);
-      flush(status);
+      // A step asked for while one is under way adds to it.
+      const start = stepping ? stepping.target : JSON.parse(run.stats_json()).iterations;
+      stepping = { token: ++stepToken, target: start + Math.max(1, msg.iterations | 0) };
+      stepLoop(stepping.token);
       return;
     }
     case 'reset':
@@ -205,6 +232,8 @@ function handle(msg) {
       while (performance.now() < end) { /* busy */ }
       return;
     }
+    case 'ping':
+      return;
     default:
       post({ type: 'error', run: runId, message: `unknown message type ${msg.type}` });
   }

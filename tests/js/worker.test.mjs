@@ -107,6 +107,74 @@ test('cancel stops a long run at once, and the worker plans again afterwards', a
   assert.equal(out.again, 'solved');
 });
 
+/** A map of n small squares in a grid, a point robot, and the finest resolution allowed. */
+function cluttered(n) {
+  const side = Math.ceil(Math.sqrt(n));
+  const cell = 1 / side;
+  const obstacles = [];
+  for (let i = 0; i < side && obstacles.length < n; i++) {
+    for (let j = 0; j < side && obstacles.length < n; j++) {
+      const [x, y] = [i * cell, j * cell];
+      obstacles.push({ rect: [x + 0.3 * cell, y + 0.3 * cell, x + 0.7 * cell, y + 0.7 * cell] });
+    }
+  }
+  return { bounds: [0, 0, 1, 1], obstacles, robot: { kind: 'point' }, start: [0, 0], goal: [1, 0], resolution: 1.5e-5 };
+}
+
+test('one iteration of seconds: the worker still answers within 50 ms, running or stepping', async () => {
+  // One motion checked at 66,667 states among 20,000 obstacles. The core suspends a batch that
+  // runs past twice its 12 ms and replays it in the next (src/journal.rs), so the worker reads
+  // its messages between batches all along.
+  const out = await page.evaluate(async (text) => {
+    const d = window.driver;
+    d.drain();
+    d.send({ type: 'load', text });
+    await d.next('loaded');
+    d.send({ type: 'configure', planner: 'rrt', params: { goal_bias: 1, range: 2, time_limit: 60 }, seed: 1 });
+    await d.next('status');
+    const acks = [];
+    const ack = async (msg) => {
+      const n = acks.length + 1;
+      const t0 = performance.now();
+      d.send({ ...msg, ack: n });
+      for (;;) {
+        const m = await d.next('ack');
+        if (m.ack === n) break;
+      }
+      acks.push(performance.now() - t0);
+    };
+    // Running: the gaps between batches, and how soon a message is read.
+    d.send({ type: 'run' });
+    let last = performance.now();
+    const gaps = [];
+    let iterations = 0;
+    for (let i = 0; i < 20; i++) {
+      const m = await d.next('events');
+      const now = performance.now();
+      gaps.push(now - last);
+      last = now;
+      iterations = m.stats.iterations;
+      if (m.status !== 'running') break;
+    }
+    await ack({ type: 'pause' });
+    // Stepping one iteration: it takes many batches, and messages are read between them.
+    d.send({ type: 'step', iterations: 1 });
+    await new Promise((r) => setTimeout(r, 100));
+    for (let i = 0; i < 5; i++) await ack({ type: 'ping' });
+    await new Promise((r) => setTimeout(r, 100));
+    await ack({ type: 'ping' });
+    d.send({ type: 'cancel' });
+    const r = await d.next('result');
+    return { gaps: gaps.slice(1), acks, iterations, status: r.result.status };
+  }, JSON.stringify(cluttered(20000)));
+  const gaps = [...out.gaps].sort((a, b) => a - b);
+  console.log(`batches: median ${gaps[gaps.length >> 1].toFixed(1)} ms, longest ${gaps.at(-1).toFixed(1)} ms; messages read after ${out.acks.map((a) => a.toFixed(1)).join(', ')} ms`);
+  assert.equal(out.iterations, 0, 'the one iteration is still under way (so batches were suspended)');
+  assert.ok(gaps.at(-1) < 50, `a batch took ${gaps.at(-1)} ms`);
+  assert.ok(Math.max(...out.acks) < 50, `a message waited ${Math.max(...out.acks)} ms`);
+  assert.equal(out.status, 'cancelled');
+});
+
 test('a panic in the core is reported as crashed, not swallowed', async () => {
   const msg = await page.evaluate(async () => {
     const d = window.driver;
