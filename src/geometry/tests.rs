@@ -419,3 +419,57 @@ fn interior_meets_segment_agrees_with_an_exact_oracle() {
     let flat = Shape::Rect(Aabb { min: v(0., 0.), max: v(2., 0.) });
     assert!(!flat.interior_meets_segment(v(1., -1.), v(1., 1.)));
 }
+
+/// A workspace of `n` random small shapes of every kind in the unit square.
+fn random_workspace(rng: &mut Rng, n: usize) -> Workspace {
+    let mut shapes = Vec::new();
+    for i in 0..n {
+        let c = v(rng.uniform(0.0, 1.0), rng.uniform(0.0, 1.0));
+        let r = rng.uniform(0.002, 0.03);
+        shapes.push(match i % 4 {
+            0 => Shape::Rect(Aabb { min: v(c.x - r, c.y - r * 0.5), max: v(c.x + r, c.y + r * 0.5) }),
+            1 => Shape::Polygon(vec![v(c.x - r, c.y - r), v(c.x + r, c.y - r * 0.3), v(c.x, c.y + r)]),
+            2 => Shape::Circle(c, r),
+            _ => Shape::Segment(v(c.x - r, c.y), v(c.x + r, c.y + r)),
+        });
+    }
+    Workspace::new(Aabb { min: v(0.0, 0.0), max: v(1.0, 1.0) }, shapes)
+}
+
+#[test]
+fn the_hierarchy_finds_what_the_scan_finds() {
+    // Every query, through parry's BVH and through the scan of every box, on workspaces of 32 to
+    // 2,000 shapes: the same answers, bit for bit (the same first obstacle, the same clearance).
+    let mut rng = Rng::new(13);
+    for n in [32, 200, 2000] {
+        for open in [false, true] {
+            let mut bvh = random_workspace(&mut rng, n);
+            bvh.open = open;
+            assert!(bvh.has_bvh());
+            let scan = bvh.scanned();
+            assert!(!scan.has_bvh());
+            let mut hits = 0;
+            for _ in 0..2000 {
+                let p = v(rng.uniform(-0.05, 1.05), rng.uniform(-0.05, 1.05));
+                let q = v(p.x + rng.uniform(-0.2, 0.2), p.y + rng.uniform(-0.2, 0.2));
+                let r = v(p.x + rng.uniform(-0.05, 0.05), q.y);
+                let poly = [p, q, r];
+                let cap = rng.uniform(0.0, 0.3);
+                assert_eq!(bvh.point_hit(p), scan.point_hit(p));
+                assert_eq!(bvh.point_hits(p), scan.point_hits(p));
+                assert_eq!(bvh.segment_hits(p, q), scan.segment_hits(p, q));
+                assert_eq!(bvh.segment_hit(p, q), scan.segment_hit(p, q));
+                assert_eq!(bvh.sight_clear(p, q), scan.sight_clear(p, q));
+                assert_eq!(bvh.polygon_hit(&poly), scan.polygon_hit(&poly));
+                assert_eq!(bvh.polygon_hit_any(&poly).is_some(), scan.polygon_hit(&poly).is_some());
+                assert_eq!(bvh.segment_hit_any(p, q).is_some(), scan.segment_hit(p, q).is_some());
+                assert_eq!(scan.segment_hit_any(p, q).is_some(), scan.segment_hit(p, q).is_some());
+                assert_eq!(bvh.segment_clearance(p, q, cap).to_bits(), scan.segment_clearance(p, q, cap).to_bits());
+                assert_eq!(bvh.polygon_clearance(&poly, cap).to_bits(), scan.polygon_clearance(&poly, cap).to_bits());
+                hits += usize::from(scan.segment_hit(p, q).is_some());
+            }
+            assert!(hits > 100 && hits < 1900, "{n} shapes: {hits} of 2000 segments hit, too few or too many to test anything");
+        }
+    }
+    assert!(!random_workspace(&mut rng, BVH_FROM - 1).has_bvh());
+}

@@ -107,6 +107,28 @@ impl ArmRobot {
         }
     }
 
+    /// The verdict at `q`; `any`: a collision names any obstacle met, not the first (for validity
+    /// alone, where the search can stop at the first found).
+    fn verdict_at(&self, ws: &Workspace, q: &[Real], any: bool) -> Verdict {
+        if !self.within_limits(q) {
+            return Verdict::Invalid("a joint is outside its limits");
+        }
+        self.with_points(q, |pts| {
+            if let Some(p) = pts.iter().find(|p| !ws.bounds.contains(**p)) {
+                return Verdict::OutOfBounds(if p.x < ws.bounds.min.x || p.x > ws.bounds.max.x { 0 } else { 1 });
+            }
+            for w in pts.windows(2) {
+                if let Some(i) = if any { ws.segment_hit_any(w[0], w[1]) } else { ws.segment_hit(w[0], w[1]) } {
+                    return Verdict::Collision(i);
+                }
+            }
+            match self.self_collision.then(|| Self::self_problem(q, pts)).flatten() {
+                Some(why) => Verdict::Invalid(why),
+                None => Verdict::Valid,
+            }
+        })
+    }
+
     fn with_points<T>(&self, q: &[Real], f: impl FnOnce(&[Vec2]) -> T) -> T {
         let m = self.point_count();
         if m <= STACK_POINTS {
@@ -280,23 +302,10 @@ impl Robot for ArmRobot {
         StateSpace { dims, metric: self.metric.clone() }
     }
     fn verdict(&self, ws: &Workspace, q: &[Real]) -> Verdict {
-        if !self.within_limits(q) {
-            return Verdict::Invalid("a joint is outside its limits");
-        }
-        self.with_points(q, |pts| {
-            if let Some(p) = pts.iter().find(|p| !ws.bounds.contains(**p)) {
-                return Verdict::OutOfBounds(if p.x < ws.bounds.min.x || p.x > ws.bounds.max.x { 0 } else { 1 });
-            }
-            for w in pts.windows(2) {
-                if let Some(i) = ws.segment_hit(w[0], w[1]) {
-                    return Verdict::Collision(i);
-                }
-            }
-            match self.self_collision.then(|| Self::self_problem(q, pts)).flatten() {
-                Some(why) => Verdict::Invalid(why),
-                None => Verdict::Valid,
-            }
-        })
+        self.verdict_at(ws, q, false)
+    }
+    fn is_valid(&self, ws: &Workspace, q: &[Real]) -> bool {
+        self.verdict_at(ws, q, true) == Verdict::Valid
     }
     fn has_motion_clearance(&self) -> bool {
         true

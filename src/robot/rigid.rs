@@ -28,6 +28,23 @@ impl RigidRobot {
         self.radius
     }
 
+    /// The verdict at `q` (`any`: see [`RigidRobot::verdict_of`]).
+    fn verdict_at(&self, ws: &Workspace, q: &[Real], any: bool) -> Verdict {
+        if let Some(v) = xy_in_bounds(ws, q) {
+            return v;
+        }
+        let n = self.footprint.len();
+        if n <= STACK_VERTICES {
+            let mut buf = [Vec2::default(); STACK_VERTICES];
+            self.place(q, &mut buf[..n]);
+            self.verdict_of(ws, &buf[..n], any)
+        } else {
+            let mut buf = vec![Vec2::default(); n];
+            self.place(q, &mut buf);
+            self.verdict_of(ws, &buf, any)
+        }
+    }
+
     /// Write the footprint at state `q` into `out`.
     #[inline]
     fn place(&self, q: &[Real], out: &mut [Vec2]) {
@@ -38,13 +55,15 @@ impl RigidRobot {
         }
     }
 
-    fn verdict_of(&self, ws: &Workspace, body: &[Vec2]) -> Verdict {
+    /// The verdict of the body placed at `body`; `any`: a collision names any obstacle met, not
+    /// the first (for validity alone, where the search can stop at the first found).
+    fn verdict_of(&self, ws: &Workspace, body: &[Vec2], any: bool) -> Verdict {
         if self.body_in_bounds {
             if let Some(p) = body.iter().find(|p| !ws.bounds.contains(**p)) {
                 return Verdict::OutOfBounds(if p.x < ws.bounds.min.x || p.x > ws.bounds.max.x { 0 } else { 1 });
             }
         }
-        match ws.polygon_hit(body) {
+        match if any { ws.polygon_hit_any(body) } else { ws.polygon_hit(body) } {
             Some(i) => Verdict::Collision(i),
             None => Verdict::Valid,
         }
@@ -68,19 +87,10 @@ impl Robot for RigidRobot {
         StateSpace { dims: vec![x, y, Dim { lo: -PI, hi: PI, wraps: true }], metric: Metric::TranslationRotation { weight: self.rotation_weight } }
     }
     fn verdict(&self, ws: &Workspace, q: &[Real]) -> Verdict {
-        if let Some(v) = xy_in_bounds(ws, q) {
-            return v;
-        }
-        let n = self.footprint.len();
-        if n <= STACK_VERTICES {
-            let mut buf = [Vec2::default(); STACK_VERTICES];
-            self.place(q, &mut buf[..n]);
-            self.verdict_of(ws, &buf[..n])
-        } else {
-            let mut buf = vec![Vec2::default(); n];
-            self.place(q, &mut buf);
-            self.verdict_of(ws, &buf)
-        }
+        self.verdict_at(ws, q, false)
+    }
+    fn is_valid(&self, ws: &Workspace, q: &[Real]) -> bool {
+        self.verdict_at(ws, q, true) == Verdict::Valid
     }
     fn clearance(&self, ws: &Workspace, q: &[Real], cap: Real) -> Option<Real> {
         if xy_in_bounds(ws, q).is_some() {

@@ -34,6 +34,10 @@ pub const SUSPEND_AFTER: f64 = 2.0;
 /// more than this share of its budget, unless the run's batches have been overrunning.
 pub const MAX_SNAPSHOT_SHARE: f64 = 0.1;
 
+/// After a bounded batch overruns (or is suspended), this many more take snapshots whatever they
+/// cost: a run whose iterations are sometimes slow keeps the means to suspend them for a while.
+pub const RISKY_BATCHES: u32 = 64;
+
 /// What a bounded batch changes, kept at its start to go back to when it is suspended.
 struct Snapshot {
     planner: Box<dyn Planner>,
@@ -75,10 +79,10 @@ pub struct Session {
     reason: Option<String>,
     /// Bounded batches suspended so far.
     suspensions: u64,
-    /// What the last snapshot cost a node, and whether bounded batches have been overrunning
-    /// (or were suspended), so the next one must be able to suspend whatever a snapshot costs.
+    /// What the last snapshot cost a node, and how many more bounded batches take one whatever it
+    /// costs (see [`RISKY_BATCHES`]).
     snapshot_ms_per_node: f64,
-    risky: bool,
+    risky: u32,
     /// Iterations between two looks at the clock in a batch.
     look_every: u64,
 }
@@ -131,7 +135,7 @@ impl Session {
             reason: None,
             suspensions: 0,
             snapshot_ms_per_node: 0.0,
-            risky: false,
+            risky: 0,
             look_every: 16,
         })
     }
@@ -174,7 +178,7 @@ impl Session {
     ///
     /// The exception: a batch whose snapshot would cost more than [`MAX_SNAPSHOT_SHARE`] of its
     /// budget (a tree of some 20,000 nodes for 12 ms) is run without one while the run's batches
-    /// keep to their budget; the first that overruns makes the next ones take snapshots again.
+    /// keep to their budget; one that overruns makes the next [`RISKY_BATCHES`] take snapshots.
     pub fn step(&mut self, max_iterations: u64, max_ms: f64) -> Status {
         if self.status.is_finished() {
             return self.status;
@@ -186,9 +190,11 @@ impl Session {
         // A snapshot costs about 60 ns a node: a big tree's (17 ms at 300,000 nodes) is taken only
         // when this run's batches have been overrunning, not for every quick batch.
         let nodes = self.planner.node_count().max(1) as f64;
-        if !self.risky && self.snapshot_ms_per_node * nodes > max_ms * MAX_SNAPSHOT_SHARE {
+        if self.risky == 0 && self.snapshot_ms_per_node * nodes > max_ms * MAX_SNAPSHOT_SHARE {
             let status = self.run_batch(max_iterations, max_ms);
-            self.risky = begin.elapsed().as_secs_f64() * 1000.0 > max_ms * SUSPEND_AFTER;
+            if begin.elapsed().as_secs_f64() * 1000.0 > max_ms * SUSPEND_AFTER {
+                self.risky = RISKY_BATCHES;
+            }
             return status;
         }
         let kept = Snapshot {
@@ -204,7 +210,7 @@ impl Session {
         self.problem.si.begin_batch(Deadline::in_ms(max_ms.max(0.0) * SUSPEND_AFTER - took));
         let status = self.run_batch(max_iterations, max_ms);
         let suspended = self.problem.si.end_batch();
-        self.risky = suspended || begin.elapsed().as_secs_f64() * 1000.0 > max_ms * SUSPEND_AFTER;
+        self.risky = if suspended || begin.elapsed().as_secs_f64() * 1000.0 > max_ms * SUSPEND_AFTER { RISKY_BATCHES } else { self.risky.saturating_sub(1) };
         if suspended {
             // Back to the batch's start; the next batch replays it from the journal.
             self.planner = kept.planner;
