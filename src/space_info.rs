@@ -34,8 +34,9 @@ impl Deadline {
 }
 
 /// Most units of work (states checked, shortcuts tried) between two looks at the clock. When a
-/// unit is slow (a state check among 100,000 obstacles), the clock is read more often: the
-/// interval halves while looks are more than [`SLOW_LOOK_MS`] apart, down to every unit.
+/// unit is slow (a sight line across 100,000 obstacles), the clock is read more often: when looks
+/// are more than [`SLOW_LOOK_MS`] apart, the interval drops at once to the units that take about
+/// that long (at least halving), down to every unit; it doubles back while looks are quick.
 pub const CLOCK_EVERY: u64 = 256;
 
 /// Looks at the clock further apart than this make the interval between them shorter.
@@ -135,6 +136,8 @@ impl SpaceInfo {
     /// suspended only after some, so every batch advances the run. Returns [`SpaceInfo::tick`]'s.
     #[inline]
     pub(crate) fn fresh_work(&self, units: u64) -> bool {
+        // A query among many obstacles is more than one unit: one more per 16 exact tests.
+        let units = units + crate::geometry::take_tests() / 16;
         self.fresh.set(self.fresh.get() + units);
         self.tick(units)
     }
@@ -158,8 +161,9 @@ impl SpaceInfo {
         let mark = self.journal.borrow().mark();
         compute(out);
         if !self.stopped() {
-            let mut j = self.journal.borrow_mut();
-            j.compact_bits(mark, unit, out);
+            self.journal.borrow_mut().compact_bits(mark, unit, out);
+            // New work, even when it asked nothing the journal records (a look that sees nothing).
+            self.fresh_work(1);
         }
     }
     /// Read the clock: the run's deadline, the batch's suspension, and how often to look again.
@@ -175,7 +179,14 @@ impl SpaceInfo {
         if let Some(last) = self.last_look.get() {
             let ms = now.saturating_duration_since(last).as_secs_f64() * 1000.0;
             let every = self.every.get();
-            self.every.set(if ms > SLOW_LOOK_MS { (every / 2).max(1) } else if ms < SLOW_LOOK_MS / 8.0 { (every * 2).min(CLOCK_EVERY) } else { every });
+            // Slow units: at once down to as many as take about SLOW_LOOK_MS (at least halved).
+            self.every.set(if ms > SLOW_LOOK_MS {
+                ((every as f64 * SLOW_LOOK_MS / ms) as u64).clamp(1, (every / 2).max(1))
+            } else if ms < SLOW_LOOK_MS / 8.0 {
+                (every * 2).min(CLOCK_EVERY)
+            } else {
+                every
+            });
         }
         self.last_look.set(Some(now));
     }

@@ -176,30 +176,22 @@ fn a_hexagonal_tiling_too_fine_for_its_map_is_refused() {
     assert!(e.contains("cell_size") && e.contains("limit"), "{e}");
 }
 
-/// A map of `n` small squares in a grid (none on the diagonal start→goal corridor's ends).
+/// A unit map whose every state check near the bottom edge is slow, even through the broad phase:
+/// `n` discs centred at (1.5, 1.5) with radii from 1.5 down to 1.4996, whose boxes all reach below
+/// y = 0.0005 and so hold the line from the start (0, 0.0005) to the goal (1, 0.0005), which the
+/// discs themselves leave free. Each state on it is tested exactly against every disc.
 fn cluttered(n: usize, resolution: f64) -> Value {
-    let side = (n as f64).sqrt().ceil() as usize;
-    let cell = 1.0 / side as f64;
-    let mut obstacles = Vec::new();
-    'outer: for i in 0..side {
-        for j in 0..side {
-            if obstacles.len() == n {
-                break 'outer;
-            }
-            let (x, y) = (i as f64 * cell, j as f64 * cell);
-            obstacles.push(json!({"rect": [x + 0.3 * cell, y + 0.3 * cell, x + 0.7 * cell, y + 0.7 * cell]}));
-        }
-    }
+    let obstacles: Vec<Value> = (0..n).map(|i| json!({"circle": [1.5, 1.5, 1.5 - 0.0004 * i as f64 / n as f64]})).collect();
     json!({"bounds": [0, 0, 1, 1], "obstacles": obstacles, "robot": {"kind": "point"},
-           "start": [0.0, 0.0], "goal": [1.0, 0.0], "resolution": resolution})
+           "start": [0.0, 0.0005], "goal": [1.0, 0.0005], "resolution": resolution})
 }
 
 #[test]
 fn the_time_limit_holds_inside_one_long_motion_check() {
     let _turn = TIMED.lock().unwrap_or_else(|e| e.into_inner());
-    // 20,000 obstacles (each state check scans them all) and the finest resolution allowed: the
-    // free motion along the bottom edge to the goal would take seconds. The deadline is looked at
-    // inside the check.
+    // 20,000 obstacles whose boxes all hold each state (so each state check tests them all) and the
+    // finest resolution allowed: the free motion along the bottom edge to the goal would take
+    // seconds. The deadline is looked at inside the check.
     let v = cluttered(20_000, 1.5e-5);
     for (planner, params) in [
         ("rrt", json!({"range": 2.0, "goal_bias": 1.0, "time_limit": 0.3})),
@@ -220,14 +212,14 @@ fn the_time_limit_holds_inside_one_long_motion_check() {
 #[test]
 fn the_time_limit_holds_in_smoothing() {
     let _turn = TIMED.lock().unwrap_or_else(|e| e.into_inner());
-    // A path in the free strip along the bottom edge (y < 0.002): every shortcut between its two
-    // segments is free and about half a map long, so each one checks some 30,000 states against
-    // 20,000 obstacles (about a second). Smoothing stops at the deadline with a shorter, still valid path.
+    // A path in the free strip along the bottom edge: every shortcut between its two segments is
+    // free and about half a map long, so each one checks some 30,000 states against 20,000
+    // obstacles (seconds). Smoothing stops at the deadline with a shorter, still valid path.
     let mut v = cluttered(20_000, 1.5e-5);
-    v["goal"] = json!([1.0, 0.0]);
+    v["goal"] = json!([1.0, 0.0005]);
     let sc = Scenario::from_value(&v).unwrap();
     let p = Problem::from_scenario(&sc).unwrap();
-    let path = vec![vec![0.0, 0.0], vec![0.5, 0.001], vec![1.0, 0.0]];
+    let path = vec![vec![0.0, 0.0005], vec![0.5, 0.0015], vec![1.0, 0.0005]];
     p.si.set_deadline(Deadline::in_ms(100.0));
     let t = Instant::now();
     let out = smoothing::shortcut(&p.si, &path, 10_000, &mut Rng::new(1));
@@ -346,5 +338,62 @@ fn a_bounded_batch_returns_within_50_ms_whatever_one_iteration_costs() {
         eprintln!("{planner}: {batches} batches, the longest {longest:.1} ms, {} suspended, {} iterations, {checks} checks, {}", s.suspensions(), s.stats().iterations, s.status().name());
         assert!(longest < 50.0, "{planner}: a 12 ms batch took {longest:.1} ms");
         assert!(s.suspensions() > 0, "{planner}: no batch was suspended, so this input does not test it");
+    }
+}
+
+/// `n` small blocks in a grid filling the right half of a 2 × 1 map.
+fn right_half_blocks(n: usize) -> Vec<Value> {
+    let side = (n as f64).sqrt().ceil() as usize;
+    let cell = 1.0 / side as f64;
+    let mut o = Vec::with_capacity(n);
+    'grid: for i in 0..side {
+        for j in 0..side {
+            if o.len() == n {
+                break 'grid;
+            }
+            let (x, y) = (1.0 + i as f64 * cell, j as f64 * cell);
+            o.push(json!({"rect": [x + 0.3 * cell, y + 0.3 * cell, x + 0.7 * cell, y + 0.7 * cell]}));
+        }
+    }
+    o
+}
+
+#[test]
+fn at_the_limits_every_planners_batches_return_within_50_ms() {
+    let _turn = TIMED.lock().unwrap_or_else(|e| e.into_inner());
+    // 100,000 obstacles (the cap) with the heaviest robot and task of each kind: a 64-link arm
+    // (the cap) checked at 0.01 rad, inspection of 10,000 points (the cap), a point robot at a
+    // resolution close to the finest allowed, the potential field's heat map and the hexagonal
+    // decomposition. Each runs for a second in 12 ms batches, as the worker asks.
+    let pi = std::f64::consts::PI;
+    let mut arm_start = vec![0.0; 64];
+    arm_start[0] = pi;
+    let limits: Vec<Value> = (0..64).map(|_| json!([-pi, pi])).collect();
+    let arm = json!({"bounds": [0, 0, 2, 1], "obstacles": right_half_blocks(100_000), "robot": {"kind": "arm", "base": [1.0, 0.5], "links": vec![0.9 / 64.0; 64], "limits": limits, "self_collision": true}, "start": arm_start, "goal": arm_start, "resolution": 0.01});
+    let points: Vec<Value> = (0..10_000).map(|i| json!([0.05 + 0.009 * (i % 100) as f64, 0.05 + 0.009 * (i / 100) as f64])).collect();
+    let inspect = json!({"bounds": [0, 0, 2, 1], "obstacles": right_half_blocks(100_000), "robot": {"kind": "rigid", "footprint": [[-0.01, -0.01], [0.01, -0.01], [0.01, 0.01], [-0.01, 0.01]]}, "start": [0.5, 0.5, 0.0], "resolution": 0.001, "inspection": {"points": points, "fov": 1.0, "range": 0.5, "coverage": 0.9}});
+    let point = json!({"bounds": [0, 0, 2, 1], "obstacles": right_half_blocks(100_000), "robot": {"kind": "point"}, "start": [0.5, 0.5], "goal": [1.999, 0.999], "resolution": 3e-5});
+    for (v, planner, params) in [
+        (&arm, "rrt-connect", json!({})),
+        (&arm, "rrt-star", json!({})),
+        (&inspect, "inspection", json!({})),
+        (&point, "rrt-connect", json!({"range": 3})),
+        (&point, "hex-potential", json!({})),
+        (&point, "potential-field", json!({})),
+    ] {
+        let mut s = session(v, planner, params, 1).unwrap();
+        s.set_record_events(true); // as the worker does (the potential field draws its heat map)
+        let (mut longest, mut batches) = (0.0f64, 0);
+        let t = Instant::now();
+        while t.elapsed().as_secs_f64() < 1.0 && !s.status().is_finished() {
+            let b = Instant::now();
+            s.step(u64::MAX, 12.0);
+            s.drain_events();
+            longest = longest.max(b.elapsed().as_secs_f64() * 1000.0);
+            batches += 1;
+        }
+        let robot = v["robot"]["kind"].as_str().unwrap();
+        eprintln!("{robot} {planner}: {batches} batches, the longest {longest:.1} ms, {} suspended, {} iterations, {}", s.suspensions(), s.stats().iterations, s.status().name());
+        assert!(longest < 50.0, "{robot} {planner}: a 12 ms batch took {longest:.1} ms");
     }
 }

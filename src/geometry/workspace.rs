@@ -5,6 +5,22 @@ use parry2d_f64::math::Vector;
 use parry2d_f64::partitioning::{Bvh, BvhBuildStrategy, BvhNode};
 use std::cell::Cell;
 
+thread_local! {
+    /// Exact tests done by workspace queries since [`take_tests`] was last called: how long a
+    /// time-bounded loop has been working (a query among many obstacles weighs more than one).
+    static TESTS: Cell<u64> = const { Cell::new(0) };
+}
+
+/// The exact tests workspace queries did since the last call (see `SpaceInfo::tick`).
+pub fn take_tests() -> u64 {
+    TESTS.with(|t| t.replace(0))
+}
+
+#[inline]
+fn count_test() {
+    TESTS.with(|t| t.set(t.get() + 1));
+}
+
 /// From this many obstacles on, queries go through a bounding-volume hierarchy (parry's `Bvh`)
 /// rather than a scan of every obstacle's box. Below it, the scan is as fast.
 pub const BVH_FROM: usize = 32;
@@ -35,6 +51,77 @@ fn node_meets(node: &BvhNode, bb: &Aabb) -> bool {
     lo.x <= bb.max.x && bb.min.x <= hi.x && lo.y <= bb.max.y && bb.min.y <= hi.y
 }
 
+/// A query's shape for pruning the hierarchy: its box, and the axes (normals) along which it may be
+/// separated from a node's box (the segment's normal; a convex polygon's edge normals), each with
+/// the shape's extent along it.
+struct Probe {
+    bb: Aabb,
+    axes: [(Vec2, Real, Real); 8],
+    n: usize,
+}
+
+impl Probe {
+    /// Only the box.
+    fn of_box(bb: Aabb) -> Probe {
+        Probe { bb, axes: [(Vec2::default(), 0.0, 0.0); 8], n: 0 }
+    }
+    /// A segment: its box and its normal.
+    fn of_segment(a: Vec2, b: Vec2) -> Probe {
+        let mut p = Probe::of_box(Aabb::of_points(&[a, b]));
+        let n = Vec2::new(a.y - b.y, b.x - a.x);
+        let d = n.x * a.x + n.y * a.y;
+        p.axes[0] = (n, d, d);
+        p.n = 1;
+        p
+    }
+    /// A polygon: its box, and its edge normals when it is convex with at most 8 edges.
+    fn of_polygon(poly: &[Vec2]) -> Probe {
+        let mut p = Probe::of_box(Aabb::of_points(poly));
+        let m = poly.len();
+        if !(3..=8).contains(&m) {
+            return p;
+        }
+        let turn = |i: usize| {
+            let (a, b, c) = (poly[i], poly[(i + 1) % m], poly[(i + 2) % m]);
+            (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x)
+        };
+        let first = turn(0);
+        if first == 0.0 || (1..m).any(|i| turn(i) * first <= 0.0) {
+            return p;
+        }
+        for i in 0..m {
+            let (a, b) = (poly[i], poly[(i + 1) % m]);
+            let n = Vec2::new(a.y - b.y, b.x - a.x);
+            let (mut lo, mut hi) = (Real::INFINITY, Real::NEG_INFINITY);
+            for q in poly {
+                let d = n.x * q.x + n.y * q.y;
+                lo = lo.at_most(d);
+                hi = hi.at_least(d);
+            }
+            p.axes[i] = (n, lo, hi);
+        }
+        p.n = m;
+        p
+    }
+    /// Whether the box `lo .. hi` may meet the shape: never `false` for one that does (a margin
+    /// far above rounding keeps the test conservative; the exact test decides).
+    #[inline]
+    fn may_meet(&self, lo: Vec2, hi: Vec2) -> bool {
+        let bb = &self.bb;
+        if !(lo.x <= bb.max.x && bb.min.x <= hi.x && lo.y <= bb.max.y && bb.min.y <= hi.y) {
+            return false;
+        }
+        let scale = 1.0 + lo.x.abs().at_least(lo.y.abs()).at_least(hi.x.abs()).at_least(hi.y.abs());
+        self.axes[..self.n].iter().all(|&(n, dlo, dhi)| {
+            let c = Vec2::new((lo.x + hi.x) * 0.5, (lo.y + hi.y) * 0.5);
+            let r = 0.5 * ((hi.x - lo.x) * n.x.abs() + (hi.y - lo.y) * n.y.abs());
+            let d = n.x * c.x + n.y * c.y;
+            let margin = 1e-9 * (n.x.abs() + n.y.abs()) * scale;
+            d + r >= dlo - margin && d - r <= dhi + margin
+        })
+    }
+}
+
 impl Workspace {
     /// A workspace from its bounds and obstacles.
     pub fn new(bounds: Aabb, obstacles: Vec<Shape>) -> Self {
@@ -60,21 +147,36 @@ impl Workspace {
     /// Call `f` with each obstacle whose box meets `bb` (in no particular order) until it returns
     /// `true`; returns whether it did.
     #[inline]
-    fn near(&self, bb: &Aabb, mut f: impl FnMut(usize) -> bool) -> bool {
+    fn near(&self, bb: &Aabb, f: impl FnMut(usize) -> bool) -> bool {
+        self.near_probe(&Probe::of_box(*bb), f)
+    }
+
+    /// Like [`Workspace::near`], pruning by the probe's shape, not only its box.
+    #[inline]
+    fn near_probe(&self, probe: &Probe, mut f: impl FnMut(usize) -> bool) -> bool {
         match &self.bvh {
-            None => self.boxes.iter().enumerate().any(|(i, bx)| bx.intersects(bb) && f(i)),
-            Some(t) => t.leaves(|n| node_meets(n, bb)).any(|i| f(i as usize)),
+            None => self.boxes.iter().enumerate().any(|(i, bx)| bx.intersects(&probe.bb) && {
+                count_test();
+                f(i)
+            }),
+            Some(t) => t.leaves(|n| probe.may_meet(Vec2::new(n.mins().x, n.mins().y), Vec2::new(n.maxs().x, n.maxs().y))).any(|i| {
+                count_test();
+                f(i as usize)
+            }),
         }
     }
 
     /// The first obstacle (in scenario order) whose box meets `bb` and that passes `hit`.
     #[inline]
-    fn first(&self, bb: &Aabb, hit: impl Fn(usize) -> bool) -> Option<usize> {
+    fn first(&self, probe: &Probe, hit: impl Fn(usize) -> bool) -> Option<usize> {
         match &self.bvh {
-            None => (0..self.obstacles.len()).find(|&i| self.boxes[i].intersects(bb) && hit(i)),
+            None => (0..self.obstacles.len()).find(|&i| self.boxes[i].intersects(&probe.bb) && {
+                count_test();
+                hit(i)
+            }),
             Some(_) => {
                 let mut first: Option<usize> = None;
-                self.near(bb, |i| {
+                self.near_probe(probe, |i| {
                     if first.is_none_or(|f| i < f) && hit(i) {
                         first = Some(i);
                     }
@@ -94,6 +196,7 @@ impl Workspace {
                 let mut best = cap;
                 for (i, bx) in self.boxes.iter().enumerate() {
                     if bx.intersects(&bb.grown(best)) {
+                        count_test();
                         best = best.at_most(dist(i, best));
                         if best == 0.0 {
                             break;
@@ -108,6 +211,7 @@ impl Workspace {
                 for i in t.leaves(|n| node_meets(n, &bb.grown(best.get()))) {
                     let b = best.get();
                     if self.boxes[i as usize].intersects(&bb.grown(b)) {
+                        count_test();
                         best.set(b.at_most(dist(i as usize, b)));
                         if best.get() == 0.0 {
                             break;
@@ -121,7 +225,7 @@ impl Workspace {
 
     /// The index of the first obstacle that contains `p`, if any.
     pub fn point_hit(&self, p: Vec2) -> Option<usize> {
-        self.first(&Aabb { min: p, max: p }, |i| self.obstacles[i].contains_point(p))
+        self.first(&Probe::of_box(Aabb { min: p, max: p }), |i| self.obstacles[i].contains_point(p))
     }
 
     /// Whether the point `p` lies in (or on) an obstacle.
@@ -131,7 +235,7 @@ impl Workspace {
 
     /// Whether the closed segment `a b` meets an obstacle.
     pub fn segment_hits(&self, a: Vec2, b: Vec2) -> bool {
-        self.near(&Aabb::of_points(&[a, b]), |i| self.obstacles[i].intersects_segment(a, b))
+        self.near_probe(&Probe::of_segment(a, b), |i| self.obstacles[i].intersects_segment(a, b))
     }
 
     /// The distance from the closed polygon `poly` to the nearest obstacle, capped at `cap`
@@ -144,7 +248,7 @@ impl Workspace {
     /// The index of the first obstacle that the segment `a b` meets (its interior only when the
     /// workspace is [`open`](Workspace::open)), if any.
     pub fn segment_hit(&self, a: Vec2, b: Vec2) -> Option<usize> {
-        self.first(&Aabb::of_points(&[a, b]), |i| if self.open { self.obstacles[i].interior_meets_segment(a, b) } else { self.obstacles[i].intersects_segment(a, b) })
+        self.first(&Probe::of_segment(a, b), |i| if self.open { self.obstacles[i].interior_meets_segment(a, b) } else { self.obstacles[i].intersects_segment(a, b) })
     }
 
     /// The distance from the segment `a b` to the nearest obstacle, capped at `cap` (0 when it
@@ -157,32 +261,32 @@ impl Workspace {
     /// obstacle's interior. Touching (grazing a vertex, running along an edge, ending on the
     /// boundary) does not block, whatever [`open`](Workspace::open) says (see [`super::sight`]).
     pub fn sight_clear(&self, a: Vec2, b: Vec2) -> bool {
-        !self.near(&Aabb::of_points(&[a, b]), |i| self.obstacles[i].interior_meets_segment(a, b))
+        !self.near_probe(&Probe::of_segment(a, b), |i| self.obstacles[i].interior_meets_segment(a, b))
     }
 
     /// The index of the first obstacle that the closed polygon `poly` meets, if any.
     pub fn polygon_hit(&self, poly: &[Vec2]) -> Option<usize> {
-        let bb = Aabb::of_points(poly);
-        self.first(&bb, |i| self.obstacles[i].intersects_polygon(poly, &bb))
+        let probe = Probe::of_polygon(poly);
+        self.first(&probe, |i| self.obstacles[i].intersects_polygon(poly, &probe.bb))
     }
 
     /// An obstacle (the first found, not necessarily the first in scenario order) that the closed
     /// polygon `poly` meets, if any: for validity, where any will do and the search stops at it.
     pub fn polygon_hit_any(&self, poly: &[Vec2]) -> Option<usize> {
-        let bb = Aabb::of_points(poly);
-        self.any(&bb, |i| self.obstacles[i].intersects_polygon(poly, &bb))
+        let probe = Probe::of_polygon(poly);
+        self.any(&probe, |i| self.obstacles[i].intersects_polygon(poly, &probe.bb))
     }
 
     /// Like [`Workspace::segment_hit`], but any obstacle met (see [`Workspace::polygon_hit_any`]).
     pub fn segment_hit_any(&self, a: Vec2, b: Vec2) -> Option<usize> {
-        self.any(&Aabb::of_points(&[a, b]), |i| if self.open { self.obstacles[i].interior_meets_segment(a, b) } else { self.obstacles[i].intersects_segment(a, b) })
+        self.any(&Probe::of_segment(a, b), |i| if self.open { self.obstacles[i].interior_meets_segment(a, b) } else { self.obstacles[i].intersects_segment(a, b) })
     }
 
     /// An obstacle whose box meets `bb` and that passes `hit`, the first the broad phase finds.
     #[inline]
-    fn any(&self, bb: &Aabb, hit: impl Fn(usize) -> bool) -> Option<usize> {
+    fn any(&self, probe: &Probe, hit: impl Fn(usize) -> bool) -> Option<usize> {
         let mut found = None;
-        self.near(bb, |i| {
+        self.near_probe(probe, |i| {
             let h = hit(i);
             if h {
                 found = Some(i);

@@ -59,6 +59,7 @@ use crate::math::Real;
 use crate::motion::MotionValidator;
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::space::Metric;
+use crate::journal::Entry;
 use crate::space_info::SpaceInfo;
 use std::collections::VecDeque;
 
@@ -445,17 +446,25 @@ impl PotentialField {
 
 /// The distance from the body at `q` to the nearest obstacle, capped at `cap`; 0 when `q` is
 /// invalid (in collision or out of bounds). Not counted as a check.
+/// (One answer of the batch journal: a bounded batch replays it rather than compute it again.)
 fn clearance(si: &SpaceInfo, q: &[Real], cap: Real) -> Real {
-    let Some(ws) = si.workspace() else { return 0.0 };
-    if !si.validity.is_valid(q) {
-        return 0.0;
-    }
-    let outline = si.outline(q);
-    if outline.is_empty() {
-        let p = si.project(q);
-        return ws.segment_clearance(p, p, cap);
-    }
-    outline.iter().map(|poly| ws.polygon_clearance(poly, cap)).fold(cap, Real::min)
+    si.journalled(
+        |e| if let Entry::Clear(c) = e { Some(*c) } else { None },
+        Entry::Clear,
+        0.0,
+        || {
+            let Some(ws) = si.workspace() else { return 0.0 };
+            if !si.validity.is_valid(q) {
+                return 0.0;
+            }
+            let outline = si.outline(q);
+            if outline.is_empty() {
+                let p = si.project(q);
+                return ws.segment_clearance(p, p, cap);
+            }
+            outline.iter().map(|poly| ws.polygon_clearance(poly, cap)).fold(cap, Real::min)
+        },
+    )
 }
 
 impl Planner for PotentialField {

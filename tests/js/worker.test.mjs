@@ -107,22 +107,19 @@ test('cancel stops a long run at once, and the worker plans again afterwards', a
   assert.equal(out.again, 'solved');
 });
 
-/** A map of n small squares in a grid, a point robot, and the finest resolution allowed. */
+/**
+ * A unit map whose state checks near the bottom edge are slow even through the broad phase: n
+ * discs centred at (1.5, 1.5) whose boxes all hold the free line from the start (0, 0.0005) to the
+ * goal (1, 0.0005), so each state on it is tested against every disc (as tests/limits.rs).
+ */
 function cluttered(n) {
-  const side = Math.ceil(Math.sqrt(n));
-  const cell = 1 / side;
   const obstacles = [];
-  for (let i = 0; i < side && obstacles.length < n; i++) {
-    for (let j = 0; j < side && obstacles.length < n; j++) {
-      const [x, y] = [i * cell, j * cell];
-      obstacles.push({ rect: [x + 0.3 * cell, y + 0.3 * cell, x + 0.7 * cell, y + 0.7 * cell] });
-    }
-  }
-  return { bounds: [0, 0, 1, 1], obstacles, robot: { kind: 'point' }, start: [0, 0], goal: [1, 0], resolution: 1.5e-5 };
+  for (let i = 0; i < n; i++) obstacles.push({ circle: [1.5, 1.5, 1.5 - 0.0004 * i / n] });
+  return { bounds: [0, 0, 1, 1], obstacles, robot: { kind: 'point' }, start: [0, 0.0005], goal: [1, 0.0005], resolution: 1.5e-5 };
 }
 
 test('one iteration of seconds: the worker still answers within 50 ms, running or stepping', async () => {
-  // One motion checked at 66,667 states among 20,000 obstacles. The core suspends a batch that
+  // One motion checked at 66,667 states, each against 20,000 discs. The core suspends a batch that
   // runs past twice its 12 ms and replays it in the next (src/journal.rs), so the worker reads
   // its messages between batches all along.
   const out = await page.evaluate(async (text) => {
