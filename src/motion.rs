@@ -59,12 +59,12 @@ fn in_bisection_order<E>(n: usize, mut visit: impl FnMut(usize) -> Result<(), E>
 /// ended and how many states it visited (all valid but the last, when one was invalid).
 ///
 /// The first `skip` states in that order are taken as checked already (a check resumed by the
-/// batch journal, [`crate::journal`]): they are counted but not computed. Every 16 new states it
+/// batch journal, [`crate::journal`]): they are counted but not computed. Every 4 new states it
 /// calls `stop` with the units done; once that says so, it ends with [`Discrete::OutOfTime`],
 /// having visited (all valid) the states counted.
 #[allow(clippy::too_many_arguments)]
 pub fn check_discrete(space: &StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], skip: u64, stop: &dyn Fn(u64) -> bool, mut is_valid: impl FnMut(&[Real]) -> bool) -> (Discrete, u64) {
-    const EVERY: u64 = 16;
+    const EVERY: u64 = 4;
     let mut visited = 0u64;
     let mut late = false;
     let mut visit = |q: Option<usize>, scratch: &mut [Real]| -> Result<(), ()> {
