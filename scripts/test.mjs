@@ -1,4 +1,5 @@
-// Runs every test: clippy with warnings as errors, native cargo tests, one untimed pass of the
+// Runs every test: ESLint's recommended rules on the JavaScript (eslint.config.mjs), clippy with
+// warnings as errors, native cargo tests, one untimed pass of the
 // micro-benchmarks, the core compiled to wasm under Node (wasm-pack test --node),
 // and the JavaScript tests (the wasm build in Node, the worker protocol, the page in headless
 // chromium). Set-up first, so a fresh machine needs nothing else.
@@ -12,6 +13,7 @@ const run = (cmd) => {
   execSync(cmd, { stdio: 'inherit', cwd: root, env: { ...process.env, PATH: `${join(process.env.HOME || '/root', '.cargo', 'bin')}:${process.env.PATH}` } });
 };
 run('node scripts/setup.mjs --browser');
+run('node node_modules/eslint/bin/eslint.js --max-warnings 0 .');
 run('cargo clippy --all-targets --release -- -D warnings');
 run('cargo test --release');
 // The micro-benchmarks once each, untimed (criterion's --test): they must keep working.

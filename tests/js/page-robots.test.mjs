@@ -6,7 +6,7 @@ import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { pageFixture, ROOT as root, SHOTS as shots } from './browser.mjs';
+import { pageFixture, SHOTS as shots } from './browser.mjs';
 import { PALETTE } from '../../www/palette.js';
 import { wrapSegments, wrapInto, formatTick } from '../../www/cspace.js';
 

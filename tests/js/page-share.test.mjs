@@ -15,7 +15,7 @@ import { OVERLAYS } from '../../www/palette.js';
 const fx = await pageFixture();
 let page;
 beforeEach(() => { page = fx.page; });
-const { waitState, waitStatus, pickScenario, fastPlayback } = fx;
+const { waitState, pickScenario, fastPlayback } = fx;
 
 initSync({ module: readFileSync(join(root, 'www/pkg/planarium_bg.wasm')) });
 const registry = JSON.parse(planners());
