@@ -24,7 +24,7 @@ for (const f of ['planarium.js', 'planarium_bg.wasm']) {
 if (out === root || out === www || root.startsWith(out + sep) || out.startsWith(www + sep)) fail(`refusing to write into ${out}`);
 if (existsSync(out)) {
   const entries = readdirSync(out);
-  const earlier = entries.includes('embed.html') && entries.includes('worker.js');
+  const earlier = entries.includes('embed.html') && entries.includes('worker');
   if (entries.length && !earlier) fail(`${out} is not empty and not an earlier copy of the playground; pick another --out`);
   rmSync(out, { recursive: true, force: true });
 }

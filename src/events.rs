@@ -4,7 +4,7 @@
 //! the point and its parent's, projected into the workspace (a state's reference point), so the
 //! page draws without knowing the robot; then the first two planning coordinates of the state and
 //! its parent's, for a configuration-space view of two-dimensional spaces (a 2-joint arm). The worker drains the log after each batch and transfers it as a `Float64Array`; the JS
-//! constants in `www/events.js` are checked against [`EventKind`] by a test.
+//! constants in `www/run/events.js` are checked against [`EventKind`] by a test.
 
 use crate::math::{Real, Vec2};
 

@@ -69,7 +69,7 @@ pub fn limits() -> String {
     crate::limits::to_json().to_string()
 }
 
-/// The event kinds as JSON `{NAME: number}` and the record stride (checked against `www/events.js`).
+/// The event kinds as JSON `{NAME: number}` and the record stride (checked against `www/run/events.js`).
 #[wasm_bindgen]
 pub fn event_kinds() -> String {
     let mut m = serde_json::Map::new();
@@ -211,7 +211,7 @@ impl Run {
     pub fn record_events(&mut self, on: bool) {
         self.inner.set_record_events(on)
     }
-    /// Take the events recorded since the last call (flat records, see `www/events.js`).
+    /// Take the events recorded since the last call (flat records, see `www/run/events.js`).
     pub fn drain_events(&mut self) -> Vec<f64> {
         self.inner.drain_events()
     }

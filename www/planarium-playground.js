@@ -4,7 +4,7 @@
 //   <planarium-playground scenario="narrow" planner="rrt-connect" seed="7" autoplay controls="step,reset">
 //   </planarium-playground>
 //
-// Attributes (the share-link grammar of share.js, one key per attribute): scenario, planner, seed,
+// Attributes (the share-link grammar of ui/links.js, one key per attribute): scenario, planner, seed,
 // speed, anim, overlays, step-size, raw-path, autoplay, click, controls; `params` for planner
 // parameters in link form ("range=0.1&goal_bias=0.2"); `link` for a whole share link's hash (the
 // other attributes win over it); `fill` to fill the element's height (embed.html) instead of
@@ -18,13 +18,13 @@
 // Read-only state for scripts and tests: el.state, el.status, el.result(), el.stats(), el.nodeCount,
 // el.shownIterations, el.controls; and el.run(), pause(), step(), back(), reset().
 
-import { Playback } from './playback.js';
-import { View } from './view.js';
-import { Player } from './player.js';
-import { fitViews } from './stage.js';
-import { speedRate, animFps, describeSpeed } from './shared.js';
-import { readShare, setupFor, configOf, overlayOptions, boundedProblems, DEFAULT_CONTROLS, VIEW_DEFAULTS } from './share.js';
-import { applyPageLimits } from './limits.js';
+import { Playback } from './run/playback.js';
+import { View } from './draw/view.js';
+import { Player } from './run/player.js';
+import { fitViews } from './draw/stage.js';
+import { speedRate, animFps, describeSpeed } from './ui/controls.js';
+import { readShare, setupFor, configOf, overlayOptions, boundedProblems, DEFAULT_CONTROLS, VIEW_DEFAULTS } from './ui/links.js';
+import { applyPageLimits } from './run/limits.js';
 
 const KEYS = ['scenario', 'planner', 'seed', 'speed', 'anim', 'overlays', 'step-size', 'raw-path', 'autoplay', 'click', 'controls'];
 const FLAGS = ['raw-path', 'autoplay', 'click'];

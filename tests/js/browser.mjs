@@ -59,7 +59,7 @@ export async function pageFixture() {
     }, value);
     await fx.waitState('idle');
   };
-  /** The page position (css px) of world point (x, y) on the workspace canvas (as layout.js's Layout). */
+  /** The page position (css px) of world point (x, y) on the workspace canvas (as draw/transform.js's Layout). */
   fx.toPage = async (x, y) => {
     const box = await fx.page.locator('#canvas').boundingBox();
     const [x0, y0, x1, y1] = (await fx.page.evaluate(() => window.planarium.scenario())).bounds;

@@ -6,7 +6,7 @@ import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
 import { pageFixture, SHOTS as shots } from './browser.mjs';
-import { PALETTE } from '../../www/palette.js';
+import { PALETTE } from '../../www/draw/palette.js';
 
 const fx = await pageFixture();
 let page;

@@ -81,7 +81,7 @@ test('serve.mjs sends the CSP, nosniff and no-referrer; every page carries the s
     assert.equal(res.headers.get('x-content-type-options'), 'nosniff', path);
     assert.ok(res.headers.get('content-security-policy'), path);
   }
-  assert.equal((await fetch(`${env.base}worker.js`)).headers.get('content-type'), 'text/javascript; charset=utf-8');
+  assert.equal((await fetch(`${env.base}worker/worker.js`)).headers.get('content-type'), 'text/javascript; charset=utf-8');
   assert.equal((await fetch(`${env.base}pkg/planarium_bg.wasm`)).headers.get('content-type'), 'application/wasm');
 });
 

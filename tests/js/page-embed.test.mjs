@@ -13,7 +13,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { startBrowser, ROOT as root, SHOTS as shots } from './browser.mjs';
 import { serve } from '../../scripts/serve.mjs';
-import { PALETTE } from '../../www/palette.js';
+import { PALETTE } from '../../www/draw/palette.js';
 
 const docs = readFileSync(join(root, 'docs', 'embedding.md'), 'utf8');
 /** The html block after `<!-- tested: name -->` in docs/embedding.md. */

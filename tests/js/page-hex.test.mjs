@@ -5,7 +5,7 @@
 import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
 import { pageFixture } from './browser.mjs';
-import { PALETTE } from '../../www/palette.js';
+import { PALETTE } from '../../www/draw/palette.js';
 
 const fx = await pageFixture();
 let page;

@@ -11,7 +11,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { startBrowser, ROOT, SHOTS } from './browser.mjs';
-import { encodeScenario, MAX_LINK_CHARS } from '../../www/share.js';
+import { encodeScenario, MAX_LINK_CHARS } from '../../www/ui/links.js';
 
 let env;
 before(async () => { env = await startBrowser(); });
@@ -146,7 +146,7 @@ test('a hash of "a&" × 524,288: a few bounded lines, no freeze, the pasted link
     const longest = await page.evaluate(() => window.__longest);
     // the reader alone, in the page, on that hash
     const readMs = await page.evaluate(async () => {
-      const { readShare } = await import('./share.js');
+      const { readShare } = await import('./ui/links.js');
       const t = performance.now();
       await readShare(location.hash);
       return performance.now() - t;

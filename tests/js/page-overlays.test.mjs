@@ -6,9 +6,9 @@ import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
 import { pageFixture, SHOTS as shots } from './browser.mjs';
-import { PALETTE } from '../../www/palette.js';
-import { thinTries, TRY_KEEP } from '../../www/thin.js';
-import { STRIDE, EventKind } from '../../www/events.js';
+import { PALETTE } from '../../www/draw/palette.js';
+import { thinTries, TRY_KEEP } from '../../www/worker/thin.js';
+import { STRIDE, EventKind } from '../../www/run/events.js';
 
 const fx = await pageFixture();
 let page;

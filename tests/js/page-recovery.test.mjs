@@ -18,13 +18,13 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { pageFixture, ROOT as root, SHOTS as shots } from './browser.mjs';
-import { WATCHDOG_MS, PAGE_MAX_NODES } from '../../www/limits.js';
+import { WATCHDOG_MS, PAGE_MAX_NODES } from '../../www/run/limits.js';
 
 const fx = await pageFixture();
 const { waitState, pickScenario } = fx;
 
 const narrow = JSON.parse(readFileSync(join(root, 'scenarios', 'narrow.json'), 'utf8'));
-/** A link's hash carrying `scenario` as JSON (share.js `base64:`). */
+/** A link's hash carrying `scenario` as JSON (ui/links.js `base64:`). */
 const linkFor = (scenario, extra = '') =>
   `#scenario=${encodeURIComponent(`base64:${Buffer.from(JSON.stringify(scenario)).toString('base64url')}`)}${extra}`;
 const crashing = { ...narrow, name: 'crash-on-run test' };

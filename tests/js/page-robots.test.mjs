@@ -7,8 +7,8 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { pageFixture, SHOTS as shots } from './browser.mjs';
-import { PALETTE } from '../../www/palette.js';
-import { wrapSegments, wrapInto, formatTick } from '../../www/cspace.js';
+import { PALETTE } from '../../www/draw/palette.js';
+import { wrapSegments, wrapInto, formatTick } from '../../www/draw/cspace.js';
 
 const fx = await pageFixture();
 let page;

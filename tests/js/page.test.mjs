@@ -6,8 +6,8 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { pageFixture, ROOT as root, SHOTS as shots } from './browser.mjs';
-import { PALETTE } from '../../www/palette.js';
-import { TRANSITIONS, toDot } from '../../www/controller.js';
+import { PALETTE } from '../../www/draw/palette.js';
+import { TRANSITIONS, toDot } from '../../www/run/controller.js';
 
 const fx = await pageFixture();
 let page;

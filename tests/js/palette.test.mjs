@@ -3,8 +3,8 @@
 // (Machado, Oliveira and Fernandes 2009, severity 1) and compared in CIELAB (ΔE*ab, CIE76).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { PALETTE } from '../../www/palette.js';
-import { SERIES } from '../../www/plots.js';
+import { PALETTE } from '../../www/draw/palette.js';
+import { SERIES } from '../../www/draw/plots.js';
 
 const MACHADO = {
   normal: [[1, 0, 0], [0, 1, 0], [0, 0, 1]],

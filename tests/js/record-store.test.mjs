@@ -4,8 +4,8 @@
 // records keeps every earlier chunk where it was. Prints the longest single append (not asserted).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { RecordStore } from '../../www/playback.js';
-import { STRIDE } from '../../www/events.js';
+import { RecordStore } from '../../www/run/playback.js';
+import { STRIDE } from '../../www/run/events.js';
 
 const batch = (from, n) => {
   const d = new Float64Array(n * STRIDE);

@@ -1,4 +1,4 @@
-// A fuzz of the share-link reader (share.js) in Node: valid links written by the page's own writer,
+// A fuzz of the share-link reader (ui/links.js) in Node: valid links written by the page's own writer,
 // then mutated (cut short, base64 characters flipped, bad %-escapes, unicode, RTL overrides, lone
 // surrogates, huge repeats of pairs, long keys and values, deflate bombs), thrown at readShare,
 // decodeScenario and parsePairs. For every input: no throw (decodeScenario: only an Error in words),
@@ -9,7 +9,7 @@ import assert from 'node:assert/strict';
 import {
   readShare, writeShare, decodeScenario, encodeScenario, parsePairs, toBase64url, boundedProblems,
   MAX_PAIRS, MAX_PROBLEMS, MAX_HASH_CHARS, MAX_SCENARIO_BYTES,
-} from '../../www/share.js';
+} from '../../www/ui/links.js';
 
 const SEED = 0x5eed13;
 const INPUTS = 10000;

@@ -8,7 +8,7 @@ import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { dirname, join } from 'node:path';
 import { initSync, Run, Scene, builtins, planners, event_kinds } from '../../www/pkg/planarium.js';
-import { EventKind, STRIDE } from '../../www/events.js';
+import { EventKind, STRIDE } from '../../www/run/events.js';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
 initSync({ module: readFileSync(join(root, 'www/pkg/planarium_bg.wasm')) });
@@ -66,7 +66,7 @@ test('wasm paths equal the native CLI paths number for number', () => {
   });
 });
 
-test('event constants in www/events.js match the core', () => {
+test('event constants in www/run/events.js match the core', () => {
   const k = JSON.parse(event_kinds());
   assert.equal(k.stride, STRIDE);
   assert.deepEqual(k.kinds, { ...EventKind });

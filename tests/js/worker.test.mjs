@@ -19,10 +19,10 @@ before(async () => {
   env = await startBrowser();
   page = await env.browser.newPage();
   page.on('pageerror', (e) => console.log(`[page error] ${e}`));
-  await page.goto(`${env.base}events.js`); // any page of the origin will do
+  await page.goto(`${env.base}run/events.js`); // any page of the origin will do
   // In the page: a driver that talks to one worker and collects its replies.
   await page.evaluate(() => {
-    const w = new Worker('/worker.js', { type: 'module' });
+    const w = new Worker('/worker/worker.js', { type: 'module' });
     const inbox = [];
     const waiters = [];
     w.onmessage = (e) => { inbox.push(e.data); waiters.splice(0).forEach((f) => f()); };

@@ -8,8 +8,8 @@
 //              {type: 'failed', id, message}: a bad set-up (the worker stays usable);
 //              {type: 'crashed', id, message}: the core panicked; the page replaces this worker.
 
-import init, { Run, install_panic_hook, last_panic } from './pkg/planarium.js';
-import { EventKind, STRIDE } from './events.js';
+import init, { Run, install_panic_hook, last_panic } from '../pkg/planarium.js';
+import { EventKind, STRIDE } from '../run/events.js';
 
 // The run goes to its end in one loop (the page cancels by terminating the worker); batches of this
 // many ms only bound each wasm call. An RRT* cost curve reads its COST events every 10 ms instead.

@@ -44,7 +44,7 @@ export class WorkerSession {
   }
 
   start() {
-    const w = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+    const w = new Worker(new URL('../worker/worker.js', import.meta.url), { type: 'module' });
     this.worker = w;
     this.latestRun = -1;      // `run` of the latest status/loaded/invalid message
     this.bumpsPending = 0;    // load/configure/reset sent, not yet answered: drop events until answered

@@ -16,9 +16,9 @@
 //   MINIMUM            a local minimum of the classic field: a ring with a label.
 // Every text shown comes from numbers and fixed words, set with textContent by the page.
 
-import { EventKind } from './events.js';
+import { EventKind } from '../run/events.js';
 import { PALETTE, STYLE } from './palette.js';
-import { drawObstacle, pointInPolygon } from './layout.js';
+import { drawObstacle, pointInPolygon } from './transform.js';
 
 const BIG = 20000;     // above this many cells, full redraws happen at most every…
 const BIG_MS = 250;    // …this many ms

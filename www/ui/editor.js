@@ -5,7 +5,7 @@
 // invalid start or goal is reported there, and dragging back fixes it).
 
 import { el } from './dom.js';
-import { pointInPolygon } from './layout.js';
+import { pointInPolygon } from '../draw/transform.js';
 
 const HIT = 10; // css px: how near a start/goal dot or handle a press must be
 

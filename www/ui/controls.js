@@ -1,7 +1,7 @@
 // Small helpers the playground and the compare page share: the scenario picker, the
 // playback-speed and animation sliders, and which live chart a planner gets.
 
-import { EventKind } from './events.js';
+import { EventKind } from '../run/events.js';
 
 /** Events per second for the playback slider `input` (its maximum: Infinity, all at once). */
 export function speedRate(input) {

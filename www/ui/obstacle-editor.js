@@ -9,8 +9,8 @@
 // Delete/Backspace deletes the selection; ctrl/cmd+Z undo, ctrl/cmd+shift+Z or ctrl+Y redo.
 
 import { el } from './dom.js';
-import { PALETTE } from './palette.js';
-import { pointInPolygon } from './layout.js';
+import { PALETTE } from '../draw/palette.js';
+import { pointInPolygon } from '../draw/transform.js';
 
 const HANDLE = 6; // css px: handle half-size and grab distance
 const MIN = 1e-3; // the smallest rectangle side or circle radius, as a fraction of the scene

@@ -8,8 +8,8 @@
 // An edge or path segment that wraps (|Δ| > half the range in a wrapping dimension) is drawn as
 // two pieces, each leaving the square on its side, clipped to the square.
 
-import { EventKind, STRIDE } from './events.js';
-import { makeLayer } from './layout.js';
+import { EventKind, STRIDE } from '../run/events.js';
+import { makeLayer } from './transform.js';
 
 const MARGIN = { left: 40, right: 12, top: 10, bottom: 36 }; // css px around the square
 

@@ -4,17 +4,17 @@
 // reset together, and the page is finished when both lanes are.
 // Read-only state for tests is exposed as window.planarium (lane-aware: stats('a'), result('b')).
 
-import { Controller } from './controller.js';
-import { View } from './view.js';
-import { PALETTE } from './palette.js';
-import { createPanel, taskOf } from './panel.js';
-import { Playback } from './playback.js';
-import { Chart } from './chart.js';
-import { Lane } from './lane.js';
-import { createStats } from './stats.js';
-import { createOverlays } from './overlays.js';
-import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend } from './shared.js';
-import { applyPageLimits } from './limits.js';
+import { Controller } from '../run/controller.js';
+import { View } from '../draw/view.js';
+import { PALETTE } from '../draw/palette.js';
+import { createPanel, taskOf } from '../ui/panel.js';
+import { Playback } from '../run/playback.js';
+import { Chart } from '../draw/chart.js';
+import { Lane } from '../run/lane.js';
+import { createStats } from '../ui/stats.js';
+import { createOverlays } from '../draw/overlays.js';
+import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend } from '../ui/controls.js';
+import { applyPageLimits } from '../run/limits.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {

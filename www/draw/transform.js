@@ -2,7 +2,7 @@
 // y down on the screen); the flat outlines and frames the worker sends, parsed; offscreen layers;
 // and the drawing primitives every layer uses (obstacles, markers, polylines, exhausted nodes).
 
-import { EventKind } from './events.js';
+import { EventKind } from '../run/events.js';
 import { PALETTE, STYLE } from './palette.js';
 
 const MARGIN = 10; // css px around the bounds

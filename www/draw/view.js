@@ -14,12 +14,12 @@
 //          the sensor's field of view, start/goal, markers, the best path so far, rewire flashes,
 //          the result's paths and the robot, the region of influence, local minima and the robot's
 //          t/2 circle, which are cheap to draw every frame.
-// The tables (colours, styles, overlays) are in palette.js; the transform and primitives in layout.js.
+// The tables (colours, styles, overlays) are in palette.js; the transform and primitives in transform.js.
 
-import { EventKind, STRIDE } from './events.js';
+import { EventKind, STRIDE } from '../run/events.js';
 import { drawRobotShape, drawInspection, robotStyle, outlineOf, footprintRadius, sensorPose } from './robots.js';
 import { PALETTE, STYLE, OVERLAY_DEFAULTS, TREE_LEGEND } from './palette.js';
-import { Layout, parseOutline, parseFrames, makeLayer, drawExhausted, drawObstacle, drawMarker, drawPolyline } from './layout.js';
+import { Layout, parseOutline, parseFrames, makeLayer, drawExhausted, drawObstacle, drawMarker, drawPolyline } from './transform.js';
 import { CellsDrawing } from './cells.js';
 
 const FLASH_MS = 600;        // a rewire flashes this long

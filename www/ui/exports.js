@@ -3,8 +3,8 @@
 // Each returns a Blob; the page decides where it goes (a download link). No HTML from data: the
 // SVG is built with DOM calls and serialised.
 
-import { PALETTE } from './palette.js';
-import { downloadBlob } from './stage.js';
+import { PALETTE } from '../draw/palette.js';
+import { downloadBlob } from '../draw/stage.js';
 
 const SVG_NS = 'http://www.w3.org/2000/svg';
 

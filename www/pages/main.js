@@ -1,34 +1,34 @@
 // Wiring: one player (player.js: the controller's table, a lane with the worker session, its
 // playback, the views and the chart, the actions and the frame loop), the panel, the overlay box
 // and the stats; the hover text of cells and potential fields (cells.js), and the note under the
-// canvas when a planner finds no path; the share link (share.js): the state is kept in the URL
+// canvas when a planner finds no path; the share link (ui/links.js): the state is kept in the URL
 // hash, and a page opened with a hash restores it. A link with problems stays in the address bar
 // as pasted (and is shown with them) until the state changes; Copy link checks the link reads back
-// and is short enough to paste (share.js checkLink), else offers Save JSON. When the worker
+// and is short enough to paste (ui/links.js checkLink), else offers Save JSON. When the worker
 // crashed or was replaced (the session's watchdog), the message says so and offers "Open the
 // default scenario instead", which leaves the hash's state (a crashing scenario would otherwise
 // come back with every reload).
 // Read-only state for tests is exposed as window.planarium (nothing else is global).
 
-import { BUTTONS } from './controller.js';
-import { View } from './view.js';
-import { PALETTE } from './palette.js';
-import { CSpaceView } from './cspace.js';
-import { Editor } from './editor.js';
-import { ObstacleEditor } from './obstacle-editor.js';
-import { wireExports } from './exports.js';
-import { fitViews, downloadText } from './stage.js';
-import { createPanel, taskOf } from './panel.js';
-import { Playback } from './playback.js';
-import { Chart } from './chart.js';
-import { Player } from './player.js';
-import { createStats } from './stats.js';
-import { createOverlays } from './overlays.js';
-import { cellLegend, cellSummary } from './cells.js';
-import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend } from './shared.js';
-import { readShare, setupFor, writeShare, checkLink, boundedProblems, cut, VIEW_DEFAULTS, MAX_HASH_CHARS, MAX_LINK_CHARS, MAX_SCENARIO_BYTES } from './share.js';
-import { OVERLAYS } from './palette.js';
-import { applyPageLimits } from './limits.js';
+import { BUTTONS } from '../run/controller.js';
+import { View } from '../draw/view.js';
+import { PALETTE } from '../draw/palette.js';
+import { CSpaceView } from '../draw/cspace.js';
+import { Editor } from '../ui/editor.js';
+import { ObstacleEditor } from '../ui/obstacle-editor.js';
+import { wireExports } from '../ui/exports.js';
+import { fitViews, downloadText } from '../draw/stage.js';
+import { createPanel, taskOf } from '../ui/panel.js';
+import { Playback } from '../run/playback.js';
+import { Chart } from '../draw/chart.js';
+import { Player } from '../run/player.js';
+import { createStats } from '../ui/stats.js';
+import { createOverlays } from '../draw/overlays.js';
+import { cellLegend, cellSummary } from '../draw/cells.js';
+import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend } from '../ui/controls.js';
+import { readShare, setupFor, writeShare, checkLink, boundedProblems, cut, VIEW_DEFAULTS, MAX_HASH_CHARS, MAX_LINK_CHARS, MAX_SCENARIO_BYTES } from '../ui/links.js';
+import { OVERLAYS } from '../draw/palette.js';
+import { applyPageLimits } from '../run/limits.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {

@@ -5,7 +5,7 @@
 // a multiple of the smallest power of two p with p·TRY_KEEP > k): the page still sees tries all
 // over the run, about TRY_KEEP more for every doubling. Other records are never touched.
 
-import { EventKind, STRIDE } from './events.js';
+import { EventKind, STRIDE } from '../run/events.js';
 
 export const TRY_KEEP = 50000;
 

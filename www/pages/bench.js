@@ -4,10 +4,10 @@
 // `bench --csv/--json-file/--ompl-log`), so the table and the exports match the CLI's numbers.
 // Read-only state for tests is exposed as window.planarium.
 
-import init, { builtins as builtinsJson, planners as plannersJson, bench_export as benchExport, parse_setups as parseSetups } from './pkg/planarium.js';
-import { fillScenarioPicker } from './shared.js';
-import { boxPlot, successBars, scatter, stepLines } from './plots.js';
-import { downloadText } from './stage.js';
+import init, { builtins as builtinsJson, planners as plannersJson, bench_export as benchExport, parse_setups as parseSetups } from '../pkg/planarium.js';
+import { fillScenarioPicker } from '../ui/controls.js';
+import { boxPlot, successBars, scatter, stepLines } from '../draw/plots.js';
+import { downloadText } from '../draw/stage.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
@@ -31,7 +31,7 @@ function showError(text) {
 }
 
 function newWorker() {
-  const w = new Worker(new URL('./bench-worker.js', import.meta.url), { type: 'module' });
+  const w = new Worker(new URL('../worker/bench-worker.js', import.meta.url), { type: 'module' });
   w.busy = null;
   w.onmessage = (e) => onWorkerMessage(w, e.data);
   w.onerror = (e) => { e.preventDefault(); onWorkerMessage(w, { type: 'crashed', id: w.busy?.id, message: e.message || 'worker error' }); };

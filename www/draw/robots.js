@@ -1,5 +1,5 @@
 // Each robot kind drawn as itself, from the outlines the core sends (a flat list of polygons or
-// polylines, see layout.js parseOutline) and the scenario state:
+// polylines, see transform.js parseOutline) and the scenario state:
 //   point  a dot at (x, y) (no outline);
 //   rigid  closed polygons, filled;
 //   arm    ONE open polyline: base, every joint, then the end effector (and, for the horn chain, a

@@ -35,7 +35,7 @@
 // how many more were like it, every key or value echoed cut to ECHO_CHARS characters.
 
 import { parseParam, plannerFits, taskOf } from './panel.js';
-import { OVERLAYS } from './palette.js';
+import { OVERLAYS } from '../draw/palette.js';
 
 export const VIEW_DEFAULTS = Object.freeze({ speed: 60, anim: 50, rawPath: false, stepSize: 1 });
 export const CONTROLS = Object.freeze(['run', 'pause', 'step', 'back', 'reset', 'speed', 'seed']);

@@ -39,7 +39,7 @@
 // `run` is a counter bumped on every run/reset/load, so the page can drop stale replies.
 
 import init, { Scene, Run, builtins, import_file, planners, event_kinds, install_panic_hook, last_panic, debug_panic }
-  from './pkg/planarium.js';
+  from '../pkg/planarium.js';
 import { thinTries } from './thin.js';
 
 const BATCH_MS = 12;          // one batch of planning, then yield to the message queue

@@ -3,7 +3,7 @@
 // Colours follow the Okabe–Ito palette where it matters (tree 0 / tree 1 / paths), so they stay
 // distinguishable with the common colour-vision deficiencies (they also differ in lightness).
 
-import { EventKind } from './events.js';
+import { EventKind } from '../run/events.js';
 
 export const PALETTE = Object.freeze({
   background: '#eef0f3',

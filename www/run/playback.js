@@ -10,7 +10,7 @@
 // hex-potential and potential-field planners (cells.js CellMirror).
 
 import { EventKind, STRIDE } from './events.js';
-import { CellMirror } from './cells.js';
+import { CellMirror } from '../draw/cells.js';
 import { STORE_CHUNK_RECORDS } from './limits.js';
 
 /**

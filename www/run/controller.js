@@ -91,7 +91,7 @@ export class Controller {
 /** The table as a graphviz digraph (docs/state-diagram.gv is this text). */
 export function toDot(table = TRANSITIONS) {
   const lines = [
-    '// Generated from www/controller.js (toDot); tests/js/page.test.mjs checks it against the table.',
+    '// Generated from www/run/controller.js (toDot); tests/js/page.test.mjs checks it against the table.',
     'digraph controller {',
     '  rankdir=LR;',
     '  node [shape=box, style=rounded, fontname="Helvetica"];',

@@ -2,7 +2,7 @@
 // marks, so the box is also the legend of what it switches. The boxes are built once per page and
 // never rebuilt, so their state stays when the scenario or the planner changes.
 
-import { el } from './dom.js';
+import { el } from '../ui/dom.js';
 import { OVERLAYS } from './palette.js';
 
 /** A legend mark (styled by .swatch in style.css, coloured by --c). */
