@@ -59,35 +59,38 @@ fn in_bisection_order<E>(n: usize, mut visit: impl FnMut(usize) -> Result<(), E>
 /// ended and how many states it visited (all valid but the last, when one was invalid).
 ///
 /// The first `skip` states in that order are taken as checked already (a check resumed by the
-/// batch journal, [`crate::journal`]): they are counted but not computed. Every 4 new states it
+/// batch journal, [`crate::journal`]): they are counted but not computed. Every 8 new states it
 /// calls `stop` with the units done; once that says so, it ends with [`Discrete::OutOfTime`],
 /// having visited (all valid) the states counted.
 #[allow(clippy::too_many_arguments)]
 pub fn check_discrete(space: &StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], skip: u64, stop: &dyn Fn(u64) -> bool, mut is_valid: impl FnMut(&[Real]) -> bool) -> (Discrete, u64) {
-    const EVERY: u64 = 4;
-    let mut visited = 0u64;
-    let mut late = false;
-    let mut visit = |q: Option<usize>, scratch: &mut [Real]| -> Result<(), ()> {
+    const EVERY: u64 = 8;
+    if skip == 0 && !is_valid(b) {
+        scratch.copy_from_slice(b);
+        return (Discrete::Invalid, 1);
+    }
+    let (mut visited, mut countdown, mut late) = (1u64, EVERY, false);
+    let all = in_bisection_order(n, |i| {
         if visited < skip {
             visited += 1;
             return Ok(());
         }
-        if visited > skip && (visited - skip).is_multiple_of(EVERY) && stop(EVERY) {
-            late = true;
-            return Err(());
+        countdown -= 1;
+        if countdown == 0 {
+            countdown = EVERY;
+            if stop(EVERY) {
+                late = true;
+                return Err(());
+            }
         }
-        match q {
-            Some(i) => space.interpolate(a, b, i as Real / n as Real, scratch),
-            None => scratch.copy_from_slice(b),
-        }
+        space.interpolate(a, b, i as Real / n as Real, scratch);
         visited += 1;
         if is_valid(scratch) {
             Ok(())
         } else {
             Err(())
         }
-    };
-    let all = visit(None, scratch).and_then(|()| in_bisection_order(n, |i| visit(Some(i), scratch)));
+    });
     (
         match (all, late) {
             (Ok(()), _) => Discrete::Valid,

@@ -17,8 +17,8 @@ pub fn take_tests() -> u64 {
 }
 
 #[inline]
-fn count_test() {
-    TESTS.with(|t| t.set(t.get() + 1));
+fn add_tests(n: u64) {
+    TESTS.with(|t| t.set(t.get() + n));
 }
 
 /// From this many obstacles on, queries go through a bounding-volume hierarchy (parry's `Bvh`)
@@ -148,35 +148,39 @@ impl Workspace {
     /// `true`; returns whether it did.
     #[inline]
     fn near(&self, bb: &Aabb, f: impl FnMut(usize) -> bool) -> bool {
-        self.near_probe(&Probe::of_box(*bb), f)
+        self.near_by(bb, || Probe::of_box(*bb), f)
     }
 
-    /// Like [`Workspace::near`], pruning by the probe's shape, not only its box.
+    /// Like [`Workspace::near`]; the hierarchy is pruned by the query's shape, which `probe` makes
+    /// (only when there is a hierarchy: a scan of a few boxes tests `bb` alone).
     #[inline]
-    fn near_probe(&self, probe: &Probe, mut f: impl FnMut(usize) -> bool) -> bool {
+    fn near_by(&self, bb: &Aabb, probe: impl FnOnce() -> Probe, mut f: impl FnMut(usize) -> bool) -> bool {
+        // (Exact tests are counted only through the hierarchy: a scan has fewer than BVH_FROM.)
         match &self.bvh {
-            None => self.boxes.iter().enumerate().any(|(i, bx)| bx.intersects(&probe.bb) && {
-                count_test();
-                f(i)
-            }),
-            Some(t) => t.leaves(|n| probe.may_meet(Vec2::new(n.mins().x, n.mins().y), Vec2::new(n.maxs().x, n.maxs().y))).any(|i| {
-                count_test();
-                f(i as usize)
-            }),
+            None => self.boxes.iter().enumerate().any(|(i, bx)| bx.intersects(bb) && f(i)),
+            Some(t) => {
+                let probe = probe();
+                let mut tests = 0;
+                let found = t.leaves(|n| probe.may_meet(Vec2::new(n.mins().x, n.mins().y), Vec2::new(n.maxs().x, n.maxs().y))).any(|i| {
+                    tests += 1;
+                    f(i as usize)
+                });
+                if tests > 0 {
+                    add_tests(tests);
+                }
+                found
+            }
         }
     }
 
     /// The first obstacle (in scenario order) whose box meets `bb` and that passes `hit`.
     #[inline]
-    fn first(&self, probe: &Probe, hit: impl Fn(usize) -> bool) -> Option<usize> {
+    fn first(&self, bb: &Aabb, probe: impl FnOnce() -> Probe, hit: impl Fn(usize) -> bool) -> Option<usize> {
         match &self.bvh {
-            None => (0..self.obstacles.len()).find(|&i| self.boxes[i].intersects(&probe.bb) && {
-                count_test();
-                hit(i)
-            }),
+            None => (0..self.obstacles.len()).find(|&i| self.boxes[i].intersects(bb) && hit(i)),
             Some(_) => {
                 let mut first: Option<usize> = None;
-                self.near_probe(probe, |i| {
+                self.near_by(bb, probe, |i| {
                     if first.is_none_or(|f| i < f) && hit(i) {
                         first = Some(i);
                     }
@@ -196,7 +200,6 @@ impl Workspace {
                 let mut best = cap;
                 for (i, bx) in self.boxes.iter().enumerate() {
                     if bx.intersects(&bb.grown(best)) {
-                        count_test();
                         best = best.at_most(dist(i, best));
                         if best == 0.0 {
                             break;
@@ -211,7 +214,7 @@ impl Workspace {
                 for i in t.leaves(|n| node_meets(n, &bb.grown(best.get()))) {
                     let b = best.get();
                     if self.boxes[i as usize].intersects(&bb.grown(b)) {
-                        count_test();
+                        add_tests(1);
                         best.set(b.at_most(dist(i as usize, b)));
                         if best.get() == 0.0 {
                             break;
@@ -225,7 +228,8 @@ impl Workspace {
 
     /// The index of the first obstacle that contains `p`, if any.
     pub fn point_hit(&self, p: Vec2) -> Option<usize> {
-        self.first(&Probe::of_box(Aabb { min: p, max: p }), |i| self.obstacles[i].contains_point(p))
+        let bb = Aabb { min: p, max: p };
+        self.first(&bb, || Probe::of_box(bb), |i| self.obstacles[i].contains_point(p))
     }
 
     /// Whether the point `p` lies in (or on) an obstacle.
@@ -235,7 +239,7 @@ impl Workspace {
 
     /// Whether the closed segment `a b` meets an obstacle.
     pub fn segment_hits(&self, a: Vec2, b: Vec2) -> bool {
-        self.near_probe(&Probe::of_segment(a, b), |i| self.obstacles[i].intersects_segment(a, b))
+        self.near_by(&Aabb::of_points(&[a, b]), || Probe::of_segment(a, b), |i| self.obstacles[i].intersects_segment(a, b))
     }
 
     /// The distance from the closed polygon `poly` to the nearest obstacle, capped at `cap`
@@ -248,7 +252,7 @@ impl Workspace {
     /// The index of the first obstacle that the segment `a b` meets (its interior only when the
     /// workspace is [`open`](Workspace::open)), if any.
     pub fn segment_hit(&self, a: Vec2, b: Vec2) -> Option<usize> {
-        self.first(&Probe::of_segment(a, b), |i| if self.open { self.obstacles[i].interior_meets_segment(a, b) } else { self.obstacles[i].intersects_segment(a, b) })
+        self.first(&Aabb::of_points(&[a, b]), || Probe::of_segment(a, b), |i| if self.open { self.obstacles[i].interior_meets_segment(a, b) } else { self.obstacles[i].intersects_segment(a, b) })
     }
 
     /// The distance from the segment `a b` to the nearest obstacle, capped at `cap` (0 when it
@@ -261,32 +265,32 @@ impl Workspace {
     /// obstacle's interior. Touching (grazing a vertex, running along an edge, ending on the
     /// boundary) does not block, whatever [`open`](Workspace::open) says (see [`super::sight`]).
     pub fn sight_clear(&self, a: Vec2, b: Vec2) -> bool {
-        !self.near_probe(&Probe::of_segment(a, b), |i| self.obstacles[i].interior_meets_segment(a, b))
+        !self.near_by(&Aabb::of_points(&[a, b]), || Probe::of_segment(a, b), |i| self.obstacles[i].interior_meets_segment(a, b))
     }
 
     /// The index of the first obstacle that the closed polygon `poly` meets, if any.
     pub fn polygon_hit(&self, poly: &[Vec2]) -> Option<usize> {
-        let probe = Probe::of_polygon(poly);
-        self.first(&probe, |i| self.obstacles[i].intersects_polygon(poly, &probe.bb))
+        let bb = Aabb::of_points(poly);
+        self.first(&bb, || Probe::of_polygon(poly), |i| self.obstacles[i].intersects_polygon(poly, &bb))
     }
 
     /// An obstacle (the first found, not necessarily the first in scenario order) that the closed
     /// polygon `poly` meets, if any: for validity, where any will do and the search stops at it.
     pub fn polygon_hit_any(&self, poly: &[Vec2]) -> Option<usize> {
-        let probe = Probe::of_polygon(poly);
-        self.any(&probe, |i| self.obstacles[i].intersects_polygon(poly, &probe.bb))
+        let bb = Aabb::of_points(poly);
+        self.any(&bb, || Probe::of_polygon(poly), |i| self.obstacles[i].intersects_polygon(poly, &bb))
     }
 
     /// Like [`Workspace::segment_hit`], but any obstacle met (see [`Workspace::polygon_hit_any`]).
     pub fn segment_hit_any(&self, a: Vec2, b: Vec2) -> Option<usize> {
-        self.any(&Probe::of_segment(a, b), |i| if self.open { self.obstacles[i].interior_meets_segment(a, b) } else { self.obstacles[i].intersects_segment(a, b) })
+        self.any(&Aabb::of_points(&[a, b]), || Probe::of_segment(a, b), |i| if self.open { self.obstacles[i].interior_meets_segment(a, b) } else { self.obstacles[i].intersects_segment(a, b) })
     }
 
     /// An obstacle whose box meets `bb` and that passes `hit`, the first the broad phase finds.
     #[inline]
-    fn any(&self, probe: &Probe, hit: impl Fn(usize) -> bool) -> Option<usize> {
+    fn any(&self, bb: &Aabb, probe: impl FnOnce() -> Probe, hit: impl Fn(usize) -> bool) -> Option<usize> {
         let mut found = None;
-        self.near_probe(probe, |i| {
+        self.near_by(bb, probe, |i| {
             let h = hit(i);
             if h {
                 found = Some(i);
