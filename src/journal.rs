@@ -126,14 +126,6 @@ impl Journal {
     pub fn pause(&mut self) {
         self.mode = Mode::Off;
     }
-    /// Entries held.
-    pub fn len(&self) -> usize {
-        self.entries.len()
-    }
-    /// Whether it holds nothing.
-    pub fn is_empty(&self) -> bool {
-        self.entries.is_empty()
-    }
     /// Whether answers are being recorded (or replayed).
     #[inline]
     pub fn on(&self) -> bool {
