@@ -37,6 +37,7 @@ const WHY = {
 export class CellMirror {
   constructor() {
     this.cells = new Map(); // id → {id, level, parent, x, y, label, radius, n, pts, done, state, why, from, terms, ...}
+    this.split = new Set(); // ids of cells refined into children (a child's CELL has come)
     this.order = [];        // ids of complete cells, in arrival order
     this.changed = [];      // ids whose verdict changed since the latest REGION, in order
     this.regions = [];      // [{attempt, x, y, radius, limit, inside, t}]
@@ -60,6 +61,7 @@ export class CellMirror {
         const n = d[o + 8] | 0;
         this.cells.set(id, { id, level: d[o + 1], parent: d[o + 3], x: d[o + 4], y: d[o + 5], label: d[o + 6],
           radius: d[o + 7], n, pts: [], done: false, state: -1, why: 0, from: -1, attempt: -1, terms: null });
+        if (d[o + 3] >= 0) this.split.add(d[o + 3]);
         return;
       }
       case EventKind.CELL_SHAPE: {
@@ -402,6 +404,8 @@ export class CellsDrawing {
       const s = m.sampleAt(x, y);
       if (!s) return null;
       return [
+        Number.isFinite(s.v) ? 'Potential here: the goal pulls the robot and the obstacles push it; it moves downhill.'
+          : 'The robot would collide here: the potential is infinite.',
         `potential field at (${fmt(s.x)}, ${fmt(s.y)})`,
         `attraction ${fmt(s.a)}`,
         `repulsion ${fmt(s.b)}`,
@@ -421,8 +425,39 @@ function centreOf(c) {
   return [x / (c.pts.length / 2), y / (c.pts.length / 2)];
 }
 
+// Why a step was blocked, as the end of a sentence (the step test's reasons, src/planners/hex/step.rs).
+const WHY_SENTENCE = {
+  1: "an obstacle vertex lies within t/2 of this cell's centre, where the robot would stand",
+  2: 'an obstacle vertex lies in the rectangle the robot would sweep on the step here',
+  3: 'an obstacle edge crosses the region the robot would sweep on the step here',
+  4: "the map's edge is within t/2 of this cell's centre",
+};
+
+/**
+ * The hover text's first line: one plain sentence about cell `c` (fields of a CellMirror cell:
+ * label, level, state, why) — the search's verdict when it has one, else what the cell is.
+ * `split`: whether the cell was refined into children.
+ */
+export function cellSentence(c, split = false) {
+  switch (c.state) {
+    case 0: return 'Passable: the step into this cell is clear, so the search may go here.';
+    case 1: return `Blocked: ${WHY_SENTENCE[c.why] || 'the step test failed'}.`;
+    case 2: return `Visited: the search stepped into this cell (level ${c.level}).`;
+    case 3: return 'Outside the region of influence: the search does not look at this cell yet.';
+    case 4: return 'Obstacle cell: an obstacle meets it, so the search does not go here.';
+    default:
+  }
+  if (c.label === 0) return `Free cell at level ${c.level}: no obstacle touches it.`;
+  if (c.label === 2) return 'Full cell: it lies wholly inside an obstacle.';
+  if (c.label === 1) {
+    return split ? 'Mixed cell: partly inside an obstacle (or, refining for clearance, within t/2 of one), so it was split.'
+      : 'Mixed cell: partly inside an obstacle and too small to split, so the search leaves it out.';
+  }
+  return `Cell at level ${c.level}.`;
+}
+
 function describeCell(m, c) {
-  const lines = [`cell ${c.id} · level ${c.level} · ${LABELS[c.label] || `label ${c.label}`}`];
+  const lines = [cellSentence(c, m.split.has(c.id)), `cell ${c.id} · level ${c.level} · ${LABELS[c.label] || `label ${c.label}`}`];
   if (c.state >= 0) {
     let s = STATES[c.state] || `state ${c.state}`;
     if (c.state === 1 && WHY[c.why]) s += `: ${WHY[c.why]}`;

@@ -67,6 +67,7 @@ export class CSpaceView {
     this.box = null;
     this.dpr = 1;
     this.options = { showRejected: false, showCollisions: true };
+    this.hooks = [];     // (ctx, view) => void, drawn last (ghost.js: the crosshair of a hovered pose)
     this.clearRun();
   }
 
@@ -136,6 +137,26 @@ export class CSpaceView {
     this.canvas.style.height = `${cssH}px`;
     this.drawScene();
     this.redrawTree();
+  }
+
+  /** The (q1, q2) under css point (x, y) of the canvas, or null outside the square. */
+  qAt(x, y) {
+    if (!this.space || !this.plot) return null;
+    const u = (x * this.dpr - this.plot.x) / this.plot.s, v = 1 - (y * this.dpr - this.plot.y) / this.plot.s;
+    if (!(u >= 0 && u <= 1 && v >= 0 && v <= 1)) return null;
+    const [d0, d1] = this.space.dims;
+    return [d0.lo + u * (d0.hi - d0.lo), d1.lo + v * (d1.hi - d1.lo)];
+  }
+
+  /**
+   * Whether (q1, q2) is free by the core's grid, the cell drawn under it (true, false, or null
+   * with no space).
+   */
+  isFree(q) {
+    if (!this.space) return null;
+    const { n, grid, dims } = this.space;
+    const cell = (v, d) => Math.min(n - 1, Math.max(0, Math.floor(((wrapInto(v, d) - d.lo) / (d.hi - d.lo)) * n)));
+    return !!grid[cell(q[1], dims[1]) * n + cell(q[0], dims[0])];
   }
 
   sx(q) { const d = this.space.dims[0]; return this.plot.x + ((q - d.lo) / (d.hi - d.lo)) * this.plot.s; }
@@ -324,6 +345,7 @@ export class CSpaceView {
     if (this.goal) this.dot(this.goal, P.goal, 6);
     if (this.showResult && this.state) this.dot(this.state, P.robotEdge, 4);
     ctx.restore();
+    for (const hook of this.hooks) hook(ctx, this);
   }
 
   polyline(pts, color, width, dash = []) {

@@ -55,6 +55,8 @@ export class View {
     this.editable = false;                       // draw the rotation handles of a rigid body
     this.robotState = null;                      // the animated robot's state, after render()
     this.overlayHooks = [];                      // (ctx, layout) => void, drawn above the scene
+    this.topHooks = [];                          // (ctx, layout) => void, drawn last, over the robot
+                                                 // (ghost.js: the linked views' ghost arm)
     this.clearRun();
   }
 
@@ -425,7 +427,7 @@ export class View {
       ctx.drawImage(l.canvas, 0, 0);
       if (l === this.cellsLayer && this.cells.active(o)) this.cells.veil(ctx, L, this.scenario);
     }
-    if (!this.scenario) return;
+    if (!this.scenario) { this.drawTopHooks(ctx, L); return; }
     const inspection = this.scenario.inspection;
     const seen = o.showSeen && this.model ? this.model.seen : null;
     drawInspection(ctx, L, inspection?.points, PALETTE.inspection, PALETTE.robotEdge, seen, PALETTE.seen);
@@ -459,10 +461,17 @@ export class View {
       frame = frames[Math.floor((time / 1000) * animFps) % frames.length];
     }
     if (inspection && o.showFov) this.drawSensor(ctx, frame ? frame.state : this.stateOf('start'), best);
-    if (!frame) return;
-    drawRobotShape(ctx, L, this.scenario.robot, frame.polys, frame.state, robotStyle(null, 'robot', PALETTE));
-    this.robotState = frame.state;
-    this.cells.drawRobotT(ctx, L, o, frame.state);
+    if (frame) {
+      drawRobotShape(ctx, L, this.scenario.robot, frame.polys, frame.state, robotStyle(null, 'robot', PALETTE));
+      this.robotState = frame.state;
+      this.cells.drawRobotT(ctx, L, o, frame.state);
+    }
+    this.drawTopHooks(ctx, L);
+  }
+
+  /** The hooks drawn over everything (they also run, to clear what they show, with no scenario). */
+  drawTopHooks(ctx, L) {
+    for (const hook of this.topHooks) hook(ctx, L);
   }
 
   /** Rewired edges, fading out; expired flashes are dropped. */

@@ -25,6 +25,7 @@ import { Player } from '../run/player.js';
 import { createStats } from '../ui/stats.js';
 import { createOverlays } from '../draw/overlays.js';
 import { cellLegend, cellSummary } from '../draw/cells.js';
+import { linkViews } from '../draw/linked.js';
 import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend } from '../ui/controls.js';
 import { readShare, setupFor, writeShare, checkLink, boundedProblems, cut, VIEW_DEFAULTS, MAX_HASH_CHARS, MAX_LINK_CHARS, MAX_SCENARIO_BYTES } from '../ui/links.js';
 import { OVERLAYS } from '../draw/palette.js';
@@ -563,6 +564,9 @@ ui.canvas.addEventListener('pointermove', (e) => {
 });
 ui.canvas.addEventListener('pointerleave', hideTip);
 ui.canvas.addEventListener('pointerdown', hideTip);
+
+// Linked views (linked.js): the arm's c-space ↔ workspace under the pointer; the heat map's scale.
+linkViews({ view, cspace, canvas: ui.canvas, cspaceCanvas: ui.cspace, stage: ui.stage, model: playback.model });
 
 // Size: the views follow the stage (and the device pixel ratio).
 const onResize = fitViews(ui.stage, view, cspace);
