@@ -1,14 +1,14 @@
 // Linked views (issue 14): what the pointer is over in one view, shown in the other.
 //   c-space → workspace: hovering (q1, q2) on the configuration-space canvas of a 2-joint arm
 //     draws a ghost arm in that pose on the workspace canvas, red where the c-space grid (the
-//     core's answer, as drawn) says the pose collides, green where it is free, and a small label
+//     core's answer, as drawn) says the pose collides, purple where it is free, and a small label
 //     of the angles near its end effector;
 //   workspace → c-space: hovering the workspace, the tree node, path pose, start or goal whose
 //     end effector (where the workspace draws it) lies within a few pixels of the pointer is
 //     marked in the c-space by a crosshair (and drawn as a ghost arm), labelled;
 //   the heat map's scale: while the potential heat map is shown, a bar of its colours with the
-//     lowest, middle (median) and highest value and the quantity's name, over the workspace's
-//     top-right corner.
+//     lowest, middle (median) and highest value and the quantity's name, beside the workspace
+//     canvas (right, else left) when the stage has room, else over its top-right corner.
 // Leaving a canvas (or pressing on it) removes the ghost. Everything is drawn through the views'
 // hooks (view.topHooks, cspace.hooks); the labels are DOM elements set with textContent.
 
@@ -17,9 +17,10 @@ import { PALETTE } from './palette.js';
 import { outlineOf, sensorPose } from './robots.js';
 import { fmt } from './cells.js';
 
-/** The ghost's colours: free (green), colliding (red), the crosshair's (purple), casings. */
+/** The ghost's colours: free (purple), colliding (red), the crosshair's (purple), casings. */
+// Free is purple, the linked hover's colour (the crosshair's too), not green: the goal arm is green.
 export const GHOST = Object.freeze({
-  free: '#1a9850',
+  free: '#7b3294',
   collides: '#d7301f',
   cross: '#7b3294',
   casing: '#ffffff',
@@ -145,10 +146,14 @@ export function linkViews({ view, cspace, canvas, cspaceCanvas, stage, model }) 
     c.addEventListener(ev, () => { if (ghost) show(null); });
   }
 
-  const placeScale = () => { // the workspace canvas's top-right corner, inside it
-    const [x, y] = css(canvas, canvas.clientWidth, 0);
-    scale.root.style.left = `${Math.max(0, x - scale.root.offsetWidth - 8)}px`;
-    scale.root.style.top = `${Math.max(0, y + 8)}px`;
+  const placeScale = () => { // beside the workspace canvas when the stage has room, else over its top-right corner
+    const w = scale.root.offsetWidth, gap = 8;
+    const [left, top] = css(canvas, 0, 0), right = left + canvas.clientWidth;
+    const room = !cspace.active; // the c-space canvas takes the stage's other half
+    const x = room && right + gap + w <= stage.clientWidth ? right + gap
+      : room && left - gap - w >= 0 ? left - gap - w : right - w - gap;
+    scale.root.style.left = `${Math.max(0, x)}px`;
+    scale.root.style.top = `${Math.max(0, top + (x >= right || x + w <= left ? 0 : gap))}px`;
   };
   view.topHooks.push((ctx, L) => {
     scale.sync(view, placeScale);
