@@ -258,7 +258,7 @@ function heatScaleBox() {
     lo.textContent = fmt(range.min);
     mid.textContent = fmt(range.median);
     hi.textContent = fmt(range.max);
-    note.textContent = `colours by rank: each ninth of the ${m.field.length - range.infinite} samples`
+    note.textContent = `light low, dark high, by rank: each colour holds a ninth of the ${m.field.length - range.infinite} samples`
       + (range.infinite ? `; ${range.infinite} colliding (∞) in the obstacle colour` : '');
     root.setAttribute('aria-label', `Heat map scale of the ${name.textContent}: from ${lo.textContent} (light) to ${hi.textContent} (dark)`);
     draw();
