@@ -158,6 +158,7 @@ export function linkViews({ view, cspace, canvas, cspaceCanvas, stage, model }) 
   view.topHooks.push((ctx, L) => {
     scale.sync(view, placeScale);
     const robot = arm();
+    if (ghost && !robot) { ghost = null; label.hidden = true; } // another scenario came in under it
     if (!ghost || !robot) return;
     drawGhost(ctx, L, robot, ghost.q, ghost.free ? GHOST.free : GHOST.collides);
   });
