@@ -15,13 +15,17 @@ pub const STRIDE: usize = 12;
 #[repr(u8)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum EventKind {
-    /// A sample was drawn (`x, y`: where it is drawn).
+    /// A sample was drawn (`x, y`: where it is drawn); `id` 1 when it is the goal itself (the goal
+    /// bias), 0 when the sampler drew it.
     Sample = 0,
     /// A sample was rejected before growing (invalid state).
     SampleRejected = 1,
     /// A node was added: `id`, `parent`, its point `x, y`, its parent's `px, py`.
     NodeAdded = 2,
-    /// A motion was found in collision at `x, y`.
+    /// A motion was found in collision at `x, y` (the invalid state found): `parent` the node it
+    /// started from (at `px, py`; -1 when unknown); `id` what blocked it, from
+    /// [`SpaceInfo::blocker`](crate::space_info::SpaceInfo::blocker): an obstacle's index in the
+    /// scenario (≥ 0), -2 the map's edge, -3 one of the robot's own rules, -1 not known.
     Collision = 3,
     /// The two trees met at `x, y` (`id` in `tree`, `parent`: the node in the other tree).
     TreesConnected = 4,
@@ -70,11 +74,20 @@ pub enum EventKind {
     /// A local minimum was detected at `x, y` (classic potential field): `id` the escapes so far;
     /// `px` the potential there; `py` the distance to the goal.
     Minimum = 19,
+    /// A growth step chose node `id` of `tree` to grow (RRT's NEAREST, or the node the tree
+    /// variants select): `x, y` its point; `px, py` the target's point (a sample, or a node of the
+    /// other tree); `c0` their distance; `c1` the node's dynamic-domain radius (∞: none); `pc0` 1
+    /// when the target is a sample, 0 when it is a state of the other tree (CONNECT).
+    Nearest = 20,
+    /// A growth step steered from node `id` (at `px, py`) toward its target: `x, y` the new
+    /// state's point; `c0` the step's length; `c1` the range; `pc0` 1 when the step reaches the
+    /// target. The motion is checked next: a `Collision` or a `NodeAdded` follows.
+    Steer = 21,
 }
 
 impl EventKind {
     /// Every kind with its name, for the JS constant check.
-    pub const ALL: [(EventKind, &'static str); 20] = [
+    pub const ALL: [(EventKind, &'static str); 22] = [
         (EventKind::Sample, "SAMPLE"),
         (EventKind::SampleRejected, "SAMPLE_REJECTED"),
         (EventKind::NodeAdded, "NODE_ADDED"),
@@ -95,6 +108,8 @@ impl EventKind {
         (EventKind::Region, "REGION"),
         (EventKind::Field, "FIELD"),
         (EventKind::Minimum, "MINIMUM"),
+        (EventKind::Nearest, "NEAREST"),
+        (EventKind::Steer, "STEER"),
     ];
 }
 

@@ -339,6 +339,25 @@ impl SpaceInfo {
     pub fn workspace(&self) -> Option<&crate::geometry::Workspace> {
         self.validity.workspace()
     }
+    /// What blocked the motion `a → b`, found invalid at `at`, for the explanation of a
+    /// [`Collision`](crate::events::EventKind::Collision) event: the index of the obstacle the
+    /// robot meets at `at` (the first in scenario order; for a robot with an exact sweep whose
+    /// state `at` is free, the first obstacle the sweep meets), -2 the map's edge, -3 one of the
+    /// robot's own rules (self-collision, a joint limit), -1 not known (a motion refused
+    /// unchecked: out of time, or too long to check). Not counted as a state check, not journalled:
+    /// it asks nothing a planner decides by.
+    pub fn blocker(&self, a: &[Real], b: &[Real], at: &[Real]) -> i64 {
+        use crate::robot::Verdict;
+        match self.validity.verdict(at) {
+            Verdict::Collision(i) => i as i64,
+            Verdict::OutOfBounds(_) => -2,
+            Verdict::Invalid(_) => -3,
+            Verdict::Valid => match (self.workspace(), self.validity.sweep_hits(a, b)) {
+                (Some(ws), Some(true)) => ws.segment_hit(self.project(a), self.project(b)).map_or(-1, |i| i as i64),
+                _ => -1,
+            },
+        }
+    }
     /// The body's outline at `q`, as closed polygons (none for a point robot).
     pub fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>> {
         self.validity.outline(q)

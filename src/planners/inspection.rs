@@ -447,6 +447,7 @@ impl Inspection {
             return None;
         }
         let d = cx.si.distance(tree.state(source), &self.sample);
+        cx.note_nearest(0, source, tree.state(source), &self.sample, d, Real::INFINITY, true);
         if d == 0.0 {
             return None;
         }
@@ -460,8 +461,9 @@ impl Inspection {
                 return None;
             }
         }
+        cx.note_steer(0, source, tree.state(source), &self.new, d.min(self.range), self.range, reached);
         if cx.si.check_motion(tree.state(source), &self.new, &mut self.scratch).is_err() {
-            cx.events.at(EventKind::Collision, 0, cx.si.project(&self.scratch), &self.scratch);
+            cx.note_collision(0, source, tree.state(source), &self.new, &self.scratch);
             cx.sampler.note_collision(tree.state(source));
             return None;
         }

@@ -88,9 +88,38 @@ impl Context<'_> {
         let mut d = Draw { si: self.si, rng: self.rng, events: self.events, tree };
         let ok = self.sampler.sample(&mut d, out);
         if ok {
-            self.events.at(EventKind::Sample, tree, self.si.project(out), out);
+            let p = self.si.project(out);
+            self.events.push(EventKind::Sample, tree, self.sampler.drew_goal() as i64, -1, p, p, out, out);
         }
         ok
+    }
+    /// Log a growth step's choice: node `near` of tree `tree` (state `from`) grows toward
+    /// `target`, at distance `d`; `domain`: the node's dynamic-domain radius (∞: none);
+    /// `sample`: whether the target is a sample (not a state of the other tree).
+    #[allow(clippy::too_many_arguments)]
+    pub fn note_nearest(&mut self, tree: usize, near: u32, from: &[Real], target: &[Real], d: Real, domain: Real, sample: bool) {
+        if self.events.enabled {
+            let (p, t) = (self.si.project(from), self.si.project(target));
+            self.events.values(EventKind::Nearest, tree, near as i64, -1, [p.x, p.y, t.x, t.y, d, domain, sample as u8 as f64, 0.0]);
+        }
+    }
+    /// Log a growth step's steering: from node `near` (state `from`) a step of `step` (the range
+    /// `range`) to the state `new`, which is the target itself when `reached`.
+    #[allow(clippy::too_many_arguments)]
+    pub fn note_steer(&mut self, tree: usize, near: u32, from: &[Real], new: &[Real], step: Real, range: Real, reached: bool) {
+        if self.events.enabled {
+            let (p, q) = (self.si.project(new), self.si.project(from));
+            self.events.values(EventKind::Steer, tree, near as i64, -1, [p.x, p.y, q.x, q.y, step, range, reached as u8 as f64, 0.0]);
+        }
+    }
+    /// Log a blocked motion from node `from` (state `a`) toward `b`, found invalid at `at`, with
+    /// what blocked it ([`SpaceInfo::blocker`]).
+    pub fn note_collision(&mut self, tree: usize, from: u32, a: &[Real], b: &[Real], at: &[Real]) {
+        if self.events.enabled {
+            let why = self.si.blocker(a, b, at);
+            let (p, pp) = (self.si.project(at), self.si.project(a));
+            self.events.push(EventKind::Collision, tree, why, from as i64, p, pp, at, a);
+        }
     }
 }
 

@@ -250,6 +250,7 @@ impl Tree {
 
     fn grow(&mut self, cx: &mut Context, target: &[Real], range: Real, scratch: &mut [Real], new: &mut [Real], sample: bool) -> (Grow, u32) {
         let (near, d) = self.select(cx, target);
+        cx.note_nearest(self.index, near, self.state(near), target, d, self.domain(near), sample);
         if d == 0.0 {
             return (Grow::Reached, near);
         }
@@ -272,8 +273,9 @@ impl Tree {
             return (Grow::Trapped, near);
         }
         let near_state = &self.states[near as usize * self.dims..(near as usize + 1) * self.dims];
+        cx.note_steer(self.index, near, near_state, new, if reached { d } else { range }, range, reached);
         if cx.si.check_motion(near_state, new, scratch).is_err() {
-            cx.events.at(EventKind::Collision, self.index, cx.si.project(scratch), scratch);
+            cx.note_collision(self.index, near, near_state, new, scratch);
             cx.sampler.note_collision(self.state(near));
             self.record(cx, near, true);
             return (Grow::Trapped, near);

@@ -121,6 +121,8 @@ pub struct Sampler {
     c: Vec<Real>,
     /// Whether `a` and `b` are the last sample's witnesses.
     witnessed: bool,
+    /// Whether the last sample was the goal itself (the goal bias).
+    goal_drawn: bool,
     stats: SamplerStats,
 }
 
@@ -222,6 +224,7 @@ impl Sampler {
             b: vec![0.0; n],
             c: vec![0.0; n],
             witnessed: false,
+            goal_drawn: false,
             stats: SamplerStats::default(),
         }
     }
@@ -246,6 +249,10 @@ impl Sampler {
     pub fn witnesses(&self) -> Option<(&[Real], &[Real])> {
         self.witnessed.then_some((&self.a[..], &self.b[..]))
     }
+    /// Whether the last sample drawn was the goal itself (the goal bias), not the sampler's.
+    pub fn drew_goal(&self) -> bool {
+        self.goal_drawn
+    }
     /// The near-collision sampler's current centre and its sigma (a fraction of each range), and
     /// the samples drawn since it was last re-centred at random; `None` before its first sample
     /// or collision, and for the other samplers.
@@ -269,9 +276,11 @@ impl Sampler {
 
     fn draw(&mut self, d: &mut Draw, out: &mut [Real]) -> bool {
         self.witnessed = false;
+        self.goal_drawn = false;
         if self.goal_bias > 0.0 && d.rng.uniform01() < self.goal_bias {
             if let Some(g) = &self.goal {
                 out.copy_from_slice(g);
+                self.goal_drawn = true;
                 self.stats.draws += 1;
                 return true;
             }

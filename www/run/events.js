@@ -3,10 +3,10 @@
 // constants against the wasm module's event_kinds().
 export const STRIDE = 12;
 export const EventKind = Object.freeze({
-  SAMPLE: 0,
+  SAMPLE: 0, // id: 1 the goal itself (goal bias)
   SAMPLE_REJECTED: 1,
   NODE_ADDED: 2,
-  COLLISION: 3,
+  COLLISION: 3, // id: obstacle index (-2 map edge, -3 robot's own rule, -1 unknown), parent: node, px py: its point
   TREES_CONNECTED: 4,
   SOLVED: 5,
   SAMPLE_TRY: 6, // id: 1 free, 0 occupied
@@ -24,4 +24,7 @@ export const EventKind = Object.freeze({
   REGION: 17, // id: attempt, x y: centre, px: radius, py: final radius, c0: obstacles inside, c1: t
   FIELD: 18, // id, x y, px: value, py c0: terms, c1 pc0: direction, pc1: tile half-size
   MINIMUM: 19, // id: escapes so far, x y, px: potential, py: distance to goal
+  // One growth step, for the explain panel: the node chosen, then the step steered from it.
+  NEAREST: 20, // id: node, x y: its point, px py: the target, c0: distance, c1: domain radius, pc0: 1 target is a sample
+  STEER: 21, // id: node, x y: the new state, px py: the node, c0: step, c1: range, pc0: 1 reaches the target
 });

@@ -193,6 +193,7 @@ impl RrtStar {
         let (k, r) = (self.near_k(n), self.near_radius(n));
         let tree = self.tree.as_mut().expect("a tree");
         let (near, d) = tree.nearest(cx, &self.sample);
+        cx.note_nearest(0, near, tree.state(near), &self.sample, d, Real::INFINITY, true);
         if d == 0.0 {
             return; // already in the tree
         }
@@ -211,8 +212,9 @@ impl RrtStar {
                 return;
             }
         }
+        cx.note_steer(0, near, tree.state(near), &self.new, d.min(self.range), self.range, d <= self.range);
         if cx.si.check_motion(tree.state(near), &self.new, &mut self.scratch).is_err() {
-            cx.events.at(EventKind::Collision, 0, cx.si.project(&self.scratch), &self.scratch);
+            cx.note_collision(0, near, tree.state(near), &self.new, &self.scratch);
             cx.sampler.note_collision(tree.state(near));
             cx.events.at(EventKind::SampleRejected, 0, cx.si.project(&self.sample), &self.sample);
             return;
