@@ -17,7 +17,12 @@ beforeEach(() => { page = fx.page; });
 const scenario = () => page.evaluate(() => window.planarium.scenario());
 /** Wait until the worker has accepted the edit and the scenario holds `n` obstacles. */
 const settled = (n) => page.waitForFunction((k) => window.planarium.state() === 'idle' && window.planarium.scenario()?.obstacles.length === k, n);
-/** Obstacle-coloured pixels on the workspace canvas, once it has been redrawn. */
+/**
+ * Obstacle-coloured pixels on the workspace canvas, once it has been redrawn. A map without
+ * obstacles still has a few: the start dot's anti-aliased rim (orange into its dark edge) passes
+ * for brown (NONE); the narrow passage's walls are thousands.
+ */
+const NONE = 20;
 const obstaclePixels = async () => { await fx.nextFrames(); return (await fx.countColours('canvas', [PALETTE.obstacle], 4))[0]; };
 /** Click Save JSON and parse the downloaded file: [scenario, file name]. */
 async function saveJson() {
@@ -39,7 +44,7 @@ test('New map: an empty map with the same bounds and robot, start and goal in co
   assert.deepEqual(s.bounds, before.bounds);
   assert.equal(s.robot.kind, 'point');
   assert.deepEqual([s.start, s.goal], [[0.1, 0.1], [0.9, 0.9]]);
-  assert.equal(await obstaclePixels(), 0, 'no obstacle drawn');
+  assert.ok(await obstaclePixels() <= NONE, 'no obstacle drawn');
   assert.equal(await page.isDisabled('#clear-obstacles'), true, 'nothing to clear');
   assert.equal(await page.inputValue('#edit-name'), 'Untitled map');
   await page.screenshot({ path: join(SHOTS, 'page-editor-tools-newmap.png') });
@@ -73,7 +78,7 @@ test('Clear obstacles, then undo brings every one back', async () => {
   const before = (await scenario()).obstacles;
   await page.click('#clear-obstacles');
   await settled(0);
-  assert.equal(await obstaclePixels(), 0);
+  assert.ok(await obstaclePixels() <= NONE, 'no obstacle drawn');
   assert.equal(await page.textContent('#scenario-name'), 'Narrow passage', 'only the obstacles go');
   await page.click('#undo');
   await settled(before.length);

@@ -138,8 +138,9 @@ export class ObstacleEditor {
     this.readout = el('output', { id: 'pointer-coords', className: 'pointer-coords', 'aria-live': 'off' });
     this.readout.hidden = true;
     canvas.parentElement?.append(this.readout);
-    this.bar = el('div', { className: 'obstacle-bar' }); // re-rendered with each change
-    this.fixed = this.buildFixed();                       // built once: typing in it keeps its focus
+    this.bar = el('div', { className: 'obstacle-bar' });
+    this.buildBar();                // built once, brought up to date by render()
+    this.fixed = this.buildFixed(); // the same: typing in a field keeps its focus
     root.replaceChildren(this.bar, this.fixed);
     this.syncFixed();
     this.render();
@@ -250,56 +251,78 @@ export class ObstacleEditor {
 
   // Toolbar
 
-  render() {
-    const s = this.scenario;
+  /**
+   * The toolbar, built once (a button pressed while a field's change re-renders must still be
+   * there on release, so that its click arrives): tools, actions, the hint and the bounds.
+   */
+  buildBar() {
     const tool = (id, label, title) => {
       const b = el('button', { id: `tool-${id}`, type: 'button', text: label, title });
-      b.setAttribute('aria-pressed', String(this.tool === id));
       b.addEventListener('click', () => this.setTool(id));
       return b;
     };
-    const act = (id, label, fn, disabled, title) => {
+    const act = (id, label, fn, title) => {
       const b = el('button', { id, type: 'button', text: label, title });
-      b.disabled = disabled;
       b.addEventListener('click', fn);
       return b;
     };
+    const tools = { select: tool('select', 'Select', 'Select, move and resize obstacles'), rect: tool('rect', 'Rectangle', 'Draw a rectangle'),
+      circle: tool('circle', 'Circle', 'Draw a circle'), polygon: tool('polygon', 'Polygon', 'Draw a polygon') };
+    const buttons = {
+      del: act('obstacle-delete', 'Delete', () => this.deleteSelected(), 'Delete the selected obstacle (Delete)'),
+      undo: act('undo', 'Undo', () => this.undo(), 'Undo (ctrl+Z)'),
+      redo: act('redo', 'Redo', () => this.redo(), 'Redo (ctrl+shift+Z)'),
+      save: act('save-scenario', 'Save JSON', () => this.save(), 'Download the scenario as JSON'),
+      newMap: act('new-map', 'New map', () => this.newMap(), 'An empty map: the same bounds and robot, no obstacles (undo brings the old one back)'),
+      clear: act('clear-obstacles', 'Clear obstacles', () => this.clearObstacles(), 'Delete every obstacle (undo brings them back)'),
+    };
     const bounds = el('div', { className: 'row bounds' });
-    ['x min', 'y min', 'x max', 'y max'].forEach((label, i) => {
+    const boundInputs = ['x min', 'y min', 'x max', 'y max'].map((label, i) => {
       const id = `bounds-${i}`;
-      const input = el('input', { id, type: 'number', step: 'any', value: s ? String(s.bounds[i]) : '' });
-      input.disabled = !s;
+      const input = el('input', { id, type: 'number', step: 'any' });
       input.addEventListener('change', () => {
+        const s = this.scenario;
         const v = Number(input.value);
-        if (!s || !Number.isFinite(v)) return;
+        if (!s || this.editor.stale || input.value.trim() === '' || !Number.isFinite(v)) { input.value = s ? String(s.bounds[i]) : ''; return; }
         s.bounds[i] = v;
         this.preview();
         this.commit();
       });
       bounds.append(el('label', { className: 'bound', htmlFor: id }, el('span', { text: label }), input));
+      return input;
     });
-    const hint = {
+    const hint = el('p', { className: 'hint' });
+    this.barParts = { tools, buttons, boundInputs, hint };
+    this.bar.replaceChildren(
+      el('div', { className: 'row tools', role: 'toolbar', 'aria-label': 'Obstacle tools' }, ...Object.values(tools)),
+      el('div', { className: 'row' }, buttons.del, buttons.undo, buttons.redo, buttons.save),
+      el('div', { className: 'row' }, buttons.newMap, buttons.clear),
+      hint,
+      bounds,
+    );
+  }
+
+  /** The toolbar from the state: the pressed tool, what can be done, the hint, the bounds. */
+  render() {
+    const s = this.scenario;
+    const { tools, buttons: b, boundInputs, hint } = this.barParts;
+    for (const [id, button] of Object.entries(tools)) button.setAttribute('aria-pressed', String(this.tool === id));
+    b.del.disabled = this.selected < 0;
+    b.undo.disabled = !this.undoStack.length;
+    b.redo.disabled = !this.redoStack.length;
+    b.save.disabled = !s;
+    b.newMap.disabled = !s;
+    b.clear.disabled = !s?.obstacles?.length;
+    boundInputs.forEach((input, i) => {
+      input.disabled = !s;
+      if (document.activeElement !== input) input.value = s ? String(s.bounds[i]) : '';
+    });
+    hint.textContent = {
       select: 'Click an obstacle to select it; drag it to move it, drag a square handle to resize it.',
       rect: 'Drag on the canvas to draw a rectangle.',
       circle: 'Drag from the centre to draw a circle.',
       polygon: 'Click the corners; double-click, press Enter or click the first corner to close it. Escape drops it.',
     }[this.tool];
-    this.bar.replaceChildren(
-      el('div', { className: 'row tools', role: 'toolbar', 'aria-label': 'Obstacle tools' },
-        tool('select', 'Select', 'Select, move and resize obstacles'), tool('rect', 'Rectangle', 'Draw a rectangle'),
-        tool('circle', 'Circle', 'Draw a circle'), tool('polygon', 'Polygon', 'Draw a polygon')),
-      el('div', { className: 'row' },
-        act('obstacle-delete', 'Delete', () => this.deleteSelected(), this.selected < 0, 'Delete the selected obstacle (Delete)'),
-        act('undo', 'Undo', () => this.undo(), !this.undoStack.length, 'Undo (ctrl+Z)'),
-        act('redo', 'Redo', () => this.redo(), !this.redoStack.length, 'Redo (ctrl+shift+Z)'),
-        act('save-scenario', 'Save JSON', () => this.save(), !s, 'Download the scenario as JSON')),
-      el('div', { className: 'row' },
-        act('new-map', 'New map', () => this.newMap(), !s, 'An empty map: the same bounds and robot, no obstacles (undo brings the old one back)'),
-        act('clear-obstacles', 'Clear obstacles', () => this.clearObstacles(), !s?.obstacles?.length,
-          'Delete every obstacle (undo brings them back)')),
-      el('p', { className: 'hint', text: hint }),
-      bounds,
-    );
   }
 
   /** The parts of the toolbar built once: snapping and the grid step, the name and the notes. */
