@@ -71,6 +71,17 @@ test('New map: an empty map with the same bounds and robot, start and goal in co
   assert.equal(r.start[2], 0);
   assert.ok(r.start[0] < r.goal[0] && r.start[1] < r.goal[1], JSON.stringify([r.start, r.goal]));
   assert.equal(await page.isVisible('#error'), false, 'the core accepts it');
+
+  // An arm and a vehicle chain keep their robot, start and goal (valid in the same bounds).
+  for (const [id, name] of [['arm-2', 'Two-link arm and its configuration space'], ['asv-3-easy', 'Three vehicles, one wide gap (ASV 3-easy)']]) {
+    await fx.pickScenario(id, name);
+    const was = await scenario();
+    await page.click('#new-map');
+    await settled(0);
+    const now = await scenario();
+    assert.deepEqual([now.robot, now.start, now.goal, now.bounds], [was.robot, was.start, was.goal, was.bounds], id);
+    assert.equal(await page.isVisible('#error'), false, `${id}: the core accepts it`);
+  }
 });
 
 test('Clear obstacles, then undo brings every one back', async () => {
@@ -197,10 +208,10 @@ test('name and notes: edited before saving, in the saved JSON and the copied lin
 
   // Too long: named, refused, the scenario keeps its name.
   await page.fill('#edit-name', 'x'.repeat(121));
-  assert.match(await page.textContent('#meta-error'), /name is 121 characters long; at most 120/);
+  assert.match(await page.textContent('#meta-error'), /name is 121 characters long \(at most 120\): shorten it/);
   await page.press('#edit-name', 'Tab');
   await page.fill('#edit-notes', 'y'.repeat(2001));
-  assert.match(await page.textContent('#meta-error'), /notes are 2,001 characters long; at most 2,000/);
+  assert.match(await page.textContent('#meta-error'), /notes are 2,001 characters long \(at most 2,000\): shorten them/);
   await page.press('#edit-notes', 'Tab');
   await page.locator('#obstacle-tools').screenshot({ path: join(SHOTS, 'page-editor-tools-meta-error.png') });
   assert.equal((await scenario()).name, 'Two rooms');

@@ -348,8 +348,8 @@ export class ObstacleEditor {
     metaError.hidden = true;
     const check = () => {
       const problems = [];
-      if (name.value.length > MAX_NAME) problems.push(`The name is ${name.value.length} characters long; at most ${MAX_NAME} are kept with the map.`);
-      if (notes.value.length > MAX_NOTES) problems.push(`The notes are ${notes.value.length.toLocaleString('en')} characters long; at most ${MAX_NOTES.toLocaleString('en')} are kept with the map.`);
+      if (name.value.length > MAX_NAME) problems.push(`The name is ${name.value.length} characters long (at most ${MAX_NAME}): shorten it to keep it.`);
+      if (notes.value.length > MAX_NOTES) problems.push(`The notes are ${notes.value.length.toLocaleString('en')} characters long (at most ${MAX_NOTES.toLocaleString('en')}): shorten them to keep them.`);
       metaError.textContent = problems.join(' ');
       metaError.hidden = !problems.length;
       name.setAttribute('aria-invalid', String(name.value.length > MAX_NAME));
