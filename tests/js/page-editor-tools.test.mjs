@@ -97,6 +97,13 @@ test('Clear obstacles, then undo brings every one back', async () => {
   assert.ok(await obstaclePixels() > 1000);
   await page.click('#redo');
   await settled(0);
+
+  // Bounds that cross are refused here, named, and the field shows the bound kept.
+  await page.fill('#bounds-2', '-1');
+  await page.press('#bounds-2', 'Enter');
+  assert.match(await page.textContent('#bounds-error'), /X max must be above x min \(0\); it stays 1\./);
+  assert.equal(await page.inputValue('#bounds-2'), '1');
+  assert.deepEqual((await scenario()).bounds, [0, 0, 1, 1]);
 });
 
 test('Snap to grid: drawn, resized and moved shapes and the start land exactly on the grid', async () => {

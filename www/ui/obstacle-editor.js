@@ -277,13 +277,25 @@ export class ObstacleEditor {
       clear: act('clear-obstacles', 'Clear obstacles', () => this.clearObstacles(), 'Delete every obstacle (undo brings them back)'),
     };
     const bounds = el('div', { className: 'row bounds' });
+    const boundsError = el('p', { id: 'bounds-error', className: 'hint bad', role: 'alert' });
+    boundsError.hidden = true;
     const boundInputs = ['x min', 'y min', 'x max', 'y max'].map((label, i) => {
       const id = `bounds-${i}`;
       const input = el('input', { id, type: 'number', step: 'any' });
       input.addEventListener('change', () => {
         const s = this.scenario;
         const v = Number(input.value);
-        if (!s || this.editor.stale || input.value.trim() === '' || !Number.isFinite(v)) { input.value = s ? String(s.bounds[i]) : ''; return; }
+        boundsError.hidden = true;
+        if (!s || this.editor.stale) return;
+        const other = s.bounds[(i + 2) % 4];
+        const why = input.value.trim() === '' || !Number.isFinite(v) ? `${label} must be a number`
+          : (i < 2 ? v >= other : v <= other) ? `${label} must be ${i < 2 ? 'below' : 'above'} ${['x max', 'y max', 'x min', 'y min'][i]} (${other})` : '';
+        if (why) {
+          boundsError.textContent = `${why[0].toUpperCase()}${why.slice(1)}; it stays ${s.bounds[i]}.`;
+          boundsError.hidden = false;
+          input.value = String(s.bounds[i]);
+          return;
+        }
         s.bounds[i] = v;
         this.preview();
         this.commit();
@@ -299,6 +311,7 @@ export class ObstacleEditor {
       el('div', { className: 'row' }, buttons.newMap, buttons.clear),
       hint,
       bounds,
+      boundsError,
     );
   }
 
