@@ -27,6 +27,8 @@ export class Editor {
     this.stale = false;   // another scenario is being loaded: ignore edits of this one
     this.drag = null;
     this.sliders = [];
+    /** @type {((x: number, y: number) => number[]) | null} where a dragged start/goal lands (set by the obstacle editor) */
+    this.place = null;
     canvas.addEventListener('pointerdown', (e) => this.down(e));
     canvas.addEventListener('pointermove', (e) => this.move(e));
     canvas.addEventListener('pointerup', (e) => this.up(e));
@@ -198,8 +200,11 @@ export class Editor {
     const extent = Math.max(x1 - x0, y1 - y0);
     const q = q0.slice();
     if (this.drag.mode === 'move') {
-      q[0] = tidy(Math.min(x1, Math.max(x0, q0[0] + wx - this.drag.wx)), extent);
-      q[1] = tidy(Math.min(y1, Math.max(y0, q0[1] + wy - this.drag.wy)), extent);
+      const x = q0[0] + wx - this.drag.wx, y = q0[1] + wy - this.drag.wy;
+      // on the grid when the obstacle editor snaps (`place`), else tidied; then kept in the bounds
+      const [px, py] = this.place ? this.place(x, y) : [tidy(x, extent), tidy(y, extent)];
+      q[0] = Math.min(x1, Math.max(x0, px));
+      q[1] = Math.min(y1, Math.max(y0, py));
     } else {
       const a = Math.atan2(wy - q0[1], wx - q0[0]);
       const turn = this.drag.mode === 'handle' ? a : q0[2] + a - Math.atan2(this.drag.wy - q0[1], this.drag.wx - q0[0]);

@@ -7,6 +7,14 @@
 // Tools: select (default), rect, circle, polygon (click the corners; double-click, Enter or a click
 // on the first corner closes it; Escape drops it). Keys (never while typing in a field):
 // Delete/Backspace deletes the selection; ctrl/cmd+Z undo, ctrl/cmd+shift+Z or ctrl+Y redo.
+//
+// The map as a whole: "New map" (same bounds and robot, no obstacles, start and goal in opposite
+// corners, "Untitled map") and "Clear obstacles", both undoable; "Snap to grid" with a grid step
+// (drawn faintly while on): every placed or dragged vertex, corner, circle centre and radius, start
+// and goal lands on the grid, rounded to the step's decimals; off, values are rounded to about four
+// digits below the map's size. Under the pointer, a read-out gives the world coordinates. The name
+// and notes are edited here too (bounded: MAX_NAME / MAX_NOTES characters; an edit over the bound
+// is refused and says so), so Save JSON and the share link carry them.
 
 import { el } from './dom.js';
 import { PALETTE } from '../draw/palette.js';
@@ -14,6 +22,48 @@ import { pointInPolygon } from '../draw/transform.js';
 
 const HANDLE = 6; // css px: handle half-size and grab distance
 const MIN = 1e-3; // the smallest rectangle side or circle radius, as a fraction of the scene
+export const MAX_NAME = 120;   // characters of a name typed here (the core reads up to 500)
+export const MAX_NOTES = 2000; // characters of notes typed here (the core reads up to 20,000)
+const GRID_MIN = 1 / 1000; // the grid step's bounds, as fractions of the map's larger side
+const GRID_MAX = 1 / 2;
+const GRID_COLOUR = 'rgba(31, 78, 154, 0.16)'; // faint blue lines
+const GRID_PX = 6; // css px: grid lines closer than this are thinned (every 2nd, 5th, 10th…)
+
+/** A "nice" grid step near `v` (1, 2 or 5 times a power of ten). */
+export function niceStep(v) {
+  if (!(v > 0) || !Number.isFinite(v)) return 1;
+  const p = 10 ** Math.floor(Math.log10(v));
+  const best = [1, 2, 5, 10].map((m) => m * p).reduce((a, b) => (Math.abs(Math.log(b / v)) < Math.abs(Math.log(a / v)) ? b : a));
+  return Number(best.toPrecision(1));
+}
+
+/** How many decimals the values on a grid of `step` need (as written, at most 12). */
+export function stepDecimals(step) {
+  const text = String(step);
+  if (!/e/i.test(text)) return Math.min(12, (text.split('.')[1] || '').length);
+  return Math.min(12, Math.max(0, 2 - Math.floor(Math.log10(step))));
+}
+
+/** `v` on the grid of `step` (anchored at 0), written with the step's decimals: no float noise. */
+export function snapTo(v, step) {
+  return Number((Math.round(v / step) * step).toFixed(stepDecimals(step)));
+}
+
+/** `v` rounded to about four digits below `extent` (the map's size): 0.46999998929207787 → 0.47. */
+export function tidy(v, extent) {
+  const step = 10 ** (Math.floor(Math.log10(Math.max(extent, 1e-9))) - 4);
+  return Number((Math.round(v / step) * step).toFixed(Math.max(0, Math.min(12, Math.round(-Math.log10(step))))));
+}
+
+/** Decimals for showing coordinates on a map of size `extent` (a pixel is about 1/1000 of it). */
+function readoutDecimals(extent) {
+  return Math.max(0, Math.min(8, 3 - Math.floor(Math.log10(Math.max(extent, 1e-9)))));
+}
+
+/** The point an obstacle is moved by when snapping: a circle's centre, else its first handle. */
+function anchor(ob) {
+  return ob.circle ? [ob.circle[0], ob.circle[1]] : handles(ob)[0] || [0, 0];
+}
 
 /** The handles of obstacle `ob`: [[x, y], ...] in world units. */
 function handles(ob) {
@@ -73,14 +123,26 @@ export class ObstacleEditor {
     this.undoStack = [];
     this.redoStack = [];
     this.committed = null; // the scenario as last committed (what undo returns to)
+    this.grid = { on: false, step: 0.05, custom: false }; // custom: the step was typed, not the default
     view.overlayHooks = [...(view.overlayHooks ?? []), (ctx, L) => this.draw(ctx, L)];
     editor.beforeCommit = () => this.record(); // start/goal drags are undoable too
+    editor.place = (x, y) => this.place(x, y); // a dragged start/goal snaps (or is tidied) as obstacles are
     // Capture phase: a drawing tool takes the press before the start/goal drag sees it.
     canvas.addEventListener('pointerdown', (e) => this.down(e), true);
-    canvas.addEventListener('pointermove', (e) => this.move(e));
+    canvas.addEventListener('pointermove', (e) => { this.move(e); this.showPointer(e); });
     canvas.addEventListener('pointerup', (e) => this.up(e));
+    canvas.addEventListener('pointerleave', () => { this.readout.hidden = true; });
     canvas.addEventListener('dblclick', (e) => { if (this.draft) { e.preventDefault(); this.closeDraft(); } });
     document.addEventListener('keydown', (e) => this.key(e));
+    // The pointer's world coordinates, in a corner of the stage (text only).
+    this.readout = el('output', { id: 'pointer-coords', className: 'pointer-coords', 'aria-live': 'off' });
+    this.readout.hidden = true;
+    canvas.parentElement?.append(this.readout);
+    this.bar = el('div', { className: 'obstacle-bar' });
+    this.buildBar();                // built once, brought up to date by render()
+    this.fixed = this.buildFixed(); // the same: typing in a field keeps its focus
+    root.replaceChildren(this.bar, this.fixed);
+    this.syncFixed();
     this.render();
   }
 
@@ -96,6 +158,8 @@ export class ObstacleEditor {
     }
     this.committed = this.scenario ? structuredClone(this.scenario) : null;
     if (this.selected >= (this.scenario?.obstacles?.length ?? 0)) this.selected = -1;
+    this.fitGrid(!edited);
+    this.syncFixed();
     this.render();
   }
 
@@ -142,6 +206,43 @@ export class ObstacleEditor {
     this.commit();
   }
 
+  /** "New map": the same bounds and robot, no obstacles, start and goal in opposite corners. */
+  newMap() {
+    const s = this.scenario;
+    if (!s || this.editor.stale) return;
+    const m = structuredClone(s);
+    m.name = 'Untitled map';
+    delete m.notes;
+    delete m.planner; // the panel keeps the planner chosen now
+    m.obstacles = [];
+    const kind = s.robot?.kind;
+    if (kind === 'point' || kind === 'rigid') {
+      // an arm or a vehicle chain keeps its start and goal: they were valid in these bounds
+      const [x0, y0, x1, y1] = s.bounds;
+      const side = Math.min(x1 - x0, y1 - y0);
+      const reach = kind === 'rigid' ? Math.max(0, ...s.robot.footprint.map(([u, v]) => Math.hypot(u, v))) : 0;
+      const inset = Math.min(side / 2, Math.max(side / 10, reach * 1.25));
+      const corner = (x, y) => this.place(x, y);
+      const a = corner(x0 + inset, y0 + inset), b = corner(x1 - inset, y1 - inset);
+      m.start = kind === 'rigid' ? [...a, 0] : a;
+      if (s.goal || !s.inspection) m.goal = kind === 'rigid' ? [...b, 0] : b;
+    }
+    this.editor.scenario = m;
+    this.selected = -1;
+    this.draft = null;
+    this.preview();
+    this.commit();
+  }
+
+  /** "Clear obstacles": all of them (undo brings them back). */
+  clearObstacles() {
+    if (!this.scenario?.obstacles?.length || this.editor.stale) return;
+    this.scenario.obstacles = [];
+    this.selected = -1;
+    this.preview();
+    this.commit();
+  }
+
   save() {
     if (!this.scenario) return;
     const name = (this.scenario.name || 'scenario').replace(/[^\w.-]+/g, '-').toLowerCase();
@@ -150,52 +251,225 @@ export class ObstacleEditor {
 
   // Toolbar
 
-  render() {
-    const s = this.scenario;
+  /**
+   * The toolbar, built once (a button pressed while a field's change re-renders must still be
+   * there on release, so that its click arrives): tools, actions, the hint and the bounds.
+   */
+  buildBar() {
     const tool = (id, label, title) => {
       const b = el('button', { id: `tool-${id}`, type: 'button', text: label, title });
-      b.setAttribute('aria-pressed', String(this.tool === id));
       b.addEventListener('click', () => this.setTool(id));
       return b;
     };
-    const act = (id, label, fn, disabled, title) => {
+    const act = (id, label, fn, title) => {
       const b = el('button', { id, type: 'button', text: label, title });
-      b.disabled = disabled;
       b.addEventListener('click', fn);
       return b;
     };
+    const tools = { select: tool('select', 'Select', 'Select, move and resize obstacles'), rect: tool('rect', 'Rectangle', 'Draw a rectangle'),
+      circle: tool('circle', 'Circle', 'Draw a circle'), polygon: tool('polygon', 'Polygon', 'Draw a polygon') };
+    const buttons = {
+      del: act('obstacle-delete', 'Delete', () => this.deleteSelected(), 'Delete the selected obstacle (Delete)'),
+      undo: act('undo', 'Undo', () => this.undo(), 'Undo (ctrl+Z)'),
+      redo: act('redo', 'Redo', () => this.redo(), 'Redo (ctrl+shift+Z)'),
+      save: act('save-scenario', 'Save JSON', () => this.save(), 'Download the scenario as JSON'),
+      newMap: act('new-map', 'New map', () => this.newMap(), 'An empty map: the same bounds and robot, no obstacles (undo brings the old one back)'),
+      clear: act('clear-obstacles', 'Clear obstacles', () => this.clearObstacles(), 'Delete every obstacle (undo brings them back)'),
+    };
     const bounds = el('div', { className: 'row bounds' });
-    ['x min', 'y min', 'x max', 'y max'].forEach((label, i) => {
+    const boundsError = el('p', { id: 'bounds-error', className: 'hint bad', role: 'alert' });
+    boundsError.hidden = true;
+    const boundInputs = ['x min', 'y min', 'x max', 'y max'].map((label, i) => {
       const id = `bounds-${i}`;
-      const input = el('input', { id, type: 'number', step: 'any', value: s ? String(s.bounds[i]) : '' });
-      input.disabled = !s;
+      const input = el('input', { id, type: 'number', step: 'any' });
       input.addEventListener('change', () => {
+        const s = this.scenario;
         const v = Number(input.value);
-        if (!s || !Number.isFinite(v)) return;
+        boundsError.hidden = true;
+        if (!s || this.editor.stale) return;
+        const other = s.bounds[(i + 2) % 4];
+        const why = input.value.trim() === '' || !Number.isFinite(v) ? `${label} must be a number`
+          : (i < 2 ? v >= other : v <= other) ? `${label} must be ${i < 2 ? 'below' : 'above'} ${['x max', 'y max', 'x min', 'y min'][i]} (${other})` : '';
+        if (why) {
+          boundsError.textContent = `${why[0].toUpperCase()}${why.slice(1)}; it stays ${s.bounds[i]}.`;
+          boundsError.hidden = false;
+          input.value = String(s.bounds[i]);
+          return;
+        }
         s.bounds[i] = v;
         this.preview();
         this.commit();
       });
       bounds.append(el('label', { className: 'bound', htmlFor: id }, el('span', { text: label }), input));
+      return input;
     });
-    const hint = {
+    const hint = el('p', { className: 'hint' });
+    this.barParts = { tools, buttons, boundInputs, hint };
+    this.bar.replaceChildren(
+      el('div', { className: 'row tools', role: 'toolbar', 'aria-label': 'Obstacle tools' }, ...Object.values(tools)),
+      el('div', { className: 'row' }, buttons.del, buttons.undo, buttons.redo, buttons.save),
+      el('div', { className: 'row' }, buttons.newMap, buttons.clear),
+      hint,
+      bounds,
+      boundsError,
+    );
+  }
+
+  /** The toolbar from the state: the pressed tool, what can be done, the hint, the bounds. */
+  render() {
+    const s = this.scenario;
+    const { tools, buttons: b, boundInputs, hint } = this.barParts;
+    for (const [id, button] of Object.entries(tools)) button.setAttribute('aria-pressed', String(this.tool === id));
+    b.del.disabled = this.selected < 0;
+    b.undo.disabled = !this.undoStack.length;
+    b.redo.disabled = !this.redoStack.length;
+    b.save.disabled = !s;
+    b.newMap.disabled = !s;
+    b.clear.disabled = !s?.obstacles?.length;
+    boundInputs.forEach((input, i) => {
+      input.disabled = !s;
+      if (document.activeElement !== input) input.value = s ? String(s.bounds[i]) : '';
+    });
+    hint.textContent = {
       select: 'Click an obstacle to select it; drag it to move it, drag a square handle to resize it.',
       rect: 'Drag on the canvas to draw a rectangle.',
       circle: 'Drag from the centre to draw a circle.',
       polygon: 'Click the corners; double-click, press Enter or click the first corner to close it. Escape drops it.',
     }[this.tool];
-    this.root.replaceChildren(
-      el('div', { className: 'row tools', role: 'toolbar', 'aria-label': 'Obstacle tools' },
-        tool('select', 'Select', 'Select, move and resize obstacles'), tool('rect', 'Rectangle', 'Draw a rectangle'),
-        tool('circle', 'Circle', 'Draw a circle'), tool('polygon', 'Polygon', 'Draw a polygon')),
-      el('div', { className: 'row' },
-        act('obstacle-delete', 'Delete', () => this.deleteSelected(), this.selected < 0, 'Delete the selected obstacle (Delete)'),
-        act('undo', 'Undo', () => this.undo(), !this.undoStack.length, 'Undo (ctrl+Z)'),
-        act('redo', 'Redo', () => this.redo(), !this.redoStack.length, 'Redo (ctrl+shift+Z)'),
-        act('save-scenario', 'Save JSON', () => this.save(), !s, 'Download the scenario as JSON')),
-      el('p', { className: 'hint', text: hint }),
-      bounds,
-    );
+  }
+
+  /** The parts of the toolbar built once: snapping and the grid step, the name and the notes. */
+  buildFixed() {
+    const snap = el('input', { id: 'snap-grid', type: 'checkbox' });
+    const step = el('input', { id: 'grid-step', type: 'number', step: 'any', value: String(this.grid.step) });
+    const gridError = el('p', { id: 'grid-error', className: 'hint bad', role: 'alert' });
+    gridError.hidden = true;
+    snap.addEventListener('change', () => {
+      this.grid.on = snap.checked;
+      this.view.dirty = true;
+    });
+    step.addEventListener('change', () => {
+      const why = this.setGridStep(step.value);
+      gridError.textContent = why;
+      gridError.hidden = !why;
+      step.setAttribute('aria-invalid', String(!!why));
+      if (!why) step.value = String(this.grid.step);
+    });
+    const name = el('input', { id: 'edit-name', type: 'text', spellcheck: true, autocomplete: 'off' });
+    const notes = el('textarea', { id: 'edit-notes', rows: 3, spellcheck: true });
+    const metaError = el('p', { id: 'meta-error', className: 'hint bad', role: 'alert' });
+    metaError.hidden = true;
+    const check = () => {
+      const problems = [];
+      if (name.value.length > MAX_NAME) problems.push(`The name is ${name.value.length} characters long (at most ${MAX_NAME}): shorten it to keep it.`);
+      if (notes.value.length > MAX_NOTES) problems.push(`The notes are ${notes.value.length.toLocaleString('en')} characters long (at most ${MAX_NOTES.toLocaleString('en')}): shorten them to keep them.`);
+      metaError.textContent = problems.join(' ');
+      metaError.hidden = !problems.length;
+      name.setAttribute('aria-invalid', String(name.value.length > MAX_NAME));
+      notes.setAttribute('aria-invalid', String(notes.value.length > MAX_NOTES));
+      return !problems.length;
+    };
+    const commitMeta = () => {
+      if (!check() || !this.scenario || this.editor.stale) return;
+      const n = name.value.trim(), t = notes.value.trim();
+      if (n === (this.scenario.name ?? '') && t === (this.scenario.notes ?? '')) return;
+      if (n) this.scenario.name = n; else delete this.scenario.name;
+      if (t) this.scenario.notes = t; else delete this.scenario.notes;
+      this.commit();
+    };
+    name.addEventListener('input', check);
+    notes.addEventListener('input', check);
+    name.addEventListener('change', commitMeta);
+    notes.addEventListener('change', commitMeta);
+    this.fields = { snap, step, gridError, name, notes, metaError };
+    return el('div', { className: 'map-fields' },
+      el('div', { className: 'row grid-row' },
+        el('label', { className: 'inline', htmlFor: 'snap-grid', title: 'Placed and dragged corners, centres, radii, start and goal land on the grid' }, snap, ' Snap to grid'),
+        el('label', { className: 'bound', htmlFor: 'grid-step' }, el('span', { text: 'step' }), step)),
+      gridError,
+      el('label', { className: 'field', htmlFor: 'edit-name' }, el('span', { text: 'Name' }), name),
+      el('label', { className: 'field', htmlFor: 'edit-notes' }, el('span', { text: 'Notes (shown under the canvas)' }), notes),
+      metaError,
+      el('p', { className: 'hint', text: 'Save JSON and Copy link carry the name and notes.' }));
+  }
+
+  /** The fields built once, from the scenario (a field being typed in is left alone). */
+  syncFixed() {
+    const f = this.fields;
+    const s = this.scenario;
+    for (const input of [f.snap, f.step, f.name, f.notes]) input.disabled = !s;
+    f.step.value = String(this.grid.step);
+    if (s) this.setStepLimits();
+    if (document.activeElement !== f.name) f.name.value = s?.name ?? '';
+    if (document.activeElement !== f.notes) f.notes.value = s?.notes ?? '';
+    if (document.activeElement !== f.name && document.activeElement !== f.notes) f.metaError.hidden = true;
+  }
+
+  /** The grid step's allowed range on this map: [extent × GRID_MIN, extent × GRID_MAX]. */
+  stepRange() {
+    const e = this.extent();
+    return [Number((e * GRID_MIN).toPrecision(3)), Number((e * GRID_MAX).toPrecision(3))];
+  }
+
+  setStepLimits() {
+    const [lo, hi] = this.stepRange();
+    this.fields.step.min = String(lo);
+    this.fields.step.max = String(hi);
+  }
+
+  /** Set the grid step from what was typed; '' if it was taken, else why not. */
+  setGridStep(text) {
+    if (!this.scenario) return 'No map is loaded.';
+    const [lo, hi] = this.stepRange();
+    const v = Number(String(text).trim());
+    if (String(text).trim() === '' || !Number.isFinite(v) || v < lo || v > hi) {
+      return `The grid step must be a number from ${lo} to ${hi} on this map (it is ${this.extent()} across); it stays ${this.grid.step}.`;
+    }
+    this.grid.step = Number(v.toPrecision(6));
+    this.grid.custom = true;
+    this.view.dirty = true;
+    return '';
+  }
+
+  /** Keep the grid step fitting the map: the default (1/20 of its width, rounded to a nice number) for a new map, or when the typed one no longer fits. */
+  fitGrid(fresh) {
+    if (!this.scenario) return;
+    const [lo, hi] = this.stepRange();
+    if ((fresh && !this.grid.custom) || this.grid.step < lo || this.grid.step > hi) {
+      const [x0, , x1] = this.scenario.bounds;
+      this.grid.step = Math.min(hi, Math.max(lo, niceStep((x1 - x0) / 20)));
+      this.grid.custom = false;
+      this.fields.gridError.hidden = true;
+    }
+  }
+
+  /** World point (x, y) as an edit places it: on the grid when snapping, else tidied. */
+  place(x, y) {
+    if (this.grid.on && this.scenario) return [snapTo(x, this.grid.step), snapTo(y, this.grid.step)];
+    const e = this.scenario ? this.extent() : 1;
+    return [tidy(x, e), tidy(y, e)];
+  }
+
+  /** A length (a circle's radius) as an edit places it: a whole number of grid steps when snapping. */
+  placeLength(r) {
+    if (this.grid.on) return snapTo(r, this.grid.step); // under half a step: 0, a click (no circle)
+    return tidy(r, this.extent());
+  }
+
+  /** The read-out of the world point under the pointer. */
+  showPointer(e) {
+    const L = this.view.layout;
+    if (!L || !this.scenario) { this.readout.hidden = true; return; }
+    const [x, y] = this.world(e);
+    let d = readoutDecimals(this.extent());
+    if (this.grid.on) d = Math.max(d, stepDecimals(this.grid.step));
+    let text = `x ${x.toFixed(d)}, y ${y.toFixed(d)}`;
+    if (this.grid.on) {
+      const [gx, gy] = this.place(x, y);
+      text += ` · grid (${gx}, ${gy})`;
+    }
+    this.readout.textContent = text;
+    this.readout.hidden = false;
   }
 
   // Canvas
@@ -221,7 +495,8 @@ export class ObstacleEditor {
 
   down(e) {
     if (!this.scenario || !this.view.layout || e.button !== 0 || this.editor.stale) return;
-    const [x, y] = this.world(e);
+    const [rx, ry] = this.world(e); // where the press is (what it grabs)
+    const [x, y] = this.tool === 'select' ? [rx, ry] : this.place(rx, ry); // where a new corner goes
     const obs = this.scenario.obstacles;
     if (this.tool === 'select') {
       if (this.editor.draggable && this.editor.hit(this.editor.devicePoint(e), e.shiftKey)) return; // start/goal first
@@ -253,11 +528,27 @@ export class ObstacleEditor {
   }
 
   move(e) {
-    if (!this.drag || !this.scenario) { if (this.draft) this.view.dirty = true; this.hover = this.view.layout && this.scenario ? this.world(e) : null; return; }
+    if (!this.drag || !this.scenario) { if (this.draft) this.view.dirty = true; this.hover = this.view.layout && this.scenario ? this.place(...this.world(e)) : null; return; }
     const [x, y] = this.world(e);
     const obs = this.scenario.obstacles;
     const d = this.drag;
-    obs[this.selected] = d.mode === 'move' ? moved(d.ob, x - d.x, y - d.y) : reshaped(d.ob, d.k, x, y);
+    if (d.mode === 'move') {
+      // the anchor (a circle's centre, else the first corner) lands where an edit places a point;
+      // the other corners follow by the same step
+      const [ax, ay] = anchor(d.ob);
+      const [px, py] = this.place(ax + x - d.x, ay + y - d.y);
+      const ext = this.extent();
+      const clean = (v) => (this.grid.on ? Number(v.toFixed(12)) : tidy(v, ext));
+      const m = moved(d.ob, px - ax, py - ay);
+      obs[this.selected] = Object.fromEntries(Object.entries(m).map(([k, v]) => [k, k === 'polygon'
+        ? v.map((p) => p.map(clean))
+        : v.map((c, i) => (k === 'circle' && i === 2 ? c : clean(c)))]));
+    } else if (d.ob.circle) {
+      const [cx, cy] = d.ob.circle;
+      obs[this.selected] = { circle: [cx, cy, this.placeLength(Math.hypot(x - cx, y - cy))] };
+    } else {
+      obs[this.selected] = reshaped(d.ob, d.k, ...this.place(x, y));
+    }
     d.changed = true;
     this.preview();
   }
@@ -309,6 +600,7 @@ export class ObstacleEditor {
     const px = (x, y) => [L.sx(x), L.sy(y)];
     const ob = s.obstacles[this.selected];
     ctx.save();
+    if (this.grid.on) this.drawGrid(ctx, L);
     if (ob) {
       ctx.fillStyle = PALETTE.start;
       ctx.strokeStyle = '#000';
@@ -330,5 +622,31 @@ export class ObstacleEditor {
       ctx.stroke();
     }
     ctx.restore();
+  }
+
+  /** The snapping grid, faint, inside the bounds (lines closer than GRID_PX css px are thinned). */
+  drawGrid(ctx, L) {
+    const [x0, y0, x1, y1] = this.scenario.bounds;
+    const step = this.grid.step;
+    let every = 1;
+    for (const m of [2, 5, 10, 20, 50, 100, 200, 500, 1000]) {
+      if (step * every * L.scale >= L.px(GRID_PX)) break;
+      every = m;
+    }
+    const g = step * every;
+    ctx.beginPath();
+    for (let i = Math.ceil(x0 / g); i * g <= x1 + 1e-9 * g; i++) {
+      const sx = Math.round(L.sx(i * g)) + 0.5;
+      ctx.moveTo(sx, L.sy(y0));
+      ctx.lineTo(sx, L.sy(y1));
+    }
+    for (let i = Math.ceil(y0 / g); i * g <= y1 + 1e-9 * g; i++) {
+      const sy = Math.round(L.sy(i * g)) + 0.5;
+      ctx.moveTo(L.sx(x0), sy);
+      ctx.lineTo(L.sx(x1), sy);
+    }
+    ctx.strokeStyle = GRID_COLOUR;
+    ctx.lineWidth = 1;
+    ctx.stroke();
   }
 }
