@@ -28,5 +28,40 @@ export function createOverlays(root, onChange, { prefix = '' } = {}) {
   root.replaceChildren(...boxes.map((b) => b.label));
   const options = () => Object.fromEntries(boxes.map(({ o, input }) => [o.option, input.checked]));
   for (const { input } of boxes) input.addEventListener('change', () => onChange(options()));
+  /** Show only the overlays that apply to `context` (see overlayApplies); returns how many are hidden. */
+  options.fit = (context) => {
+    let hidden = 0;
+    for (const { o, label } of boxes) {
+      label.hidden = !overlayApplies(o.option, context);
+      if (label.hidden) hidden++;
+    }
+    return hidden;
+  };
   return options;
+}
+
+const SAMPLING = new Set(['rrt', 'rrt-connect', 'rrt-star', 'inspection']);
+const CHECKING_SAMPLERS = new Set(['gaussian', 'bridge', 'obstacle']);
+
+/**
+ * Whether overlay `option` can show anything for `context` = {config: {planner, params}, robot,
+ * inspection}: sampling overlays for the sampling planners, the tree variants' when they are on,
+ * cells and fields for the workspace planners, the sensor's for inspection. Unknown: shown.
+ */
+export function overlayApplies(option, { config, inspection = false } = {}) {
+  const planner = config?.planner;
+  if (!planner) return true;
+  const p = config.params || {};
+  const sampling = SAMPLING.has(planner);
+  switch (option) {
+    case 'showAccepted': case 'showRejected': case 'showCollisions': return sampling;
+    case 'showTries': return sampling && CHECKING_SAMPLERS.has(p.sampler);
+    case 'showDomains': return sampling && Number(p.dd_radius) > 0;
+    case 'showExhausted': return sampling && Number(p.exhausted) > 0;
+    case 'showRewires': case 'showBest': return planner === 'rrt-star' || planner === 'inspection';
+    case 'showSeen': case 'showFov': return inspection || planner === 'inspection';
+    case 'showCells': case 'showRegion': return planner === 'hex-potential';
+    case 'showHeat': case 'showArrows': return planner === 'hex-potential' || planner === 'potential-field';
+    default: return true;
+  }
 }

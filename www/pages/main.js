@@ -26,6 +26,8 @@ import { createStats } from '../ui/stats.js';
 import { createOverlays } from '../draw/overlays.js';
 import { cellLegend, cellSummary } from '../draw/cells.js';
 import { linkViews } from '../draw/linked.js';
+import { ExplainPanel } from '../ui/explain-panel.js';
+import { createTrials } from '../ui/trials.js';
 import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend } from '../ui/controls.js';
 import { readShare, setupFor, writeShare, checkLink, boundedProblems, cut, VIEW_DEFAULTS, MAX_HASH_CHARS, MAX_LINK_CHARS, MAX_SCENARIO_BYTES } from '../ui/links.js';
 import { OVERLAYS } from '../draw/palette.js';
@@ -51,6 +53,7 @@ const view = new View(ui.canvas, playback.store, playback.model);
 const cspace = new CSpaceView(ui.cspace, playback.store, PALETTE, playback.model);
 const chart = new Chart(ui.chart, playback.model, PALETTE);
 const updateStatsList = createStats(ui.stats);
+const explain = new ExplainPanel($('explain'), playback.store, view);
 
 let registry = null;     // {planners, run_params} from the first `ready`
 let panel = null;
@@ -70,7 +73,7 @@ const builtinNormal = new Map(); // built-in id → its scenario as the worker n
 
 const player = new Player({
   playback,
-  views: [view, cspace],
+  views: [view, cspace, explain],
   chart,
   rate: () => speedRate(ui.speed),
   fps: () => animFps(ui.animSpeed),
@@ -119,6 +122,7 @@ const player = new Player({
       if (!chart.kind && playback.model.costs.length) syncChart(); // a planner that reports costs
       cspace.render(view.robotState);
       chart.render(lane.iterationNow);
+      updateRunStatus();
     },
   },
 });
@@ -188,10 +192,18 @@ function load(text, defaults, { course: c = course, edit = false, file = null, s
 function configure() {
   if (!panel || !lane.session.alive) return;
   player.configure(panel.config());
+  explain.setPlanner(panel.config(), loaded?.robot?.kind);
   syncChart();
   syncOptions();
   buildLegend();
   scheduleShare();
+}
+
+/** On a narrow screen the canvas may be scrolled away: bring it back when a run starts. */
+function keepRunInView() {
+  if (!matchMedia('(max-width: 760px)').matches) return;
+  const r = ui.stage.getBoundingClientRect();
+  if (r.top < 0 || r.bottom > innerHeight) ui.stage.scrollIntoView({ block: 'start', behavior: 'smooth' });
 }
 
 const stepSize = () => Math.max(1, Math.floor(Number(ui.stepSize.value)) || 1);
@@ -199,7 +211,7 @@ const stepSize = () => Math.max(1, Math.floor(Number(ui.stepSize.value)) || 1);
 const actions = {
   run() {
     if (controller.can('run')) clearError();
-    player.run();
+    if (player.run()) keepRunInView();
   },
   pause() { player.pause(); },
   step() { player.step(stepSize()); },
@@ -406,6 +418,40 @@ function showInvalid(error, edit) {
 
 function currentStats() { return player.stats(); }
 
+/** The strip above the canvas: what the replay shows against what the planner did. */
+function runStatusText() {
+  const state = controller.state;
+  const config = panel?.config();
+  const label = config ? registry.planners.find((p) => p.name === config.planner)?.label || config.planner : '';
+  const planner = lane.result?.stats || lane.stats;
+  const total = planner?.iterations ?? 0;
+  const replay = player.replayIteration();
+  const shown = replay.iteration;
+  const ms = planner && Number.isFinite(planner.time_ms) ? `${planner.time_ms.toFixed(1)} ms` : '';
+  const plannerPart = lane.done ? `planner finished in ${ms}` : planner ? `planner at ${total.toLocaleString('en')} iterations` : '';
+  const n = (v) => v.toLocaleString('en');
+  switch (state) {
+    case 'loading': return 'Loading…';
+    case 'invalid': return 'No valid scenario: pick a built-in or open a file.';
+    case 'idle': return config ? `Ready: Run starts ${label}, seed ${config.seed}.` : 'Ready.';
+    case 'finished': {
+      const word = lane.finalStatus || (lane.result?.solved ? 'solved' : 'finished');
+      return `${word.replace('_', ' ')} · ${n(total)} iterations · ${n(playback.nodeCount)} nodes · ${plannerPart}`;
+    }
+    default: {
+      const verb = state === 'paused' ? 'paused at' : 'replaying';
+      return `${verb} ${replay.exact ? '' : '≈'}${n(shown)} of ${n(total)} iterations${plannerPart ? ` · ${plannerPart}` : ''}`;
+    }
+  }
+}
+let lastRunStatus = '';
+function updateRunStatus() {
+  const text = registry ? runStatusText() : 'Loading the planning core…';
+  if (text === lastRunStatus) return;
+  lastRunStatus = text;
+  $('run-status').textContent = text;
+}
+
 function updateStats() {
   const s = currentStats();
   updateStatsList(s);
@@ -436,7 +482,7 @@ function syncButtons() {
   document.body.dataset.state = controller.state;
 }
 
-controller.onChange(() => { syncButtons(); updateStats(); });
+controller.onChange((state) => { syncButtons(); updateStats(); updateRunStatus(); explain.setLive(state !== 'running'); syncSpeedButtons(); });
 
 function buildLegend() {
   const name = panel?.planner()?.name;
@@ -503,7 +549,21 @@ ui.compare.addEventListener('click', () => {
   ui.compare.href = b ? `compare.html?scenario=${encodeURIComponent(b.id)}` : 'compare.html';
 });
 
+// Slow / Normal / Instant: presets of the events-per-second slider (Playback details).
+const SPEEDS = Object.freeze({ 'speed-slow': 0, 'speed-normal': 30, 'speed-instant': 100 });
+function syncSpeedButtons() {
+  for (const [id, v] of Object.entries(SPEEDS)) $(id).setAttribute('aria-checked', String(Number(ui.speed.value) === v));
+}
+for (const [id, v] of Object.entries(SPEEDS)) {
+  $(id).addEventListener('click', () => {
+    ui.speed.value = String(v);
+    updateOutputs();
+    scheduleShare();
+  });
+}
+
 function updateOutputs() {
+  syncSpeedButtons();
   ui.speedOut.textContent = describeSpeed(ui.speed);
   ui.animOut.textContent = `${Math.round(animFps(ui.animSpeed))} frames/s`;
 }
@@ -513,6 +573,8 @@ ui.stepSize.addEventListener('change', scheduleShare);
 const overlayOptions = createOverlays(ui.overlays, () => { syncOptions(); scheduleShare(); });
 // An inspection planner's smoothed path need not see what its branch saw: its robot follows the raw path.
 const syncOptions = () => {
+  const hidden = overlayOptions.fit?.({ config: panel?.config(), robot: loaded?.robot?.kind, inspection: !!loaded?.inspection }) ?? 0;
+  $('overlays-note').textContent = hidden ? `${hidden} more apply to other planners or set-ups.` : '';
   const o = overlayOptions();
   view.setOptions({ ...o, animateRaw: ui.animRaw.checked || panel?.planner().task === 'inspection' });
   cspace.setOptions({ showRejected: o.showRejected, showCollisions: o.showCollisions });
@@ -534,6 +596,8 @@ document.addEventListener('keydown', (e) => {
     actions.back();
   } else if (e.key === 'r' || e.key === 'R') {
     actions.reset();
+  } else if (e.key === '.') {
+    actions.stepEvent();
   } else if (e.key === '?') {
     e.preventDefault();
     toggleHelp();
@@ -565,6 +629,16 @@ ui.canvas.addEventListener('pointermove', (e) => {
 ui.canvas.addEventListener('pointerleave', hideTip);
 ui.canvas.addEventListener('pointerdown', hideTip);
 
+// Run 20 seeds (trials.js): this set-up on seeds s … s+19, in background workers; a dot opens its seed.
+createTrials({
+  button: $('run-seeds'), cancel: $('cancel-seeds'), status: $('trials-status'), table: $('trials'), dots: $('trial-dots'),
+  setup: () => (panel && scenarioText && controller.state !== 'invalid' ? { text: scenarioText, ...panel.config() } : null),
+  open: (seed) => {
+    panel.apply({ ...panel.config().params, name: panel.config().planner, seed });
+    configure();
+  },
+});
+
 // Linked views (linked.js): the arm's c-space ↔ workspace under the pointer; the heat map's scale.
 linkViews({ view, cspace, canvas: ui.canvas, cspaceCanvas: ui.cspace, stage: ui.stage, model: playback.model });
 
@@ -585,6 +659,8 @@ Object.defineProperty(window, 'planarium', {
     /** The link to this state (the hash is kept up to date a moment after each change). */
     shareLink: () => writeHash(),
     model: () => modelSummary(playback.model, chart),
+    /** The explain panel: {line, caption, events} of the last event shown. */
+    explain: () => explain.state(),
     cells: () => cellSummary(playback.model.cells),
     /** Css px within the workspace canvas of the world point (x, y), or null. */
     toCanvas: (x, y) => (view.layout ? [view.layout.sx(x) / view.layout.dpr, view.layout.sy(y) / view.layout.dpr] : null),

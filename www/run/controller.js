@@ -21,11 +21,11 @@ export const TRANSITIONS = Object.freeze({
     load: 'loading', loaded: 'idle', invalid: 'invalid', stop: 'stopped',
   }),
   idle: Object.freeze({
-    run: 'running', step: 'paused', configure: 'idle',
+    run: 'running', step: 'paused', stepEvent: 'paused', configure: 'idle',
     load: 'loading', loaded: 'idle', invalid: 'invalid', stop: 'stopped',
   }),
   running: Object.freeze({
-    pause: 'paused', finish: 'finished', cancel: 'finished', reset: 'idle', fail: 'idle',
+    pause: 'paused', stepEvent: 'paused', finish: 'finished', cancel: 'finished', reset: 'idle', fail: 'idle',
     configure: 'idle', load: 'loading', loaded: 'idle', invalid: 'invalid', stop: 'stopped',
   }),
   paused: Object.freeze({

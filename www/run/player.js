@@ -132,8 +132,11 @@ export class Player {
     return true;
   }
 
+  /** Show one more event (from a run, pause it first; from idle, start it paused). */
   stepEvent() {
+    const wasRunning = this.controller.state === 'running';
     if (!this.controller.fire('stepEvent')) return false;
+    if (wasRunning) this.lane.pause();
     this.lane.stepEvent();
     return true;
   }
@@ -194,6 +197,27 @@ export class Player {
     return it;
   }
 
+  /**
+   * The iteration the replay has reached, for the status strip: whole batches shown, plus the
+   * shown share of the batch being revealed (the worker's batches can hold hundreds of
+   * iterations). `exact` is false when interpolated.
+   */
+  replayIteration() {
+    const lane = this.lane;
+    if (lane.caughtUp && lane.result?.stats) return { iteration: lane.result.stats.iterations, exact: true };
+    const shown = this.playback.store.length;
+    let prev = [0, 0];
+    for (const m of this.marks) {
+      if (m[0] > shown) {
+        const span = m[0] - prev[0];
+        const part = span > 0 ? (shown - prev[0]) / span : 0;
+        return { iteration: Math.floor(prev[1] + part * (m[1] - prev[1])), exact: part === 0 };
+      }
+      prev = m;
+    }
+    return { iteration: prev[1], exact: true };
+  }
+
   maybeFinish() {
     if (this.lane.caughtUp && this.controller.fire('finish')) this.hooks.changed?.();
     if (this.controller.state === 'finished' && this.lane.showResult()) this.hooks.changed?.();
@@ -206,7 +230,20 @@ export class Player {
       ? (lane.finalStatus || (lane.result?.solved ? 'solved' : 'finished')) : this.controller.state;
   }
 
-  stats() { return this.lane.statsFor(this.statusWord(), this.controller.state === 'finished'); }
+  /**
+   * The stats shown: the worker's, except that while the replay is behind the planner, iterations
+   * and nodes are those drawn (the planner's totals are in `planner_iterations`, `planner_nodes`).
+   */
+  stats() {
+    const s = this.lane.statsFor(this.statusWord(), this.controller.state === 'finished');
+    if (!this.lane.caughtUp && s.iterations !== undefined) {
+      s.planner_iterations = s.iterations;
+      s.planner_nodes = s.nodes;
+      s.iterations = this.shownIterations;
+      s.nodes = s.shown_nodes;
+    }
+    return s;
+  }
 
   frame(time) {
     const dt = Math.min(0.25, (time - (this.lastFrame || time)) / 1000);

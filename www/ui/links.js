@@ -37,7 +37,7 @@
 import { parseParam, plannerFits, taskOf } from './panel.js';
 import { OVERLAYS } from '../draw/palette.js';
 
-export const VIEW_DEFAULTS = Object.freeze({ speed: 60, anim: 50, rawPath: false, stepSize: 1 });
+export const VIEW_DEFAULTS = Object.freeze({ speed: 30, anim: 50, rawPath: false, stepSize: 1 });
 export const CONTROLS = Object.freeze(['run', 'pause', 'step', 'back', 'reset', 'speed', 'seed']);
 export const DEFAULT_CONTROLS = Object.freeze(['run', 'pause', 'step', 'back', 'reset']);
 /** Keys that are not planner parameters (a parameter of that name could not be shared). */

@@ -15,6 +15,9 @@
 
 import { el } from './dom.js';
 
+/** How many of a planner's own parameters the panel shows before "More parameters". */
+export const MAIN_PARAMS = 3;
+
 /** Parse an input's text for `spec`: {ok, value} or {ok: false, why}. Empty text: {ok, value: undefined}. */
 export function parseParam(spec, text) {
   if (spec.kind === 'choice') {
@@ -66,6 +69,11 @@ export function createPanel(root, registry, onChange, { prefix = '', seed: withS
   const params = el('fieldset', { className: 'params', id: id('planner-params') });
   const groupBox = el('div', { className: 'param-groups', id: id('param-groups') });
   const limits = el('fieldset', { className: 'params', id: id('run-params') });
+  // The planner's first MAIN_PARAMS parameters stay in view; the rest, the groups (sampler, tree
+  // variants) and the limits open on demand.
+  const more = el('details', { className: 'more-params', id: id('more-params') });
+  const moreSummary = el('summary', { text: 'More parameters' });
+  const moreOwn = el('fieldset', { className: 'params', id: id('planner-more-params') });
   const seed = el('input', { id: id('seed'), type: 'number', min: '0', step: '1', value: '1', inputMode: 'numeric' });
   const seedHint = el('span', { className: 'hint' });
   controls.push(plannerSelect, seed);
@@ -75,8 +83,7 @@ export function createPanel(root, registry, onChange, { prefix = '', seed: withS
     note,
     summary,
     params,
-    groupBox,
-    limits,
+    more,
     withSeed ? el('label', { className: 'field', htmlFor: id('seed'), title: 'Random seed: the same seed replays the same run.' },
       el('span', { text: 'Seed' }), seed, seedHint) : null,
   );
@@ -168,7 +175,11 @@ export function createPanel(root, registry, onChange, { prefix = '', seed: withS
     controls.splice(0, controls.length, ...keep);
     params.replaceChildren(el('legend', { text: `${p.label} parameters` }));
     if (!p.params.length) params.append(el('p', { className: 'hint', text: 'No parameters.' }));
-    for (const spec of p.params) params.append(field(spec, state.set[p.name], 'param'));
+    const main = p.params.slice(0, MAIN_PARAMS), rest = p.params.slice(MAIN_PARAMS);
+    for (const spec of main) params.append(field(spec, state.set[p.name], 'param'));
+    moreOwn.replaceChildren(el('legend', { text: `More ${p.label} parameters` }));
+    for (const spec of rest) moreOwn.append(field(spec, state.set[p.name], 'param'));
+    moreOwn.hidden = !rest.length;
     groupBox.replaceChildren(...groupsOf(p).filter((g) => g.params.length).map((g) => {
       const box = el('fieldset', { className: 'params group-params', id: id(`group-${g.name}`) });
       box.dataset.group = g.name;
@@ -178,6 +189,9 @@ export function createPanel(root, registry, onChange, { prefix = '', seed: withS
     }));
     limits.replaceChildren(el('legend', { text: 'Limits and smoothing' }));
     for (const spec of runParams) limits.append(field(spec, state.run, 'run'));
+    const n = rest.length + groupsOf(p).reduce((k, g) => k + g.params.length, 0) + runParams.length;
+    moreSummary.textContent = `More parameters (${n}): ${[rest.length ? 'planner' : '', ...groupsOf(p).filter((g) => g.params.length).map((g) => g.label.toLowerCase()), 'limits'].filter(Boolean).join(', ')}`;
+    more.replaceChildren(moreSummary, moreOwn, groupBox, limits);
     seed.value = String(state.seed);
   }
 

@@ -7,6 +7,9 @@ import { el } from './dom.js';
 
 const fixed = (v, n) => (v === undefined || v === null || !Number.isFinite(v) ? undefined : v.toFixed(n));
 
+/** "112 of 349" while the replay is behind the planner, else the number. */
+const ofPlanner = (shown, planner) => (planner === undefined || planner === shown ? shown : `${shown} of ${planner}`);
+
 // Status words shown differently from the worker's (the rest are shown as they are).
 const STATUS_TEXT = Object.freeze({ no_path: 'no path' });
 
@@ -14,8 +17,10 @@ export const STAT_FIELDS = Object.freeze([
   { key: 'reason', label: 'Why', optional: true, className: 'reason', value: (s) => s.reason || undefined,
     title: 'Why the planner gave up: it can tell, by its method, that it finds no path' },
   { key: 'time', label: 'Time (ms)', value: (s) => fixed(s.time_ms, 1) },
-  { key: 'iterations', label: 'Iterations', value: (s) => s.iterations },
-  { key: 'nodes', label: 'Nodes', value: (s) => s.nodes },
+  { key: 'iterations', label: 'Iterations', value: (s) => ofPlanner(s.iterations, s.planner_iterations),
+    title: 'Iterations drawn (of the planner\'s, while the replay is behind it)' },
+  { key: 'nodes', label: 'Nodes', value: (s) => ofPlanner(s.nodes, s.planner_nodes),
+    title: 'Nodes drawn (of the planner\'s, while the replay is behind it)' },
   { key: 'checks', label: 'Checks', value: (s) => s.checks },
   { key: 'cost', label: 'Cost', value: (s) => fixed(s.cost, 4) },
   { key: 'smoothed-cost', label: 'Smoothed cost', value: (s) => fixed(s.smoothed_cost, 4) },

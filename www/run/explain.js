@@ -1,0 +1,378 @@
+// The explain panel's model: each planner's pseudocode, and a reader of the event stream that says,
+// for every event, which line of it the planner was on and what happened, in words ("sample
+// (0.31, 0.72) → nearest #52 at 0.41 → step 0.28 → blocked by obstacle 3"). Everything it says
+// comes from the records the core emitted (src/events.rs), so it is true by construction: the
+// numbers are the records' numbers, the node ids the core's. No DOM here (ui/explain-panel.js shows
+// it, draw/actors.js draws the step's actors); tests/js/explain.test.mjs and the browser test step
+// each planner and check line and caption against the events.
+
+import { EventKind as K, STRIDE } from './events.js';
+
+/**
+ * @typedef {{id: string, text: string, indent?: number, when?: (o: Options) => boolean}} Line
+ * @typedef {{sampler?: string, goalBias?: number, connect?: boolean, domain?: boolean, exhausted?: boolean,
+ *   weighted?: boolean, escape?: string}} Options
+ * @typedef {{title: string, lines: Line[]}} Pseudocode
+ */
+
+const sampled = (o) => (o.goalBias ?? 0) > 0;
+const SAMPLER_LINES = /** @type {Line[]} */ ([
+  { id: 'goal', text: 'with probability goal_bias: q_rand ← q_goal', indent: 2, when: sampled },
+  { id: 'try', text: 'SAMPLE(): uniform draws, checked', indent: 2, when: (o) => !!o.sampler && o.sampler !== 'uniform' && o.sampler !== 'goal-biased' },
+]);
+
+/** @type {Record<string, Pseudocode>} */
+export const PSEUDOCODE = {
+  rrt: {
+    title: 'RRT (LaValle 1998)',
+    lines: [
+      { id: 'init', text: 'T ← {q_start}' },
+      { id: 'loop', text: 'repeat' },
+      { id: 'sample', text: 'q_rand ← SAMPLE()', indent: 1 },
+      ...SAMPLER_LINES,
+      { id: 'nearest', text: 'q_near ← NEAREST(T, q_rand)', indent: 1 },
+      { id: 'exhausted', text: 'skip nodes that failed too often (exhausted)', indent: 2, when: (o) => !!o.exhausted },
+      { id: 'domain', text: 'if d > r(q_near): reject (dynamic domain)', indent: 2, when: (o) => !!o.domain },
+      { id: 'steer', text: 'q_new ← STEER(q_near, q_rand, range)', indent: 1 },
+      { id: 'check', text: 'if not MOTION_FREE(q_near, q_new): reject', indent: 1 },
+      { id: 'add', text: 'T ← T ∪ {q_new}, parent(q_new) ← q_near', indent: 1 },
+      { id: 'connect', text: 'connect: steer again toward q_rand until reached or blocked', indent: 2, when: (o) => !!o.connect },
+      { id: 'goal-check', text: 'if dist(q_new, q_goal) ≤ tolerance: return PATH(q_new)', indent: 1 },
+    ],
+  },
+  'rrt-connect': {
+    title: 'RRT-Connect (Kuffner & LaValle 2000)',
+    lines: [
+      { id: 'init', text: 'T_a ← {q_start}, T_b ← {q_goal}' },
+      { id: 'loop', text: 'repeat' },
+      { id: 'sample', text: 'q_rand ← SAMPLE()', indent: 1 },
+      ...SAMPLER_LINES,
+      { id: 'nearest', text: 'EXTEND(T_a, q_rand): q_near ← NEAREST(T_a, q_rand)', indent: 1 },
+      { id: 'exhausted', text: 'skip nodes that failed too often (exhausted)', indent: 2, when: (o) => !!o.exhausted },
+      { id: 'domain', text: 'if d > r(q_near): reject (dynamic domain)', indent: 2, when: (o) => !!o.domain },
+      { id: 'steer', text: 'q_new ← STEER(q_near, q_rand, range)', indent: 2 },
+      { id: 'check', text: 'if not MOTION_FREE(q_near, q_new): reject', indent: 2 },
+      { id: 'add', text: 'add q_new to T_a', indent: 2 },
+      { id: 'c-nearest', text: 'CONNECT(T_b, q_new): q_near ← NEAREST(T_b, q_new)', indent: 1 },
+      { id: 'c-steer', text: 'repeat: q ← STEER(q_near, q_new, range)', indent: 2 },
+      { id: 'c-check', text: 'until blocked: MOTION_FREE fails', indent: 2 },
+      { id: 'c-add', text: 'add q to T_b', indent: 2 },
+      { id: 'met', text: 'if q = q_new: the trees meet: return PATH', indent: 1 },
+      { id: 'swap', text: 'swap T_a and T_b', indent: 1 },
+    ],
+  },
+  'rrt-star': {
+    title: 'RRT* (Karaman & Frazzoli 2011)',
+    lines: [
+      { id: 'init', text: 'T ← {q_start}' },
+      { id: 'loop', text: 'repeat' },
+      { id: 'sample', text: 'q_rand ← SAMPLE()', indent: 1 },
+      ...SAMPLER_LINES,
+      { id: 'nearest', text: 'q_near ← NEAREST(T, q_rand)', indent: 1 },
+      { id: 'steer', text: 'q_new ← STEER(q_near, q_rand, range)', indent: 1 },
+      { id: 'check', text: 'if not MOTION_FREE(q_near, q_new): reject', indent: 1 },
+      { id: 'add', text: 'Q_near ← NEAR(T, q_new); parent ← cheapest valid in Q_near', indent: 1 },
+      { id: 'rewire', text: 'REWIRE: for q in Q_near cheaper through q_new: parent(q) ← q_new', indent: 1 },
+      { id: 'cost', text: 'if a goal node got cheaper: best ← its cost', indent: 1 },
+      { id: 'goal-check', text: 'return the best path when time or iterations run out', indent: 1 },
+    ],
+  },
+  inspection: {
+    title: 'Inspection planning (IRIS-style tree, Technion course)',
+    lines: [
+      { id: 'init', text: 'T ← {q_start}, seen(q_start) ← S(q_start)' },
+      { id: 'loop', text: 'repeat' },
+      { id: 'sample', text: 'q_rand ← SAMPLE()', indent: 1 },
+      ...SAMPLER_LINES,
+      { id: 'nearest', text: 'q_src ← the node chosen to grow toward q_rand', indent: 1 },
+      { id: 'steer', text: 'q_new ← STEER(q_src, q_rand, range)', indent: 1 },
+      { id: 'check', text: 'if not MOTION_FREE(q_src, q_new): reject', indent: 1 },
+      { id: 'add', text: 'parent ← the near node through which q_new sees most', indent: 1 },
+      { id: 'seen', text: 'seen(q_new) ← seen(parent) ∪ points seen on the way', indent: 1 },
+      { id: 'rewire', text: 'rewire near nodes that see more (or as much, cheaper) through q_new', indent: 1 },
+      { id: 'cost', text: 'if |seen(q_new)| beats the best branch: best ← q_new', indent: 1 },
+      { id: 'goal-check', text: 'when coverage ≥ target: return PATH(best)', indent: 1 },
+    ],
+  },
+  'hex-potential': {
+    title: 'Hexagonal decomposition + potential fields (report 002)',
+    lines: [
+      { id: 'cells', text: 'tile the map with hexagons; split mixed cells, level by level' },
+      { id: 'region', text: 'region ← a disc of influence around the start' },
+      { id: 'field', text: 'potential of each free cell in the region (heat map)', indent: 1 },
+      { id: 'loop', text: 'repeat from the robot\'s cell' },
+      { id: 'judge', text: 'test the step to each neighbouring free cell', indent: 1 },
+      { id: 'potential', text: 'U = repulsion + trap term − C(1 − k2·α) for each passable one', indent: 1 },
+      { id: 'add', text: 'step to the lowest U; mark the cell left visited', indent: 1 },
+      { id: 'grow', text: 'stuck: double the region and start again', indent: 1 },
+      { id: 'goal-check', text: 'goal cell in reach and its step is free: done', indent: 1 },
+    ],
+  },
+  'potential-field': {
+    title: 'Artificial potential field (Khatib 1986; escapes: Barraquand & Latombe 1991)',
+    lines: [
+      { id: 'field', text: 'U(q) = U_att(q) + U_rep(q) (heat map)' },
+      { id: 'loop', text: 'repeat' },
+      { id: 'add', text: 'q ← q − step · ∇U / |∇U| (halved while the motion collides)', indent: 1 },
+      { id: 'minimum', text: 'no progress over the window: a local minimum', indent: 1 },
+      { id: 'walk', text: 'escape: a random walk, then descend again', indent: 2, when: (o) => o.escape !== 'give-up' },
+      { id: 'goal-check', text: 'goal within a step and the motion is free: done', indent: 1 },
+    ],
+  },
+};
+
+/** The pseudocode of `planner` with only the lines `options` apply (null for an unknown planner). */
+export function pseudocode(planner, options = {}) {
+  const p = PSEUDOCODE[planner];
+  if (!p) return null;
+  return { title: p.title, lines: p.lines.filter((l) => !l.when || l.when(options)) };
+}
+
+/** The options the pseudocode shows, from a planner set-up {planner, params}. */
+export function optionsOf(config) {
+  const p = config?.params || {};
+  return {
+    sampler: p.sampler,
+    goalBias: Number(p.goal_bias ?? (config?.planner === 'rrt' ? 0.05 : 0)),
+    connect: p.extend === 'connect',
+    domain: Number(p.dd_radius) > 0,
+    exhausted: Number(p.exhausted) > 0,
+    weighted: p.exhausted_policy === 'weighted',
+    escape: p.escape,
+  };
+}
+
+/** A number as the captions write it: 3 significant digits, no exponent for ordinary values. */
+export function num(v) {
+  if (!Number.isFinite(v)) return v > 0 ? '∞' : v < 0 ? '−∞' : '?';
+  const a = Math.abs(v);
+  if (a !== 0 && (a < 1e-3 || a >= 1e5)) return v.toExponential(2).replace('-', '−');
+  const s = Number(v.toPrecision(3)).toString();
+  return s.replace('-', '−');
+}
+const pt = (x, y) => `(${num(x)}, ${num(y)})`;
+
+/** What blocked a motion, from a COLLISION record's id (src/space_info.rs, SpaceInfo::blocker). */
+export function blockerText(id) {
+  if (id >= 0) return `blocked by obstacle ${id}`;
+  if (id === -2) return 'blocked by the map\'s edge';
+  if (id === -3) return 'blocked by the robot\'s own rule (self-collision or a joint limit)';
+  return 'refused (not checked in time)';
+}
+
+const HEX_WHY = ['', 'an obstacle vertex in the t/2 circle', 'a vertex in the swept rectangle', 'an obstacle edge crossing the region', 'the map\'s edge'];
+const TREE_NAME = (planner, tree) => (planner === 'rrt-connect' ? (tree === 0 ? 'start tree' : 'goal tree') : 'tree');
+
+/**
+ * Reads records one at a time and keeps what the current step has said: the line, the caption
+ * (the step's parts joined by " → "), and the step's actors for the canvas (sample, nearest node,
+ * target, range, new edge, collision).
+ */
+export class Explainer {
+  /** `planner`: the registry name; `robot`: the scenario's robot kind ('point' draws the range). */
+  constructor(planner = 'rrt', robot = 'point') {
+    this.planner = planner;
+    this.robot = robot;
+    this.reset();
+  }
+
+  reset() {
+    this.line = 'init';
+    this.parts = [];
+    this.caption = '';
+    this.actors = {};
+    this.events = 0;
+    this.connecting = false; // RRT-Connect: in CONNECT (growing the other tree toward q_new)
+  }
+
+  /** Start a new step's caption. */
+  begin(text) {
+    this.parts = [text];
+    this.actors = {};
+  }
+
+  /** Add to the step's caption (a long CONNECT keeps its first parts and the last few). */
+  then(text) {
+    this.parts.push(text);
+    if (this.parts.length > 8) this.parts.splice(2, this.parts.length - 7, '…');
+  }
+
+  /**
+   * Read one record (`r`: STRIDE numbers, or a Float64Array view). Returns {line, caption}: the
+   * pseudocode line's id and the caption after it.
+   */
+  read(r) {
+    this.events++;
+    const kind = r[0], tree = r[1], id = r[2], parent = r[3];
+    const [x, y, px, py, c0, c1, pc0] = [r[4], r[5], r[6], r[7], r[8], r[9], r[10]];
+    const A = this.actors;
+    switch (kind) {
+      case K.SAMPLE_TRY:
+        if (!this.parts.length || this.line !== 'try') this.begin(`sampler tries ${pt(x, y)}: ${id === 1 ? 'free' : 'occupied'}`);
+        else this.then(`tries ${pt(x, y)}: ${id === 1 ? 'free' : 'occupied'}`);
+        this.line = 'try';
+        (A.tries ||= []).push([x, y, id === 1]);
+        break;
+      case K.SAMPLE: {
+        const tries = this.line === 'try' ? A.tries : undefined;
+        this.connecting = false;
+        this.begin(id === 1 ? `sample q_goal ${pt(x, y)} (goal bias)` : `sample ${pt(x, y)}`);
+        if (tries) this.actors.tries = tries;
+        this.actors.sample = [x, y];
+        this.line = id === 1 ? 'goal' : 'sample';
+        if (this.planner === 'rrt-connect') this.parts[0] += ` for the ${TREE_NAME(this.planner, tree)}`;
+        break;
+      }
+      case K.NEAREST: {
+        const toSample = pc0 === 1;
+        if (!toSample && this.planner === 'rrt-connect') {
+          if (!this.connecting) {
+            const sample = A.sample;
+            this.begin(`CONNECT the ${TREE_NAME(this.planner, tree)} toward ${pt(px, py)}`);
+            if (sample) this.actors.sample = sample;
+          }
+          this.connecting = true;
+        }
+        this.then(`nearest #${id} at ${num(c0)}`);
+        const N = this.actors;
+        N.near = [x, y];
+        N.target = [px, py];
+        N.nearId = id;
+        N.domain = Number.isFinite(c1) ? c1 : null;
+        N.edge = undefined;
+        N.range = undefined;
+        N.collision = undefined;
+        N.blocked = false;
+        if (!toSample) N.sample ||= [px, py];
+        this.line = this.connecting ? 'c-nearest' : toSample || this.planner !== 'rrt' ? 'nearest' : 'connect';
+        break;
+      }
+      case K.STEER:
+        this.then(`step ${num(c0)}${pc0 === 1 ? ' (reaches it)' : ''}`);
+        A.edge = [px, py, x, y];
+        if (this.robot === 'point') A.range = [px, py, c1];
+        this.line = this.connecting ? 'c-steer' : 'steer';
+        break;
+      case K.COLLISION:
+        this.then(`${blockerText(id)} at ${pt(x, y)}`);
+        A.collision = [x, y];
+        A.blocked = true;
+        this.line = this.connecting ? 'c-check' : 'check';
+        break;
+      case K.NODE_ADDED:
+        if (parent < 0) { this.begin(`the ${TREE_NAME(this.planner, tree)} starts at ${pt(x, y)}`); this.line = 'init'; break; }
+        if (this.planner === 'hex-potential') {
+          this.begin(`step to cell centre ${pt(x, y)} (node #${id})`);
+          A.edge = [px, py, x, y];
+          this.line = 'add';
+          break;
+        }
+        if (this.planner === 'potential-field') {
+          this.begin(`${tree === 1 ? 'random-walk step' : 'step down the gradient'} to ${pt(x, y)} (node #${id})`);
+          A.edge = [px, py, x, y];
+          this.line = tree === 1 ? 'walk' : 'add';
+          break;
+        }
+        if (this.planner === 'rrt-star' && A.nearId !== undefined && parent !== A.nearId) {
+          this.then(`add #${id} under #${parent} (cheaper than #${A.nearId})`);
+        } else {
+          this.then(`add #${id} under #${parent}`);
+        }
+        A.edge = [px, py, x, y];
+        A.added = true;
+        this.line = this.connecting ? 'c-add' : 'add';
+        break;
+      case K.SAMPLE_REJECTED:
+        if (this.line === 'nearest' && A.domain !== null && A.domain !== undefined) {
+          this.then(`outside its domain r = ${num(A.domain)}: rejected unchecked`);
+          this.line = 'domain';
+        } else {
+          this.then('sample dropped');
+          if (this.line !== 'check') this.line = 'sample';
+        }
+        break;
+      case K.DOMAIN:
+        this.then(`#${id}'s domain ${Number.isFinite(px) ? `r = ${num(px)}` : 'removed'}`);
+        this.line = 'domain';
+        break;
+      case K.EXHAUSTED:
+        this.then(`#${id} is exhausted`);
+        this.line = 'exhausted';
+        break;
+      case K.TREES_CONNECTED:
+        this.then(`the trees meet at ${pt(x, y)}`);
+        A.met = [x, y];
+        this.line = 'met';
+        break;
+      case K.SOLVED:
+        this.then('solved: the path is returned');
+        this.line = 'goal-check';
+        break;
+      case K.REWIRE:
+        this.begin(`rewire #${id}: its parent is now #${parent}, cheaper`);
+        A.edge = [px, py, x, y];
+        this.line = 'rewire';
+        break;
+      case K.COST:
+        this.begin(`best cost now ${num(px)} (goal node #${id}, iteration ${parent})`);
+        this.line = 'cost';
+        break;
+      case K.COVERAGE:
+        this.begin(`best branch now sees ${num(100 * px)}% (${py} points; node #${id})`);
+        this.line = 'cost';
+        break;
+      case K.POINT_SEEN:
+        this.then(`point ${id} seen at ${pt(x, y)}`);
+        this.line = 'seen';
+        break;
+      case K.CELL:
+        this.begin(`cell #${id} at level ${tree}: ${['free', 'mixed', 'full'][px] || 'cell'}`);
+        A.cell = [x, y];
+        this.line = 'cells';
+        break;
+      case K.CELL_SHAPE:
+        break; // the outline of the cell just captioned
+      case K.REGION:
+        this.begin(`region of influence: radius ${num(px)} around ${pt(x, y)} (${c0} obstacles inside)`);
+        A.region = [x, y, px];
+        this.line = id > 0 ? 'grow' : 'region';
+        break;
+      case K.FIELD:
+        if (this.line !== 'field') this.begin('the potential of each free cell, for the heat map');
+        this.line = 'field';
+        break;
+      case K.CELL_STATE: {
+        const verdict = ['passable', `blocked: ${HEX_WHY[py] || 'the step test failed'}`, 'visited already', 'outside the region', 'an obstacle cell'][px] || 'judged';
+        if (this.line !== 'judge') this.begin(`from cell #${parent}: cell #${id} ${verdict}`);
+        else this.then(`#${id} ${verdict}`);
+        A.cell = [x, y];
+        this.line = 'judge';
+        break;
+      }
+      case K.POTENTIAL:
+        if (this.line !== 'potential') this.begin(`U(#${id}) = ${num(c1)}${pc1(r) ? ' (lowest: step there)' : ''}`);
+        else this.then(`U(#${id}) = ${num(c1)}${pc1(r) ? ' (lowest)' : ''}`);
+        A.cell = [x, y];
+        this.line = 'potential';
+        break;
+      case K.MINIMUM:
+        this.begin(`local minimum at ${pt(x, y)}: U = ${num(px)}, ${num(py)} from the goal`);
+        A.collision = [x, y];
+        this.line = 'minimum';
+        break;
+      default:
+        break;
+    }
+    this.caption = this.parts.join(' → ');
+    return { line: this.line, caption: this.caption };
+  }
+
+  /** Read records [from, to) of `store` (a RecordStore). */
+  readStore(store, from, to) {
+    for (const [d, o0, o1] of store.spans(from, to)) {
+      for (let o = o0; o < o1; o += STRIDE) this.read(d.subarray(o, o + STRIDE));
+    }
+  }
+}
+
+function pc1(r) { return r[11] === 1; }

@@ -1,0 +1,168 @@
+// The explain panel beside the canvas: the chosen planner's pseudocode (run/explain.js) with the
+// line the shown events reached highlighted, the caption of the step in words, and where in the
+// run it is. It is fed like a view (the lane calls drawRecords for every record revealed), so it
+// follows the playback, step by event or by iteration, and says only what the events say. It also
+// draws the step's actors on the workspace canvas (the sample, the nearest node, the range, the
+// step's edge, the collision) through the view's top hooks. Built with DOM calls and textContent.
+
+import { el } from './dom.js';
+import { Explainer, optionsOf, pseudocode } from '../run/explain.js';
+import { PALETTE } from '../draw/palette.js';
+
+/** The actors' colours (also in the legend): apart from the tree blue and the obstacle brown. */
+export const ACTOR = Object.freeze({ near: '#d55e00', range: 'rgba(213, 94, 0, 0.55)', edge: '#d55e00', blocked: '#b2182b', sample: PALETTE.sample });
+
+export class ExplainPanel {
+  /**
+   * `root`: the panel's element; `store`: the playback's RecordStore; `view`: the workspace View
+   * (its top hooks draw the actors).
+   */
+  constructor(root, store, view) {
+    this.store = store;
+    this.view = view;
+    this.explainer = new Explainer();
+    this.title = el('p', { id: 'explain-title', className: 'explain-title' });
+    this.code = el('ol', { id: 'explain-code', className: 'explain-code' });
+    this.caption = el('p', { id: 'explain-caption', className: 'explain-caption', text: 'Run or step the planner: each step is explained here.' });
+    this.where = el('p', { id: 'explain-where', className: 'hint' });
+    root.replaceChildren(this.title, this.code, this.caption, this.where);
+    this.items = new Map();
+    this.read = 0; // records read so far
+    this.scheduled = 0;
+    this.showResult = false;
+    this.dirty = false;
+    this.live = false;
+    view.topHooks.push((ctx, L) => this.drawActors(ctx, L));
+  }
+
+  /** Show `planner`'s pseudocode for the set-up `config` ({planner, params}) and robot kind. */
+  setPlanner(config, robotKind) {
+    const planner = config?.planner || 'rrt';
+    const code = pseudocode(planner, optionsOf(config));
+    this.explainer = new Explainer(planner, robotKind || 'point');
+    this.items.clear();
+    this.title.textContent = code ? code.title : `${planner}: no pseudocode yet`;
+    this.code.replaceChildren(...(code ? code.lines : []).map((l) => {
+      const li = el('li', { className: `indent-${l.indent || 0}` }, el('code', { text: l.text }));
+      li.dataset.line = l.id;
+      this.items.set(l.id, li);
+      return li;
+    }));
+    this.clearRun();
+  }
+
+  /** Announce captions to screen readers (paused or stepping), or not (running: too many). */
+  setLive(on) {
+    if (on === this.live) return;
+    this.live = on;
+    this.caption.setAttribute('aria-live', on ? 'polite' : 'off');
+  }
+
+  // The view interface the lane feeds (lane.js)
+
+  clearRun() {
+    this.explainer.reset();
+    this.read = 0;
+    this.showResult = false;
+    this.schedule();
+  }
+
+  drawRecords(from, to) {
+    if (from < this.read) { this.explainer.reset(); this.read = 0; }
+    this.explainer.readStore(this.store, this.read, to);
+    this.read = Math.max(this.read, to);
+    this.schedule();
+  }
+
+  setResult() {}
+  finishRun() { this.schedule(); }
+
+  schedule() {
+    this.view.dirty = true;
+    if (this.scheduled) return;
+    this.scheduled = requestAnimationFrame(() => { this.scheduled = 0; this.render(); });
+  }
+
+  /** The line and caption now (for tests and the page's API). */
+  state() {
+    return { line: this.read ? this.explainer.line : null, caption: this.read ? this.explainer.caption : '', events: this.read };
+  }
+
+  render() {
+    const x = this.explainer;
+    const line = this.read ? x.line : null;
+    for (const [id, li] of this.items) {
+      const now = id === line;
+      li.classList.toggle('now', now);
+      if (now) li.setAttribute('aria-current', 'step'); else li.removeAttribute('aria-current');
+    }
+    this.caption.textContent = this.read ? x.caption : 'Run or step the planner: each step is explained here.';
+    this.where.textContent = this.read ? `event ${this.read.toLocaleString('en')} of ${this.store.length.toLocaleString('en')} shown` : '';
+  }
+
+  /** The current step's actors on the workspace canvas (not once the result is shown). */
+  drawActors(ctx, L) {
+    if (!this.read || this.view.showResult || !L) return;
+    const a = this.explainer.actors;
+    const px = (v) => L.px(v);
+    ctx.save();
+    if (a.range) {
+      const [x, y, r] = a.range;
+      ctx.strokeStyle = ACTOR.range;
+      ctx.setLineDash([px(4), px(3)]);
+      ctx.lineWidth = px(1.5);
+      ctx.beginPath();
+      ctx.arc(L.sx(x), L.sy(y), r * L.scale, 0, 2 * Math.PI);
+      ctx.stroke();
+      ctx.setLineDash([]);
+    }
+    if (a.near && a.target) { // the distance measured: nearest node to its target
+      ctx.strokeStyle = ACTOR.range;
+      ctx.lineWidth = px(1);
+      ctx.setLineDash([px(2), px(3)]);
+      ctx.beginPath();
+      ctx.moveTo(L.sx(a.near[0]), L.sy(a.near[1]));
+      ctx.lineTo(L.sx(a.target[0]), L.sy(a.target[1]));
+      ctx.stroke();
+      ctx.setLineDash([]);
+    }
+    if (a.edge) {
+      const [x0, y0, x1, y1] = a.edge;
+      ctx.strokeStyle = a.blocked ? ACTOR.blocked : ACTOR.edge;
+      ctx.lineWidth = px(3);
+      ctx.beginPath();
+      ctx.moveTo(L.sx(x0), L.sy(y0));
+      ctx.lineTo(L.sx(x1), L.sy(y1));
+      ctx.stroke();
+    }
+    if (a.near) ring(ctx, L.sx(a.near[0]), L.sy(a.near[1]), px(6), ACTOR.near, px(2.5));
+    if (a.sample) dot(ctx, L.sx(a.sample[0]), L.sy(a.sample[1]), px(4), ACTOR.sample);
+    if (a.collision) cross(ctx, L.sx(a.collision[0]), L.sy(a.collision[1]), px(7), ACTOR.blocked, px(3));
+    ctx.restore();
+  }
+}
+
+function ring(ctx, x, y, r, color, w) {
+  ctx.strokeStyle = '#ffffff';
+  ctx.lineWidth = w + 2;
+  ctx.beginPath(); ctx.arc(x, y, r, 0, 2 * Math.PI); ctx.stroke();
+  ctx.strokeStyle = color;
+  ctx.lineWidth = w;
+  ctx.beginPath(); ctx.arc(x, y, r, 0, 2 * Math.PI); ctx.stroke();
+}
+
+function dot(ctx, x, y, r, color) {
+  ctx.fillStyle = '#ffffff';
+  ctx.beginPath(); ctx.arc(x, y, r + 1.5, 0, 2 * Math.PI); ctx.fill();
+  ctx.fillStyle = color;
+  ctx.beginPath(); ctx.arc(x, y, r, 0, 2 * Math.PI); ctx.fill();
+}
+
+function cross(ctx, x, y, r, color, w) {
+  ctx.strokeStyle = color;
+  ctx.lineWidth = w;
+  ctx.beginPath();
+  ctx.moveTo(x - r, y - r); ctx.lineTo(x + r, y + r);
+  ctx.moveTo(x + r, y - r); ctx.lineTo(x - r, y + r);
+  ctx.stroke();
+}

@@ -1,0 +1,122 @@
+// "Run 20 seeds": the playground's set-up run on 20 consecutive seeds in background benchmark
+// workers (worker/bench-worker.js, one per core, at most two), so a student sees how much one seed
+// says: the share solved and the medians (time, iterations, nodes, checks, path cost), and one dot
+// per seed, coloured by outcome, that opens that seed in the playground when clicked. The page's own
+// run is not touched. Built with DOM calls and textContent.
+
+import { el } from './dom.js';
+
+export const SEEDS = 20;
+
+/** The median of the finite numbers in `xs` (null when there are none). */
+export function median(xs) {
+  const v = xs.filter(Number.isFinite).sort((a, b) => a - b);
+  if (!v.length) return null;
+  const m = v.length >> 1;
+  return v.length % 2 ? v[m] : (v[m - 1] + v[m]) / 2;
+}
+
+/** {solved, runs, medians: {time_ms, iterations, nodes, checks, cost}} of result JSONs. */
+export function summarise(results) {
+  const ok = results.filter((r) => r.solved);
+  const of = (f) => median(ok.map(f));
+  return {
+    solved: ok.length,
+    runs: results.length,
+    medians: {
+      time_ms: of((r) => r.stats?.time_ms),
+      iterations: of((r) => r.stats?.iterations),
+      nodes: of((r) => r.stats?.nodes),
+      checks: of((r) => r.stats?.checks),
+      cost: of((r) => r.stats?.smoothed_cost ?? r.stats?.cost),
+    },
+  };
+}
+
+const fmt = (v, d = 0) => (v === null || v === undefined ? '–' : Number(v).toLocaleString('en', { maximumFractionDigits: d }));
+
+/**
+ * Wire the trials box: `button` starts, `cancel` stops (the workers are terminated), `status`,
+ * `table` and `dots` show the outcome; `setup()` gives {text, planner, params, seed} or null;
+ * `open(seed)` opens a seed in the playground.
+ */
+export function createTrials({ button, cancel, status, table, dots, setup, open }) {
+  let workers = [];
+  let gen = 0;
+
+  function stop() {
+    for (const w of workers) w.terminate();
+    workers = [];
+    button.disabled = false;
+    cancel.hidden = true;
+  }
+
+  function show(s, results, first) {
+    table.hidden = false;
+    const row = (k, v) => el('tr', {}, el('th', { scope: 'row', text: k }), el('td', { text: v }));
+    const m = s.medians;
+    table.replaceChildren(el('tbody', {},
+      row('Solved', `${s.solved} of ${s.runs}`),
+      row('Median time', `${fmt(m.time_ms, 1)} ms`),
+      row('Median iterations', fmt(m.iterations)),
+      row('Median nodes', fmt(m.nodes)),
+      row('Median checks', fmt(m.checks)),
+      row('Median path cost', fmt(m.cost, 3))));
+    dots.replaceChildren(...results.map((r, i) => {
+      if (!r) return el('span', { className: 'trial-dot pending', text: '·' });
+      const seed = first + i;
+      const b = el('button', {
+        className: `trial-dot ${r.solved ? 'solved' : 'failed'}`, type: 'button', text: String(seed),
+        title: `seed ${seed}: ${r.status}, ${fmt(r.stats?.time_ms, 1)} ms, ${fmt(r.stats?.nodes)} nodes — click to open it`,
+      });
+      b.dataset.seed = String(seed);
+      b.addEventListener('click', () => open(seed));
+      return b;
+    }));
+  }
+
+  button.addEventListener('click', () => {
+    const s = setup();
+    if (!s) { status.textContent = 'Load a valid scenario first.'; return; }
+    stop();
+    const mine = ++gen;
+    const first = s.seed;
+    const results = new Array(SEEDS).fill(null);
+    let next = 0, done = 0;
+    button.disabled = true;
+    cancel.hidden = false;
+    status.textContent = `Running ${s.planner} on seeds ${first}–${first + SEEDS - 1}…`;
+    const pool = Math.max(1, Math.min(2, navigator.hardwareConcurrency || 1));
+    const finish = () => {
+      stop();
+      const sum = summarise(results.filter(Boolean));
+      status.textContent = `${s.planner}, seeds ${first}–${first + SEEDS - 1}: solved ${sum.solved} of ${sum.runs}. Click a seed to open it.`;
+      show(sum, results, first);
+    };
+    const give = (w) => {
+      if (next >= SEEDS) return;
+      const i = next++;
+      w.postMessage({ id: i, text: s.text, planner: s.planner, params: s.params, seed: first + i });
+    };
+    for (let k = 0; k < pool; k++) {
+      const w = new Worker(new URL('../worker/bench-worker.js', import.meta.url), { type: 'module' });
+      workers.push(w);
+      w.onmessage = (e) => {
+        if (mine !== gen) return;
+        const m = e.data;
+        if (m.type === 'ready') { give(w); return; }
+        results[m.id] = m.type === 'done' ? m.result : { solved: false, status: m.type === 'failed' ? `failed: ${m.message}` : 'crashed', stats: {} };
+        done++;
+        status.textContent = `Running seeds: ${done} of ${SEEDS} done…`;
+        show(summarise(results.filter(Boolean)), results, first);
+        if (m.type === 'crashed') { // a poisoned module: this worker takes no more seeds
+          w.terminate();
+          workers = workers.filter((x) => x !== w);
+        }
+        if (done === SEEDS || !workers.length) finish(); else if (m.type !== 'crashed') give(w);
+      };
+      w.onerror = () => { if (mine === gen) { status.textContent = 'A seed worker stopped; the runs were halted.'; stop(); } };
+    }
+  });
+  cancel.addEventListener('click', () => { gen++; stop(); status.textContent = 'Stopped.'; });
+}
