@@ -7,7 +7,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { pageFixture, ROOT, SHOTS } from './browser.mjs';
@@ -294,6 +294,7 @@ test('set-ups built from the menus are the set-ups the same typed lines give, an
   await fx.page.click('#add-setup');
   assert.equal(await fx.page.textContent('#build-note'), 'Added: rrt-connect');
   assert.deepEqual(await listed(), ['biased', 'rrt-connect']);
+  assert.doesNotMatch(await fx.page.textContent('#build'), /null/, 'no stray "null" under the panel');
   const built = await fx.page.evaluate(() => window.planarium.setups());
   // The same set-ups typed in the advanced form
   await typeSetups('biased: rrt --goal-bias 0.2 --sampler gaussian\nrrt-connect');
@@ -376,4 +377,101 @@ test('a click on a run\'s dot offers that run in the playground, which opens wit
   const stats = await fx.page.evaluate(() => window.planarium.result().stats);
   assert.equal(stats.cost, benchRow.cost, 'the playground replays the benchmark\'s run: same cost');
   assert.equal(stats.nodes, benchRow.nodes, 'same nodes');
+});
+
+test('scenario, set-ups and runs live in the URL: a reload restores them; bad values are named and defaults used', async () => {
+  await openBench();
+  await fx.page.selectOption('#scenario', 'slot');
+  await typeSetups('quick: rrt-connect --range 0.3\nrrt --goal-bias 0.25');
+  await fx.page.fill('#runs', '7');
+  await fx.page.press('#runs', 'Tab');
+  await fx.page.waitForFunction(() => /runs=7/.test(location.hash));
+  const url = fx.page.url();
+  assert.match(url, /#scenario=slot&setups=quick:%20rrt-connect%20--range%200\.3%0Arrt%20--goal-bias%200\.25&runs=7$/);
+  await fx.page.reload();
+  await fx.page.waitForFunction(() => window.planarium?.state() === 'idle', null, { timeout: 30000 });
+  assert.equal(await fx.page.$eval('#scenario', (s) => s.value), 'slot');
+  assert.equal(await fx.page.$eval('#runs', (s) => s.value), '7');
+  assert.deepEqual(await listed(), ['quick', 'rrt --goal-bias 0.25']);
+  assert.equal(await fx.page.isVisible('#bench-error'), false, 'a good link shows no error');
+  // bad values: each named, defaults used
+  await fx.page.goto('about:blank');
+  await fx.page.goto(`${fx.env.base}bench.html#scenario=nowhere&setups=rrt%20--goal-bias%207&runs=0`);
+  await fx.page.waitForFunction(() => window.planarium?.state() === 'idle', null, { timeout: 30000 });
+  const error = await fx.page.textContent('#bench-error');
+  assert.match(error, /There is no built-in scenario "nowhere"/);
+  assert.match(error, /setups=rrt --goal-bias 7: set-up line 1: goal_bias: must be between 0 and 1; the default set-ups are used/);
+  assert.match(error, /runs=0: the number of runs must be a whole number from 1 to 10000; 20 is used/);
+  assert.deepEqual(await listed(), ['rrt-connect', 'rrt']);
+  assert.equal(await fx.page.$eval('#runs', (s) => s.value), '20');
+  await fx.page.screenshot({ path: join(SHOTS, 'page-bench-bad-link.png') });
+  // a playground link (its planner set-up) opens here as the one set-up
+  await fx.page.goto('about:blank');
+  await fx.page.goto(`${fx.env.base}bench.html#scenario=narrow&planner=rrt&seed=4&goal_bias=0.3&range=0.1`);
+  await fx.page.waitForFunction(() => window.planarium?.state() === 'idle', null, { timeout: 30000 });
+  assert.deepEqual(await fx.page.evaluate(() => window.planarium.setups()), [{ label: 'rrt --goal-bias 0.3 --range 0.1', planner: 'rrt', params: { range: 0.1, goal_bias: 0.3 } }]);
+  assert.equal(await fx.page.$eval('#scenario', (s) => s.value), 'narrow');
+});
+
+test('Open file…: a scenario file and an ASV problem are benchmarked and kept in the link; a bad file is named', async () => {
+  const dir = mkdtempSync(join(tmpdir(), 'planarium-bench-file-'));
+  const mine = JSON.parse(readFileSync(join(ROOT, 'scenarios/open-field.json'), 'utf8'));
+  mine.name = 'My own field';
+  const path = join(dir, 'my-field.json');
+  writeFileSync(path, JSON.stringify(mine));
+  const bad = join(dir, 'broken.json');
+  writeFileSync(bad, '{"format": "planarium-scenario/1", "name": "x"}');
+  await openBench();
+  await fx.page.setInputFiles('#file', bad);
+  assert.match(await fx.page.textContent('#bench-error'), /broken\.json: bounds: is missing/);
+  await fx.page.setInputFiles('#file', path);
+  assert.equal(await fx.page.isVisible('#bench-error'), false);
+  assert.deepEqual(await fx.page.evaluate(() => window.planarium.scenario()), { id: 'my-own-field', name: 'My own field', builtin: false });
+  assert.equal(await fx.page.$eval('#scenario', (s) => s.selectedOptions[0].textContent), 'File: my-field.json');
+  await runBench2('rrt-connect', 2);
+  const report = await fx.page.evaluate(() => window.planarium.report());
+  assert.equal(report.scenario, 'My own field');
+  assert.ok(report.setups[0].rows.every((r) => r.solved));
+  // the link carries the scenario itself; a reload benchmarks it again
+  await fx.page.waitForFunction(() => /scenario=deflate:/.test(location.hash));
+  await fx.page.reload();
+  await fx.page.waitForFunction(() => window.planarium?.state() === 'idle', null, { timeout: 30000 });
+  assert.equal((await fx.page.evaluate(() => window.planarium.scenario())).name, 'My own field');
+  assert.equal(await fx.page.$eval('#scenario', (s) => s.selectedOptions[0].textContent), 'Scenario from a link');
+  // an ASV problem (.txt), as the playground opens it
+  await fx.page.setInputFiles('#file', join(ROOT, 'fuzz/corpus/asv_problem/3ASV-easy.txt'));
+  const asv = await fx.page.evaluate(() => window.planarium.scenario());
+  assert.equal(asv.builtin, false);
+  assert.equal(await fx.page.$eval('#scenario', (s) => s.selectedOptions[0].textContent), 'File: 3ASV-easy.txt');
+  assert.equal(await fx.page.isVisible('#bench-error'), false);
+});
+
+/** Set the set-ups and runs, run, and wait for the report (on the scenario shown). */
+async function runBench2(setups, runs) {
+  await typeSetups(setups);
+  await fx.page.fill('#runs', String(runs));
+  await fx.page.click('#bench-run');
+  await waitReport(runs);
+}
+
+test('a phone (390×844): the results table scrolls sideways inside its box; the page itself does not', async () => {
+  await fx.page.setViewportSize({ width: 390, height: 844 });
+  await openBench();
+  await runBench('open-field', 'a long set-up label: rrt-connect\nanother long label: rrt --goal-bias 0.2', 2);
+  await waitReport(2);
+  const m = await fx.page.$eval('#table-scroll', (b) => ({ sw: b.scrollWidth, cw: b.clientWidth, right: b.getBoundingClientRect().right,
+    page: document.documentElement.scrollWidth, overflow: getComputedStyle(b).overflowX }));
+  assert.ok(m.sw > m.cw + 50, `the table is wider than its box: ${JSON.stringify(m)}`);
+  assert.equal(m.overflow, 'auto');
+  assert.ok(m.right <= 390 && m.page <= 390, `the box and the page fit the screen: ${JSON.stringify(m)}`);
+  // the last column can be scrolled into view inside the box
+  const lastHeader = '#bench-table thead th:last-child';
+  const before = await fx.page.$eval(lastHeader, (th) => th.getBoundingClientRect().left);
+  assert.ok(before > 390, `the last column starts off screen (${before})`);
+  await fx.page.locator('#bench-table').scrollIntoViewIfNeeded();
+  await fx.page.screenshot({ path: join(SHOTS, 'page-bench-phone.png') });
+  await fx.page.$eval('#table-scroll', (b) => { b.scrollLeft = b.scrollWidth; });
+  const after = await fx.page.$eval(lastHeader, (th) => th.getBoundingClientRect().right);
+  assert.ok(after <= 390, `scrolled, the last column is on screen (${after})`);
+  await fx.page.screenshot({ path: join(SHOTS, 'page-bench-phone-scrolled.png') });
 });
