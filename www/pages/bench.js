@@ -12,12 +12,12 @@
 import init, { builtins as builtinsJson, planners as plannersJson, bench_export as benchExport, parse_setups as parseSetups, import_file as importFile } from '../pkg/planarium.js';
 import { fillScenarioPicker } from '../ui/controls.js';
 import { createPanel, taskOf } from '../ui/panel.js';
-import { setupFor, configOf, paramSpecs } from '../ui/links.js';
+import { setupFor, configOf } from '../ui/links.js';
 import { applyPageLimits } from '../run/limits.js';
 import { boxPlot, successBars, scatter, stepLines, hitDot } from '../draw/plots.js';
 import { downloadText } from '../draw/stage.js';
 import { el } from '../ui/dom.js';
-import { setupLine, setupLines, readPageState, wholeIn, checkSetups, coreError, pageHash, playgroundLink, readChosenFile, MAX_SETUPS } from '../ui/setups.js';
+import { setupLine, setupLines, readPageState, wholeIn, checkSetups, coreError, pageHash, playgroundLink, readChosenFile, differingParams, MAX_SETUPS } from '../ui/setups.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
@@ -383,9 +383,7 @@ function setupsChanged() {
 function addSetup() {
   const { planner, params } = builder.config();
   // values at their defaults are left out: the line says what differs
-  const specs = paramSpecs(builder.planner(), registry);
-  const differ = Object.fromEntries(Object.entries(params).filter(([k, v]) => specs.find((s) => s.name === k)?.default !== v));
-  const line = setupLine({ label: ui.buildLabel.value, planner, params: differ });
+  const line = setupLine({ label: ui.buildLabel.value, planner, params: differingParams(builder.planner(), params, registry) });
   try {
     parseSetups(line);
   } catch (e) {

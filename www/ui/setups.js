@@ -11,7 +11,7 @@
 // page brings its scenario, and its planner set-up as a set-up. Bad values are problems in words
 // (the page shows them) and defaults are used; nothing here throws on what a link says.
 
-import { readShare, writeShare, cut, MAX_LINK_CHARS } from './links.js';
+import { readShare, writeShare, paramSpecs, cut, MAX_LINK_CHARS } from './links.js';
 
 /** Set-ups a link or the benchmark may hold. */
 export const MAX_SETUPS = 32;
@@ -30,6 +30,19 @@ export function setupLine({ label = '', planner, params = {} }) {
   const body = [planner, ...Object.entries(params).map(([k, v]) => `--${k.replace(/_/g, '-')} ${v}`)].join(' ');
   const l = String(label).replace(/[:\n\r]/g, ' ').trim();
   return l && l !== body ? `${l}: ${body}` : body;
+}
+
+/**
+ * Of `params`, those that differ from planner spec `p`'s defaults (its own, its groups', the
+ * run's): what a set-up line needs to say.
+ * @param {object} p a planner spec from the registry
+ * @param {Record<string, number | string>} params
+ * @param {object} registry
+ * @returns {Record<string, number | string>}
+ */
+export function differingParams(p, params, registry) {
+  const specs = paramSpecs(p, registry);
+  return Object.fromEntries(Object.entries(params).filter(([k, v]) => specs.find((s) => s.name === k)?.default !== v));
 }
 
 /**
