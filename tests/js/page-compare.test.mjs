@@ -150,7 +150,7 @@ test('compare keeps scenario, both set-ups and the seed in the URL: a reload res
   assert.equal(await page.isVisible('#error'), false);
 });
 
-test('compare: Open file… loads the file in both lanes, the link carries it, a reload keeps it; a bad file is named', async () => {
+test('compare: the playground\'s link to an opened scenario opens here and in Benchmark; Open file… loads a file in both lanes, the link carries it, a reload keeps it; a bad file is named', async () => {
   const dir = mkdtempSync(join(tmpdir(), 'planarium-compare-file-'));
   const mine = JSON.parse(readFileSync(join(ROOT, 'scenarios/narrow.json'), 'utf8'));
   mine.name = 'My narrow passage';
@@ -158,6 +158,25 @@ test('compare: Open file… loads the file in both lanes, the link carries it, a
   writeFileSync(path, JSON.stringify(mine));
   const bad = join(dir, 'broken.json');
   writeFileSync(bad, '{"format": "planarium-scenario/1", "name": "x"}');
+  // the playground's own link to an opened scenario (its `#…` state) opens here: scenario and set-up A
+  await page.setInputFiles('#file', path);
+  await page.waitForFunction(() => document.getElementById('scenario-name').textContent === 'My narrow passage');
+  await waitState('idle');
+  await page.selectOption('#planner', 'rrt');
+  await waitState('idle');
+  const shared = await page.evaluate(() => window.planarium.shareLink());
+  assert.match(shared, /#scenario=deflate:.*planner=rrt/);
+  await openCompare(shared.slice(shared.indexOf('#')));
+  assert.equal(await page.textContent('#scenario-name'), 'My narrow passage');
+  assert.equal((await page.evaluate(() => window.planarium.config('a'))).planner, 'rrt');
+  assert.equal(await page.isVisible('#error'), false, `no problem: ${await page.textContent('#error-text')}`);
+  // and in the benchmark
+  await page.goto('about:blank');
+  await page.goto(`${fx.env.base}bench.html${shared.slice(shared.indexOf('#'))}`);
+  await page.waitForFunction(() => window.planarium?.state() === 'idle', null, { timeout: 30000 });
+  assert.equal((await page.evaluate(() => window.planarium.scenario())).name, 'My narrow passage');
+  assert.deepEqual((await page.evaluate(() => window.planarium.setups())).map((x) => x.planner), ['rrt']);
+
   await openCompare();
   await page.setInputFiles('#file', bad);
   await page.waitForFunction(() => !document.getElementById('error').hidden);
