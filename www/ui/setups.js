@@ -13,11 +13,11 @@
 
 import { readShare, writeShare, paramSpecs, cut, MAX_LINK_CHARS } from './links.js';
 
-/** Set-ups a link or the benchmark may hold. */
-export const MAX_SETUPS = 32;
-/** Characters of set-up text a link may hold (32 set-ups of 600 characters). */
+/** Set-ups a link or the benchmark may hold: the core's own limit (docs/limits.md). */
+export const MAX_SETUPS = 16;
+/** Characters of set-up text a link may hold (16 set-ups of 1,250 characters: far more than any needs). */
 export const MAX_SETUP_CHARS = 20000;
-/** The largest scenario file the pages open (a Technion map is far smaller). */
+/** The largest scenario file the pages open: the core's limit on one file's text (docs/limits.md). */
 export const MAX_FILE_BYTES = 16 << 20;
 
 /**
