@@ -423,8 +423,10 @@ test('Open file…: a scenario file and an ASV problem are benchmarked and kept 
   writeFileSync(bad, '{"format": "planarium-scenario/1", "name": "x"}');
   await openBench();
   await fx.page.setInputFiles('#file', bad);
+  await fx.page.waitForSelector('#bench-error:not([hidden])'); // the file is read asynchronously
   assert.match(await fx.page.textContent('#bench-error'), /broken\.json: bounds: is missing/);
   await fx.page.setInputFiles('#file', path);
+  await fx.page.waitForFunction(() => window.planarium.scenario().name === 'My own field');
   assert.equal(await fx.page.isVisible('#bench-error'), false);
   assert.deepEqual(await fx.page.evaluate(() => window.planarium.scenario()), { id: 'my-own-field', name: 'My own field', builtin: false });
   assert.equal(await fx.page.$eval('#scenario', (s) => s.selectedOptions[0].textContent), 'File: my-field.json');
@@ -440,6 +442,7 @@ test('Open file…: a scenario file and an ASV problem are benchmarked and kept 
   assert.equal(await fx.page.$eval('#scenario', (s) => s.selectedOptions[0].textContent), 'Scenario from a link');
   // an ASV problem (.txt), as the playground opens it
   await fx.page.setInputFiles('#file', join(ROOT, 'fuzz/corpus/asv_problem/3ASV-easy.txt'));
+  await fx.page.waitForFunction(() => document.getElementById('scenario').selectedOptions[0].textContent === 'File: 3ASV-easy.txt');
   const asv = await fx.page.evaluate(() => window.planarium.scenario());
   assert.equal(asv.builtin, false);
   assert.equal(await fx.page.$eval('#scenario', (s) => s.selectedOptions[0].textContent), 'File: 3ASV-easy.txt');

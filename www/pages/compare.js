@@ -521,6 +521,10 @@ ui.file.addEventListener('change', async () => {
   load(text, true, file.name);
 });
 
+// another link pasted into this tab's address bar (the page's own writes use replaceState, which
+// fires no hashchange): start again from it
+window.addEventListener('hashchange', () => location.reload());
+
 ui.runSeeds.addEventListener('click', runSeeds);
 ui.seedsCancel.addEventListener('click', () => stopSeeds('Cancelled.'));
 
