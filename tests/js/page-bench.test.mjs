@@ -7,7 +7,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { pageFixture, ROOT, SHOTS } from './browser.mjs';
@@ -19,9 +19,15 @@ async function openBench() {
   await fx.page.waitForFunction(() => window.planarium?.state() === 'idle', null, { timeout: 30000 });
 }
 
+/** Type set-up lines in the "Advanced" text (opened first, as a person would). */
+async function typeSetups(setups) {
+  if (!(await fx.page.$eval('#advanced', (d) => d.open))) await fx.page.click('#advanced summary');
+  await fx.page.fill('#setups', setups);
+}
+
 async function runBench(scenario, setups, runs) {
   await fx.page.selectOption('#scenario', scenario);
-  await fx.page.fill('#setups', setups);
+  await typeSetups(setups);
   await fx.page.fill('#runs', String(runs));
   await fx.page.click('#bench-run');
 }
@@ -117,7 +123,7 @@ test('cancel stops the pool at once and the page stays usable; a bad line is nam
   await fx.page.waitForFunction(() => window.planarium.state() === 'idle', null, { timeout: 5000 });
   assert.match(await fx.page.textContent('#bench-status'), /^Cancelled after \d+ of 50 runs$/);
   // A typo is named by line and the run does not start.
-  await fx.page.fill('#setups', 'rrt-connect\nrrt --goal-bais 0.2');
+  await typeSetups('rrt-connect\nrrt --goal-bais 0.2');
   await fx.page.click('#bench-run');
   assert.match(await fx.page.textContent('#bench-error'), /set-up line 2: --goal-bais is not a parameter of rrt/);
   assert.equal(await fx.page.evaluate(() => window.planarium.state()), 'idle');
@@ -235,4 +241,240 @@ test('a cancelled benchmark reports the runs that really ran; eight set-ups\' la
   }
   await fx.page.locator('#plots').screenshot({ path: join(SHOTS, 'page-bench-eight.png') });
   console.log(`# reproduction 8: cancelled after ${done} of 3200 runs; runs per set-up ${counts.join(', ')}`);
+});
+
+// Issue 14: set-ups from menus, log axes, a dot opens its run, state in the URL, opened files,
+// a phone's table.
+
+/** Record every text the plots draw (window.plotTexts[canvas id] = [{text, ...}]), from the next load. */
+async function recordPlotTexts() {
+  await fx.page.addInitScript(() => {
+    const C = CanvasRenderingContext2D.prototype;
+    const fill = C.fillText;
+    const clear = C.clearRect;
+    window.plotTexts = {};
+    C.clearRect = function (...a) {
+      if (this.canvas.classList.contains('plot')) window.plotTexts[this.canvas.id] = [];
+      return clear.apply(this, a);
+    };
+    C.fillText = function (text, x, y, ...rest) {
+      if (this.canvas.classList.contains('plot')) (window.plotTexts[this.canvas.id] ||= []).push({ text, x, y });
+      return fill.call(this, text, x, y, ...rest);
+    };
+  });
+}
+
+const waitReport = (n) => fx.page.waitForFunction((k) => window.planarium.state() === 'idle' && window.planarium.report()?.setups.every((s) => s.rows.length === k),
+  n, { timeout: 120000 });
+
+/** The set-ups' labels as the list shows them. */
+const listed = () => fx.page.$$eval('#setup-list .setup-label', (els) => els.map((e) => e.textContent));
+
+test('set-ups built from the menus are the set-ups the same typed lines give, and they run', async () => {
+  await openBench();
+  await fx.page.selectOption('#scenario', 'narrow');
+  assert.deepEqual(await listed(), ['rrt-connect', 'rrt'], 'the default set-ups are listed');
+  // remove both defaults with their buttons
+  await fx.page.click('#setup-list button[aria-label="Remove set-up rrt"]');
+  await fx.page.click('#setup-list button[aria-label="Remove set-up rrt-connect"]');
+  assert.deepEqual(await listed(), []);
+  assert.match(await fx.page.textContent('#setup-list'), /No set-up yet/);
+  // A: RRT, goal bias 0.2, Gaussian sampler, labelled "biased"
+  await fx.page.fill('#build-label', 'biased');
+  await fx.page.selectOption('#build-planner', 'rrt');
+  await fx.page.fill('#build-param-goal_bias', '0.2');
+  await fx.page.press('#build-param-goal_bias', 'Tab');
+  await fx.page.selectOption('#build-param-sampler', 'gaussian');
+  await fx.page.click('#add-setup');
+  // B: RRT-Connect, no label; the sampler menu is shared by the planners (as in the playground):
+  // back to uniform, the default, which the line leaves out
+  await fx.page.selectOption('#build-planner', 'rrt-connect');
+  assert.equal(await fx.page.$eval('#build-param-sampler', (s) => s.value), 'gaussian');
+  await fx.page.selectOption('#build-param-sampler', 'uniform');
+  await fx.page.click('#add-setup');
+  assert.equal(await fx.page.textContent('#build-note'), 'Added: rrt-connect');
+  assert.deepEqual(await listed(), ['biased', 'rrt-connect']);
+  assert.doesNotMatch(await fx.page.textContent('#build'), /null/, 'no stray "null" under the panel');
+  const built = await fx.page.evaluate(() => window.planarium.setups());
+  // The same set-ups typed in the advanced form
+  await typeSetups('biased: rrt --goal-bias 0.2 --sampler gaussian\nrrt-connect');
+  const typed = await fx.page.evaluate(() => window.planarium.setups());
+  assert.deepEqual(built, typed);
+  assert.deepEqual(built[0], { label: 'biased', planner: 'rrt', params: { goal_bias: 0.2, sampler: 'gaussian' } });
+  // a bad value in the builder is refused there, not added
+  await fx.page.fill('#build-param-goal_bias', '7');
+  await fx.page.press('#build-param-goal_bias', 'Tab');
+  assert.equal(await fx.page.getAttribute('#build-param-goal_bias', 'aria-invalid'), 'true');
+  // and they run
+  await fx.page.fill('#runs', '2');
+  await fx.page.click('#bench-run');
+  await waitReport(2);
+  const report = await fx.page.evaluate(() => window.planarium.report());
+  assert.deepEqual(report.setups.map((s) => [s.label, s.planner, s.params]), [['biased', 'rrt', { goal_bias: 0.2, sampler: 'gaussian' }], ['rrt-connect', 'rrt-connect', {}]]);
+  assert.deepEqual(await fx.page.$$eval('#bench-table tbody th', (t) => t.map((e) => e.textContent)), ['biased', 'rrt-connect']);
+});
+
+test('nodes spanning decades get a log axis with labelled decades; the toggle draws it linear; checks stay linear', async () => {
+  await recordPlotTexts();
+  await openBench();
+  await runBench('open-field', 'connect: rrt-connect\nsmall steps: rrt --range 0.004', 3);
+  await waitReport(3);
+  const report = await fx.page.evaluate(() => window.planarium.report());
+  const nodes = report.setups.flatMap((s) => s.rows.map((r) => r.nodes));
+  const checks = report.setups.flatMap((s) => s.rows.map((r) => r.checks));
+  assert.ok(Math.max(...nodes) / Math.min(...nodes) > 100, `nodes span ${Math.min(...nodes)}…${Math.max(...nodes)}`);
+  assert.ok(Math.max(...checks) / Math.min(...checks) < 100, `checks span ${Math.min(...checks)}…${Math.max(...checks)}`);
+  assert.equal(await fx.page.getAttribute('#plot-nodes', 'data-y-scale'), 'log');
+  assert.equal(await fx.page.getAttribute('#plot-checks', 'data-y-scale'), 'linear');
+  const texts = async (id) => (await fx.page.evaluate((i) => window.plotTexts[i] || [], id)).map((t) => t.text);
+  const logNodes = await texts('plot-nodes');
+  for (const decade of ['10', '100', '1000']) assert.ok(logNodes.includes(decade), `decade ${decade} labelled: ${logNodes.join(' | ')}`);
+  assert.ok(logNodes.includes('nodes (log)'), 'the axis says log');
+  await fx.page.locator('#plots').screenshot({ path: join(SHOTS, 'page-bench-log.png') });
+  const logPixels = await fx.page.$eval('#plot-nodes', (c) => c.toDataURL());
+  // the toggle: linear axes everywhere
+  await fx.page.uncheck('#log-axes');
+  assert.equal(await fx.page.getAttribute('#plot-nodes', 'data-y-scale'), 'linear');
+  const linNodes = await texts('plot-nodes');
+  assert.ok(!linNodes.includes('nodes (log)') && linNodes.includes('nodes'));
+  assert.ok(!linNodes.includes('10'), `no decade ticks on a linear axis: ${linNodes.join(' | ')}`);
+  assert.notEqual(await fx.page.$eval('#plot-nodes', (c) => c.toDataURL()), logPixels, 'the plot is redrawn');
+  await fx.page.check('#log-axes');
+  assert.equal(await fx.page.getAttribute('#plot-nodes', 'data-y-scale'), 'log');
+});
+
+test('a click on a run\'s dot offers that run in the playground, which opens with its scenario, set-up and seed', async () => {
+  await openBench();
+  await runBench('narrow', 'connect: rrt-connect\nbiased: rrt --goal-bias 0.2 --range 0.1', 3);
+  await waitReport(3);
+  const dots = await fx.page.evaluate(() => window.planarium.dots());
+  const dot = dots.find((d) => d.series === 1 && d.seed === 2) || dots.find((d) => d.series === 1);
+  const benchRow = (await fx.page.evaluate(() => window.planarium.report())).setups[1].rows.find((r) => r.seed === dot?.seed);
+  assert.ok(dot, `a dot of "biased": ${JSON.stringify(dots)}`);
+  const box = await fx.page.locator('#plot-cost-time').boundingBox();
+  // a click away from every dot offers nothing
+  await fx.page.mouse.click(box.x + 4, box.y + 4);
+  assert.equal(await fx.page.isVisible('#run-pop'), false);
+  await fx.page.mouse.click(box.x + dot.x, box.y + dot.y);
+  await fx.page.waitForSelector('#run-pop:not([hidden])');
+  assert.match(await fx.page.textContent('#run-pop'), new RegExp(`biased, seed ${dot.seed}`));
+  assert.equal(await fx.page.getAttribute('#run-open-tab', 'target'), '_blank');
+  const href = await fx.page.getAttribute('#run-open', 'href');
+  assert.match(href, new RegExp(`/index\\.html#scenario=narrow&planner=rrt&seed=${dot.seed}&`));
+  await fx.page.screenshot({ path: join(SHOTS, 'page-bench-dot.png') });
+  await fx.page.click('#run-open');
+  await fx.page.waitForURL(/index\.html#/);
+  await fx.waitState('idle', 30000);
+  await fx.page.waitForFunction(() => document.getElementById('scenario-name').textContent === 'Narrow passage');
+  assert.equal(await fx.page.$eval('#planner', (s) => s.value), 'rrt');
+  assert.equal(await fx.page.$eval('#seed', (s) => s.value), String(dot.seed));
+  assert.equal(await fx.page.$eval('#param-goal_bias', (s) => s.value), '0.2');
+  assert.equal(await fx.page.$eval('#param-range', (s) => s.value), '0.1');
+  // run there: the same cost as the benchmark's run of that seed
+  await fx.fastPlayback();
+  await fx.page.click('#run');
+  await fx.waitStatus('solved', 60000);
+  const stats = await fx.page.evaluate(() => window.planarium.result().stats);
+  assert.equal(stats.cost, benchRow.cost, 'the playground replays the benchmark\'s run: same cost');
+  assert.equal(stats.nodes, benchRow.nodes, 'same nodes');
+});
+
+test('scenario, set-ups and runs live in the URL: a reload restores them; bad values are named and defaults used', async () => {
+  await openBench();
+  await fx.page.selectOption('#scenario', 'slot');
+  await typeSetups('quick: rrt-connect --range 0.3\nrrt --goal-bias 0.25');
+  await fx.page.fill('#runs', '7');
+  await fx.page.press('#runs', 'Tab');
+  await fx.page.waitForFunction(() => /runs=7/.test(location.hash));
+  const url = fx.page.url();
+  assert.match(url, /#scenario=slot&setups=quick:%20rrt-connect%20--range%200\.3%0Arrt%20--goal-bias%200\.25&runs=7$/);
+  await fx.page.reload();
+  await fx.page.waitForFunction(() => window.planarium?.state() === 'idle', null, { timeout: 30000 });
+  assert.equal(await fx.page.$eval('#scenario', (s) => s.value), 'slot');
+  assert.equal(await fx.page.$eval('#runs', (s) => s.value), '7');
+  assert.deepEqual(await listed(), ['quick', 'rrt --goal-bias 0.25']);
+  assert.equal(await fx.page.isVisible('#bench-error'), false, 'a good link shows no error');
+  // bad values: each named, defaults used
+  await fx.page.goto('about:blank');
+  await fx.page.goto(`${fx.env.base}bench.html#scenario=nowhere&setups=rrt%20--goal-bias%207&runs=0`);
+  await fx.page.waitForFunction(() => window.planarium?.state() === 'idle', null, { timeout: 30000 });
+  const error = await fx.page.textContent('#bench-error');
+  assert.match(error, /There is no built-in scenario "nowhere"/);
+  assert.match(error, /setups=rrt --goal-bias 7: set-up line 1: goal_bias: must be between 0 and 1; the default set-ups are used/);
+  assert.match(error, /runs=0: the number of runs must be a whole number from 1 to 10000; 20 is used/);
+  assert.deepEqual(await listed(), ['rrt-connect', 'rrt']);
+  assert.equal(await fx.page.$eval('#runs', (s) => s.value), '20');
+  await fx.page.screenshot({ path: join(SHOTS, 'page-bench-bad-link.png') });
+  // a playground link (its planner set-up) opens here as the one set-up
+  await fx.page.goto('about:blank');
+  await fx.page.goto(`${fx.env.base}bench.html#scenario=narrow&planner=rrt&seed=4&goal_bias=0.3&range=0.1`);
+  await fx.page.waitForFunction(() => window.planarium?.state() === 'idle', null, { timeout: 30000 });
+  assert.deepEqual(await fx.page.evaluate(() => window.planarium.setups()), [{ label: 'rrt --goal-bias 0.3 --range 0.1', planner: 'rrt', params: { range: 0.1, goal_bias: 0.3 } }]);
+  assert.equal(await fx.page.$eval('#scenario', (s) => s.value), 'narrow');
+});
+
+test('Open file…: a scenario file and an ASV problem are benchmarked and kept in the link; a bad file is named', async () => {
+  const dir = mkdtempSync(join(tmpdir(), 'planarium-bench-file-'));
+  const mine = JSON.parse(readFileSync(join(ROOT, 'scenarios/open-field.json'), 'utf8'));
+  mine.name = 'My own field';
+  const path = join(dir, 'my-field.json');
+  writeFileSync(path, JSON.stringify(mine));
+  const bad = join(dir, 'broken.json');
+  writeFileSync(bad, '{"format": "planarium-scenario/1", "name": "x"}');
+  await openBench();
+  await fx.page.setInputFiles('#file', bad);
+  await fx.page.waitForSelector('#bench-error:not([hidden])'); // the file is read asynchronously
+  assert.match(await fx.page.textContent('#bench-error'), /broken\.json: bounds: is missing/);
+  await fx.page.setInputFiles('#file', path);
+  await fx.page.waitForFunction(() => window.planarium.scenario().name === 'My own field');
+  assert.equal(await fx.page.isVisible('#bench-error'), false);
+  assert.deepEqual(await fx.page.evaluate(() => window.planarium.scenario()), { id: 'my-own-field', name: 'My own field', builtin: false });
+  assert.equal(await fx.page.$eval('#scenario', (s) => s.selectedOptions[0].textContent), 'File: my-field.json');
+  await runBench2('rrt-connect', 2);
+  const report = await fx.page.evaluate(() => window.planarium.report());
+  assert.equal(report.scenario, 'My own field');
+  assert.ok(report.setups[0].rows.every((r) => r.solved));
+  // the link carries the scenario itself; a reload benchmarks it again
+  await fx.page.waitForFunction(() => /scenario=deflate:/.test(location.hash));
+  await fx.page.reload();
+  await fx.page.waitForFunction(() => window.planarium?.state() === 'idle', null, { timeout: 30000 });
+  assert.equal((await fx.page.evaluate(() => window.planarium.scenario())).name, 'My own field');
+  assert.equal(await fx.page.$eval('#scenario', (s) => s.selectedOptions[0].textContent), 'Scenario from a link');
+  // an ASV problem (.txt), as the playground opens it
+  await fx.page.setInputFiles('#file', join(ROOT, 'fuzz/corpus/asv_problem/3ASV-easy.txt'));
+  await fx.page.waitForFunction(() => document.getElementById('scenario').selectedOptions[0].textContent === 'File: 3ASV-easy.txt');
+  const asv = await fx.page.evaluate(() => window.planarium.scenario());
+  assert.equal(asv.builtin, false);
+  assert.equal(await fx.page.$eval('#scenario', (s) => s.selectedOptions[0].textContent), 'File: 3ASV-easy.txt');
+  assert.equal(await fx.page.isVisible('#bench-error'), false);
+});
+
+/** Set the set-ups and runs, run, and wait for the report (on the scenario shown). */
+async function runBench2(setups, runs) {
+  await typeSetups(setups);
+  await fx.page.fill('#runs', String(runs));
+  await fx.page.click('#bench-run');
+  await waitReport(runs);
+}
+
+test('a phone (390×844): the results table scrolls sideways inside its box; the page itself does not', async () => {
+  await fx.page.setViewportSize({ width: 390, height: 844 });
+  await openBench();
+  await runBench('open-field', 'a long set-up label: rrt-connect\nanother long label: rrt --goal-bias 0.2', 2);
+  await waitReport(2);
+  const m = await fx.page.$eval('#table-scroll', (b) => ({ sw: b.scrollWidth, cw: b.clientWidth, right: b.getBoundingClientRect().right,
+    page: document.documentElement.scrollWidth, overflow: getComputedStyle(b).overflowX }));
+  assert.ok(m.sw > m.cw + 50, `the table is wider than its box: ${JSON.stringify(m)}`);
+  assert.equal(m.overflow, 'auto');
+  assert.ok(m.right <= 390 && m.page <= 390, `the box and the page fit the screen: ${JSON.stringify(m)}`);
+  // the last column can be scrolled into view inside the box
+  const lastHeader = '#bench-table thead th:last-child';
+  const before = await fx.page.$eval(lastHeader, (th) => th.getBoundingClientRect().left);
+  assert.ok(before > 390, `the last column starts off screen (${before})`);
+  await fx.page.locator('#bench-table').scrollIntoViewIfNeeded();
+  await fx.page.screenshot({ path: join(SHOTS, 'page-bench-phone.png') });
+  await fx.page.$eval('#table-scroll', (b) => { b.scrollLeft = b.scrollWidth; });
+  const after = await fx.page.$eval(lastHeader, (th) => th.getBoundingClientRect().right);
+  assert.ok(after <= 390, `scrolled, the last column is on screen (${after})`);
+  await fx.page.screenshot({ path: join(SHOTS, 'page-bench-phone-scrolled.png') });
 });

@@ -5,7 +5,9 @@
 import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { pageFixture, SHOTS as shots } from './browser.mjs';
+import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { pageFixture, ROOT, SHOTS as shots } from './browser.mjs';
 import { PALETTE } from '../../www/draw/palette.js';
 
 const fx = await pageFixture();
@@ -101,4 +103,174 @@ test('compare: uniform against Gaussian RRT-Connect on the same seed, run togeth
   await waitState('finished', 120000);
   const again = await page.evaluate(() => [window.planarium.stats('a').checks, window.planarium.stats('b').checks]);
   assert.deepEqual(again, [sa.checks, sb.checks], 'the same seed replays the same runs');
+});
+
+// Issue 14: state in the URL, Open file…, Run 20 seeds, a phone's tabs.
+
+/** Open compare.html with `hash` as a fresh page load, waiting until both lanes are loaded and idle. */
+async function openCompare(hash = '') {
+  await page.goto('about:blank');
+  await page.goto(`${fx.env.base}compare.html${hash}`);
+  await page.waitForFunction(() => window.planarium?.state() === 'idle' && window.planarium.scenario(), null, { timeout: 30000 });
+}
+
+test('compare keeps scenario, both set-ups and the seed in the URL: a reload restores them; bad values are named', async () => {
+  await openCompare('#scenario=slot&a=rrt%20--goal-bias%200.3&b=rrt-connect%20--sampler%20gaussian&seed=5');
+  assert.equal(await page.$eval('#scenario', (s) => s.value), 'slot');
+  assert.equal(await page.$eval('#seed', (s) => s.value), '5');
+  assert.deepEqual(await page.evaluate(() => [window.planarium.config('a'), window.planarium.config('b')]), [
+    { planner: 'rrt', params: { goal_bias: 0.3 }, seed: 5 }, { planner: 'rrt-connect', params: { sampler: 'gaussian' }, seed: 5 }]);
+  assert.equal(await page.$eval('#a-planner', (s) => s.value), 'rrt');
+  assert.equal(await page.$eval('#a-param-goal_bias', (s) => s.value), '0.3');
+  assert.equal(await page.isVisible('#error'), false, 'a good link shows no error');
+  // change B through its menus and the seed: the URL follows; a reload restores it
+  await page.selectOption('#b-planner', 'rrt-star');
+  await waitState('idle');
+  await page.fill('#seed', '9');
+  await page.dispatchEvent('#seed', 'change');
+  await page.waitForFunction(() => /&b=rrt-star(%20|&)/.test(location.hash) && /seed=9$/.test(location.hash));
+  await page.reload();
+  await page.waitForFunction(() => window.planarium?.state() === 'idle' && window.planarium.scenario(), null, { timeout: 30000 });
+  const b = await page.evaluate(() => window.planarium.config('b'));
+  assert.equal(b.planner, 'rrt-star');
+  assert.equal(b.seed, 9);
+  assert.equal((await page.evaluate(() => window.planarium.config('a'))).params.goal_bias, 0.3);
+  assert.equal((await page.evaluate(() => window.planarium.scenario())).name, 'Turn to pass the slot');
+  // bad values: each named, defaults used
+  await openCompare('#scenario=narrow&a=nope&b=rrt%20--range%20-1&seed=abc');
+  const error = await page.textContent('#error-text');
+  assert.match(error, /seed=abc: the seed must be a whole number ≥ 0/);
+  assert.match(error, /a=nope: set-up line 1: unknown planner "nope".*set-up A keeps its default/);
+  assert.match(error, /b=rrt --range -1: set-up line 1: range: must be between 0 and 1000000; set-up B keeps its default/);
+  assert.deepEqual(await page.evaluate(() => [window.planarium.config('a').planner, window.planarium.config('b').params]), ['rrt-connect', {}]);
+  await page.screenshot({ path: join(shots, 'page-compare-bad-link.png') });
+  // a playground link's state (planner and parameters) opens as set-up A
+  await openCompare('#scenario=narrow&planner=rrt&seed=4&goal_bias=0.3');
+  assert.deepEqual(await page.evaluate(() => window.planarium.config('a')), { planner: 'rrt', params: { goal_bias: 0.3 }, seed: 4 });
+  assert.equal(await page.isVisible('#error'), false);
+});
+
+test('compare: the playground\'s link to an opened scenario opens here and in Benchmark; Open file… loads a file in both lanes, the link carries it, a reload keeps it; a bad file is named', async () => {
+  const dir = mkdtempSync(join(tmpdir(), 'planarium-compare-file-'));
+  const mine = JSON.parse(readFileSync(join(ROOT, 'scenarios/narrow.json'), 'utf8'));
+  mine.name = 'My narrow passage';
+  const path = join(dir, 'my-narrow.json');
+  writeFileSync(path, JSON.stringify(mine));
+  const bad = join(dir, 'broken.json');
+  writeFileSync(bad, '{"format": "planarium-scenario/1", "name": "x"}');
+  // the playground's own link to an opened scenario (its `#…` state) opens here: scenario and set-up A
+  await page.setInputFiles('#file', path);
+  await page.waitForFunction(() => document.getElementById('scenario-name').textContent === 'My narrow passage');
+  await waitState('idle');
+  await page.selectOption('#planner', 'rrt');
+  await waitState('idle');
+  const shared = await page.evaluate(() => window.planarium.shareLink());
+  assert.match(shared, /#scenario=deflate:.*planner=rrt/);
+  await openCompare(shared.slice(shared.indexOf('#')));
+  assert.equal(await page.textContent('#scenario-name'), 'My narrow passage');
+  assert.equal((await page.evaluate(() => window.planarium.config('a'))).planner, 'rrt');
+  assert.equal(await page.isVisible('#error'), false, `no problem: ${await page.textContent('#error-text')}`);
+  // and in the benchmark
+  await page.goto('about:blank');
+  await page.goto(`${fx.env.base}bench.html${shared.slice(shared.indexOf('#'))}`);
+  await page.waitForFunction(() => window.planarium?.state() === 'idle', null, { timeout: 30000 });
+  assert.equal((await page.evaluate(() => window.planarium.scenario())).name, 'My narrow passage');
+  assert.deepEqual((await page.evaluate(() => window.planarium.setups())).map((x) => x.planner), ['rrt']);
+
+  await openCompare();
+  await page.setInputFiles('#file', bad);
+  await page.waitForFunction(() => !document.getElementById('error').hidden);
+  assert.match(await page.textContent('#error-text'), /broken\.json: this file has an error at bounds/);
+  await page.setInputFiles('#file', path);
+  await page.waitForFunction(() => document.getElementById('scenario-name').textContent === 'My narrow passage');
+  await waitState('idle');
+  assert.equal(await page.$eval('#scenario', (s) => s.selectedOptions[0].textContent), 'File: my-narrow.json');
+  await page.waitForFunction(() => /scenario=deflate:/.test(location.hash));
+  await setSpeed('max');
+  await page.click('#run');
+  await waitState('finished', 120000);
+  assert.deepEqual(await page.evaluate(() => [window.planarium.stats('a').status, window.planarium.stats('b').status]), ['solved', 'solved']);
+  await page.reload();
+  await page.waitForFunction(() => window.planarium?.state() === 'idle' && window.planarium.scenario(), null, { timeout: 30000 });
+  assert.equal(await page.textContent('#scenario-name'), 'My narrow passage');
+  assert.equal(await page.$eval('#scenario', (s) => s.selectedOptions[0].textContent), 'Scenario from a link');
+  // the playground link carries the same scenario
+  assert.match(await page.getAttribute('#to-playground', 'href'), /index\.html#scenario=deflate:/);
+});
+
+test('compare: Run 20 seeds gives success and medians per set-up, marks the better one, and opens the pair in Benchmark', async () => {
+  await openCompare('#scenario=open-field&a=rrt-connect&b=rrt%20--range%200.02&seed=3');
+  await page.click('#run-seeds');
+  await page.waitForFunction(() => window.planarium.seeds(), null, { timeout: 120000 });
+  const s = await page.evaluate(() => window.planarium.seeds());
+  assert.equal(s.first, 3);
+  assert.equal(s.last, 22);
+  for (const k of ['a', 'b']) {
+    assert.equal(s[k].runs, 20);
+    assert.deepEqual(s.rows[k === 'a' ? 0 : 1].map((r) => r.seed).sort((x, y) => x - y), Array.from({ length: 20 }, (_, i) => 3 + i));
+  }
+  // the medians are those of the runs (recomputed here from the rows)
+  const med = (v) => { const x = [...v].sort((p, q) => p - q); return (x[9] + x[10]) / 2; };
+  assert.equal(s.a.nodes, med(s.rows[0].map((r) => r.nodes)));
+  assert.equal(s.b.checks, med(s.rows[1].map((r) => r.checks)));
+  // RRT with a short range grows far more nodes than RRT-Connect: A is marked better on nodes
+  assert.ok(s.b.nodes > s.a.nodes, `nodes ${s.a.nodes} vs ${s.b.nodes}`);
+  assert.equal(s.better.nodes, 'a');
+  const rows = await page.$$eval('#seeds-table tbody tr', (trs) => trs.map((tr) => [...tr.children].map((c) => [c.textContent, c.className])));
+  assert.deepEqual(rows.map((r) => r[0][0]), ['success', 'time (ms)', 'nodes', 'checks', 'path length (solved)']);
+  const nodesRow = rows[2];
+  assert.equal(nodesRow[1][0], `${s.a.nodes} ★`);
+  assert.equal(nodesRow[1][1], 'better');
+  assert.equal(nodesRow[2][0], String(s.b.nodes));
+  assert.match(rows[0][1][0], /^\d+% \(\d+\/20\)/);
+  // every metric with different values has exactly one mark
+  for (const [i, key] of ['success', 'time_ms', 'nodes', 'checks', 'length'].entries()) {
+    const marks = rows[i].slice(1).filter(([t]) => t.endsWith('★')).length;
+    assert.equal(marks, s.better[key] ? 1 : 0, `${key}: ${marks} marks`);
+  }
+  assert.match(await page.textContent('#seeds-caption'), /Seeds 3 … 22/);
+  await page.screenshot({ path: join(shots, 'page-compare-seeds.png') });
+  // the same pair in Benchmark (URL state): scenario, both set-ups, 20 runs
+  await page.click('#to-bench');
+  await page.waitForURL(/bench\.html#/);
+  await page.waitForFunction(() => window.planarium?.state() === 'idle', null, { timeout: 30000 });
+  assert.equal(await page.$eval('#scenario', (e) => e.value), 'open-field');
+  assert.equal(await page.$eval('#runs', (e) => e.value), '20');
+  assert.deepEqual(await page.evaluate(() => window.planarium.setups()), [
+    { label: 'A', planner: 'rrt-connect', params: {} }, { label: 'B', planner: 'rrt', params: { range: 0.02 } }]);
+});
+
+test('compare on a phone (390×844): the two lanes are tabs A / B, one shown at a time', async () => {
+  await page.setViewportSize({ width: 390, height: 844 });
+  await openCompare('#scenario=narrow&a=rrt-connect&b=rrt&seed=2');
+  assert.equal(await page.isVisible('#tab-a'), true);
+  assert.equal(await page.isVisible('#tab-b'), true);
+  assert.equal(await page.isVisible('#a-lane'), true);
+  assert.equal(await page.isVisible('#b-lane'), false, 'B is behind its tab');
+  assert.equal(await page.getAttribute('#tab-a', 'aria-selected'), 'true');
+  await setSpeed('max');
+  await page.click('#run');
+  await waitState('finished', 120000);
+  await page.locator('#tab-a').scrollIntoViewIfNeeded();
+  await page.screenshot({ path: join(shots, 'page-compare-phone-a.png') });
+  const [pathA] = await countColours('a-canvas', [PALETTE.smoothPath], 6);
+  assert.ok(pathA > 50, `A's canvas shows its path (${pathA} px)`);
+  await page.click('#tab-b');
+  assert.equal(await page.isVisible('#a-lane'), false);
+  assert.equal(await page.isVisible('#b-lane'), true);
+  assert.equal(await page.getAttribute('#tab-b', 'aria-selected'), 'true');
+  // B's canvas was sized when its tab opened, and is drawn
+  await page.waitForFunction(() => document.getElementById('b-canvas').getBoundingClientRect().width > 200);
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  const [pathB] = await countColours('b-canvas', [PALETTE.smoothPath], 6);
+  assert.ok(pathB > 50, `B's canvas shows its path (${pathB} px)`);
+  const box = await page.locator('#b-canvas').boundingBox();
+  assert.ok(box.x >= 0 && box.x + box.width <= 390, `B's canvas fits the screen: ${JSON.stringify(box)}`);
+  await page.screenshot({ path: join(shots, 'page-compare-phone-b.png') });
+  // at desktop width, both lanes side by side and no tabs
+  await page.setViewportSize({ width: 1280, height: 800 });
+  assert.equal(await page.isVisible('#tab-a'), false);
+  assert.equal(await page.isVisible('#a-lane'), true);
+  assert.equal(await page.isVisible('#b-lane'), true);
+  await page.screenshot({ path: join(shots, 'page-compare-desktop.png') });
 });

@@ -3,6 +3,10 @@
 // common colour-blindness types; set-ups also differ by position and label, never colour alone.
 // Labels never overlap: too wide for their slot, they are tilted and cut with an ellipsis (the
 // canvas's title, a tooltip, and its aria-label hold them in full); titles are cut to the canvas.
+// Axes whose data span decades (largest / smallest > LOG_SPAN, all above 0) are drawn on a log
+// scale with labelled decade ticks, unless the caller asks for `scale: 'linear'`; the scale chosen
+// is kept in the canvas's data-y-scale / data-x-scale. scatter() returns the dots' screen
+// positions, so the page can open the run under a click.
 
 export const SERIES = ['#0072b2', '#e69f00', '#009e73', '#cc79a7', '#56b4e9', '#d55e00', '#f0e442', '#000000'];
 
@@ -32,7 +36,39 @@ function setup(canvas, title) {
   ctx.font = '600 12px system-ui, sans-serif';
   ctx.fillText(fitText(ctx, title, w - 16), 8, 16); // the whole title is the canvas's aria-label
   canvas.setAttribute('aria-label', title);
-  return { ctx, w, h, pad: { l: 64, r: 12, t: 28, b: 36 } };
+  return { canvas, ctx, w, h, pad: { l: 64, r: 12, t: 28, b: 36 } };
+}
+
+/** Largest over smallest value beyond which an axis is drawn on a log scale. */
+export const LOG_SPAN = 100;
+
+/**
+ * Whether `vals` want a log axis: `scale` 'log' (if every value is above 0), 'linear' (never) or
+ * 'auto' (their span is over LOG_SPAN).
+ */
+export function wantsLog(vals, scale = 'auto') {
+  if (scale === 'linear' || !vals.length) return false;
+  const [lo, hi] = extent(vals);
+  if (!(lo > 0) || !Number.isFinite(hi)) return false;
+  return scale === 'log' || hi / lo > LOG_SPAN;
+}
+
+/** A decade's label: 0.001 … 1000 as written, else 10 with a superscript exponent ("10⁴"). */
+export function decadeLabel(k) {
+  if (k >= -3 && k <= 3) return String(Number((10 ** k).toPrecision(1)));
+  const sup = { '-': '⁻', 0: '⁰', 1: '¹', 2: '²', 3: '³', 4: '⁴', 5: '⁵', 6: '⁶', 7: '⁷', 8: '⁸', 9: '⁹' };
+  return `10${[...String(k)].map((c) => sup[c]).join('')}`;
+}
+
+/** Log axis ticks for [lo, hi] (both > 0): the decades around them, and 2…9 between as minor ticks. */
+function logTicks(lo, hi) {
+  const a = Math.floor(Math.log10(lo)), b = Math.max(a + 1, Math.ceil(Math.log10(hi)));
+  const major = [], minor = [];
+  for (let k = a; k <= b; k++) {
+    major.push(k);
+    if (k < b) for (let m = 2; m <= 9; m++) minor.push(Math.log10(m) + k);
+  }
+  return { major, minor, a, b };
 }
 
 /** A "nice" axis: [lo, hi] widened to round ticks. */
@@ -49,17 +85,32 @@ function ticks(lo, hi, n = 4) {
 
 const short = (v) => (Math.abs(v) >= 1e4 || (Math.abs(v) < 1e-2 && v !== 0) ? v.toExponential(1) : String(Number(v.toPrecision(3))));
 
-function yAxis(ctx, g, lo, hi, unit) {
-  const ts = ticks(lo, hi);
-  const [a, b] = [ts[0], ts[ts.length - 1]];
-  const y = (v) => g.h - g.pad.b - ((v - a) / (b - a)) * (g.h - g.pad.t - g.pad.b);
+function yAxis(ctx, g, lo, hi, unit, log = false) {
   ctx.strokeStyle = '#ddd';
   ctx.fillStyle = '#444';
   ctx.font = '11px system-ui, sans-serif';
   ctx.textAlign = 'right';
-  for (const t of ts) {
-    ctx.beginPath(); ctx.moveTo(g.pad.l, y(t)); ctx.lineTo(g.w - g.pad.r, y(t)); ctx.stroke();
-    ctx.fillText(short(t), g.pad.l - 4, y(t) + 4);
+  let y;
+  if (log) {
+    const { major, minor, a, b } = logTicks(lo, hi);
+    const py = (e) => g.h - g.pad.b - ((e - a) / (b - a)) * (g.h - g.pad.t - g.pad.b);
+    y = (v) => py(Math.log10(v));
+    ctx.strokeStyle = '#f0f0f0';
+    for (const e of minor) { ctx.beginPath(); ctx.moveTo(g.pad.l, py(e)); ctx.lineTo(g.w - g.pad.r, py(e)); ctx.stroke(); }
+    ctx.strokeStyle = '#cfcfcf';
+    for (const k of major) {
+      ctx.beginPath(); ctx.moveTo(g.pad.l, py(k)); ctx.lineTo(g.w - g.pad.r, py(k)); ctx.stroke();
+      ctx.fillText(decadeLabel(k), g.pad.l - 4, py(k) + 4);
+    }
+    unit = `${unit} (log)`;
+  } else {
+    const ts = ticks(lo, hi);
+    const [a, b] = [ts[0], ts[ts.length - 1]];
+    y = (v) => g.h - g.pad.b - ((v - a) / (b - a)) * (g.h - g.pad.t - g.pad.b);
+    for (const t of ts) {
+      ctx.beginPath(); ctx.moveTo(g.pad.l, y(t)); ctx.lineTo(g.w - g.pad.r, y(t)); ctx.stroke();
+      ctx.fillText(short(t), g.pad.l - 4, y(t) + 4);
+    }
   }
   ctx.save();
   ctx.translate(12, (g.h - g.pad.b + g.pad.t) / 2);
@@ -122,14 +173,25 @@ function xLabels(ctx, g, labels, x) {
   });
 }
 
-/** Box plots: `groups` [{label, values}] (empty groups get "no data"). */
-export function boxPlot(canvas, title, unit, groups) {
+/**
+ * Box plots: `groups` [{label, values}] (empty groups get "no data"). `scale`: 'auto' (a log axis
+ * where the values span decades), 'linear' or 'log'.
+ * @param {HTMLCanvasElement} canvas
+ * @param {string} title
+ * @param {string} unit
+ * @param {{label: string, values: number[]}[]} groups
+ * @param {{scale?: 'auto' | 'linear' | 'log'}} [options]
+ */
+export function boxPlot(canvas, title, unit, groups, { scale = 'auto' } = {}) {
   const g = setup(canvas, title);
   const { ctx } = g;
   const all = groups.flatMap((s) => s.values).filter(Number.isFinite);
+  canvas.dataset.yScale = 'linear';
   if (!all.length) { ctx.fillText('no data', g.pad.l, g.h / 2); return; }
   labelRoom(canvas, g, groups.map((s) => s.label));
-  const y = yAxis(ctx, g, ...extent(all), unit);
+  const log = wantsLog(all, scale);
+  canvas.dataset.yScale = log ? 'log' : 'linear';
+  const y = yAxis(ctx, g, ...extent(all), unit, log);
   const slot = (g.w - g.pad.l - g.pad.r) / groups.length;
   const x = (i) => g.pad.l + slot * (i + 0.5);
   const bw = Math.min(40, slot * 0.5);
@@ -179,16 +241,40 @@ function extent(vals) {
   return vals.reduce(([lo, hi], v) => [Math.min(lo, v), Math.max(hi, v)], [Infinity, -Infinity]);
 }
 
-/** Axes for points [[x, y], ...]: y as yAxis draws it, x from 0 (or below) to the largest x. */
-function xyAxes(ctx, g, pts, xUnit, yUnit) {
-  const [ylo, yhi] = extent(pts.map((p) => p[1]));
-  const y = yAxis(ctx, g, ylo, yhi, yUnit);
-  const [xlo, xhi] = extent(pts.map((p) => p[0]));
-  const xs = ticks(Math.min(0, xlo), xhi);
-  const [a, b] = [xs[0], xs[xs.length - 1]];
-  const x = (v) => g.pad.l + ((v - a) / (b - a)) * (g.w - g.pad.l - g.pad.r);
+/**
+ * Axes for points [[x, y], ...]: y as yAxis draws it, x from 0 (or below) to the largest x; either
+ * on a log scale where its values span decades (`scale` as boxPlot's). Sets the canvas's
+ * data-x-scale and data-y-scale.
+ */
+function xyAxes(ctx, g, pts, xUnit, yUnit, scale) {
+  const yv = pts.map((p) => p[1]), xv = pts.map((p) => p[0]);
+  const ylog = wantsLog(yv, scale), xlog = wantsLog(xv, scale);
+  g.canvas.dataset.yScale = ylog ? 'log' : 'linear';
+  g.canvas.dataset.xScale = xlog ? 'log' : 'linear';
+  const [ylo, yhi] = extent(yv);
+  const y = yAxis(ctx, g, ylo, yhi, yUnit, ylog);
+  const [xlo, xhi] = extent(xv);
+  const span = g.w - g.pad.l - g.pad.r;
   ctx.fillStyle = '#444'; ctx.textAlign = 'center';
-  for (const t of xs) ctx.fillText(short(t), x(t), g.h - g.pad.b + 14);
+  let x;
+  if (xlog) {
+    const { major, minor, a, b } = logTicks(xlo, xhi);
+    const px = (e) => g.pad.l + ((e - a) / (b - a)) * span;
+    x = (v) => px(Math.log10(v));
+    ctx.strokeStyle = '#f0f0f0';
+    for (const e of minor) { ctx.beginPath(); ctx.moveTo(px(e), g.pad.t); ctx.lineTo(px(e), g.h - g.pad.b); ctx.stroke(); }
+    ctx.strokeStyle = '#cfcfcf';
+    for (const k of major) {
+      ctx.beginPath(); ctx.moveTo(px(k), g.pad.t); ctx.lineTo(px(k), g.h - g.pad.b); ctx.stroke();
+      ctx.fillText(decadeLabel(k), px(k), g.h - g.pad.b + 14);
+    }
+    xUnit = `${xUnit}, log`;
+  } else {
+    const xs = ticks(Math.min(0, xlo), xhi);
+    const [a, b] = [xs[0], xs[xs.length - 1]];
+    x = (v) => g.pad.l + ((v - a) / (b - a)) * span;
+    for (const t of xs) ctx.fillText(short(t), x(t), g.h - g.pad.b + 14);
+  }
   ctx.fillText(xUnit, (g.w + g.pad.l) / 2, g.h - 6);
   return { x, y };
 }
@@ -203,32 +289,65 @@ function seriesKey(ctx, g, series, marks) {
   });
 }
 
-/** Cost against time: `series` [{label, points: [[time, cost], ...]}], one dot per solved run. */
-export function scatter(canvas, title, xUnit, yUnit, series) {
+/**
+ * Cost against time: `series` [{label, points: [[time, cost], ...]}], one dot per solved run.
+ * Returns the dots as drawn: [{x, y, series, index}] in css px from the canvas's top left
+ * (`series`: the series' index, `index`: the point's in its series), for a click to find its run.
+ * @param {HTMLCanvasElement} canvas
+ * @param {string} title
+ * @param {string} xUnit
+ * @param {string} yUnit
+ * @param {{label: string, points: number[][]}[]} series
+ * @param {{scale?: 'auto' | 'linear' | 'log'}} [options]
+ * @returns {{x: number, y: number, series: number, index: number}[]}
+ */
+export function scatter(canvas, title, xUnit, yUnit, series, { scale = 'auto' } = {}) {
   const g = setup(canvas, title);
   const { ctx } = g;
   const pts = series.flatMap((s) => s.points);
-  if (!pts.length) { ctx.fillText('no solved runs', g.pad.l, g.h / 2); return; }
-  const { x, y } = xyAxes(ctx, g, pts, xUnit, yUnit);
+  if (!pts.length) { ctx.fillText('no solved runs', g.pad.l, g.h / 2); return []; }
+  const { x, y } = xyAxes(ctx, g, pts, xUnit, yUnit, scale);
   canvas.title = series.map((s, i) => `${['●', '■'][i % 2]} ${s.label}`).join('\n');
+  const hits = [];
   series.forEach((s, i) => {
     ctx.fillStyle = SERIES[i % SERIES.length];
-    for (const [t, c] of s.points) {
+    s.points.forEach(([t, c], k) => {
       ctx.beginPath();
       if (i % 2) ctx.rect(x(t) - 3, y(c) - 3, 6, 6); else ctx.arc(x(t), y(c), 3.5, 0, 2 * Math.PI);
       ctx.fill();
-    }
+      hits.push({ x: x(t), y: y(c), series: i, index: k });
+    });
   });
   seriesKey(ctx, g, series, ['●', '■']);
+  return hits;
 }
 
-/** Step lines: `series` [{label, lines: [[[x, y], ...], ...]}] (each line one run), by series colour. */
-export function stepLines(canvas, title, xUnit, yUnit, series) {
+/** The dot of `hits` (from scatter) nearest to (x, y) within `radius` css px, or null. */
+export function hitDot(hits, x, y, radius = 8) {
+  let best = null, bestD = radius * radius;
+  for (const h of hits) {
+    const d = (h.x - x) ** 2 + (h.y - y) ** 2;
+    if (d <= bestD) { best = h; bestD = d; }
+  }
+  return best;
+}
+
+/**
+ * Step lines: `series` [{label, lines: [[[x, y], ...], ...]}] (each line one run), by series
+ * colour; `scale` as boxPlot's.
+ * @param {HTMLCanvasElement} canvas
+ * @param {string} title
+ * @param {string} xUnit
+ * @param {string} yUnit
+ * @param {{label: string, lines: number[][][]}[]} series
+ * @param {{scale?: 'auto' | 'linear' | 'log'}} [options]
+ */
+export function stepLines(canvas, title, xUnit, yUnit, series, { scale = 'auto' } = {}) {
   const g = setup(canvas, title);
   const { ctx } = g;
   const pts = series.flatMap((s) => s.lines.flat());
   if (!pts.length) { ctx.fillText('no data', g.pad.l, g.h / 2); return; }
-  const { x, y } = xyAxes(ctx, g, pts, xUnit, yUnit);
+  const { x, y } = xyAxes(ctx, g, pts, xUnit, yUnit, scale);
   series.forEach((s, i) => {
     ctx.strokeStyle = SERIES[i % SERIES.length];
     ctx.globalAlpha = 0.55;

@@ -2,20 +2,35 @@
 // workers (bench-worker.js, one per core), with progress, an estimate of the time left and cancel.
 // The results go through the core's own report code (bench_export: the same code as the CLI's
 // `bench --csv/--json-file/--ompl-log`), so the table and the exports match the CLI's numbers.
+// Set-ups are built from menus (the playground's planner panel, ui/panel.js) or typed as the CLI's
+// set-up lines (the "advanced" text, the single source of what runs: the menus add a line to it).
+// The scenario is a built-in, an opened file (the core's import_file: the playground's formats)
+// or a link's; scenario, set-ups and runs are kept in the URL hash (ui/setups.js) and restored on
+// load. A click on a dot of "cost against time" offers that run in the playground.
 // Read-only state for tests is exposed as window.planarium.
 
-import init, { builtins as builtinsJson, planners as plannersJson, bench_export as benchExport, parse_setups as parseSetups } from '../pkg/planarium.js';
+import init, { builtins as builtinsJson, planners as plannersJson, bench_export as benchExport, parse_setups as parseSetups, import_file as importFile } from '../pkg/planarium.js';
 import { fillScenarioPicker } from '../ui/controls.js';
-import { boxPlot, successBars, scatter, stepLines } from '../draw/plots.js';
+import { createPanel, taskOf } from '../ui/panel.js';
+import { setupFor, configOf } from '../ui/links.js';
+import { applyPageLimits } from '../run/limits.js';
+import { boxPlot, successBars, scatter, stepLines, hitDot } from '../draw/plots.js';
 import { downloadText } from '../draw/stage.js';
+import { el } from '../ui/dom.js';
+import { setupLine, setupLines, readPageState, wholeIn, checkSetups, coreError, pageHash, playgroundLink, readChosenFile, differingParams, MAX_SETUPS } from '../ui/setups.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
   scenario: $('scenario'), setups: $('setups'), runs: $('runs'), workers: $('workers'),
   run: $('bench-run'), cancel: $('bench-cancel'), progress: $('bench-progress'), status: $('bench-status'),
   error: $('bench-error'), table: $('bench-table'), caption: $('bench-caption'), plots: $('plots'),
-  csv: $('export-csv'), json: $('export-json'), ompl: $('export-ompl'),
+  csv: $('export-csv'), json: $('export-json'), ompl: $('export-ompl'), file: $('file'), list: $('setup-list'),
+  buildLabel: $('build-label'), buildPanel: $('build-panel'), add: $('add-setup'), buildNote: $('build-note'),
+  advanced: $('advanced'), logAxes: $('log-axes'), plotOptions: $('plot-options'), pop: $('run-pop'),
 };
+const DEFAULT_SETUPS = 'rrt-connect\nrrt';
+const DEFAULT_RUNS = 20;
+const MAX_RUNS = 10000;
 
 let builtins = [];
 let registry = null;
@@ -24,6 +39,14 @@ let job = null;   // the benchmark being run: {report, queue, done, total, start
 let report = null; // the last finished (or cancelled) report
 let curves = [];   // per set-up, RRT*'s best cost against time per run: [[[ms, cost], ...], ...]
 let asked = null;  // the last report's {runs: seeds asked per set-up, total: runs asked, done: runs done}
+// The scenario benchmarked: {id, name, text (its JSON), scenario (parsed), source: {id} for a
+// built-in as shipped, {text} for an opened or linked one (what a link carries)}.
+let current = null;
+let reportScenario = null; // `current` as the last report ran it (its dots open on it)
+let builder = null;        // the set-up builder's planner panel
+let dots = [];             // the cost-against-time plot's dots: [{x, y, series, index}]
+let dotRows = [];          // per set-up, the solved rows, in the order the dots were drawn
+const encoded = new Map(); // scenario text → its link encoding
 
 function showError(text) {
   ui.error.textContent = text;
@@ -90,6 +113,8 @@ function setRunning(on) {
   document.body.dataset.state = on ? 'running' : 'idle';
   ui.run.disabled = on;
   ui.cancel.disabled = !on;
+  ui.scenario.disabled = on;
+  ui.file.disabled = on;
   for (const b of [ui.csv, ui.json, ui.ompl]) b.disabled = on || !report;
 }
 
@@ -104,15 +129,18 @@ function start() {
     return;
   }
   const runs = Math.max(1, Math.min(10000, Math.floor(Number(ui.runs.value) || 1)));
-  const b = builtins.find((x) => x.id === ui.scenario.value);
+  if (setups.length > MAX_SETUPS) { showError(`${setups.length} set-ups: at most ${MAX_SETUPS} run at once.`); return; }
+  const b = current;
   const queue = [];
   // Seed-major order, so every set-up's first seeds finish early and partial results are fair.
   for (let seed = 1; seed <= runs; seed++) setups.forEach((setup, k) => queue.push({ id: queue.length, k, setup, seed }));
-  job = { text: JSON.stringify(b.scenario), scenario: b, setups, runs, rows: setups.map(() => []), curves: setups.map(() => []), queue, done: 0, total: queue.length, started: performance.now() };
+  job = { text: b.text, scenario: b, setups, runs, rows: setups.map(() => []), curves: setups.map(() => []), queue, done: 0, total: queue.length, started: performance.now() };
   stopPool();
   const n = Math.max(1, Math.min(64, Math.floor(Number(ui.workers.value) || navigator.hardwareConcurrency || 2)));
   for (let i = 0; i < n; i++) pool.push(newWorker());
   report = null;
+  reportScenario = b;
+  writeHash();
   setRunning(true);
   progress();
   dispatch();
@@ -193,18 +221,67 @@ function show(r) {
   ui.caption.textContent = `${r.scenario}: ${ran}${partial}; medians over all runs, costs over solved runs`;
   ui.table.hidden = false;
   ui.plots.hidden = false;
+  ui.plotOptions.hidden = false;
+  drawPlots(r);
+}
+
+/** The plots of report `r`, on log axes where the values span decades unless the box is unticked. */
+function drawPlots(r) {
+  const opt = { scale: ui.logAxes.checked ? 'auto' : 'linear' };
+  closePop();
   const groups = (f, solvedOnly = false) => r.setups.map((s) => ({ label: s.label, values: s.rows.filter((x) => !solvedOnly || x.solved).map(f) }));
   successBars($('plot-success'), `Success (${runsShort(r)})`, r.setups.map((s) => ({ label: s.label, solved: s.rows.filter((x) => x.solved).length, runs: s.rows.length })));
   const n = runsShort(r);
-  boxPlot($('plot-time'), `Planning time (${n})`, 'ms', groups((x) => x.time_ms));
-  boxPlot($('plot-nodes'), `Nodes (${n})`, 'nodes', groups((x) => x.nodes));
-  boxPlot($('plot-checks'), `State checks (${n})`, 'checks', groups((x) => x.checks));
-  boxPlot($('plot-cost'), `Path cost, solved (${n})`, 'cost', groups((x) => x.cost, true));
-  scatter($('plot-cost-time'), `Cost against time, a dot per solved run (${n})`, 'time (ms)', 'cost',
-    r.setups.map((s) => ({ label: s.label, points: s.rows.filter((x) => x.solved).map((x) => [x.time_ms, x.cost]) })));
+  boxPlot($('plot-time'), `Planning time (${n})`, 'ms', groups((x) => x.time_ms), opt);
+  boxPlot($('plot-nodes'), `Nodes (${n})`, 'nodes', groups((x) => x.nodes), opt);
+  boxPlot($('plot-checks'), `State checks (${n})`, 'checks', groups((x) => x.checks), opt);
+  boxPlot($('plot-cost'), `Path cost, solved (${n})`, 'cost', groups((x) => x.cost, true), opt);
+  dotRows = r.setups.map((s) => s.rows.filter((x) => x.solved));
+  dots = scatter($('plot-cost-time'), `Cost against time, a dot per solved run (${n}); click a dot to open its run`, 'time (ms)', 'cost',
+    r.setups.map((s, k) => ({ label: s.label, points: dotRows[k].map((x) => [x.time_ms, x.cost]) })), opt);
   const anytime = r.setups.map((s, k) => ({ label: s.label, lines: curves[k] ?? [] })).filter((s) => s.lines.length);
   $('plot-curves').hidden = !anytime.length;
-  if (anytime.length) stepLines($('plot-curves'), "RRT*: best cost against time (one line per run)", 'time (ms)', 'cost', anytime);
+  if (anytime.length) stepLines($('plot-curves'), "RRT*: best cost against time (one line per run)", 'time (ms)', 'cost', anytime, opt);
+}
+
+// A click on a run's dot: that run (scenario, set-up, seed) in the playground
+
+function closePop() {
+  ui.pop.hidden = true;
+  ui.pop.replaceChildren();
+}
+
+async function onPlotClick(e) {
+  if (!report || !reportScenario) return;
+  const canvas = e.currentTarget;
+  const box = canvas.getBoundingClientRect();
+  const hit = hitDot(dots, e.clientX - box.left, e.clientY - box.top);
+  if (!hit) { closePop(); return; }
+  const setup = report.setups[hit.series];
+  const row = dotRows[hit.series]?.[hit.index];
+  if (!setup || !row) return;
+  const href = await playgroundLink(reportScenario.source, { planner: setup.planner, params: setup.params, seed: row.seed }, registry, encoded);
+  const what = `${setup.label}, seed ${row.seed}: cost ${num(row.cost)}, ${num(row.time_ms)} ms`;
+  const close = el('button', { type: 'button', className: 'close', text: '×', ariaLabel: 'Close' });
+  close.addEventListener('click', closePop);
+  const links = href
+    ? [el('a', { id: 'run-open', href, text: 'Open in the playground' }),
+      el('a', { id: 'run-open-tab', href, target: '_blank', rel: 'noopener', text: 'in a new tab' })]
+    : [el('span', { className: 'hint', text: 'This scenario is too large for a link: open its file in the playground and pick this seed.' })];
+  ui.pop.replaceChildren(el('p', { className: 'run-what', text: what }), el('p', { className: 'run-links' }, ...links), close);
+  ui.pop.dataset.seed = String(row.seed);
+  // beside the dot, inside the plots' box
+  const plots = ui.plots.getBoundingClientRect();
+  ui.pop.hidden = false;
+  const w = ui.pop.offsetWidth;
+  ui.pop.style.left = `${Math.max(0, Math.min(plots.width - w, box.left - plots.left + hit.x + 10))}px`;
+  ui.pop.style.top = `${box.top - plots.top + hit.y + 10}px`;
+  (href ? $('run-open') : close).focus();
+}
+
+function onPlotMove(e) {
+  const box = e.currentTarget.getBoundingClientRect();
+  e.currentTarget.classList.toggle('pointing', !!hitDot(dots, e.clientX - box.left, e.clientY - box.top));
 }
 
 function exportAs(format, ext) {
@@ -216,16 +293,204 @@ function exportAs(format, ext) {
   }
 }
 
+// The scenario
+
+/** Benchmark built-in `b` as shipped. */
+function useBuiltin(b) {
+  removeCustom();
+  ui.scenario.value = b.id;
+  current = { id: b.id, name: b.name, text: JSON.stringify(b.scenario), scenario: b.scenario, source: { id: b.id } };
+  builder?.setTask(taskOf(current.scenario));
+}
+
+/**
+ * Benchmark a scenario given as text (an opened file, or a link's JSON): read by the core's
+ * import_file, as the playground reads files. `name`: the file's name (its extension picks the
+ * format). Returns the problem in words, or null.
+ */
+function useText(text, name, label) {
+  let json;
+  try {
+    json = importFile(text, name);
+  } catch (e) {
+    return `${name}: ${coreError(e)}`;
+  }
+  const scenario = JSON.parse(json);
+  const id = (scenario.name || name).replace(/\.[a-z]+$/i, '').replace(/[^\w.-]+/g, '-').toLowerCase().slice(0, 60) || 'scenario';
+  current = { id, name: scenario.name || name, text: json, scenario, source: { text: json } };
+  markCustom(label);
+  builder?.setTask(taskOf(scenario));
+  return null;
+}
+
+function removeCustom() {
+  for (const o of [...ui.scenario.options]) if (o.dataset.file) o.remove();
+}
+
+/** Show `label` in the scenario picker for a scenario that is not a built-in. */
+function markCustom(label) {
+  removeCustom();
+  const opt = new Option(label, '', true, true);
+  opt.dataset.file = 'yes';
+  opt.disabled = true;
+  ui.scenario.append(opt);
+  ui.scenario.value = '';
+  opt.selected = true;
+}
+
+// The set-ups: the text is what runs; the list shows it, the builder adds to it
+
+/** The list of set-ups the text holds, each with a Remove button; or what is wrong with the text. */
+function renderList() {
+  const lines = setupLines(ui.setups.value);
+  let setups = null;
+  let problem = null;
+  try {
+    setups = JSON.parse(parseSetups(ui.setups.value));
+  } catch (e) {
+    problem = String(e?.message ?? e);
+  }
+  if (!setups) {
+    ui.list.replaceChildren(el('li', { className: 'bad', text: lines.length ? problem : 'No set-up yet: build one below, or type lines under "Advanced".' }));
+    return;
+  }
+  ui.list.replaceChildren(...setups.map((s, k) => {
+    const remove = el('button', { type: 'button', className: 'remove', text: 'Remove', ariaLabel: `Remove set-up ${s.label}` });
+    remove.addEventListener('click', () => removeSetup(k));
+    const params = Object.entries(s.params).map(([p, v]) => `${p} ${v}`).join(', ');
+    return el('li', { className: 'setup-item' },
+      el('span', { className: 'setup-label', text: s.label }),
+      el('span', { className: 'setup-what', text: [s.planner, params].filter(Boolean).join(' · ') }),
+      remove);
+  }));
+}
+
+function removeSetup(k) {
+  const all = ui.setups.value.split('\n');
+  const at = setupLines(ui.setups.value)[k]?.at;
+  if (at === undefined) return;
+  all.splice(at, 1);
+  ui.setups.value = all.join('\n');
+  setupsChanged();
+}
+
+function setupsChanged() {
+  renderList();
+  writeHash();
+}
+
+/** "Add set-up": the builder's planner and parameters as one more line (checked by the core's parser). */
+function addSetup() {
+  const { planner, params } = builder.config();
+  // values at their defaults are left out: the line says what differs
+  const line = setupLine({ label: ui.buildLabel.value, planner, params: differingParams(builder.planner(), params, registry) });
+  try {
+    parseSetups(line);
+  } catch (e) {
+    ui.buildNote.textContent = String(e?.message ?? e);
+    ui.buildNote.classList.add('bad');
+    return;
+  }
+  if (setupLines(ui.setups.value).length >= MAX_SETUPS) {
+    ui.buildNote.textContent = `At most ${MAX_SETUPS} set-ups: remove one first.`;
+    ui.buildNote.classList.add('bad');
+    return;
+  }
+  const text = ui.setups.value.replace(/\s+$/, '');
+  ui.setups.value = text ? `${text}\n${line}` : line;
+  ui.buildNote.classList.remove('bad');
+  ui.buildNote.textContent = `Added: ${line}`;
+  ui.buildLabel.value = '';
+  setupsChanged();
+}
+
+// The URL: scenario, set-ups and runs
+
+let hashGen = 0;
+async function writeHash() {
+  if (!current || !registry) return;
+  const gen = ++hashGen;
+  const runs = wholeIn(ui.runs.value, 1, MAX_RUNS) ?? DEFAULT_RUNS;
+  const hash = await pageHash(current.source, [['setups', ui.setups.value.trim()], ['runs', runs]], registry, encoded);
+  if (gen !== hashGen) return;
+  if (location.hash !== `#${hash}`) history.replaceState(history.state, '', `${location.pathname}${location.search}#${hash}`);
+}
+
+/**
+ * Restore scenario, set-ups and runs from the hash; bad values are named in the error box and
+ * their defaults used. A playground link's planner set-up becomes the one set-up.
+ */
+async function restoreHash(hash) {
+  const { share, own } = await readPageState(hash, { builtins, keys: ['setups', 'runs'] });
+  const problems = [...share.problems];
+  if (share.scenario?.text) {
+    const why = useText(share.scenario.text, 'link.json', 'Scenario from a link');
+    if (why) { problems.push(`The link's scenario: ${why.replace(/^link\.json: /, '')}; the first built-in is used.`); useBuiltin(builtins[0]); }
+  } else {
+    const b = builtins.find((x) => x.id === share.scenario?.id) || builtins.find((x) => x.id === ui.scenario.value) || builtins[0];
+    useBuiltin(b);
+  }
+  let text = DEFAULT_SETUPS;
+  if (own.has('setups')) {
+    const got = checkSetups('setups', own.get('setups') ?? '', parseSetups);
+    if (got.problem) problems.push(`${got.problem}; the default set-ups are used.`);
+    else text = got.text;
+  } else if (share.planner !== null || share.params.length) {
+    // a playground link: its set-up (planner, parameters) is the one to run
+    const { block, problems: more } = setupFor(share, current.scenario, registry);
+    problems.push(...more);
+    const { planner, params } = configOf(block);
+    text = setupLine({ planner, params });
+  }
+  ui.setups.value = text;
+  if (own.has('runs')) {
+    const v = wholeIn(own.get('runs'), 1, MAX_RUNS);
+    if (v === null) problems.push(`runs=${String(own.get('runs')).slice(0, 40)}: the number of runs must be a whole number from 1 to ${MAX_RUNS}; ${DEFAULT_RUNS} is used.`);
+    ui.runs.value = String(v ?? DEFAULT_RUNS);
+  }
+  showError(problems.length ? `This link has problems:\n${problems.join('\n')}` : '');
+  renderList();
+}
+
 await init();
 builtins = JSON.parse(builtinsJson());
-registry = JSON.parse(plannersJson());
+registry = applyPageLimits(JSON.parse(plannersJson()));
 fillScenarioPicker(ui.scenario, builtins);
 ui.workers.value = String(navigator.hardwareConcurrency || 2);
+builder = createPanel(ui.buildPanel, registry, () => { ui.buildNote.textContent = ''; }, { prefix: 'build-', seed: false, title: 'Planner' });
+await restoreHash(location.hash);
+writeHash();
 ui.run.addEventListener('click', start);
 ui.cancel.addEventListener('click', cancel);
 ui.csv.addEventListener('click', () => exportAs('csv', 'csv'));
 ui.json.addEventListener('click', () => exportAs('json', 'json'));
 ui.ompl.addEventListener('click', () => exportAs('ompl', 'log'));
+ui.add.addEventListener('click', addSetup);
+ui.setups.addEventListener('input', setupsChanged);
+ui.runs.addEventListener('change', () => writeHash());
+ui.scenario.addEventListener('change', () => {
+  const b = builtins.find((x) => x.id === ui.scenario.value);
+  if (!b) return;
+  showError('');
+  useBuiltin(b);
+  writeHash();
+});
+ui.file.addEventListener('change', async () => {
+  const file = ui.file.files[0];
+  ui.file.value = ''; // the same file can be opened again
+  if (!file) return;
+  showError('');
+  let text;
+  try { text = await readChosenFile(file); } catch (e) { showError(e.message); return; }
+  const why = useText(text, file.name, `File: ${file.name}`);
+  if (why) { showError(`This file is not a scenario the core reads: ${why}`); return; }
+  writeHash();
+});
+ui.logAxes.addEventListener('change', () => { if (report) drawPlots(report); });
+$('plot-cost-time').addEventListener('click', onPlotClick);
+$('plot-cost-time').addEventListener('mousemove', onPlotMove);
+document.addEventListener('keydown', (e) => { if (e.key === 'Escape' && !ui.pop.hidden) closePop(); });
+window.addEventListener('hashchange', () => { if (!job) restoreHash(location.hash).then(() => writeHash()); });
 setRunning(false);
 ui.status.textContent = 'Ready';
 document.body.dataset.state = 'idle';
@@ -235,4 +500,7 @@ window.planarium = Object.freeze({
   report: () => report && JSON.parse(JSON.stringify(report)),
   curves: () => JSON.parse(JSON.stringify(curves)),
   exported: (format) => report && benchExport(JSON.stringify(report), format),
+  scenario: () => current && { id: current.id, name: current.name, builtin: !!current.source.id },
+  setups: () => { try { return JSON.parse(parseSetups(ui.setups.value)); } catch { return null; } },
+  dots: () => dots.map((d) => ({ ...d, seed: dotRows[d.series]?.[d.index]?.seed })),
 });

@@ -2,6 +2,13 @@
 // side by side. Each set-up is a lane (lane.js: its own worker, playback, view, chart and stats);
 // one controller (controller.js, the playground's table) drives both, so they load, run, pause and
 // reset together, and the page is finished when both lanes are.
+// The scenario is a built-in, an opened file (the lanes' workers import it as the playground's
+// does) or a link's. Scenario, both set-ups and the seed are kept in the URL hash (ui/setups.js:
+// the playground's share grammar plus `a` and `b`, a set-up line each), so a reload, or a
+// playground link's `#…` opened here, restores them; bad values are named and defaults used.
+// "Run 20 seeds" runs both set-ups to the end on seeds seed … seed+19 over a pool of benchmark
+// workers (bench-worker.js) and shows success and medians, the better set-up marked per row.
+// On a phone the two lanes are tabs.
 // Read-only state for tests is exposed as window.planarium (lane-aware: stats('a'), result('b')).
 
 import { Controller } from '../run/controller.js';
@@ -15,14 +22,24 @@ import { createStats } from '../ui/stats.js';
 import { createOverlays } from '../draw/overlays.js';
 import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend } from '../ui/controls.js';
 import { applyPageLimits } from '../run/limits.js';
+import init, { parse_setups as parseSetups } from '../pkg/planarium.js';
+import { setupFor } from '../ui/links.js';
+import { quartiles } from '../draw/plots.js';
+import { el } from '../ui/dom.js';
+import { setupLine, readPageState, checkSetups, pageHash, playgroundLink, readChosenFile, differingParams } from '../ui/setups.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
   scenario: $('scenario'), seed: $('seed'), seedHint: $('seed-hint'), error: $('error'), errorText: $('error-text'),
   errorClose: $('error-close'), course: $('scenario-course'), name: $('scenario-name'), notes: $('scenario-notes'),
   legend: $('legend'), speed: $('speed'), speedOut: $('speed-out'), animSpeed: $('anim-speed'),
-  animOut: $('anim-speed-out'), overlays: $('overlays'), playground: $('to-playground'),
+  animOut: $('anim-speed-out'), overlays: $('overlays'), playground: $('to-playground'), file: $('file'),
+  runSeeds: $('run-seeds'), seedsCancel: $('seeds-cancel'), seedsProgress: $('seeds-progress'), seedsStatus: $('seeds-status'),
+  seedsTable: $('seeds-table'), seedsCaption: $('seeds-caption'), seedsRange: $('seeds-range'), toBench: $('to-bench'),
+  lanes: $('lanes'), tabA: $('tab-a'), tabB: $('tab-b'),
 };
+const SEEDS = 20; // "Run 20 seeds"
+const wasm = init(); // the core on this thread too: a link's set-up lines go through its parser
 const { show: showError, clear: clearError } = errorBox(ui.error, ui.errorText);
 const BUTTONS = { run: 'run', pause: 'pause', reset: 'reset' };
 
@@ -35,6 +52,11 @@ let seed = 1;
 let loadGen = 0;         // bumped by every load; a lane is loaded when its answer is for the latest
 let applyDefaults = false;
 let lastFrame = 0;
+let sourceId = null;     // the built-in's id while the scenario is one as shipped; null: opened or linked
+let loadingFile = null;  // the name of the file being loaded (for its errors)
+let restoring = null;    // the hash's state {share, own}, applied once its scenario has loaded
+let hashRead = null;     // the promise of reading it
+const encoded = new Map();
 
 /** One side of the page: a lane, its panel, its stats, its chart. */
 function makeSide(key) {
@@ -94,22 +116,54 @@ function onReady(side, msg) {
         { prefix: `${s.key}-`, seed: false, title: 'Planner' });
     }
     fillScenarioPicker(ui.scenario, builtins);
+    hashRead = wasm.then(() => readPageState(location.hash, { builtins, keys: ['a', 'b'] }))
+      .then((state) => { restoring = state; }, (e) => { showError(`The link could not be read: ${e?.message ?? e}`); });
   }
   // load once every worker is ready (again, after a crash: same scenario, same set-ups)
   if (!sides.every((s) => s.ready)) return;
   if (sides.some((s) => s.lane.session.loadsPending > 0)) return; // the user's load is on its way
-  if (scenarioText) load(scenarioText, false);
-  else {
-    const b = builtins.find((x) => x.id === ui.scenario.value) || builtins[0];
-    load(JSON.stringify(b.scenario), true);
-  }
+  hashRead.then(loadFirst);
 }
 
-function load(text, defaults) {
+/** Load the scenario shown (after a crash), else the link's, else the picker's built-in. */
+function loadFirst() {
+  if (sides.some((s) => s.lane.session.loadsPending > 0)) return;
+  if (scenarioText) { load(scenarioText, false); return; }
+  const sc = restoring?.share.scenario;
+  if (sc?.text) {
+    markCustom('Scenario from a link');
+    sourceId = null;
+    load(sc.text, true);
+    return;
+  }
+  const b = builtins.find((x) => x.id === sc?.id) || builtins.find((x) => x.id === ui.scenario.value) || builtins[0];
+  ui.scenario.value = b.id;
+  sourceId = b.id;
+  load(JSON.stringify(b.scenario), true);
+}
+
+/** Send a scenario (or, with `file`, any file the core imports) to both lanes. */
+function load(text, defaults, file = null) {
   applyDefaults = defaults;
+  loadingFile = file;
   loadGen++;
-  for (const s of sides) s.lane.load(text);
+  for (const s of sides) s.lane.load(text, file);
   controller.fire('load');
+}
+
+function removeCustom() {
+  for (const o of [...ui.scenario.options]) if (o.dataset.file) o.remove();
+}
+
+/** Show `label` in the scenario picker for a scenario that is not a built-in. */
+function markCustom(label) {
+  removeCustom();
+  const opt = new Option(label, '', true, true);
+  opt.dataset.file = 'yes';
+  opt.disabled = true;
+  ui.scenario.append(opt);
+  ui.scenario.value = '';
+  opt.selected = true;
 }
 
 function onLoaded(side, msg) {
@@ -131,13 +185,48 @@ function onLoaded(side, msg) {
     ui.seed.value = String(seed);
   }
   applyDefaults = false;
+  loadingFile = null;
+  if (restoring) applyRestore();
   buildLegend();
   configure(sides);
   controller.fire('loaded');
 }
 
+/**
+ * The link's set-ups and seed, on the scenario just loaded: `a` / `b` (a set-up line each, read
+ * by the core's parser), else a playground link's planner set-up for A; bad values are named and
+ * the scenario's defaults kept.
+ */
+function applyRestore() {
+  const { share, own } = restoring;
+  restoring = null;
+  const problems = [...share.problems];
+  for (const s of sides) {
+    const K = s.key.toUpperCase();
+    if (!own.has(s.key)) continue;
+    const got = checkSetups(s.key, own.get(s.key) ?? '', parseSetups, 1);
+    if (got.problem) { problems.push(`${got.problem}; set-up ${K} keeps its default.`); continue; }
+    const [st] = got.setups;
+    s.panel.apply({ ...st.params, name: st.planner });
+    if (s.panel.planner().name !== st.planner) {
+      problems.push(`${s.key}: ${st.planner} does not fit this scenario; set-up ${K} uses ${s.panel.planner().label}.`);
+    }
+  }
+  if (!own.has('a') && (share.planner !== null || share.params.length)) {
+    const { block, problems: more } = setupFor(share, scenario, registry, sides[0].panel.planner().name);
+    problems.push(...more);
+    sides[0].panel.apply(block);
+  }
+  if (share.seed !== null) {
+    seed = share.seed;
+    ui.seed.value = String(seed);
+  }
+  if (problems.length) showError(`This link has problems:\n${problems.join('\n')}`);
+}
+
 function onInvalid(side, error) {
-  showError(`This scenario has an error${error.path ? ` at ${error.path}` : ''}: ${error.message || error.text}`);
+  const what = loadingFile ? `${loadingFile}: this file has an error` : 'This scenario has an error';
+  showError(`${what}${error.path ? ` at ${error.path}` : ''}: ${error.message || error.text}`);
   for (const s of sides) s.lane.clearRun();
   controller.fire('invalid');
 }
@@ -155,6 +244,169 @@ function configure(which) {
   }
   syncOptions();
   controller.fire('configure');
+  if (seedJob) stopSeeds('Stopped: a set-up, the seed or the scenario changed.');
+  showSeedRange();
+  writeHash();
+}
+
+// The URL: scenario, both set-ups, the seed; and the links to the playground and the benchmark
+
+/** A side's set-up as a line (only the values that differ from the defaults). */
+function lineOf(s) {
+  const { planner, params } = s.panel.config();
+  return setupLine({ planner, params: differingParams(s.panel.planner(), params, registry) });
+}
+
+let hashGen = 0;
+async function writeHash() {
+  if (!registry || !scenarioText || restoring || sides.some((s) => !s.panel)) return;
+  const gen = ++hashGen;
+  const src = sourceId ? { id: sourceId } : { text: scenarioText };
+  const [a, b] = sides.map(lineOf);
+  const hash = await pageHash(src, [['a', a], ['b', b], ['seed', seed]], registry, encoded);
+  const bench = await pageHash(src, [['setups', `A: ${a}\nB: ${b}`], ['runs', SEEDS]], registry, encoded);
+  const play = await playgroundLink(src, setupOf(sides[0]), registry, encoded);
+  if (gen !== hashGen) return;
+  if (location.hash !== `#${hash}`) history.replaceState(history.state, '', `${location.pathname}${location.search}#${hash}`);
+  ui.toBench.href = `bench.html#${bench}`;
+  ui.playground.href = play || './';
+}
+
+// Run 20 seeds: both set-ups to the end on seeds seed … seed+19, over benchmark workers
+
+let seedJob = null;  // {setups, lines, first, text, queue, rows: [[row], [row]], done, total, workers}
+let seedSummary = null;
+
+function showSeedRange() {
+  ui.seedsRange.textContent = `${seed} … ${seed + SEEDS - 1}`;
+}
+
+function runSeeds() {
+  if (seedJob || !scenarioText || sides.some((s) => !s.panel)) return;
+  clearError();
+  if (seed > Number.MAX_SAFE_INTEGER - SEEDS) { showError(`The seed is too large to run ${SEEDS} seeds from it.`); return; }
+  const setups = sides.map((s) => s.panel.config());
+  const queue = [];
+  for (let k = 0; k < SEEDS; k++) setups.forEach((st, i) => queue.push({ id: queue.length, i, seed: seed + k }));
+  seedJob = { setups, lines: sides.map(lineOf), first: seed, text: scenarioText, queue, rows: [[], []], done: 0, total: queue.length, workers: [] };
+  const n = Math.max(1, Math.min(2, navigator.hardwareConcurrency || 2));
+  for (let w = 0; w < n; w++) {
+    const worker = new Worker(new URL('../worker/bench-worker.js', import.meta.url), { type: 'module' });
+    worker.busy = null;
+    worker.onmessage = (e) => onSeedMessage(worker, e.data);
+    worker.onerror = (e) => { e.preventDefault(); onSeedMessage(worker, { type: 'crashed', message: e.message || 'worker error' }); };
+    seedJob.workers.push(worker);
+  }
+  seedSummary = null;
+  ui.seedsTable.hidden = true;
+  ui.seedsProgress.hidden = false;
+  syncSeedButtons();
+  seedProgress();
+  dispatchSeeds();
+}
+
+function dispatchSeeds() {
+  for (const w of seedJob.workers) {
+    if (w.busy || !seedJob.queue.length) continue;
+    const j = seedJob.queue.shift();
+    w.busy = j;
+    const st = seedJob.setups[j.i];
+    w.postMessage({ id: j.id, text: seedJob.text, planner: st.planner, params: st.params, seed: j.seed });
+  }
+}
+
+function onSeedMessage(w, msg) {
+  if (!seedJob || msg.type === 'ready') return;
+  const j = w.busy;
+  w.busy = null;
+  if (!j) return;
+  if (msg.type !== 'done') {
+    stopSeeds(`Stopped: set-up ${'AB'[j.i]}, seed ${j.seed}: ${msg.type === 'crashed' ? 'the core crashed' : 'the run was refused'}: ${msg.message}`);
+    return;
+  }
+  const s = msg.result.stats;
+  seedJob.rows[j.i].push({ seed: j.seed, solved: msg.result.solved, time_ms: s.time_ms, nodes: s.nodes, checks: s.checks, cost: s.cost });
+  seedJob.done++;
+  seedProgress();
+  if (seedJob.done === seedJob.total) finishSeeds();
+  else dispatchSeeds();
+}
+
+function seedProgress() {
+  ui.seedsProgress.max = seedJob.total;
+  ui.seedsProgress.value = seedJob.done;
+  ui.seedsStatus.textContent = `${seedJob.done} / ${seedJob.total} runs`;
+}
+
+function syncSeedButtons() {
+  ui.runSeeds.disabled = !!seedJob || !scenarioText;
+  ui.seedsCancel.disabled = !seedJob;
+}
+
+function stopSeeds(why) {
+  if (!seedJob) return;
+  for (const w of seedJob.workers) w.terminate();
+  seedJob = null;
+  ui.seedsProgress.hidden = true;
+  ui.seedsStatus.textContent = why;
+  syncSeedButtons();
+}
+
+/** A median of finite values, or null. */
+function median(values) {
+  const v = values.filter(Number.isFinite);
+  return v.length ? quartiles(v).median : null;
+}
+
+/** A number for the table: whole numbers as they are, else 4 significant digits. */
+function num(v) {
+  if (v === null || !Number.isFinite(v)) return '—';
+  return Number.isInteger(v) ? String(v) : Number(v.toPrecision(4)).toString();
+}
+
+function finishSeeds() {
+  const j = seedJob;
+  for (const w of j.workers) w.terminate();
+  seedJob = null;
+  ui.seedsProgress.hidden = true;
+  syncSeedButtons();
+  const per = j.rows.map((rows) => ({
+    runs: rows.length,
+    solved: rows.filter((r) => r.solved).length,
+    success: rows.length ? rows.filter((r) => r.solved).length / rows.length : 0,
+    time_ms: median(rows.map((r) => r.time_ms)),
+    nodes: median(rows.map((r) => r.nodes)),
+    checks: median(rows.map((r) => r.checks)),
+    length: median(rows.filter((r) => r.solved).map((r) => r.cost)),
+  }));
+  // the better set-up per metric: higher success, lower medians; none on a tie or without values
+  const METRICS = [
+    ['success', 'success', (p) => `${Math.round(100 * p.success)}% (${p.solved}/${p.runs})`, 1],
+    ['time_ms', 'time (ms)', (p) => num(p.time_ms), -1],
+    ['nodes', 'nodes', (p) => num(p.nodes), -1],
+    ['checks', 'checks', (p) => num(p.checks), -1],
+    ['length', 'path length (solved)', (p) => num(p.length), -1],
+  ];
+  const better = {};
+  for (const [key, , , sign] of METRICS) {
+    const [a, b] = per.map((p) => p[key]);
+    better[key] = a === null || b === null ? (a === null && b === null ? null : a === null ? 'b' : 'a')
+      : a === b ? null : (sign * (a - b) > 0 ? 'a' : 'b');
+  }
+  seedSummary = { first: j.first, last: j.first + SEEDS - 1, lines: j.lines, a: per[0], b: per[1], better, rows: j.rows };
+  ui.seedsTable.tBodies[0].replaceChildren(...METRICS.map(([key, label, show]) => {
+    const tr = el('tr', {}, el('th', { scope: 'row', text: label }));
+    per.forEach((p, i) => {
+      const mark = better[key] === 'ab'[i];
+      const td = el('td', { text: `${show(p)}${mark ? ' ★' : ''}`, className: mark ? 'better' : '' });
+      if (mark) td.title = `Set-up ${'AB'[i]} is better here`;
+      tr.append(td);
+    });
+    return tr;
+  }));
+  ui.seedsCaption.textContent = `Seeds ${j.first} … ${j.first + SEEDS - 1}; ★ the better set-up`;
+  ui.seedsTable.hidden = false;
+  ui.seedsStatus.textContent = `${j.total} runs done`;
 }
 
 const actions = {
@@ -229,6 +481,8 @@ function syncButtons() {
   const busy = controller.state === 'loading';
   ui.scenario.disabled = busy;
   ui.seed.disabled = busy;
+  ui.file.disabled = busy;
+  syncSeedButtons();
   for (const s of sides) s.panel?.setDisabled(busy);
   document.body.dataset.state = controller.state;
 }
@@ -248,9 +502,48 @@ ui.scenario.addEventListener('change', () => {
   const b = builtins.find((x) => x.id === ui.scenario.value);
   if (!b) return;
   clearError();
+  removeCustom();
   scenarioText = null;
+  sourceId = b.id;
   load(JSON.stringify(b.scenario), true);
 });
+
+ui.file.addEventListener('change', async () => {
+  const file = ui.file.files[0];
+  ui.file.value = ''; // the same file can be opened again
+  if (!file) return;
+  clearError();
+  let text;
+  try { text = await readChosenFile(file); } catch (e) { showError(e.message); return; }
+  markCustom(`File: ${file.name}`);
+  scenarioText = null;
+  sourceId = null;
+  load(text, true, file.name);
+});
+
+// another link pasted into this tab's address bar (the page's own writes use replaceState, which
+// fires no hashchange): start again from it
+window.addEventListener('hashchange', () => location.reload());
+
+ui.runSeeds.addEventListener('click', runSeeds);
+ui.seedsCancel.addEventListener('click', () => stopSeeds('Cancelled.'));
+
+// A phone: the lanes as tabs A / B
+function showTab(key) {
+  ui.lanes.dataset.tab = key;
+  ui.tabA.setAttribute('aria-selected', String(key === 'a'));
+  ui.tabB.setAttribute('aria-selected', String(key === 'b'));
+}
+ui.tabA.addEventListener('click', () => showTab('a'));
+ui.tabB.addEventListener('click', () => showTab('b'));
+for (const tab of [ui.tabA, ui.tabB]) {
+  tab.addEventListener('keydown', (e) => {
+    if (e.key !== 'ArrowLeft' && e.key !== 'ArrowRight') return;
+    const next = tab === ui.tabA ? ui.tabB : ui.tabA;
+    showTab(next === ui.tabA ? 'a' : 'b');
+    next.focus();
+  });
+}
 
 ui.seed.addEventListener('change', () => {
   const v = Number(ui.seed.value);
@@ -265,10 +558,6 @@ ui.seed.addEventListener('change', () => {
   configure(sides);
 });
 
-ui.playground.addEventListener('click', () => {
-  const id = ui.scenario.value;
-  ui.playground.href = id ? `./?scenario=${encodeURIComponent(id)}` : './';
-});
 
 function updateOutputs() {
   ui.speedOut.textContent = describeSpeed(ui.speed);
@@ -305,6 +594,10 @@ Object.defineProperty(window, 'planarium', {
     model: (key = 'a') => modelSummary(laneOf(key).playback.model, laneOf(key).chart),
     config: (key = 'a') => (laneOf(key).panel ? structuredClone(setupOf(laneOf(key))) : null),
     scenario: () => (scenario ? structuredClone(scenario) : null),
+    seed: () => seed,
+    /** The last "Run 20 seeds": {first, last, lines, a, b (success, medians), better: {metric: 'a' | 'b' | null}, rows}. */
+    seeds: () => (seedSummary ? structuredClone(seedSummary) : null),
+    seedsRunning: () => !!seedJob,
   }),
   writable: false,
   configurable: false,

@@ -84,8 +84,8 @@ export function createPanel(root, registry, onChange, { prefix = '', seed: withS
     summary,
     params,
     more,
-    withSeed ? el('label', { className: 'field', htmlFor: id('seed'), title: 'Random seed: the same seed replays the same run.' },
-      el('span', { text: 'Seed' }), seed, seedHint) : null,
+    ...(withSeed ? [el('label', { className: 'field', htmlFor: id('seed'), title: 'Random seed: the same seed replays the same run.' },
+      el('span', { text: 'Seed' }), seed, seedHint)] : []), // (replaceChildren would write a null as "null")
   );
 
   const emit = () => onChange(config());
