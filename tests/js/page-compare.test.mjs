@@ -27,8 +27,10 @@ test('compare: uniform against Gaussian RRT-Connect on the same seed, run togeth
   await page.selectOption('#scenario', 'narrow');
   await page.waitForFunction(() => document.getElementById('scenario-name').textContent === 'Narrow passage');
   await waitState('idle');
+  // the link carries the playground's state (its share hash), written a moment after each change
+  await page.waitForFunction(() => /#.*scenario=narrow/.test(document.getElementById('to-compare').getAttribute('href')));
   await page.click('#to-compare');
-  await page.waitForURL(/compare\.html\?scenario=narrow/);
+  await page.waitForURL(/compare\.html#.*scenario=narrow/);
   await page.waitForFunction(() => window.planarium?.state() === 'idle' && document.getElementById('scenario-name').textContent === 'Narrow passage', null, { timeout: 30000 });
   assert.equal(page.workers().length, 2, 'one worker per set-up');
 

@@ -293,6 +293,7 @@ async function writeHash({ force = false } = {}) {
   const here = `${location.origin}${location.pathname}${location.search}`;
   const readable = hash.length <= MAX_HASH_CHARS && (source.id || scenarioText.length <= MAX_SCENARIO_BYTES);
   ui.shareUrl.value = readable && here.length + hash.length < MAX_LINK_CHARS ? `${here}#${hash}` : '';
+  syncPageLinks(ui.shareUrl.value ? hash : '');
   if (restored === hash) return `${here}#${hash}`; // the link as pasted stays in the address bar
   pasted = null;
   lastHash = readable ? `#${hash}` : '';
@@ -543,11 +544,12 @@ ui.file.addEventListener('change', async () => {
   load(text, true, { course: 'Opened file', file: file.name, source: { custom: true } });
 });
 
-// the compare page opens on the scenario shown here
-ui.compare.addEventListener('click', () => {
-  const b = builtins.find((x) => x.id === ui.scenario.value);
-  ui.compare.href = b ? `compare.html?scenario=${encodeURIComponent(b.id)}` : 'compare.html';
-});
+// Compare and Benchmark open on the state shown here (they read the playground's share hash:
+// scenario, even an edited or opened one, and the planner set-up)
+function syncPageLinks(hash) {
+  ui.compare.href = hash ? `compare.html#${hash}` : 'compare.html';
+  $('to-bench').href = hash ? `bench.html#${hash}` : 'bench.html';
+}
 
 // Slow / Normal / Instant: presets of the events-per-second slider (Playback details).
 const SPEEDS = Object.freeze({ 'speed-slow': 0, 'speed-normal': 30, 'speed-instant': 100 });

@@ -15,7 +15,7 @@ import { EventKind as K, STRIDE } from './events.js';
  * @typedef {{title: string, lines: Line[]}} Pseudocode
  */
 
-const sampled = (o) => (o.goalBias ?? 0) > 0;
+const sampled = (o) => o.goalBias === undefined || o.goalBias > 0; // unset: the planner's default, which may bias
 const SAMPLER_LINES = /** @type {Line[]} */ ([
   { id: 'goal', text: 'with probability goal_bias: q_rand ← q_goal', indent: 2, when: sampled },
   { id: 'try', text: 'SAMPLE(): uniform draws, checked', indent: 2, when: (o) => !!o.sampler && o.sampler !== 'uniform' && o.sampler !== 'goal-biased' },
@@ -133,7 +133,7 @@ export function optionsOf(config) {
   const p = config?.params || {};
   return {
     sampler: p.sampler,
-    goalBias: Number(p.goal_bias ?? (config?.planner === 'rrt' ? 0.05 : 0)),
+    goalBias: p.goal_bias === undefined ? undefined : Number(p.goal_bias),
     connect: p.extend === 'connect',
     domain: Number(p.dd_radius) > 0,
     exhausted: Number(p.exhausted) > 0,
@@ -306,7 +306,7 @@ export class Explainer {
         break;
       case K.SOLVED:
         this.then('solved: the path is returned');
-        this.line = 'goal-check';
+        this.line = this.planner === 'rrt-connect' ? 'met' : 'goal-check';
         break;
       case K.REWIRE:
         this.begin(`rewire #${id}: its parent is now #${parent}, cheaper`);

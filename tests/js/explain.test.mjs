@@ -1,0 +1,117 @@
+// The explain panel's model (www/run/explain.js) against the events the core emits: every planner
+// is run under Node (the wasm build) and its records fed to the Explainer one at a time; each
+// record must put the panel on a line of that planner's pseudocode, and the caption must say what
+// the record says (its node ids, its numbers, the obstacle that blocked it), so the captions are
+// true by construction. Runs on real built-ins with their default seeds.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { dirname, join } from 'node:path';
+import { initSync, Run, builtins } from '../../www/pkg/planarium.js';
+import { EventKind as K, STRIDE } from '../../www/run/events.js';
+import { Explainer, pseudocode, optionsOf, num, blockerText } from '../../www/run/explain.js';
+
+const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
+initSync({ module: readFileSync(join(root, 'www/pkg/planarium_bg.wasm')) });
+const scenarios = Object.fromEntries(JSON.parse(builtins()).map((b) => [b.id, b.scenario]));
+
+function records(scenario, planner, params, seed) {
+  const run = new Run(JSON.stringify(scenarios[scenario]), planner, JSON.stringify(params), seed);
+  const out = [];
+  let status;
+  do {
+    status = run.step(200, 1e9);
+    for (const v of run.drain_events()) out.push(v);
+  } while (status === 'running' && out.length < 3e6);
+  run.free();
+  const recs = [];
+  for (let o = 0; o < out.length; o += STRIDE) recs.push(out.slice(o, o + STRIDE));
+  return recs;
+}
+
+/** What the caption must end with (or contain) after record `r`; null: no check for that kind. */
+function expected(planner, r) {
+  const [kind, , id, parent, x, y, px, , c0] = r;
+  switch (kind) {
+    case K.SAMPLE: return id === 1 ? `sample q_goal (${num(x)}, ${num(y)}) (goal bias)` : `sample (${num(x)}, ${num(y)})`;
+    case K.NEAREST: return `nearest #${id} at ${num(c0)}`;
+    case K.STEER: return `step ${num(c0)}`;
+    case K.COLLISION: return `${blockerText(id)} at (${num(x)}, ${num(y)})`;
+    case K.NODE_ADDED:
+      if (parent < 0 || planner === 'hex-potential' || planner === 'potential-field') return `(${num(x)}, ${num(y)})`;
+      return `add #${id} under #${parent}`;
+    case K.REWIRE: return `rewire #${id}: its parent is now #${parent}`;
+    case K.COST: return `best cost now ${num(px)}`;
+    case K.TREES_CONNECTED: return 'the trees meet';
+    case K.SOLVED: return 'solved';
+    case K.MINIMUM: return `local minimum at (${num(x)}, ${num(y)})`;
+    case K.CELL_STATE: return `#${id}`;
+    case K.REGION: return `radius ${num(px)}`;
+    default: return null;
+  }
+}
+
+const RUNS = [
+  ['narrow', 'rrt', {}, 7],
+  ['narrow', 'rrt', { extend: 'connect', dd_radius: 0.05, exhausted: 3 }, 7],
+  ['narrow', 'rrt-connect', {}, 7],
+  ['ompl-rect', 'rrt-star', { max_iterations: 400 }, 1],
+  ['technion-ip', 'inspection', { max_iterations: 300 }, 1],
+  ['hex-trap', 'hex-potential', {}, 1],
+  ['apf-minimum', 'potential-field', {}, 1],
+  ['open-field', 'rrt', { sampler: 'bridge', goal_bias: 0.2 }, 2],
+];
+
+for (const [scenario, planner, params, seed] of RUNS) {
+  test(`explain: ${planner} ${JSON.stringify(params)} on ${scenario}: every event lands on a line of its pseudocode with its own words`, () => {
+    const code = pseudocode(planner, optionsOf({ planner, params }));
+    assert.ok(code, `pseudocode for ${planner}`);
+    const ids = new Set(code.lines.map((l) => l.id));
+    const x = new Explainer(planner, scenarios[scenario].robot.kind);
+    const recs = records(scenario, planner, params, seed);
+    assert.ok(recs.length > 50, `${recs.length} records`);
+    const linesSeen = new Set();
+    let checked = 0;
+    for (const r of recs) {
+      const { line, caption } = x.read(r);
+      if (r[0] === K.CELL_SHAPE || r[0] === K.FIELD || r[0] === K.SAMPLE_TRY || r[0] === K.CELL || r[0] === K.POTENTIAL) continue;
+      assert.ok(ids.has(line), `${planner}: kind ${r[0]} put the panel on line "${line}", not in its pseudocode`);
+      linesSeen.add(line);
+      const want = expected(planner, r);
+      if (want !== null) {
+        assert.ok(caption.includes(want), `${planner}: after kind ${r[0]} [${[...r].join(', ')}] the caption "${caption}" should say "${want}"`);
+        checked++;
+      }
+    }
+    assert.ok(checked > 20, `${checked} captions checked`);
+    assert.ok(linesSeen.size >= 3, `lines reached: ${[...linesSeen]}`);
+  });
+}
+
+test('explain: a growth step reads sample → nearest → step → added or blocked, in that order', () => {
+  const x = new Explainer('rrt', 'point');
+  const recs = records('narrow', 'rrt', {}, 7);
+  let blocked = 0, added = 0;
+  for (const r of recs) {
+    const { caption } = x.read(r);
+    if (r[0] === K.COLLISION) {
+      blocked++;
+      assert.match(caption, /^sample (q_goal )?\(.*\)( \(goal bias\))? → nearest #\d+ at [\d.]+ → step [\d.]+( \(reaches it\))? → (blocked by obstacle \d+|blocked by the map's edge) at /);
+      assert.ok(x.actors.collision && x.actors.near && x.actors.edge && x.actors.range, 'the actors of a blocked step');
+    }
+    if (r[0] === K.NODE_ADDED && r[3] >= 0) {
+      added++;
+      assert.match(caption, /^sample (q_goal )?\(.*\)( \(goal bias\))? → nearest #\d+ at [\d.]+ → step [\d.]+( \(reaches it\))? → add #\d+ under #\d+$/);
+    }
+  }
+  assert.ok(blocked > 10 && added > 50, `${blocked} blocked, ${added} added`);
+});
+
+test('explain: the pseudocode shows the lines of the options chosen', () => {
+  const plain = pseudocode('rrt', optionsOf({ planner: 'rrt', params: { goal_bias: 0 } })).lines.map((l) => l.id);
+  assert.ok(!plain.includes('goal') && !plain.includes('domain') && !plain.includes('exhausted') && !plain.includes('connect'));
+  const all = pseudocode('rrt', optionsOf({ planner: 'rrt', params: { goal_bias: 0.1, dd_radius: 0.1, exhausted: 3, extend: 'connect', sampler: 'bridge' } })).lines.map((l) => l.id);
+  for (const id of ['goal', 'domain', 'exhausted', 'connect', 'try']) assert.ok(all.includes(id), id);
+  assert.equal(pseudocode('no-such-planner'), null);
+});
