@@ -157,6 +157,7 @@ export class PlanariumPlayground extends HTMLElement {
   disconnectedCallback() {
     this.removeEventListener('keydown', this.onKey);
     this.hostObserver?.disconnect();
+    this.seenObserver?.disconnect();
     this.player?.stop();
     this.player = null;
   }
@@ -252,11 +253,29 @@ export class PlanariumPlayground extends HTMLElement {
     this.player.controller.fire('loaded');
     this.problems.push(...problems);
     this.say(this.notes());
-    if (this.share.autoplay && !this.started) {
+    if (this.share.autoplay && !this.started) this.autoplayWhenSeen();
+    this.sync();
+  }
+
+  /**
+   * Autoplay starts when at least half the element is on screen (a reader scrolling to it sees
+   * the run from its start, not its end); at once where IntersectionObserver is missing.
+   */
+  autoplayWhenSeen() {
+    const start = () => {
+      this.seenObserver?.disconnect();
+      this.seenObserver = null;
+      if (this.started || this.player?.state !== 'idle') return;
       this.started = true;
       this.player.run();
-    }
-    this.sync();
+      this.sync();
+    };
+    if (typeof IntersectionObserver !== 'function') { start(); return; }
+    this.seenObserver?.disconnect();
+    this.seenObserver = new IntersectionObserver((entries) => {
+      if (entries.some((e) => e.isIntersecting)) start();
+    }, { threshold: 0.5 });
+    this.seenObserver.observe(this);
   }
 
   onInvalid(error) {

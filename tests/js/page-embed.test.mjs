@@ -47,6 +47,9 @@ ${body}
   writeFileSync(join(dir, 'wide.html'), page('wide column', 900, both));
   writeFileSync(join(dir, 'click.html'), page('click to start', 480, `<script type="module" src="planarium/planarium-playground.js"></script>
 <planarium-playground id="lazy" scenario="slot" planner="rrt" seed="3" click controls="run,pause,speed,seed" speed="100"></planarium-playground>`));
+  writeFileSync(join(dir, 'below.html'), page('autoplay below the fold', 480, `<p id="spacer" style="height: 2400px">Read this first.</p>
+<script type="module" src="planarium/planarium-playground.js"></script>
+<planarium-playground id="below" scenario="narrow" planner="rrt-connect" seed="7" autoplay speed="100"></planarium-playground>`));
   site = await serve({ port: 0, dir: tmp });
   notes = `http://127.0.0.1:${site.address().port}/course/notes/`;
 });
@@ -239,4 +242,17 @@ test('the static copy under a sub-path: the full page runs, and gives the embed\
     await p.close();
     await q.close();
   }
+});
+
+test('autoplay waits until the embed is scrolled into view, then runs from the start', async () => {
+  const p = await open(`${notes}below.html`, { width: 800, height: 600 });
+  await p.waitForFunction(() => document.querySelector('#below')?.state === 'idle', null, { timeout: 30000 });
+  // loaded and ready, off screen: nothing runs (a second of frames to be sure)
+  await p.waitForTimeout(1000);
+  assert.equal(await p.evaluate(() => document.querySelector('#below').state), 'idle', 'off screen, autoplay waits');
+  assert.equal(await p.evaluate(() => document.querySelector('#below').nodeCount), 0);
+  await p.evaluate(() => document.querySelector('#below').scrollIntoView({ block: 'center' }));
+  await waitEl(p, 'solved', '#below');
+  assert.ok((await look(p, '#below')).pixels[0] > 50, 'the tree is drawn');
+  await p.close();
 });
