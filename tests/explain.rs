@@ -212,3 +212,31 @@ fn a_goal_sample_says_so() {
         assert_eq!(r[2] == 1.0, r[4] == goal[0] && r[5] == goal[1], "{r:?}");
     }
 }
+
+/// Nodes of `planner` (defaults) on `scenario` with `seed`.
+fn nodes(scenario: &str, planner: &str, seed: u64) -> u64 {
+    let sc = builtin(scenario).unwrap();
+    let spec = planners::find(planner).unwrap();
+    let problem = Problem::from_scenario(&sc).unwrap();
+    let mut s = Session::new(problem, RunConfig { planner: planner.into(), params: Params::defaults(spec), seed, record_events: false }).unwrap();
+    s.run_to_end();
+    s.result().stats.nodes
+}
+
+#[test]
+fn the_narrow_passage_caption_holds_on_its_default_seed_and_over_101_seeds() {
+    let sc = builtin("narrow").unwrap();
+    let notes = sc.notes.clone();
+    let seed = sc.planner.as_ref().and_then(|p| p.seed).unwrap();
+    assert_eq!(seed, 7);
+    let (rrt, connect) = (nodes("narrow", "rrt", seed), nodes("narrow", "rrt-connect", seed));
+    assert!(notes.contains(&format!("on the default seed 7 RRT is the luckier ({rrt} nodes to {connect})")), "{notes}");
+    assert!(rrt < connect);
+    let median = |planner: &str| {
+        let mut v: Vec<u64> = (1..=101).map(|s| nodes("narrow", planner, s)).collect();
+        v.sort_unstable();
+        v[50]
+    };
+    let (m_rrt, m_connect) = (median("rrt"), median("rrt-connect"));
+    assert!(notes.contains(&format!("the median RRT-Connect run adds {m_connect} nodes to RRT's {m_rrt}")), "{m_connect} {m_rrt}: {notes}");
+}
