@@ -663,6 +663,8 @@ Object.defineProperty(window, 'planarium', {
     model: () => modelSummary(playback.model, chart),
     /** The explain panel: {line, caption, events} of the last event shown. */
     explain: () => explain.state(),
+    /** The last record revealed, as numbers (null before any). */
+    lastEvent: () => (playback.store.length ? [...playback.store.record(playback.store.length - 1)] : null),
     cells: () => cellSummary(playback.model.cells),
     /** Css px within the workspace canvas of the world point (x, y), or null. */
     toCanvas: (x, y) => (view.layout ? [view.layout.sx(x) / view.layout.dpr, view.layout.sy(y) / view.layout.dpr] : null),

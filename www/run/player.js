@@ -239,7 +239,7 @@ export class Player {
     if (!this.lane.caughtUp && s.iterations !== undefined) {
       s.planner_iterations = s.iterations;
       s.planner_nodes = s.nodes;
-      s.iterations = this.shownIterations;
+      s.iterations = this.replayIteration().iteration;
       s.nodes = s.shown_nodes;
     }
     return s;

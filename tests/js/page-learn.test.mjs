@@ -1,0 +1,194 @@
+// "The first five minutes" of a new student, driven like a person in headless chromium at a laptop's
+// 1280×800 and a phone's 390×844: a cold page shows the scenario, the planner and Run in the first
+// screen; Step one event walks a growth step with the explain panel's highlighted line and caption
+// checked against the events the core emitted; Normal playback is watchable (the status strip and
+// the stats follow the replay, not the planner); Slow / Normal / Instant; Run 20 seeds; Compare with
+// 20 seeds from the playground's link. Screenshots go to target/learn-*.png.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { startBrowser, SHOTS } from './browser.mjs';
+import { EventKind as K } from '../../www/run/events.js';
+
+let env;
+before(async () => { env = await startBrowser(); });
+after(async () => { await env?.close(); });
+
+async function open(viewport, hash = '') {
+  const page = await env.browser.newPage({ viewport });
+  const errors = [];
+  page.on('pageerror', (e) => { console.log(`[page error] ${e.stack || e}`); errors.push(String(e)); });
+  page.on('console', (m) => { if (m.type() === 'error') console.log(`[page error] ${m.text()}`); });
+  await page.goto(`${env.base}${hash}`);
+  await page.waitForFunction(() => window.planarium?.state() === 'idle', null, { timeout: 30000 });
+  return { page, errors };
+}
+
+/** Whether element `sel` is drawn wholly inside the first viewport (no scrolling). */
+async function inFirstScreen(page, sel) {
+  return page.evaluate((sel) => {
+    const e = document.querySelector(sel);
+    const r = e.getBoundingClientRect();
+    return e.checkVisibility() && r.width > 0 && r.top >= 0 && r.left >= 0 && r.bottom <= innerHeight && r.right <= innerWidth;
+  }, sel);
+}
+
+/** The explain panel as a person sees it: the highlighted line's id and text, and the caption. */
+const panelShown = (page) => page.evaluate(() => {
+  const now = document.querySelectorAll('#explain-code li.now');
+  return {
+    count: now.length,
+    line: now[0]?.dataset.line ?? null,
+    text: now[0]?.textContent ?? '',
+    caption: document.getElementById('explain-caption').textContent,
+  };
+});
+
+/** The record the page revealed last (the playback's store, as the views read it). */
+const lastRecord = (page) => page.evaluate(() => window.planarium.lastEvent());
+
+for (const [width, height, tag] of [[1280, 800, 'laptop'], [390, 844, 'phone']]) {
+  test(`first five minutes at ${width}×${height}: scenario, planner and Run in the first screen; stepping is explained line by line`, async () => {
+    const { page, errors } = await open({ width, height });
+    for (const sel of ['#scenario', '#planner', '#run', '#step-event']) {
+      assert.ok(await inFirstScreen(page, sel), `${sel} is in the first screen at ${width}×${height}`);
+    }
+    assert.match(await page.textContent('#run-status'), /^Ready: Run starts RRT, seed 1\.$/, 'the cold page says what Run starts');
+    assert.ok(!(await page.isVisible('#group-sampler')), 'the sampler group waits behind "More parameters"');
+    await page.screenshot({ path: `${SHOTS}/learn-${tag}-cold.png` });
+
+    // Step one event, twelve times: each shows one more record, and the panel says what it is
+    const kinds = new Set();
+    for (let i = 1; i <= 12; i++) {
+      await page.click('#step-event');
+      await page.waitForFunction((n) => window.planarium.explain().events === n, i);
+      await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+      const r = await lastRecord(page);
+      const shown = await panelShown(page);
+      const model = await page.evaluate(() => window.planarium.explain());
+      kinds.add(r[0]);
+      assert.equal(shown.count, 1, 'one line highlighted');
+      assert.equal(shown.line, model.line);
+      assert.equal(shown.caption, model.caption);
+      // the words follow the record's own numbers
+      const [kind, , id, parent] = r;
+      if (kind === K.SAMPLE) assert.match(shown.caption, /sample .*\(/);
+      if (kind === K.NEAREST) {
+        assert.ok(shown.caption.includes(`nearest #${id} at`), shown.caption);
+        assert.match(shown.text, /NEAREST/);
+      }
+      if (kind === K.STEER) assert.match(shown.text, /STEER/);
+      if (kind === K.NODE_ADDED && parent >= 0) assert.ok(shown.caption.includes(`add #${id} under #${parent}`), shown.caption);
+      if (kind === K.COLLISION) assert.match(shown.caption, /blocked by (obstacle \d+|the map's edge)/);
+    }
+    for (const k of [K.SAMPLE, K.NEAREST, K.STEER, K.NODE_ADDED]) assert.ok(kinds.has(k), `stepped through kind ${k}`);
+    assert.equal(await page.evaluate(() => window.planarium.state()), 'paused');
+    assert.match(await page.textContent('#run-status'), /^paused at /);
+    // the step's actors are on the canvas: the nearest node's ring in the actor colour
+    const ring = await page.evaluate(() => {
+      const c = document.getElementById('canvas');
+      const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      let n = 0;
+      for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - 0xd5) < 12 && Math.abs(d[i + 1] - 0x5e) < 12 && d[i + 2] < 20) n++;
+      return n;
+    });
+    assert.ok(ring > 20, `the step's actors are drawn (${ring} px)`);
+    await page.screenshot({ path: `${SHOTS}/learn-${tag}-step.png` });
+
+    // Normal playback is watchable: a moment after Run the replay is still behind the planner,
+    // and the status strip and the stats say so with the numbers drawn
+    await page.click('#speed-normal');
+    await page.click('#run');
+    await page.waitForFunction(() => /^replaying ≈?\d+ of \d+ iterations · planner finished/.test(document.getElementById('run-status').textContent), null, { timeout: 20000 });
+    const strip = await page.textContent('#run-status');
+    const [, shownIt, totalIt] = strip.match(/replaying ≈?([\d,]+) of ([\d,]+)/).map((v) => Number(String(v).replace(/,/g, '')));
+    assert.ok(shownIt < totalIt, strip);
+    const stats = await page.evaluate(() => ({ it: document.getElementById('stat-iterations').textContent, nodes: document.getElementById('stat-nodes').textContent, drawn: window.planarium.nodeCount() }));
+    assert.match(stats.it, /^\d+ of \d+$/, 'iterations: drawn of the planner\'s');
+    assert.ok(Number(stats.nodes.split(' of ')[0]) <= stats.drawn + 5, `nodes shown ${stats.nodes}, drawn ${stats.drawn}`);
+    await page.screenshot({ path: `${SHOTS}/learn-${tag}-running.png` });
+    // Instant: the rest at once
+    await page.click('#speed-instant');
+    await page.waitForFunction(() => window.planarium.state() === 'finished', null, { timeout: 20000 });
+    assert.match(await page.textContent('#run-status'), /^solved · [\d,]+ iterations · [\d,]+ nodes · planner finished in/);
+    assert.equal(await page.getAttribute('#speed-instant', 'aria-checked'), 'true');
+    await page.screenshot({ path: `${SHOTS}/learn-${tag}-finished.png` });
+    assert.deepEqual(errors, []);
+    await page.close();
+  });
+}
+
+test('Slow / Normal / Instant set the playback, and Normal is the default', async () => {
+  const { page } = await open({ width: 1280, height: 800 });
+  assert.equal(await page.getAttribute('#speed-normal', 'aria-checked'), 'true');
+  const rate = () => page.textContent('#speed-out');
+  assert.match(await rate(), /^1\d\d events\/s$/);
+  await page.click('#speed-slow');
+  assert.equal(await rate(), '10 events/s');
+  assert.equal(await page.getAttribute('#speed-slow', 'aria-checked'), 'true');
+  assert.equal(await page.getAttribute('#speed-normal', 'aria-checked'), 'false');
+  await page.click('#run');
+  await page.waitForTimeout(1000);
+  const slow = await page.evaluate(() => window.planarium.explain().events);
+  assert.ok(slow > 2 && slow < 40, `slow: ${slow} events in about a second`);
+  await page.click('#speed-instant');
+  await page.waitForFunction(() => window.planarium.state() === 'finished');
+  await page.close();
+});
+
+test('only the overlays and parameters that apply are shown', async () => {
+  const { page } = await open({ width: 1280, height: 800 });
+  await page.click('#sec-overlays summary');
+  const visible = () => page.evaluate(() => [...document.querySelectorAll('#overlays label')].filter((l) => !l.hidden).map((l) => l.dataset.option));
+  const connect = await visible();
+  assert.ok(connect.includes('showRejected') && !connect.includes('showCells') && !connect.includes('showFov') && !connect.includes('showRewires'), connect.join());
+  await page.selectOption('#planner', 'rrt-star');
+  await page.waitForFunction(() => window.planarium.state() === 'idle');
+  assert.ok((await visible()).includes('showRewires'));
+  await page.selectOption('#scenario', 'hex-trap');
+  await page.waitForFunction(() => document.getElementById('scenario-name').textContent.length > 0 && window.planarium.state() === 'idle');
+  await page.selectOption('#planner', 'hex-potential');
+  await page.waitForFunction(() => window.planarium.state() === 'idle');
+  const hex = await visible();
+  assert.ok(hex.includes('showCells') && hex.includes('showHeat') && !hex.includes('showRejected'), hex.join());
+  assert.match(await page.textContent('#overlays-note'), /^\d+ more apply to other planners or set-ups\.$/);
+  // three main parameters in view; the rest behind "More parameters"
+  const params = await page.evaluate(() => [...document.querySelectorAll('#planner-params label.field')].length);
+  assert.ok(params <= 3, `${params} main parameters`);
+  assert.match(await page.textContent('#more-params summary'), /^More parameters \(\d+\)/);
+  await page.close();
+});
+
+test('Run 20 seeds in the playground: success and medians, and a seed opens on a click', async () => {
+  const { page } = await open({ width: 1280, height: 800 });
+  await page.click('#run-seeds');
+  await page.waitForFunction(() => /solved \d+ of 20/.test(document.getElementById('trials-status').textContent), null, { timeout: 120000 });
+  const table = await page.evaluate(() => Object.fromEntries([...document.querySelectorAll('#trials tr')].map((tr) => [tr.cells[0].textContent, tr.cells[1].textContent])));
+  assert.match(table.Solved, /^\d+ of 20$/);
+  assert.match(table['Median nodes'], /^[\d,]+$/);
+  const dots = await page.$$eval('#trial-dots button', (bs) => bs.map((b) => Number(b.dataset.seed)));
+  assert.deepEqual(dots, Array.from({ length: 20 }, (_, i) => 1 + i), 'seeds 1 … 20');
+  // the medians are the medians of what the dots say (their titles carry each run's nodes)
+  const nodes = await page.$$eval('#trial-dots button.solved', (bs) => bs.map((b) => Number(/, ([\d,]+) nodes/.exec(b.title)[1].replace(/,/g, ''))));
+  nodes.sort((a, b) => a - b);
+  const m = nodes.length % 2 ? nodes[nodes.length >> 1] : (nodes[nodes.length / 2 - 1] + nodes[nodes.length / 2]) / 2;
+  assert.equal(Number(table['Median nodes'].replace(/,/g, '')), m);
+  await page.screenshot({ path: `${SHOTS}/learn-seeds.png` });
+  await page.click('#trial-dots button[data-seed="12"]');
+  await page.waitForFunction(() => document.getElementById('seed').value === '12' && window.planarium.state() === 'idle');
+  assert.match(await page.textContent('#run-status'), /seed 12\./);
+  await page.close();
+});
+
+test('Compare from the playground\'s link, with 20 seeds', async () => {
+  const { page } = await open({ width: 1280, height: 800 });
+  await page.waitForFunction(() => /#.*scenario=open-field/.test(document.getElementById('to-compare').getAttribute('href')));
+  await page.click('#to-compare');
+  await page.waitForURL(/compare\.html#/);
+  await page.waitForFunction(() => window.planarium?.state() === 'idle', null, { timeout: 30000 });
+  await page.click('#run-seeds');
+  await page.waitForFunction(() => !document.getElementById('seeds-table').hidden && /^\d+ runs done$/.test(document.getElementById('seeds-status').textContent)
+    && !document.getElementById('run-seeds').disabled, null, { timeout: 180000 });
+  assert.ok(await page.evaluate(() => document.querySelectorAll('#seeds-table tbody tr').length >= 4));
+  await page.screenshot({ path: `${SHOTS}/learn-compare-seeds.png` });
+  await page.close();
+});
