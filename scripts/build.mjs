@@ -10,7 +10,7 @@ import { fileURLToPath } from 'node:url';
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 const cargoBin = join(process.env.HOME || '/root', '.cargo', 'bin');
 if (!process.env.PATH.split(':').includes(cargoBin)) process.env.PATH = `${cargoBin}:${process.env.PATH}`;
-const cmd = 'wasm-pack build --target web --release --out-dir www/pkg --no-typescript --no-pack -- --no-default-features';
+const cmd = 'wasm-pack build --target web --release --out-dir www/pkg --no-pack -- --no-default-features';
 console.log(`[build] ${cmd}`);
 execSync(cmd, { stdio: 'inherit', cwd: root });
 

@@ -48,6 +48,7 @@ const CHECKING_SAMPLERS = new Set(['gaussian', 'bridge', 'obstacle']);
  * inspection}: sampling overlays for the sampling planners, the tree variants' when they are on,
  * cells and fields for the workspace planners, the sensor's for inspection. Unknown: shown.
  */
+/** @param {string} option @param {{config?: {planner: string, params?: Record<string, any>}, robot?: string, inspection?: boolean}} [context] */
 export function overlayApplies(option, { config, inspection = false } = {}) {
   const planner = config?.planner;
   if (!planner) return true;

@@ -50,6 +50,7 @@ export class View {
     this.scenario = null;
     this.start = [];
     this.goal = [];
+    /** @type {Record<string, boolean>} the overlays shown (palette.js OVERLAYS) and animateRaw */
     this.options = { ...OVERLAY_DEFAULTS, animateRaw: false };
     this.preview = { start: null, goal: null }; // states being edited (drawn instead of start/goal)
     this.editable = false;                       // draw the rotation handles of a rigid body
@@ -66,6 +67,7 @@ export class View {
   clearRun() {
     this.markers = [];
     this.lastSample = null;
+    /** @type {number[] | null} */
     this.pendingSample = null; // the latest SAMPLE, until a rejection or the next sample says what it was
     this.flashes = [];
     this.path = null;
@@ -271,6 +273,7 @@ export class View {
   /** The colour of tree `k`'s records: 0 or 1 (hex-potential's trees are its attempts: all 0). */
   treeGroup(k) { return k > 0 && !(this.model?.cells.regions.length) ? 1 : 0; }
 
+  /** @param {CanvasRenderingContext2D} ctx @param {number[]} at the sample's point */
   drawAccepted(ctx, [x, y]) {
     const L = this.layout;
     const s = Math.max(2, Math.round(L.px(2.5)));

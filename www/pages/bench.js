@@ -19,6 +19,12 @@ import { downloadText } from '../draw/stage.js';
 import { el } from '../ui/dom.js';
 import { setupLine, setupLines, readPageState, wholeIn, checkSetups, coreError, pageHash, playgroundLink, readChosenFile, differingParams, MAX_SETUPS } from '../ui/setups.js';
 
+/**
+ * The page's element `id`. Its kind is the HTML's (input, select, button, canvas, dialog…), so it
+ * is typed loosely here and checked by the browser tests.
+ * @param {string} id
+ * @returns {any}
+ */
 const $ = (id) => document.getElementById(id);
 const ui = {
   scenario: $('scenario'), setups: $('setups'), runs: $('runs'), workers: $('workers'),
@@ -54,8 +60,8 @@ function showError(text) {
 }
 
 function newWorker() {
-  const w = new Worker(new URL('../worker/bench-worker.js', import.meta.url), { type: 'module' });
-  w.busy = null;
+  /** @type {Worker & {busy: any}} */
+  const w = Object.assign(new Worker(new URL('../worker/bench-worker.js', import.meta.url), { type: 'module' }), { busy: null });
   w.onmessage = (e) => onWorkerMessage(w, e.data);
   w.onerror = (e) => { e.preventDefault(); onWorkerMessage(w, { type: 'crashed', id: w.busy?.id, message: e.message || 'worker error' }); };
   return w;
@@ -227,6 +233,7 @@ function show(r) {
 
 /** The plots of report `r`, on log axes where the values span decades unless the box is unticked. */
 function drawPlots(r) {
+  /** @type {{scale: 'auto' | 'linear'}} */
   const opt = { scale: ui.logAxes.checked ? 'auto' : 'linear' };
   closePop();
   const groups = (f, solvedOnly = false) => r.setups.map((s) => ({ label: s.label, values: s.rows.filter((x) => !solvedOnly || x.solved).map(f) }));
@@ -495,7 +502,7 @@ setRunning(false);
 ui.status.textContent = 'Ready';
 document.body.dataset.state = 'idle';
 
-window.planarium = Object.freeze({
+Object.defineProperty(window, 'planarium', { value: Object.freeze({
   state: () => document.body.dataset.state,
   report: () => report && JSON.parse(JSON.stringify(report)),
   curves: () => JSON.parse(JSON.stringify(curves)),
@@ -503,4 +510,4 @@ window.planarium = Object.freeze({
   scenario: () => current && { id: current.id, name: current.name, builtin: !!current.source.id },
   setups: () => { try { return JSON.parse(parseSetups(ui.setups.value)); } catch { return null; } },
   dots: () => dots.map((d) => ({ ...d, seed: dotRows[d.series]?.[d.index]?.seed })),
-});
+}), writable: false, configurable: false });

@@ -28,6 +28,12 @@ import { quartiles } from '../draw/plots.js';
 import { el } from '../ui/dom.js';
 import { setupLine, readPageState, checkSetups, pageHash, playgroundLink, readChosenFile, differingParams } from '../ui/setups.js';
 
+/**
+ * The page's element `id`. Its kind is the HTML's (input, select, button, canvas, dialog…), so it
+ * is typed loosely here and checked by the browser tests.
+ * @param {string} id
+ * @returns {any}
+ */
 const $ = (id) => document.getElementById(id);
 const ui = {
   scenario: $('scenario'), seed: $('seed'), seedHint: $('seed-hint'), error: $('error'), errorText: $('error-text'),
@@ -291,8 +297,8 @@ function runSeeds() {
   seedJob = { setups, lines: sides.map(lineOf), first: seed, text: scenarioText, queue, rows: [[], []], done: 0, total: queue.length, workers: [] };
   const n = Math.max(1, Math.min(2, navigator.hardwareConcurrency || 2));
   for (let w = 0; w < n; w++) {
-    const worker = new Worker(new URL('../worker/bench-worker.js', import.meta.url), { type: 'module' });
-    worker.busy = null;
+    /** @type {Worker & {busy: any}} */
+    const worker = Object.assign(new Worker(new URL('../worker/bench-worker.js', import.meta.url), { type: 'module' }), { busy: null });
     worker.onmessage = (e) => onSeedMessage(worker, e.data);
     worker.onerror = (e) => { e.preventDefault(); onSeedMessage(worker, { type: 'crashed', message: e.message || 'worker error' }); };
     seedJob.workers.push(worker);
@@ -380,6 +386,7 @@ function finishSeeds() {
     length: median(rows.filter((r) => r.solved).map((r) => r.cost)),
   }));
   // the better set-up per metric: higher success, lower medians; none on a tie or without values
+  /** @type {Array<[string, string, (p: any) => string, number]>} key, label, shown as, sign (1: higher is better) */
   const METRICS = [
     ['success', 'success', (p) => `${Math.round(100 * p.success)}% (${p.solved}/${p.runs})`, 1],
     ['time_ms', 'time (ms)', (p) => num(p.time_ms), -1],

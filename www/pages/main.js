@@ -33,6 +33,12 @@ import { readShare, setupFor, writeShare, checkLink, boundedProblems, cut, VIEW_
 import { OVERLAYS } from '../draw/palette.js';
 import { applyPageLimits } from '../run/limits.js';
 
+/**
+ * The page's element `id`. Its kind is the HTML's (input, select, button, canvas, dialog…), so it
+ * is typed loosely here and checked by the browser tests.
+ * @param {string} id
+ * @returns {any}
+ */
 const $ = (id) => document.getElementById(id);
 const ui = {
   scenario: $('scenario'), file: $('file'), error: $('error'), errorText: $('error-text'), errorClose: $('error-close'),
@@ -65,6 +71,7 @@ let loaded = null;       // the latest `loaded` message's scenario
 let applyDefaults = false;
 // Share links: where the scenario came from ({id}: a built-in as shipped; {custom}: edited or
 // opened), the share being restored (applied when its scenario has loaded), and the hash writer.
+/** @type {{id?: string, custom?: boolean} | null} */
 let source = null;
 let restoring = null;    // a readShare() result waiting for its scenario
 let restoreNotes = [];   // its problems, shown once the scenario has loaded
@@ -179,6 +186,9 @@ function openDefaultScenario() {
  * Send a scenario (or, with `file`, any file the core imports) to the worker. `source`: {id} for
  * a built-in as shipped, {custom: true} for anything else (an edit, a file, a link's JSON: the
  * default for an edit or a file); left out otherwise, it stays (a reload after a crash).
+ * @param {string} text
+ * @param {boolean} defaults
+ * @param {{course?: string, edit?: boolean, file?: string | null, source?: {id?: string, custom?: boolean}}} [options]
  */
 function load(text, defaults, { course: c = course, edit = false, file = null, source: s = edit || file ? { custom: true } : undefined } = {}) {
   sentEdit = edit;

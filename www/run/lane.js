@@ -15,6 +15,7 @@ export class Lane {
    * is finished), `finished()` whether the page is in its finished state (a late batch is then
    * shown at once), and `changed()` when the stats changed.
    */
+  /** @param {{playback: any, views: any[], chart?: any, hooks?: Record<string, Function>}} options */
   constructor({ playback, views, chart = null, hooks = {} }) {
     this.playback = playback;
     this.views = views;

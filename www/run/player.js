@@ -18,6 +18,7 @@ export class Player {
    * stopped, changed} as lane.js's (the player does the controller's part of error / stopped and
    * the run's bookkeeping), plus `frame(time)` after the views were drawn.
    */
+  /** @param {{playback: any, views: any[], chart?: any, rate?: () => number, fps?: () => number, hooks?: Record<string, Function>}} options */
   constructor({ playback, views, chart = null, rate = () => Infinity, fps = () => 10, hooks = {} }) {
     this.controller = new Controller('loading');
     this.playback = playback;

@@ -147,6 +147,7 @@ export class WorkerSession {
     clearTimeout(this.watchdog);
   }
 
+  /** @param {import('./messages.js').WorkerOut} msg */
   onMessage(msg) {
     const h = this.hooks;
     switch (msg.type) {
@@ -179,7 +180,7 @@ export class WorkerSession {
         return;
       case 'crashed': this.recover(msg.message); return;
       default:
-        console.warn('unknown message from the worker', msg.type);
+        console.warn('unknown message from the worker', /** @type {any} */ (msg).type); // a worker newer than the page
     }
   }
 }

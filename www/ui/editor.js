@@ -21,7 +21,14 @@ export class Editor {
    * `onCommit(scenario)`: it changed.
    */
   constructor({ canvas, view, root, palette, onPreview, onCommit }) {
-    Object.assign(this, { canvas, view, root, palette, onPreview, onCommit });
+    this.canvas = canvas;
+    this.view = view;
+    this.root = root;
+    this.palette = palette;
+    this.onPreview = onPreview;
+    this.onCommit = onCommit;
+    /** @type {(() => void) | null} set by the obstacle editor: records its undo history */
+    this.beforeCommit = null;
     this.scenario = null; // the scenario being edited (the last one sent to the worker)
     this.original = null; // as opened, for "Restore"
     this.stale = false;   // another scenario is being loaded: ignore edits of this one

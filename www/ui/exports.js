@@ -172,6 +172,7 @@ export function recordCanvas(canvas, fps = 30) {
  * to `view` and its `canvas`; `stem()` names the files.
  */
 export function wireExports({ view, canvas, stem }) {
+  /** @param {string} id @returns {any} the page's element (an input or button) */
   const $ = (id) => document.getElementById(id);
   const status = $('export-status');
   const say = (text) => { status.textContent = text; };

@@ -136,6 +136,8 @@ function safeDecode(text) {
  * `#a=1&b&c=x` → [[key, value or null], ...] (decoded; pairs that do not decode are reported). At
  * most MAX_PAIRS pairs are read (the rest are counted in one problem); a hash over MAX_HASH_CHARS
  * is not read at all. `problems`: anything with push(text).
+ * @param {string} hash
+ * @param {{push: (...texts: string[]) => any}} [problems]
  */
 export function parsePairs(hash, problems = []) {
   const text = String(hash ?? '').replace(/^#/, '');
@@ -461,6 +463,10 @@ export function overlayOptions(overlays = {}) {
  * {speed, anim, rawPath, stepSize}; `registry` to leave out parameters at their defaults. `extra`:
  * more [key, value | null] pairs (embed options). `encoded`: a cache (Map) of scenario texts'
  * encodings.
+ * @param {{scenario: {id?: string, text?: string}, config?: any, overlays?: Record<string, boolean>,
+ *   view?: {speed?: number, anim?: number, rawPath?: boolean, stepSize?: number}, extra?: Array<[string, any]>}} state
+ * @param {any} registry
+ * @param {Map<string, string> | null} [encoded]
  */
 export async function writeShare({ scenario, config, overlays = {}, view = {}, extra = [] }, registry, encoded = null) {
   const pairs = [];

@@ -115,7 +115,11 @@ export class ObstacleEditor {
    * toolbar goes. The view draws the selection through `view.overlayHooks`.
    */
   constructor({ canvas, view, editor, root, download }) {
-    Object.assign(this, { canvas, view, editor, root, download });
+    this.canvas = canvas;
+    this.view = view;
+    this.editor = editor;
+    this.root = root;
+    this.download = download;
     this.tool = 'select';
     this.selected = -1;
     this.drag = null;

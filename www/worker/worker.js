@@ -254,6 +254,7 @@ function guarded(fn) {
   }
 }
 
+/** @param {MessageEvent<import('../run/messages.js').WorkerIn>} e */
 self.onmessage = async (e) => {
   if (e.data?.ack != null) post({ type: 'ack', ack: e.data.ack }); // read, even before the core is ready
   try {
