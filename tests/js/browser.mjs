@@ -27,6 +27,20 @@ export async function startBrowser() {
 }
 
 /**
+ * Open every closed section of the page (the sidebar's "Overlays", "Edit the map", "Export for
+ * slides"… and the panels' "More parameters"), as a person does before using what is inside:
+ * most tests are about what the sections hold, not about the first screen (page-learn.test.mjs
+ * checks that, with the sections closed).
+ */
+export async function openSections(page) {
+  for (;;) {
+    const closed = page.locator('details:not([open]) > summary').filter({ visible: true });
+    if (!(await closed.count())) return;
+    await closed.first().click();
+  }
+}
+
+/**
  * Register the hooks of a page test file: one browser and server for the file, a fresh page on
  * the playground (waited until idle) for each test, page errors failing the test. Returns the
  * fixture: `fx.page` (the current page) and helpers that wait on it.
@@ -107,6 +121,7 @@ export async function pageFixture() {
     });
     await fx.page.goto(fx.env.base);
     await fx.waitState('idle', 30000);
+    await openSections(fx.page);
   });
   afterEach(async () => {
     await fx.page?.close();

@@ -8,7 +8,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import {
   readShare, writeShare, decodeScenario, encodeScenario, parsePairs, toBase64url, boundedProblems,
-  MAX_PAIRS, MAX_PROBLEMS, MAX_HASH_CHARS, MAX_SCENARIO_BYTES,
+  MAX_PAIRS, MAX_PROBLEMS, MAX_HASH_CHARS, MAX_SCENARIO_BYTES, VIEW_DEFAULTS,
 } from '../../www/ui/links.js';
 
 const SEED = 0x5eed13;
@@ -151,7 +151,7 @@ test(`share-link reader: ${INPUTS} seeded inputs, no throw, bounded time and pro
       assert.deepEqual(share.problems, [], `a valid link reads without problems: ${hash.slice(0, 120)}`);
       assert.deepEqual(share.scenario, valid.text === null ? { id: 'narrow' } : { text: valid.text });
       assert.equal(share.seed, valid.seed);
-      assert.equal(share.view.speed ?? 60, valid.speed);
+      assert.equal(share.view.speed ?? VIEW_DEFAULTS.speed, valid.speed);
       readBack++;
     }
     // the pieces alone
