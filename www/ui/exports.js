@@ -8,7 +8,7 @@
 import { PALETTE, STYLE } from '../draw/palette.js';
 import { EventKind, STRIDE } from '../run/events.js';
 import { View } from '../draw/view.js';
-import { Layout, drawObstacle } from '../draw/transform.js';
+import { Layout, drawObstacle, pointInPolygon } from '../draw/transform.js';
 import { robotStyle, outlineOf } from '../draw/robots.js';
 import { downloadBlob } from '../draw/stage.js';
 import { fixWebm } from './webm.js';
@@ -410,9 +410,13 @@ function cellsSvg(svg, view, L) {
       let d = '';
       for (const c of marks) {
         const r = Math.max(2.5, Math.min(6, 0.3 * c.radius * L.scale));
-        let x = 0, y = 0, n = 0;
-        for (let i = 0; i + 1 < c.pts.length; i += 2) { x += c.pts[i]; y += c.pts[i + 1]; n++; }
-        const sx = L.sx(n ? x / n : c.x), sy = L.sy(n ? y / n : c.y);
+        let x = c.x, y = c.y; // the cell's centre, else its corners' mean (as cells.js centreOf)
+        if (!pointInPolygon(x, y, c.pts)) {
+          x = 0; y = 0;
+          for (let i = 0; i + 1 < c.pts.length; i += 2) { x += c.pts[i]; y += c.pts[i + 1]; }
+          x /= c.pts.length / 2; y /= c.pts.length / 2;
+        }
+        const sx = L.sx(x), sy = L.sy(y);
         d += `M${fmt(sx - r)} ${fmt(sy - r)}L${fmt(sx + r)} ${fmt(sy + r)}M${fmt(sx - r)} ${fmt(sy + r)}L${fmt(sx + r)} ${fmt(sy - r)}`;
       }
       const mg = node('g', { id: 'cell-marks', fill: 'none' }, svg);
@@ -550,9 +554,9 @@ function legendSvg(svg, items, width, top) {
  * free space, obstacles and bounds; cells (with the obstacles veiled over them); samples and
  * tries, dynamic domains, trees, blocked motions (each when its overlay is on); inspection
  * points, start and goal, markers, the best branch, the region of influence and local minima,
- * the raw and smoothed paths and the robot where the canvas shows it. Not drawn: the heat map,
- * descent arrows, rewire flashes, the sensor's wedge and the t/2 circle. `legend`: items under
- * the picture; `transparent`: no background or free-space fill.
+ * the raw and smoothed paths, the robot where the canvas shows it and its t/2 circle. Not
+ * drawn: the heat map, descent arrows, rewire flashes and the sensor's wedge. `legend`: items
+ * under the picture; `transparent`: no background or free-space fill.
  */
 export function sceneSvg(view, { legend = null, transparent = false } = {}) {
   const sc = view.scenario;
@@ -611,6 +615,10 @@ export function sceneSvg(view, { legend = null, transparent = false } = {}) {
   if (k >= 0) {
     const list = view.options.animateRaw && view.rawFrames.length ? view.rawFrames : view.frames;
     robotSvg(svg, L, sc.robot, list[k].polys, list[k].state, robotStyle(null, 'robot', PALETTE), 'robot');
+    const m = view.model?.cells, q = list[k].state;
+    if (m && view.options.showRegion && q?.length >= 2 && m.t > 0) { // the robot's t/2 circle (cells.js drawRobotT)
+      node('circle', { id: 'robot-t', cx: fmt(L.sx(q[0])), cy: fmt(L.sy(q[1])), r: fmt((m.t / 2) * L.scale), fill: 'none', ...stroke(PALETTE.robotT, 1.5, [4, 3]) }, svg);
+    }
   }
   if (legendHeight) legendSvg(svg, legend, w, h);
   return `<?xml version="1.0" encoding="UTF-8"?>\n${new XMLSerializer().serializeToString(svg)}\n`;
@@ -695,7 +703,7 @@ export async function recordGif(view, { width, frames, fps = LIMITS.gif.fps, ani
   try {
     ev.follow(width);
     const t0 = performance.now(), step = 1000 / fps;
-    let writer = null, taken = 0;
+    let writer = null, taken = 0, reader = null, readCtx = null;
     for (let k = 0; k < frames && !cancelled(); k++) {
       const due = t0 + k * step;
       const wait = due - performance.now();
@@ -703,8 +711,15 @@ export async function recordGif(view, { width, frames, fps = LIMITS.gif.fps, ani
       ev.follow(width);
       ev.draw(due, animFps());
       const pic = withLegend(ev.canvas, legend, ev.dpr, false);
+      if (!reader) {
+        reader = document.createElement('canvas');
+        reader.width = pic.width;
+        reader.height = pic.height;
+        readCtx = reader.getContext('2d', { willReadFrequently: true });
+      }
+      readCtx.drawImage(pic, 0, 0);
       writer ??= new GifWriter(pic.width, pic.height, paletteColours());
-      writer.add(pic.getContext('2d').getImageData(0, 0, pic.width, pic.height), Math.round(100 / fps));
+      writer.add(readCtx.getImageData(0, 0, pic.width, pic.height), Math.round(100 / fps));
       taken++;
       onFrame?.(taken);
     }
