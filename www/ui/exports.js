@@ -18,7 +18,7 @@ const SVG_NS = 'http://www.w3.org/2000/svg';
 
 /** Bounds of what a user may ask for (the fields say so too). */
 export const LIMITS = Object.freeze({
-  png: { min: 100, max: 8000, pixels: 36e6 },
+  png: { min: 100, max: 8000, pixels: 16e6 }, // an export draws seven layers at this size: ~450 MB at the most
   video: { min: 320, max: 3840, pixels: 3840 * 2160 },
   gif: { min: 160, max: 1024, frames: [2, 150], fps: 10 },
 });
@@ -193,11 +193,13 @@ function drawMark(ctx, s, x, y, { color, shape }) {
 }
 
 /**
- * `picture` (a canvas) with the legend `items` drawn under it (css px scaled by `scale`), on the
+ * `picture` (a canvas) with the legend `items` drawn under it (css px scaled like the picture,
+ * `pictureScale` device px per css px, but never smaller than css px), on the
  * page's background unless `transparent`. Returns a new canvas (the picture when there is no legend).
  */
-function withLegend(picture, items, scale, transparent) {
+function withLegend(picture, items, pictureScale, transparent) {
   if (!items?.length) return picture;
+  const scale = Math.max(1, pictureScale); // a small picture keeps a legend one can read
   const cssWidth = picture.width / scale;
   const lay = legendLayout(items, cssWidth, measure);
   const out = document.createElement('canvas');
