@@ -331,3 +331,27 @@ test('odd sizes typed into the export fields are bounded, and the status says so
   await page.locator('#h-export').scrollIntoViewIfNeeded();
   await page.locator('section[aria-labelledby="h-export"]').screenshot({ path: join(SHOTS, 'exports-controls.png') });
 });
+
+test('a GIF taken while a run grows follows it (the export view draws the records as they come)', async () => {
+  await fx.pickScenario('narrow', 'Narrow passage');
+  await page.fill('#gif-width', '240');
+  await page.fill('#gif-frames', '25');
+  await watchCanvas();
+  const [d] = await Promise.all([page.waitForEvent('download', { timeout: 120000 }), (async () => {
+    await page.click('#export-gif'); // the first frame is taken at once: before the run
+    await page.click('#run');
+  })()]);
+  const g = decodeGif(readFileSync(await d.path()));
+  assert.equal(g.frames.length, 25);
+  const P = await page.evaluate(async () => (await import('./draw/palette.js')).PALETTE);
+  const tree = (f) => {
+    const [r, gg, b] = rgb(P.tree0);
+    let n = 0;
+    for (const k of f.indices) if (g.palette[3 * k] === r && g.palette[3 * k + 1] === gg && g.palette[3 * k + 2] === b) n++;
+    return n;
+  };
+  const counts = g.frames.map(tree);
+  assert.equal(counts[0], 0, 'no tree before the run');
+  assert.ok(counts[24] > 50, `the tree grows in the GIF: ${counts.join(' ')}`);
+  assert.equal(await canvasChanges(), 0, 'the visible canvas was not resized');
+});
