@@ -139,10 +139,12 @@ async function saveSideBySide(name, pics, w, h) {
 
 test('SVG looks like the canvas: rasterised, it matches the PNG drawn at the same size', async () => {
   const cases = [['narrow', 'Narrow passage'], ['slot', 'Turn to pass the slot'], ['arm-2', 'Two-link arm and its configuration space'],
-    ['hex-trap-modified', 'Hexagons: the trap, modified potential']];
+    ['hex-trap-modified', 'Hexagons: the trap, modified potential'],
+    ['hex-trap-modified', 'Hexagons: the trap, modified potential', ['show-heat', 'show-arrows']]];
   const P = await page.evaluate(async () => (await import('./draw/palette.js')).PALETTE);
-  for (const [id, name] of cases) {
+  for (const [id, name, overlays] of cases) {
     await solve(id, name);
+    for (const box of overlays ?? []) await page.check(`#${box}`);
     // the robot stops where it is: both exports draw the frame the canvas shows, which must not change between them
     await page.$eval('#anim-speed', (el) => { el.value = el.min; el.dispatchEvent(new Event('input', { bubbles: true })); });
     const w = await page.$eval('#canvas', (c) => Math.round(parseFloat(c.style.width)));
@@ -162,7 +164,7 @@ test('SVG looks like the canvas: rasterised, it matches the PNG drawn at the sam
       d[i] = d[i + 1] = d[i + 2] = 255 - Math.min(255, e * 2); d[i + 3] = 255;
     }
     const mean = diff / (a.data.length / 4) / 3;
-    await saveSideBySide(`exports-svg-vs-png-${id}.png`, [a.data, b.data, d], w, h);
+    await saveSideBySide(`exports-svg-vs-png-${id}${overlays ? '-heat' : ''}.png`, [a.data, b.data, d], w, h);
     assert.ok(mean < 4, `${id}: mean colour difference ${mean.toFixed(2)} per channel`);
     assert.ok(far / (w * h) < 0.01, `${id}: ${far} pixels differ a lot`);
     // the same colours, in about the same amounts

@@ -10,6 +10,7 @@ import { EventKind, STRIDE } from '../run/events.js';
 import { View } from '../draw/view.js';
 import { Layout, drawObstacle, pointInPolygon } from '../draw/transform.js';
 import { robotStyle, outlineOf } from '../draw/robots.js';
+import { heatScale } from '../draw/cells.js';
 import { downloadBlob } from '../draw/stage.js';
 import { fixWebm } from './webm.js';
 import { GifWriter, hexRgb } from './gif.js';
@@ -389,42 +390,100 @@ function samplesSvg(svg, view, L) {
   }
 }
 
-/** The cells of a decomposition (cells.js drawCells), their × marks and the veil over them. */
+/** The cells' × marks (step-blocked cells) of cells `list`, as path data. */
+function cellMarksD(L, list) {
+  let d = '';
+  for (const c of list) {
+    const r = Math.max(2.5, Math.min(6, 0.3 * c.radius * L.scale));
+    let x = c.x, y = c.y; // the cell's centre, else its corners' mean (as cells.js centreOf)
+    if (!pointInPolygon(x, y, c.pts)) {
+      x = 0; y = 0;
+      for (let i = 0; i + 1 < c.pts.length; i += 2) { x += c.pts[i]; y += c.pts[i + 1]; }
+      x /= c.pts.length / 2; y /= c.pts.length / 2;
+    }
+    const sx = L.sx(x), sy = L.sy(y);
+    d += `M${fmt(sx - r)} ${fmt(sy - r)}L${fmt(sx + r)} ${fmt(sy + r)}M${fmt(sx - r)} ${fmt(sy + r)}L${fmt(sx + r)} ${fmt(sy - r)}`;
+  }
+  return d;
+}
+
+const cellPoints = (L, c) => pairs(c.pts).map(([x, y]) => `${fmt(L.sx(x))},${fmt(L.sy(y))}`).join(' ');
+
+/**
+ * The cells layer (cells.js redraw): cells filled by label and level or verdict, × marks; the
+ * heat map over them, then the judged cells' outlines and marks again; descent arrows; then the
+ * obstacles veiled over it all.
+ */
 function cellsSvg(svg, view, L) {
   const m = view.model?.cells;
   const o = view.options;
   if (!m || !view.cells.active(o)) return;
   const st = STYLE[EventKind.CELL];
+  const level = (c) => Math.min(3, Math.max(0, c.level | 0));
+  const marks = (ids, id) => {
+    const d = cellMarksD(L, ids.map((k) => m.cells.get(k)).filter((c) => c?.done && c.state === 1));
+    if (!d) return;
+    const mg = node('g', { id, fill: 'none' }, svg);
+    node('path', { d, ...stroke('#ffffff', 3.5) }, mg);
+    node('path', { d, ...stroke(PALETTE.cellBlockedMark, 1.75) }, mg);
+  };
   if (o.showCells) {
     const g = node('g', { id: 'cells' }, svg);
-    const marks = [];
     for (const id of m.order) {
       const c = m.cells.get(id);
       if (!c || !c.done) continue;
-      const level = Math.min(3, Math.max(0, c.level | 0));
-      let f = c.label === 1 ? PALETTE.cellMixed : c.label === 2 || c.state === 4 ? PALETTE.cellFull : PALETTE.cellFree[level];
+      let f = c.label === 1 ? PALETTE.cellMixed : c.label === 2 || c.state === 4 ? PALETTE.cellFull : PALETTE.cellFree[level(c)];
       if (!o.showHeat && c.state === 2) f = PALETTE.cellVisited;
       if (!o.showHeat && c.state === 1) f = PALETTE.cellBlocked;
-      node('polygon', { points: pairs(c.pts).map(([x, y]) => `${fmt(L.sx(x))},${fmt(L.sy(y))}`).join(' '), ...fill(f), ...stroke(PALETTE.cellEdge, st.widths[level]) }, g);
-      if (c.state === 1) marks.push(c);
+      node('polygon', { points: cellPoints(L, c), ...fill(f), ...stroke(PALETTE.cellEdge, st.widths[level(c)]) }, g);
     }
-    if (marks.length) {
-      let d = '';
-      for (const c of marks) {
-        const r = Math.max(2.5, Math.min(6, 0.3 * c.radius * L.scale));
-        let x = c.x, y = c.y; // the cell's centre, else its corners' mean (as cells.js centreOf)
-        if (!pointInPolygon(x, y, c.pts)) {
-          x = 0; y = 0;
-          for (let i = 0; i + 1 < c.pts.length; i += 2) { x += c.pts[i]; y += c.pts[i + 1]; }
-          x /= c.pts.length / 2; y /= c.pts.length / 2;
-        }
-        const sx = L.sx(x), sy = L.sy(y);
-        d += `M${fmt(sx - r)} ${fmt(sy - r)}L${fmt(sx + r)} ${fmt(sy + r)}M${fmt(sx - r)} ${fmt(sy + r)}L${fmt(sx + r)} ${fmt(sy - r)}`;
+    marks(m.order, 'cell-marks');
+  }
+  if (o.showHeat && m.field.length) {
+    const bin = heatScale(m.field);
+    const byColour = new Map();
+    for (const s of m.field) {
+      const k = bin(s.v);
+      const col = k < 0 ? PALETTE.obstacle : PALETTE.heat[k];
+      if (!byColour.has(col)) byColour.set(col, []);
+      byColour.get(col).push(s);
+    }
+    const hex = m.cells.size > 0;
+    const g = node('g', { id: 'heat' }, svg);
+    for (const [col, list] of byColour) {
+      const d = list.map((s) => {
+        const c = hex ? m.cells.get(s.id) : null;
+        if (c && c.done) return polyD(L, c.pts);
+        const h = s.half * L.scale;
+        return squareD(L.sx(s.x) - h, L.sy(s.y) - h, 2 * h);
+      }).join('');
+      node('path', { d, ...fill(col), ...(hex ? stroke(PALETTE.cellEdge, 0.75) : {}) }, g);
+    }
+    if (o.showCells) { // the judged cells' outlines and marks, over the heat map
+      const g2 = node('g', { id: 'judged', fill: 'none' }, svg);
+      for (const id of m.changed) {
+        const c = m.cells.get(id);
+        if (c?.done) node('polygon', { points: cellPoints(L, c), ...stroke(PALETTE.cellEdge, st.widths[level(c)]) }, g2);
       }
-      const mg = node('g', { id: 'cell-marks', fill: 'none' }, svg);
-      node('path', { d, ...stroke('#ffffff', 3.5) }, mg);
-      node('path', { d, ...stroke(PALETTE.cellBlockedMark, 1.75) }, mg);
+      marks(m.changed, 'judged-marks');
     }
+  }
+  if (o.showArrows && m.field.length) {
+    const gap = 14; // css px: cells.js ARROW_GAP
+    const taken = new Set();
+    let d = '';
+    for (const s of m.field) {
+      if (!(s.dx || s.dy)) continue;
+      const sx = L.sx(s.x), sy = L.sy(s.y);
+      const key = `${Math.floor(sx / gap)},${Math.floor(sy / gap)}`;
+      if (taken.has(key)) continue;
+      taken.add(key);
+      const len = Math.max(6, Math.min(18, 0.7 * s.half * L.scale));
+      const ex = sx + s.dx * len, ey = sy - s.dy * len;
+      const hx = -s.dx * len * 0.35, hy = s.dy * len * 0.35;
+      d += `M${fmt(sx)} ${fmt(sy)}L${fmt(ex)} ${fmt(ey)}M${fmt(ex + hx - hy * 0.6)} ${fmt(ey + hy + hx * 0.6)}L${fmt(ex)} ${fmt(ey)}L${fmt(ex + hx + hy * 0.6)} ${fmt(ey + hy - hx * 0.6)}`;
+    }
+    if (d) node('path', { id: 'arrows', d, fill: 'none', ...stroke(PALETTE.arrow, 1.1) }, svg);
   }
   const veil = node('g', { id: 'veil', 'fill-opacity': 0.6, 'stroke-opacity': 0.6 }, svg);
   for (const ob of view.scenario.obstacles) obstacleSvg(veil, L, ob);
@@ -556,9 +615,10 @@ function legendSvg(svg, items, width, top) {
  * free space, obstacles and bounds; cells (with the obstacles veiled over them); samples and
  * tries, dynamic domains, trees, blocked motions (each when its overlay is on); inspection
  * points, start and goal, markers, the best branch, the region of influence and local minima,
- * the raw and smoothed paths, the robot where the canvas shows it and its t/2 circle. Not
- * drawn: the heat map, descent arrows, rewire flashes and the sensor's wedge. `legend`: items
- * under the picture; `transparent`: no background or free-space fill.
+ * the raw and smoothed paths, the robot where the canvas shows it and its t/2 circle; the heat
+ * map and descent arrows when they are on. Not drawn: rewire flashes (they fade in 0.6 s) and
+ * the sensor's wedge. `legend`: items under the picture; `transparent`: no background or
+ * free-space fill.
  */
 export function sceneSvg(view, { legend = null, transparent = false } = {}) {
   const sc = view.scenario;
