@@ -519,8 +519,12 @@ const editor = new Editor({
 
 const obstacleEditor = new ObstacleEditor({ canvas: ui.canvas, view, editor, root: $('obstacle-tools'), download: downloadText });
 
-// Exports for slides (exports.js): PNG at a width, SVG, WebM
-wireExports({ view, canvas: ui.canvas, stem: () => (loaded?.name || 'planarium').replace(/[^\w.-]+/g, '-').toLowerCase() });
+// Exports for slides (exports.js): PNG at a width, SVG, GIF, WebM at a width; legend and transparency options
+wireExports({
+  view, stem: () => (loaded?.name || 'planarium').replace(/[^\w.-]+/g, '-').toLowerCase(),
+  legend: () => [...view.legend(panel?.planner()?.name), ...cellLegend(panel?.planner()?.name)],
+  animFps: () => player.fps(),
+});
 
 function syncDownload() {
   ui.download.hidden = !(loaded?.robot?.kind === 'asv' && lane.result?.solved && controller.state === 'finished');

@@ -1,46 +1,297 @@
-// Exports for slides: a PNG of the canvas at a chosen size, an SVG of the current picture (the
-// scene, cells, trees, paths, start and goal) and a WebM recording of the canvas (MediaRecorder).
-// Each returns a Blob; the page decides where it goes (a download link). No HTML from data: the
-// SVG is built with DOM calls and serialised.
+// Exports for slides: a PNG at a chosen width, an SVG drawn like the canvas, a WebM at a chosen
+// width with a real (seekable) duration, and an animated GIF of the playback. Each is drawn by an
+// ExportView: a second View over the same records and run model, on canvases of its own at the
+// export's size, so the visible canvas is never resized or redrawn for an export. Options: a
+// legend under the picture (PNG, SVG, GIF) and a transparent background (PNG, SVG; a GIF has no
+// alpha, a WebM neither). No HTML from data: the SVG is built with DOM calls and serialised.
 
-import { PALETTE } from '../draw/palette.js';
+import { PALETTE, STYLE } from '../draw/palette.js';
+import { EventKind, STRIDE } from '../run/events.js';
+import { View } from '../draw/view.js';
+import { Layout, drawObstacle, pointInPolygon } from '../draw/transform.js';
+import { robotStyle, outlineOf } from '../draw/robots.js';
+import { heatScale } from '../draw/cells.js';
 import { downloadBlob } from '../draw/stage.js';
+import { fixWebm } from './webm.js';
+import { GifWriter, hexRgb } from './gif.js';
 
 const SVG_NS = 'http://www.w3.org/2000/svg';
 
+/** Bounds of what a user may ask for (the fields say so too). */
+export const LIMITS = Object.freeze({
+  png: { min: 100, max: 8000, pixels: 16e6 }, // an export draws seven layers at this size: ~450 MB at the most
+  video: { min: 320, max: 3840, pixels: 3840 * 2160 },
+  gif: { min: 160, max: 1024, frames: [2, 150], fps: 10 },
+});
+
+const LEGEND_FONT = '12px system-ui, sans-serif';
+const LEGEND_TEXT = '#30343b';
+
 /**
- * The canvas redrawn `width` pixels wide (height by the scene's aspect) as a PNG Blob: the view
- * is laid out at that pixel ratio, rendered, copied, and restored.
+ * A View that follows another (`source`) at its own size: the same scenario, records, run model,
+ * options and result, laid out `width` pixels wide. `transparent`: no background and no white
+ * free space (the obstacles, bounds and run on nothing).
  */
-export async function pngBlob(view, width) {
-  const { box, dpr } = view;
-  if (!box || !view.layout) throw new Error('nothing to export yet');
-  const scale = width / view.css[0];
-  view.resize(box[0], box[1], scale);
-  view.dirty = true;
-  view.render(performance.now(), 1);
-  const out = document.createElement('canvas');
-  out.width = view.canvas.width;
-  out.height = view.canvas.height;
-  out.getContext('2d').drawImage(view.canvas, 0, 0);
-  view.resize(box[0], box[1], dpr);
-  view.dirty = true;
-  view.render(performance.now(), 1);
-  return new Promise((resolve, reject) => out.toBlob((b) => (b ? resolve(b) : reject(new Error('the PNG could not be made'))), 'image/png'));
+export class ExportView extends View {
+  constructor(source, transparent = false) {
+    super(document.createElement('canvas'), source.store, source.model);
+    this.source = source;
+    this.transparent = transparent;
+    this.drawnTo = 0;
+    this.seenMarkers = null;
+  }
+
+  drawScene() {
+    if (!this.transparent) { super.drawScene(); return; }
+    const { ctx } = this.sceneLayer;
+    const L = this.layout;
+    ctx.clearRect(0, 0, L.width, L.height);
+    if (!this.scenario) return;
+    const [x0, y0, x1, y1] = this.scenario.bounds;
+    for (const ob of this.scenario.obstacles) drawObstacle(ctx, L, ob);
+    ctx.strokeStyle = PALETTE.bounds;
+    ctx.lineWidth = L.px(1.5);
+    ctx.strokeRect(L.sx(x0), L.sy(y1), (x1 - x0) * L.scale, (y1 - y0) * L.scale);
+  }
+
+  /** The source's result and state shown (no drawing). */
+  copyResult() {
+    const s = this.source;
+    this.frames = s.frames;
+    this.rawFrames = s.rawFrames;
+    this.path = s.path;
+    this.smoothed = s.smoothed;
+    this.preview = s.preview;
+    this.lastSample = s.lastSample;
+  }
+
+  /**
+   * Catch up with the source: laid out `width` px wide on the first call (the box is kept after
+   * that, so a recording keeps its size when the page is resized), new records drawn, a cleared
+   * or redrawn run redrawn from the store.
+   */
+  follow(width) {
+    const s = this.source;
+    if (!s.layout || !s.box || !s.scenario) throw new Error('nothing to export yet: load a scenario first');
+    const rebuild = !this.layout || this.scenario !== s.scenario || this.start !== s.start || this.goal !== s.goal;
+    if (rebuild) {
+      this.scenario = s.scenario;
+      this.start = s.start;
+      this.goal = s.goal;
+      this.clearRun();
+      Object.assign(this.options, s.options);
+      this.copyResult();
+      this.showResult = s.showResult;
+      this.seenMarkers = s.markers;
+      // lays out, draws the scene and every record (a later scenario keeps the first box and scale)
+      if (!this.box) this.resize(s.box[0], s.box[1], width / s.css[0]); else this.relayout();
+      this.drawnTo = this.store.length;
+      return;
+    }
+    this.setOptions(s.options);
+    if (s.markers !== this.seenMarkers || this.store.length < this.drawnTo) {
+      // the source cleared its run (a new run) or redrew it: so do we
+      this.clearRun();
+      this.copyResult();
+      this.showResult = s.showResult;
+      this.seenMarkers = s.markers;
+      this.redrawTree();
+      this.drawnTo = this.store.length;
+      return;
+    }
+    if (this.store.length > this.drawnTo) {
+      this.drawRecords(this.drawnTo, this.store.length);
+      this.drawnTo = this.store.length;
+    }
+    this.copyResult();
+    if (s.showResult && !this.showResult) {
+      this.showResult = true;
+      this.finishRun();
+    } else this.showResult = s.showResult;
+  }
+
+  /** Render the picture at `time` (ms) with `animFps` robot frames a second. */
+  draw(time, animFps) {
+    this.dirty = true;
+    this.render(time, animFps);
+  }
+
+  /** Render the robot where the source last showed it (PNG and SVG are stills). */
+  drawLikeSource() {
+    const k = frameShown(this.source);
+    this.draw(k >= 0 ? (k + 0.5) * 1000 : performance.now(), 1);
+  }
+
+  /** Free the canvases' memory. */
+  dispose() {
+    for (const c of [this.canvas, this.sceneLayer.canvas, ...this.runLayers.map((l) => l.canvas)]) { c.width = 0; c.height = 0; }
+  }
 }
+
+/** The animation frame list `view` plays and the index of the one it last showed (or -1). */
+function frameShown(view) {
+  const list = view.options.animateRaw && view.rawFrames.length ? view.rawFrames : view.frames;
+  if (!view.showResult || !list.length) return -1;
+  return list.findIndex((f) => f.state === view.robotState);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The legend: rows of a mark and a label, laid out in css px (scaled with the picture)
+
+/**
+ * Where each legend item goes in a band `width` css px wide: {height, at: [{x, y, item}]}
+ * (x, y: the mark's left and the row's middle). `measure(text)` is the label's width in css px.
+ */
+export function legendLayout(items, width, measure) {
+  const pad = 8, row = 20, mark = 16, gap = 6, sep = 16;
+  const at = [];
+  let x = pad, y = pad + row / 2;
+  for (const item of items) {
+    const w = mark + gap + measure(item.label);
+    if (x > pad && x + w > width - pad) { x = pad; y += row; }
+    at.push({ x, y, item });
+    x += w + sep;
+  }
+  return { height: items.length ? y + row / 2 + pad : 0, at };
+}
+
+let measureCtx = null;
+function measure(text) {
+  measureCtx ??= document.createElement('canvas').getContext('2d');
+  measureCtx.font = LEGEND_FONT;
+  return measureCtx.measureText(text).width;
+}
+
+/** One legend mark on a canvas (css px scaled by `s`), as the page's legend swatches. */
+function drawMark(ctx, s, x, y, { color, shape }) {
+  ctx.save();
+  ctx.fillStyle = color;
+  ctx.strokeStyle = color;
+  ctx.lineCap = 'round';
+  const line = (w, dash = []) => {
+    ctx.beginPath();
+    ctx.setLineDash(dash.map((d) => d * s));
+    ctx.moveTo((x + 1) * s, y * s);
+    ctx.lineTo((x + 15) * s, y * s);
+    ctx.lineWidth = w * s;
+    ctx.stroke();
+  };
+  if (shape === 'line') line(2);
+  else if (shape === 'dash') line(2, [3, 3]);
+  else if (shape === 'thick') line(4);
+  else if (shape === 'dot' || shape === 'ring') {
+    ctx.beginPath();
+    ctx.arc((x + 8) * s, y * s, 4 * s, 0, 2 * Math.PI);
+    if (shape === 'dot') ctx.fill(); else { ctx.lineWidth = 2 * s; ctx.stroke(); }
+  } else if (shape === 'cross') {
+    ctx.beginPath();
+    ctx.moveTo((x + 4) * s, (y - 4) * s); ctx.lineTo((x + 12) * s, (y + 4) * s);
+    ctx.moveTo((x + 4) * s, (y + 4) * s); ctx.lineTo((x + 12) * s, (y - 4) * s);
+    ctx.lineWidth = 2 * s;
+    ctx.stroke();
+  } else ctx.fillRect((x + 2) * s, (y - 5) * s, 12 * s, 10 * s);
+  ctx.restore();
+}
+
+/**
+ * `picture` (a canvas) with the legend `items` drawn under it (css px scaled like the picture,
+ * `pictureScale` device px per css px, but never smaller than css px), on the
+ * page's background unless `transparent`. Returns a new canvas (the picture when there is no legend).
+ */
+function withLegend(picture, items, pictureScale, transparent) {
+  if (!items?.length) return picture;
+  const scale = Math.max(1, pictureScale); // a small picture keeps a legend one can read
+  const cssWidth = picture.width / scale;
+  const lay = legendLayout(items, cssWidth, measure);
+  const out = document.createElement('canvas');
+  out.width = picture.width;
+  out.height = picture.height + Math.round(lay.height * scale);
+  const ctx = out.getContext('2d');
+  if (!transparent) { ctx.fillStyle = PALETTE.background; ctx.fillRect(0, 0, out.width, out.height); }
+  ctx.drawImage(picture, 0, 0);
+  ctx.translate(0, picture.height);
+  ctx.font = `${12 * scale}px system-ui, sans-serif`;
+  ctx.textBaseline = 'middle';
+  for (const { x, y, item } of lay.at) {
+    drawMark(ctx, scale, x, y, item);
+    ctx.fillStyle = LEGEND_TEXT;
+    ctx.fillText(item.label, (x + 22) * scale, y * scale);
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// PNG
+
+/** `n` clamped to [min, max] and rounded; `what` names the field in the note when it was changed. */
+export function bounded(value, min, max, fallback, what) {
+  const n = Number(value);
+  if (String(value).trim() === '' || !Number.isFinite(n)) return { value: fallback, note: `${what}: not a number, ${fallback} used` };
+  const v = Math.round(Math.min(max, Math.max(min, n)));
+  return { value: v, note: v !== Math.round(n) ? `${what} is ${min} to ${max}: ${v} used` : '' };
+}
+
+/** The largest width ≤ `width` whose picture (at the source's aspect) has at most `pixels` pixels. */
+function capArea(view, width, pixels) {
+  const aspect = view.css[1] / view.css[0];
+  return Math.max(1, Math.min(width, Math.floor(Math.sqrt(pixels / aspect))));
+}
+
+/**
+ * The picture redrawn `width` pixels wide (height by the scene's aspect) as a PNG Blob, drawn by
+ * an ExportView (the visible canvas is untouched). `legend`: items [{label, color, shape}] drawn
+ * under it; `transparent`: no background.
+ */
+export async function pngBlob(view, width, { legend = null, transparent = false } = {}) {
+  const ev = new ExportView(view, transparent);
+  try {
+    ev.follow(width);
+    ev.drawLikeSource();
+    const out = withLegend(ev.canvas, legend, ev.dpr, transparent);
+    return await new Promise((resolve, reject) => out.toBlob((b) => (b ? resolve(b) : reject(new Error('the PNG could not be made (too big for this browser?)'))), 'image/png'));
+  } finally { ev.dispose(); }
+}
+
+// ---------------------------------------------------------------------------------------------
+// SVG: the canvas's drawing, element by element (css px, the canvas at a device pixel ratio of 1)
 
 function node(name, attrs = {}, parent = null) {
   const e = document.createElementNS(SVG_NS, name);
-  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, String(v));
+  for (const [k, v] of Object.entries(attrs)) if (v !== undefined && v !== null) e.setAttribute(k, String(v));
   if (parent) parent.append(e);
   return e;
 }
 
-const fmt = (v) => (Math.round(v * 1e4) / 1e4).toString();
+const fmt = (v) => (Math.round(v * 100) / 100).toString();
 
-/** `x,y x,y ...` in screen units of layout `L` (css pixels) for world points [[x, y], ...]. */
-function points(L, pts) {
-  return pts.map(([x, y]) => `${fmt(L.sx(x) / L.dpr)},${fmt(L.sy(y) / L.dpr)}`).join(' ');
+/** A canvas colour as SVG paint: {colour, opacity} ('rgba(r, g, b, a)' split, for SVG 1.1 readers). */
+function paint(c) {
+  const m = /^rgba?\(\s*([\d.]+)\s*,\s*([\d.]+)\s*,\s*([\d.]+)\s*(?:,\s*([\d.]+)\s*)?\)$/.exec(c);
+  if (!m) return { colour: c, opacity: 1 };
+  const hex = (v) => Math.round(Number(v)).toString(16).padStart(2, '0');
+  return { colour: `#${hex(m[1])}${hex(m[2])}${hex(m[3])}`, opacity: m[4] === undefined ? 1 : Number(m[4]) };
+}
+
+/** SVG attributes filling with `c` (times `alpha`). */
+function fill(c, alpha = 1) {
+  const p = paint(c);
+  const o = p.opacity * alpha;
+  return { fill: p.colour, 'fill-opacity': o < 1 ? fmt(o) : undefined };
+}
+
+/** SVG attributes stroking with `c`, `width` px wide (and `dash` [on, off]). */
+function stroke(c, width, dash = null, round = false) {
+  const p = paint(c);
+  return { stroke: p.colour, 'stroke-opacity': p.opacity < 1 ? fmt(p.opacity) : undefined, 'stroke-width': fmt(width),
+    'stroke-dasharray': dash?.length ? dash.map(fmt).join(' ') : undefined,
+    'stroke-linecap': round ? 'round' : undefined, 'stroke-linejoin': round ? 'round' : undefined };
+}
+
+/** Path data of a polygon (flat [x, y, ...] or [[x, y], ...]), closed or not. */
+function polyD(L, pts, close = true) {
+  const xy = pts.length && Array.isArray(pts[0]) ? pts : pairs(pts);
+  if (!xy.length) return '';
+  return xy.map(([x, y], i) => `${i ? 'L' : 'M'}${fmt(L.sx(x))} ${fmt(L.sy(y))}`).join('') + (close ? 'Z' : '');
 }
 
 /** Flat [x, y, x, y, ...] → [[x, y], ...]. */
@@ -50,93 +301,395 @@ function pairs(flat) {
   return out;
 }
 
-/** One obstacle of the scenario as an SVG element. */
-function obstacle(g, L, ob) {
-  const style = { fill: PALETTE.obstacle, stroke: PALETTE.obstacleEdge ?? '#333', 'stroke-width': 1 };
+/** A circle as path data (to join many in one path). */
+const circleD = (cx, cy, r) => `M${fmt(cx + r)} ${fmt(cy)}A${fmt(r)} ${fmt(r)} 0 1 0 ${fmt(cx - r)} ${fmt(cy)}A${fmt(r)} ${fmt(r)} 0 1 0 ${fmt(cx + r)} ${fmt(cy)}Z`;
+/** A square of side `s` at top left (x, y) as path data. */
+const squareD = (x, y, s) => `M${fmt(x)} ${fmt(y)}h${fmt(s)}v${fmt(s)}h${fmt(-s)}Z`;
+
+/** One obstacle as an SVG element, as transform.js drawObstacle draws it. */
+function obstacleSvg(g, L, ob) {
+  const style = { ...fill(PALETTE.obstacle), ...stroke(PALETTE.obstacleEdge, 1.25) };
   if (ob.rect) {
-    const [x0, y0, x1, y1] = ob.rect;
-    node('polygon', { points: points(L, [[x0, y0], [x1, y0], [x1, y1], [x0, y1]]), ...style }, g);
+    const [ax, ay, bx, by] = ob.rect;
+    const x0 = Math.min(ax, bx), x1 = Math.max(ax, bx), y0 = Math.min(ay, by), y1 = Math.max(ay, by);
+    node('rect', { x: fmt(L.sx(x0)), y: fmt(L.sy(y1)), width: fmt((x1 - x0) * L.scale), height: fmt((y1 - y0) * L.scale), ...style }, g);
   } else if (ob.polygon) {
-    node('polygon', { points: points(L, ob.polygon), ...style }, g);
+    node('path', { d: polyD(L, ob.polygon), ...style }, g);
   } else if (ob.circle) {
     const [x, y, r] = ob.circle;
-    node('circle', { cx: fmt(L.sx(x) / L.dpr), cy: fmt(L.sy(y) / L.dpr), r: fmt((r * L.scale) / L.dpr), ...style }, g);
+    node('circle', { cx: fmt(L.sx(x)), cy: fmt(L.sy(y)), r: fmt(r * L.scale), ...style }, g);
   } else if (ob.segment) {
     const [x0, y0, x1, y1] = ob.segment;
-    node('polyline', { points: points(L, [[x0, y0], [x1, y1]]), fill: 'none', stroke: PALETTE.obstacle, 'stroke-width': 2 }, g);
+    node('path', { d: polyD(L, [[x0, y0], [x1, y1]], false), fill: 'none', ...stroke(PALETTE.obstacleEdge, 3), 'stroke-linecap': 'round' }, g);
   }
 }
 
-/** The colour a cell is drawn in, by label and verdict (as the cells layer does). */
-function cellFill(c) {
-  if (c.state === 2) return PALETTE.cellVisited;
-  if (c.state === 1) return PALETTE.cellBlocked;
-  if (c.label === 2) return PALETTE.cellFull;
-  if (c.label === 1) return PALETTE.cellMixed;
-  const free = PALETTE.cellFree;
-  return Array.isArray(free) ? free[Math.min(c.level, free.length - 1)] : free;
+/** A polyline of world points [[x, y], ...] as drawPolyline draws it (round joins and caps). */
+function polylineSvg(parent, L, pts, colour, width, dash = null, attrs = {}) {
+  if (!pts || pts.length < 2) return null;
+  return node('path', { d: polyD(L, pts, false), fill: 'none', ...stroke(colour, width, dash, true), ...attrs }, parent);
 }
+
+/** A robot (robots.js drawRobotShape) at `state` with outline `polys` in style `st`. */
+function robotSvg(parent, L, robot, polys, state, st, cls) {
+  const kind = robot ? robot.kind : 'point';
+  const g = node('g', { class: cls }, parent);
+  if (!polys || !polys.length) {
+    if (!state || state.length < 2) return;
+    node('circle', { cx: fmt(L.sx(state[0])), cy: fmt(L.sy(state[1])), r: fmt(st.dot), ...fill(st.fill), ...stroke(st.edge, 1) }, g);
+    return;
+  }
+  const p = polys[0];
+  if (kind === 'arm') {
+    if (p.length < 4) return;
+    node('path', { d: polyD(L, p, false), fill: 'none', ...stroke(st.line, st.width, null, true) }, g);
+    let len = 0;
+    for (let i = 2; i < p.length; i += 2) len += Math.hypot(p[i] - p[i - 2], p[i + 1] - p[i - 1]);
+    const avg = (len * L.scale) / Math.max(1, p.length / 2 - 1);
+    const r = Math.max(1.2, Math.min(3, st.width * 0.6, avg * 0.12));
+    let d = '';
+    for (let i = 2; i < p.length; i += 2) d += circleD(L.sx(p[i]), L.sy(p[i + 1]), r);
+    node('path', { d, ...fill(st.edge) }, g);
+    node('rect', { x: fmt(L.sx(p[0]) - 4.5), y: fmt(L.sy(p[1]) - 4.5), width: 9, height: 9, ...fill(st.edge) }, g);
+  } else if (kind === 'asv') {
+    const n = p.length / 2;
+    if (n >= 2) node('path', { d: polyD(L, p, false), fill: 'none', ...stroke(st.stroke, 2.5), 'stroke-linecap': 'round' }, g);
+    if (n >= 3) node('path', { d: polyD(L, [[p[2 * n - 2], p[2 * n - 1]], [p[0], p[1]]], false), fill: 'none', ...stroke(st.stroke, 1.5, [4, 3]), 'stroke-linecap': 'round' }, g);
+    let d = '';
+    for (let i = 0; i < n; i++) d += circleD(L.sx(p[2 * i]), L.sy(p[2 * i + 1]), st.dot * 0.6);
+    node('path', { d, ...fill(st.fill), ...stroke(st.edge, 1) }, g);
+  } else {
+    node('path', { d: polys.map((q) => polyD(L, q)).join(''), ...fill(st.fill, st.alpha), ...stroke(st.stroke, st.strokeWidth) }, g);
+  }
+}
+
+/** Samples and raw tries (view.js drawUnder), when their overlays are on. */
+function samplesSvg(svg, view, L) {
+  const { showAccepted, showRejected, showTries } = view.options;
+  if (!showAccepted && !showRejected && !showTries) return;
+  const acc = [], rej = [], tries = [[], []];
+  const as = Math.max(2, Math.round(2.5)), rs = Math.max(1, Math.round(STYLE[EventKind.SAMPLE_REJECTED].size));
+  const ts = Math.max(1, Math.round(STYLE[EventKind.SAMPLE_TRY].size));
+  const sq = (out, x, y, s) => out.push(squareD(Math.round(L.sx(x) - s / 2), Math.round(L.sy(y) - s / 2), s));
+  let pending = null;
+  for (const [d, o0, o1] of view.store.spans(0, view.store.length)) for (let o = o0; o < o1; o += STRIDE) {
+    const kind = d[o];
+    if (kind === EventKind.SAMPLE) {
+      if (pending && showAccepted) sq(acc, ...pending, as);
+      pending = [d[o + 4], d[o + 5]];
+    } else if (kind === EventKind.SAMPLE_REJECTED) {
+      pending = null;
+      if (showRejected) sq(rej, d[o + 4], d[o + 5], rs);
+    } else if (kind === EventKind.SAMPLE_TRY && showTries) sq(tries[d[o + 2] > 0 ? 1 : 0], d[o + 4], d[o + 5], ts);
+  }
+  if (pending && showAccepted && view.showResult) sq(acc, ...pending, as);
+  const g = node('g', { id: 'samples' }, svg);
+  const cols = STYLE[EventKind.SAMPLE_TRY].colors;
+  /** @type {Array<[string[], string]>} */
+  const layers = [[rej, STYLE[EventKind.SAMPLE_REJECTED].color], [tries[0], cols[0]], [tries[1], cols[1]], [acc, PALETTE.accepted]];
+  for (const [parts, colour] of layers) {
+    if (parts.length) node('path', { d: parts.join(''), ...fill(colour) }, g);
+  }
+}
+
+/** The cells' × marks (step-blocked cells) of cells `list`, as path data. */
+function cellMarksD(L, list) {
+  let d = '';
+  for (const c of list) {
+    const r = Math.max(2.5, Math.min(6, 0.3 * c.radius * L.scale));
+    let x = c.x, y = c.y; // the cell's centre, else its corners' mean (as cells.js centreOf)
+    if (!pointInPolygon(x, y, c.pts)) {
+      x = 0; y = 0;
+      for (let i = 0; i + 1 < c.pts.length; i += 2) { x += c.pts[i]; y += c.pts[i + 1]; }
+      x /= c.pts.length / 2; y /= c.pts.length / 2;
+    }
+    const sx = L.sx(x), sy = L.sy(y);
+    d += `M${fmt(sx - r)} ${fmt(sy - r)}L${fmt(sx + r)} ${fmt(sy + r)}M${fmt(sx - r)} ${fmt(sy + r)}L${fmt(sx + r)} ${fmt(sy - r)}`;
+  }
+  return d;
+}
+
+const cellPoints = (L, c) => pairs(c.pts).map(([x, y]) => `${fmt(L.sx(x))},${fmt(L.sy(y))}`).join(' ');
 
 /**
- * The current picture as an SVG document (a string): bounds, cells, obstacles, tree edges, the
- * raw and smoothed paths, start and goal. Vector, so it scales on a slide.
+ * The cells layer (cells.js redraw): cells filled by label and level or verdict, × marks; the
+ * heat map over them, then the judged cells' outlines and marks again; descent arrows; then the
+ * obstacles veiled over it all.
  */
-export function sceneSvg(view) {
-  const L = view.layout;
-  const sc = view.scenario;
-  if (!L || !sc) throw new Error('nothing to export yet');
-  const [w, h] = view.css;
-  const svg = node('svg', { xmlns: SVG_NS, width: w, height: h, viewBox: `0 0 ${w} ${h}` });
-  const title = node('title', {}, svg);
-  title.textContent = sc.name ?? 'Planarium';
-  node('rect', { x: 0, y: 0, width: w, height: h, fill: PALETTE.background ?? '#ffffff' }, svg);
-  const [bx0, by0, bx1, by1] = sc.bounds;
-  node('polygon', { points: points(L, [[bx0, by0], [bx1, by0], [bx1, by1], [bx0, by1]]), fill: 'none', stroke: '#666', 'stroke-width': 1 }, svg);
-  const cells = view.model?.cells;
-  if (cells && cells.order.length && view.options.showCells !== false) {
-    const g = node('g', { id: 'cells', stroke: '#8a8270', 'stroke-width': 0.4 }, svg);
-    for (const id of cells.order) {
-      const c = cells.cells.get(id);
-      if (!c?.done || c.pts.length < 3) continue;
-      node('polygon', { points: points(L, pairs(c.pts)), fill: cellFill(c) }, g);
+function cellsSvg(svg, view, L) {
+  const m = view.model?.cells;
+  const o = view.options;
+  if (!m || !view.cells.active(o)) return;
+  const st = STYLE[EventKind.CELL];
+  const level = (c) => Math.min(3, Math.max(0, c.level | 0));
+  const marks = (ids, id) => {
+    const d = cellMarksD(L, ids.map((k) => m.cells.get(k)).filter((c) => c?.done && c.state === 1));
+    if (!d) return;
+    const mg = node('g', { id, fill: 'none' }, svg);
+    node('path', { d, ...stroke('#ffffff', 3.5) }, mg);
+    node('path', { d, ...stroke(PALETTE.cellBlockedMark, 1.75) }, mg);
+  };
+  if (o.showCells) {
+    const g = node('g', { id: 'cells' }, svg);
+    for (const id of m.order) {
+      const c = m.cells.get(id);
+      if (!c || !c.done) continue;
+      let f = c.label === 1 ? PALETTE.cellMixed : c.label === 2 || c.state === 4 ? PALETTE.cellFull : PALETTE.cellFree[level(c)];
+      if (!o.showHeat && c.state === 2) f = PALETTE.cellVisited;
+      if (!o.showHeat && c.state === 1) f = PALETTE.cellBlocked;
+      node('polygon', { points: cellPoints(L, c), ...fill(f), ...stroke(PALETTE.cellEdge, st.widths[level(c)]) }, g);
+    }
+    marks(m.order, 'cell-marks');
+  }
+  if (o.showHeat && m.field.length) {
+    const bin = heatScale(m.field);
+    const byColour = new Map();
+    for (const s of m.field) {
+      const k = bin(s.v);
+      const col = k < 0 ? PALETTE.obstacle : PALETTE.heat[k];
+      if (!byColour.has(col)) byColour.set(col, []);
+      byColour.get(col).push(s);
+    }
+    const hex = m.cells.size > 0;
+    const g = node('g', { id: 'heat' }, svg);
+    for (const [col, list] of byColour) {
+      const d = list.map((s) => {
+        const c = hex ? m.cells.get(s.id) : null;
+        if (c && c.done) return polyD(L, c.pts);
+        const h = s.half * L.scale;
+        return squareD(L.sx(s.x) - h, L.sy(s.y) - h, 2 * h);
+      }).join('');
+      node('path', { d, ...fill(col), ...(hex ? stroke(PALETTE.cellEdge, 0.75) : {}) }, g);
+    }
+    if (o.showCells) { // the judged cells' outlines and marks, over the heat map
+      const g2 = node('g', { id: 'judged', fill: 'none' }, svg);
+      for (const id of m.changed) {
+        const c = m.cells.get(id);
+        if (c?.done) node('polygon', { points: cellPoints(L, c), ...stroke(PALETTE.cellEdge, st.widths[level(c)]) }, g2);
+      }
+      marks(m.changed, 'judged-marks');
     }
   }
-  const obs = node('g', { id: 'obstacles' }, svg);
-  for (const ob of sc.obstacles ?? []) obstacle(obs, L, ob);
+  if (o.showArrows && m.field.length) {
+    const gap = 14; // css px: cells.js ARROW_GAP
+    const taken = new Set();
+    let d = '';
+    for (const s of m.field) {
+      if (!(s.dx || s.dy)) continue;
+      const sx = L.sx(s.x), sy = L.sy(s.y);
+      const key = `${Math.floor(sx / gap)},${Math.floor(sy / gap)}`;
+      if (taken.has(key)) continue;
+      taken.add(key);
+      const len = Math.max(6, Math.min(18, 0.7 * s.half * L.scale));
+      const ex = sx + s.dx * len, ey = sy - s.dy * len;
+      const hx = -s.dx * len * 0.35, hy = s.dy * len * 0.35;
+      d += `M${fmt(sx)} ${fmt(sy)}L${fmt(ex)} ${fmt(ey)}M${fmt(ex + hx - hy * 0.6)} ${fmt(ey + hy + hx * 0.6)}L${fmt(ex)} ${fmt(ey)}L${fmt(ex + hx + hy * 0.6)} ${fmt(ey + hy - hx * 0.6)}`;
+    }
+    if (d) node('path', { id: 'arrows', d, fill: 'none', ...stroke(PALETTE.arrow, 1.1) }, svg);
+  }
+  const veil = node('g', { id: 'veil', 'fill-opacity': 0.6, 'stroke-opacity': 0.6 }, svg);
+  for (const ob of view.scenario.obstacles) obstacleSvg(veil, L, ob);
+}
+
+/** The trees (view.js redrawTreeLayer): edges, node squares, exhausted nodes. */
+function treesSvg(svg, view, L) {
   const trees = view.model?.trees ?? [];
+  const edge = STYLE[EventKind.NODE_ADDED];
+  const size = Math.max(1, Math.round(edge.size));
+  const attempt = view.model ? view.model.cells.attempt : -1;
   trees.forEach((t, k) => {
-    const g = node('g', { id: `tree-${k}`, stroke: k === 1 ? PALETTE.tree1 : PALETTE.tree0, 'stroke-width': 1, fill: 'none' }, svg);
-    const parts = [];
+    const colour = edge.colors[view.treeGroup(k)];
+    const opacity = attempt > k ? 0.3 : undefined;
+    let edges = '', nodes = '';
     for (let i = 0; i < t.n; i++) {
       if (!t.known(i)) continue;
       const p = t.parent[i];
-      if (p < 0 || !t.known(p)) continue;
-      parts.push(`M${fmt(L.sx(t.x[p]) / L.dpr)} ${fmt(L.sy(t.y[p]) / L.dpr)}L${fmt(L.sx(t.x[i]) / L.dpr)} ${fmt(L.sy(t.y[i]) / L.dpr)}`);
+      const x = L.sx(t.x[i]), y = L.sy(t.y[i]);
+      if (p >= 0 && t.known(p)) edges += `M${fmt(L.sx(t.x[p]))} ${fmt(L.sy(t.y[p]))}L${fmt(x)} ${fmt(y)}`;
+      if (p >= 0) nodes += squareD(Math.round(x - size / 2), Math.round(y - size / 2), size);
     }
-    if (parts.length) node('path', { d: parts.join('') }, g);
-  });
-  if (view.showResult && view.path?.length) {
-    node('polyline', { id: 'raw-path', points: points(L, view.path), fill: 'none', stroke: PALETTE.rawPath, 'stroke-width': 2, 'stroke-dasharray': '6 4' }, svg);
-  }
-  if (view.showResult && view.smoothed?.length) {
-    node('polyline', { id: 'smoothed-path', points: points(L, view.smoothed), fill: 'none', stroke: PALETTE.smoothPath, 'stroke-width': 4 }, svg);
-  }
-  for (const which of ['start', 'goal']) {
-    const q = view.stateOf(which);
-    if (!q) continue;
-    const polys = view.preview?.[which] ? [] : view[which] ?? [];
-    if (polys.length && polys[0].length >= 4) {
-      const arm = sc.robot?.kind === 'arm';
-      for (const flat of polys) {
-        const attrs = arm ? { fill: 'none', 'stroke-width': 3 } : { fill: PALETTE[which], 'fill-opacity': 0.6 };
-        node(arm ? 'polyline' : 'polygon', { class: which, points: points(L, pairs(flat)), stroke: PALETTE[which], ...attrs }, svg);
+    // the canvas fills the node squares as it goes and strokes the edges last: nodes under edges
+    if (nodes) node('path', { class: 'nodes', d: nodes, opacity, ...fill(colour) }, svg);
+    const g = node('g', { id: `tree-${k}`, opacity }, svg);
+    if (edges) node('path', { d: edges, fill: 'none', ...stroke(colour, edge.width) }, g);
+    if (view.options.showExhausted && t.exhausted) {
+      const s = Math.max(3, Math.round(STYLE[EventKind.EXHAUSTED].size));
+      let d = '';
+      for (let i = 0; i < t.n; i++) {
+        if (t.known(i) && t.isExhausted(i)) d += squareD(Math.round(L.sx(t.x[i]) - s / 2) + 0.5, Math.round(L.sy(t.y[i]) - s / 2) + 0.5, s);
       }
-    } else {
-      node('circle', { class: which, cx: fmt(L.sx(q[0]) / L.dpr), cy: fmt(L.sy(q[1]) / L.dpr), r: 6, fill: PALETTE[which] }, svg);
+      if (d) node('path', { class: 'exhausted', d, ...fill(PALETTE.exhausted), ...stroke(PALETTE.exhaustedEdge, 1) }, svg);
+    }
+  });
+}
+
+/** Dynamic-domain circles (one path: overlapping discs do not darken), clipped to the bounds. */
+function domainsSvg(svg, view, L) {
+  if (!view.options.showDomains || !view.model) return;
+  let d = '';
+  for (const t of view.model.trees) {
+    if (!t.domains) continue;
+    for (let i = 0; i < t.n; i++) {
+      const r = t.radius[i];
+      if (Number.isFinite(r) && t.known(i)) d += circleD(L.sx(t.x[i]), L.sy(t.y[i]), r * L.scale);
     }
   }
+  if (d) node('path', { id: 'domains', d, 'clip-path': 'url(#bounds-clip)', ...fill('rgba(140, 81, 10, 0.06)'), ...stroke(STYLE[EventKind.DOMAIN].color, STYLE[EventKind.DOMAIN].width) }, svg);
+}
+
+/** Blocked motions (crosses), when their overlay is on. */
+function collisionsSvg(svg, view, L) {
+  if (!view.options.showCollisions) return;
+  const col = STYLE[EventKind.COLLISION];
+  const cs = col.size;
+  let d = '';
+  for (const [dd, o0, o1] of view.store.spans(0, view.store.length)) for (let o = o0; o < o1; o += STRIDE) {
+    if (dd[o] !== EventKind.COLLISION) continue;
+    const x = L.sx(dd[o + 4]), y = L.sy(dd[o + 5]);
+    d += `M${fmt(x - cs)} ${fmt(y - cs)}L${fmt(x + cs)} ${fmt(y + cs)}M${fmt(x - cs)} ${fmt(y + cs)}L${fmt(x + cs)} ${fmt(y - cs)}`;
+  }
+  if (d) node('path', { id: 'collisions', d, fill: 'none', ...stroke(col.color, col.width) }, svg);
+}
+
+/** Inspection points (robots.js drawInspection): diamonds, the seen ones lit. */
+function inspectionSvg(svg, view, L) {
+  const points = view.scenario.inspection?.points;
+  if (!points?.length) return;
+  const seen = view.options.showSeen && view.model ? view.model.seen : null;
+  const lit = (i) => !!(seen && seen.has(i));
+  const diamonds = (r, pick) => points.map(([x, y], i) => (pick(i)
+    ? `M${fmt(L.sx(x))} ${fmt(L.sy(y) - r)}L${fmt(L.sx(x) + r)} ${fmt(L.sy(y))}L${fmt(L.sx(x))} ${fmt(L.sy(y) + r)}L${fmt(L.sx(x) - r)} ${fmt(L.sy(y))}Z` : '')).join('');
+  const g = node('g', { id: 'inspection' }, svg);
+  const dim = diamonds(4, (i) => !lit(i));
+  if (dim) node('path', { d: dim, ...fill(PALETTE.inspection), ...stroke(PALETTE.robotEdge, 1) }, g);
+  if (!seen?.size) return;
+  node('path', { d: points.map(([x, y], i) => (lit(i) ? circleD(L.sx(x), L.sy(y), 9) : '')).join(''), ...fill('rgba(255, 212, 0, 0.3)') }, g);
+  node('path', { d: diamonds(6, lit), ...fill(PALETTE.seen), ...stroke(PALETTE.robotEdge, 1) }, g);
+}
+
+/** Regions of influence and local minima (cells.js drawTop). */
+function cellsTopSvg(svg, view, L) {
+  const m = view.model?.cells;
+  if (!m || m.empty) return;
+  const o = view.options;
+  if (o.showRegion && m.regions.length) {
+    const st = STYLE[EventKind.REGION];
+    const g = node('g', { id: 'regions', 'clip-path': 'url(#bounds-clip)', fill: 'none' }, svg);
+    m.regions.forEach((r, i) => {
+      const last = i === m.regions.length - 1;
+      node('circle', { cx: fmt(L.sx(r.x)), cy: fmt(L.sy(r.y)), r: fmt(r.radius * L.scale), opacity: last ? undefined : 0.35, ...stroke(st.color, last ? st.width : 1.25, [7, 5]) }, g);
+    });
+  }
+  const st = STYLE[EventKind.MINIMUM];
+  for (const p of m.minima) {
+    const x = L.sx(p.x), y = L.sy(p.y);
+    const g = node('g', { class: 'minimum' }, svg);
+    node('circle', { cx: fmt(x), cy: fmt(y), r: st.size, fill: 'none', ...stroke('#ffffff', st.width + 2.5) }, g);
+    node('circle', { cx: fmt(x), cy: fmt(y), r: st.size, fill: 'none', ...stroke(st.color, st.width) }, g);
+    const label = p.escapes > 0 ? `local minimum (${p.escapes} escapes)` : 'local minimum';
+    const t = node('text', { x: fmt(x + st.size + 6), y: fmt(y), 'dominant-baseline': 'middle', 'font-family': 'system-ui, sans-serif', 'font-size': 12, 'font-weight': 600, fill: st.color, stroke: '#ffffff', 'stroke-width': 3, 'paint-order': 'stroke' }, g);
+    t.textContent = label;
+  }
+}
+
+/** The legend band under the picture, at y = `top`. */
+function legendSvg(svg, items, width, top) {
+  const lay = legendLayout(items, width, measure);
+  const g = node('g', { id: 'legend', transform: `translate(0 ${fmt(top)})`, 'font-family': 'system-ui, sans-serif', 'font-size': 12 }, svg);
+  for (const { x, y, item } of lay.at) {
+    const { color, shape } = item;
+    const line = (w, dash) => node('path', { d: `M${x + 1} ${y}H${x + 15}`, ...stroke(color, w, dash), 'stroke-linecap': 'round' }, g);
+    if (shape === 'line') line(2);
+    else if (shape === 'dash') line(2, [3, 3]);
+    else if (shape === 'thick') line(4);
+    else if (shape === 'dot') node('circle', { cx: x + 8, cy: y, r: 4, ...fill(color) }, g);
+    else if (shape === 'ring') node('circle', { cx: x + 8, cy: y, r: 4, fill: 'none', ...stroke(color, 2) }, g);
+    else if (shape === 'cross') node('path', { d: `M${x + 4} ${y - 4}L${x + 12} ${y + 4}M${x + 4} ${y + 4}L${x + 12} ${y - 4}`, ...stroke(color, 2), 'stroke-linecap': 'round' }, g);
+    else node('rect', { x: x + 2, y: y - 5, width: 12, height: 10, ...fill(color) }, g);
+    const t = node('text', { x: x + 22, y: fmt(y), 'dominant-baseline': 'middle', fill: LEGEND_TEXT }, g);
+    t.textContent = item.label;
+  }
+  return lay.height;
+}
+
+/**
+ * The current picture as an SVG document (a string), drawn as the canvas draws it: background,
+ * free space, obstacles and bounds; cells (with the obstacles veiled over them); samples and
+ * tries, dynamic domains, trees, blocked motions (each when its overlay is on); inspection
+ * points, start and goal, markers, the best branch, the region of influence and local minima,
+ * the raw and smoothed paths, the robot where the canvas shows it and its t/2 circle; the heat
+ * map and descent arrows when they are on. Not drawn: rewire flashes (they fade in 0.6 s) and
+ * the sensor's wedge. `legend`: items under the picture; `transparent`: no background or
+ * free-space fill.
+ */
+export function sceneSvg(view, { legend = null, transparent = false } = {}) {
+  const sc = view.scenario;
+  if (!view.layout || !sc) throw new Error('nothing to export yet: load a scenario first');
+  const [w, h] = view.css;
+  const L = new Layout(sc.bounds, w, h, 1);
+  const legendHeight = legend?.length ? legendLayout(legend, w, measure).height : 0;
+  const H = h + legendHeight;
+  const svg = node('svg', { xmlns: SVG_NS, width: w, height: fmt(H), viewBox: `0 0 ${w} ${fmt(H)}` });
+  node('title', {}, svg).textContent = sc.name ?? 'Planarium';
+  const [bx0, by0, bx1, by1] = sc.bounds;
+  const boundsBox = { x: fmt(L.sx(bx0)), y: fmt(L.sy(by1)), width: fmt((bx1 - bx0) * L.scale), height: fmt((by1 - by0) * L.scale) };
+  const clip = node('clipPath', { id: 'bounds-clip' }, node('defs', {}, svg));
+  node('rect', boundsBox, clip);
+  if (!transparent) {
+    node('rect', { id: 'background', x: 0, y: 0, width: w, height: fmt(H), fill: PALETTE.background }, svg);
+    node('rect', { id: 'free', ...boundsBox, fill: PALETTE.free }, svg);
+  }
+  const obs = node('g', { id: 'obstacles' }, svg);
+  for (const ob of sc.obstacles ?? []) obstacleSvg(obs, L, ob);
+  node('rect', { id: 'bounds', ...boundsBox, fill: 'none', ...stroke(PALETTE.bounds, 1.5) }, svg);
+  cellsSvg(svg, view, L);
+  samplesSvg(svg, view, L);
+  domainsSvg(svg, view, L);
+  treesSvg(svg, view, L);
+  collisionsSvg(svg, view, L);
+  inspectionSvg(svg, view, L);
+  for (const which of ['start', 'goal']) {
+    const state = view.stateOf(which);
+    if (!state) continue;
+    const polys = view.preview[which] ? outlineOf(sc.robot, state) : view[which];
+    robotSvg(svg, L, sc.robot, polys, state, robotStyle(PALETTE[which], which, PALETTE), which);
+  }
+  for (const [kind, x, y] of view.markers) {
+    const st = STYLE[kind];
+    if (st.shape === 'ring') node('circle', { class: 'marker', cx: fmt(L.sx(x)), cy: fmt(L.sy(y)), r: st.size, fill: 'none', ...stroke(st.color, st.width) }, svg);
+    else node('circle', { class: 'marker', cx: fmt(L.sx(x)), cy: fmt(L.sy(y)), r: st.size, ...fill(st.color) }, svg);
+  }
+  const best = view.options.showBest && view.model ? view.model.bestBranch() : [];
+  if (best.length >= 2) {
+    const g = node('g', { id: 'best' }, svg);
+    polylineSvg(g, L, best, PALETTE.bestCasing, 6);
+    polylineSvg(g, L, best, PALETTE.best, 3.5);
+  }
+  if (!view.showResult && view.lastSample) {
+    const st = STYLE[EventKind.SAMPLE];
+    node('circle', { id: 'last-sample', cx: fmt(L.sx(view.lastSample[0])), cy: fmt(L.sy(view.lastSample[1])), r: st.size, ...fill(st.color) }, svg);
+  }
+  cellsTopSvg(svg, view, L);
+  if (view.showResult && view.path?.length) polylineSvg(svg, L, view.path, PALETTE.rawPath, 2, [6, 4], { id: 'raw-path' });
+  if (view.showResult && view.smoothed?.length) {
+    polylineSvg(svg, L, view.smoothed, PALETTE.pathCasing, 6, null, { id: 'smoothed-casing' });
+    polylineSvg(svg, L, view.smoothed, PALETTE.smoothPath, 4, null, { id: 'smoothed-path' });
+  }
+  const k = frameShown(view);
+  if (k >= 0) {
+    const list = view.options.animateRaw && view.rawFrames.length ? view.rawFrames : view.frames;
+    robotSvg(svg, L, sc.robot, list[k].polys, list[k].state, robotStyle(null, 'robot', PALETTE), 'robot');
+    const m = view.model?.cells, q = list[k].state;
+    if (m && view.options.showRegion && q?.length >= 2 && m.t > 0) { // the robot's t/2 circle (cells.js drawRobotT)
+      node('circle', { id: 'robot-t', cx: fmt(L.sx(q[0])), cy: fmt(L.sy(q[1])), r: fmt((m.t / 2) * L.scale), fill: 'none', ...stroke(PALETTE.robotT, 1.5, [4, 3]) }, svg);
+    }
+  }
+  if (legendHeight) legendSvg(svg, legend, w, h);
   return `<?xml version="1.0" encoding="UTF-8"?>\n${new XMLSerializer().serializeToString(svg)}\n`;
 }
+
+// ---------------------------------------------------------------------------------------------
+// WebM and GIF
 
 /** A MIME type this browser's MediaRecorder writes WebM in, or null. */
 export function webmType() {
@@ -145,69 +698,192 @@ export function webmType() {
 }
 
 /**
- * Record the canvas as WebM until `stop()` is called: returns {stop: () => Promise<Blob>}.
- * The canvas is captured at `fps` frames per second.
+ * Record the picture as WebM `width` px wide (even; height by the scene) until `stop()`: an
+ * ExportView follows `view` and is drawn `fps` times a second, each drawing a frame of the
+ * stream. `stop()` resolves to {blob, width, height, note}: the WebM made seekable (webm.js),
+ * or as recorded with a note when that failed.
  */
-export function recordCanvas(canvas, fps = 30) {
+export function recordWebm(view, { width, fps = 30, animFps = () => 10 }) {
   const type = webmType();
   if (!type) throw new Error('this browser cannot record WebM (no MediaRecorder)');
-  const stream = canvas.captureStream(fps);
-  const rec = new MediaRecorder(stream, { mimeType: type, videoBitsPerSecond: 4e6 });
+  const ev = new ExportView(view);
+  ev.follow(width);
+  ev.draw(performance.now(), animFps());
+  const stream = ev.canvas.captureStream(0);
+  const track = stream.getVideoTracks()[0];
+  const pixels = ev.canvas.width * ev.canvas.height;
+  const rec = new MediaRecorder(stream, { mimeType: type, videoBitsPerSecond: Math.round(Math.min(25e6, Math.max(1e6, pixels * 2.5))) });
   const chunks = [];
   rec.ondataavailable = (e) => { if (e.data.size) chunks.push(e.data); };
+  let failed = null;
+  const frame = () => {
+    try {
+      ev.follow(width);
+      ev.draw(performance.now(), animFps());
+      track.requestFrame();
+    } catch (e) { failed ??= e; }
+  };
   rec.start(250);
+  track.requestFrame();
+  const timer = setInterval(frame, 1000 / fps);
   return {
+    width: ev.canvas.width,
+    height: ev.canvas.height,
     stop: () => new Promise((resolve) => {
-      rec.onstop = () => {
+      clearInterval(timer);
+      rec.onstop = async () => {
         stream.getTracks().forEach((t) => t.stop());
-        resolve(new Blob(chunks, { type: 'video/webm' }));
+        const size = { width: ev.canvas.width, height: ev.canvas.height };
+        ev.dispose();
+        const raw = new Blob(chunks, { type: 'video/webm' });
+        try {
+          const fixed = fixWebm(new Uint8Array(await raw.arrayBuffer()));
+          resolve({ blob: new Blob([fixed], { type: 'video/webm' }), ...size, note: failed ? `drawing stopped: ${failed.message}` : '' });
+        } catch (e) {
+          resolve({ blob: raw, ...size, note: `saved as recorded (no duration): ${e.message}` });
+        }
       };
+      frame();
       rec.stop();
     }),
   };
 }
 
+/** The page's fixed colours ('#rrggbb' of the palette and the legend text) as [r, g, b]. */
+export function paletteColours() {
+  const hex = [PALETTE.background, PALETTE.free, LEGEND_TEXT];
+  for (const v of Object.values(PALETTE)) (Array.isArray(v) ? v : [v]).forEach((c) => hex.push(c));
+  return hex.map(hexRgb).filter(Boolean);
+}
+
 /**
- * Wire the page's export controls (#png-width, #export-png, #export-svg, #record, #export-status)
- * to `view` and its `canvas`; `stem()` names the files.
+ * An animated GIF of the playback: `frames` pictures `width` px wide taken `fps` times a second
+ * (the robot's animation at the times they stand for, so a slow machine does not stutter it),
+ * looping forever. `legend`: items drawn under each picture. `onFrame(k)` after each frame;
+ * `cancelled()` stops early (what was taken is kept). Resolves to {blob, width, height, frames}.
  */
-export function wireExports({ view, canvas, stem }) {
+export async function recordGif(view, { width, frames, fps = LIMITS.gif.fps, animFps = () => 10, legend = null, onFrame = null, cancelled = () => false }) {
+  const ev = new ExportView(view);
+  try {
+    ev.follow(width);
+    const t0 = performance.now(), step = 1000 / fps;
+    let writer = null, taken = 0, reader = null, readCtx = null;
+    for (let k = 0; k < frames && !cancelled(); k++) {
+      const due = t0 + k * step;
+      const wait = due - performance.now();
+      if (wait > 0) await new Promise((r) => setTimeout(r, wait));
+      ev.follow(width);
+      ev.draw(due, animFps());
+      const pic = withLegend(ev.canvas, legend, ev.dpr, false);
+      if (!reader) {
+        reader = document.createElement('canvas');
+        reader.width = pic.width;
+        reader.height = pic.height;
+        readCtx = reader.getContext('2d', { willReadFrequently: true });
+      }
+      readCtx.drawImage(pic, 0, 0);
+      writer ??= new GifWriter(pic.width, pic.height, paletteColours());
+      writer.add(readCtx.getImageData(0, 0, pic.width, pic.height), Math.round(100 / fps));
+      taken++;
+      onFrame?.(taken);
+    }
+    if (!writer) throw new Error('the GIF was cancelled before its first frame');
+    return { blob: new Blob([writer.finish()], { type: 'image/gif' }), width: writer.width, height: writer.height, frames: taken };
+  } finally { ev.dispose(); }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The page's controls
+
+/**
+ * Wire the page's export controls (#png-width, #video-width, #gif-width, #gif-frames,
+ * #export-legend, #export-transparent, #export-png, #export-svg, #export-gif, #record,
+ * #export-status) to `view`. `stem()` names the files, `legend()` gives the legend's items,
+ * `animFps()` the robot animation's frames per second.
+ */
+export function wireExports({ view, stem, legend = () => [], animFps = () => 10 }) {
   /** @param {string} id @returns {any} the page's element (an input or button) */
   const $ = (id) => document.getElementById(id);
   const status = $('export-status');
-  const say = (text) => { status.textContent = text; };
+  const say = (...parts) => { status.textContent = parts.filter(Boolean).join('. '); };
+  const options = () => ({ legend: $('export-legend').checked ? legend() : null, transparent: $('export-transparent').checked });
+  const field = (id, min, max, fallback, what) => {
+    const r = bounded($(id).value, min, max, fallback, what);
+    if (r.note) $(id).value = String(r.value);
+    return r;
+  };
+  const fail = (what, e) => say(`${what} failed: ${e?.message ?? e}`);
+
   $('export-png').addEventListener('click', async () => {
-    const width = Math.max(100, Math.min(8000, Math.round(Number($('png-width').value) || 1600)));
+    const asked = field('png-width', LIMITS.png.min, LIMITS.png.max, 1600, 'PNG width');
     try {
-      downloadBlob(await pngBlob(view, width), `${stem()}-${width}.png`);
-      say(`PNG, ${width} px wide`);
-    } catch (e) { say(String(e.message ?? e)); }
+      const width = capArea(view, asked.value, LIMITS.png.pixels);
+      const capped = width < asked.value ? `at most ${LIMITS.png.pixels / 1e6} million pixels: ${width} px wide` : '';
+      const o = options();
+      downloadBlob(await pngBlob(view, width, o), `${stem()}-${width}.png`);
+      say(`PNG, ${width} px wide${o.legend ? ', with legend' : ''}${o.transparent ? ', transparent' : ''}`, asked.note, capped);
+    } catch (e) { fail('PNG', e); }
   });
+
   $('export-svg').addEventListener('click', () => {
     try {
-      downloadBlob(new Blob([sceneSvg(view)], { type: 'image/svg+xml' }), `${stem()}.svg`);
-      say('SVG of the current picture');
-    } catch (e) { say(String(e.message ?? e)); }
+      const o = options();
+      downloadBlob(new Blob([sceneSvg(view, o)], { type: 'image/svg+xml' }), `${stem()}.svg`);
+      say(`SVG of the current picture${o.legend ? ', with legend' : ''}${o.transparent ? ', transparent' : ''}`);
+    } catch (e) { fail('SVG', e); }
   });
+
+  const gif = $('export-gif');
+  let gifBusy = false, gifStop = false;
+  gif.addEventListener('click', async () => {
+    if (gifBusy) { gifStop = true; return; }
+    const w = field('gif-width', LIMITS.gif.min, LIMITS.gif.max, 480, 'GIF width');
+    const n = field('gif-frames', LIMITS.gif.frames[0], LIMITS.gif.frames[1], 40, 'GIF frames');
+    gifBusy = true;
+    gifStop = false;
+    gif.setAttribute('aria-pressed', 'true');
+    try {
+      const o = options();
+      const r = await recordGif(view, {
+        width: w.value, frames: n.value, animFps, legend: o.legend, cancelled: () => gifStop,
+        onFrame: (k) => { gif.textContent = `Stop GIF (${k}/${n.value})`; },
+      });
+      downloadBlob(r.blob, `${stem()}.gif`);
+      say(`GIF, ${r.width} × ${r.height}, ${r.frames} frames at ${LIMITS.gif.fps} fps, ${(r.blob.size / 1024).toFixed(0)} kB`, w.note, n.note,
+        o.transparent ? 'a GIF has no transparent background' : '');
+    } catch (e) { fail('GIF', e); }
+    gifBusy = false;
+    gif.textContent = 'GIF';
+    gif.setAttribute('aria-pressed', 'false');
+  });
+
   const record = $('record');
   let recording = null;
   record.disabled = !webmType();
   if (!webmType()) record.title = 'This browser cannot record WebM';
   record.addEventListener('click', async () => {
     if (recording) {
-      const blob = await recording.stop();
+      const r = recording;
       recording = null;
+      record.disabled = true;
+      say('Saving the WebM…');
+      const out = await r.stop();
+      record.disabled = false;
       record.textContent = 'Record WebM';
       record.setAttribute('aria-pressed', 'false');
-      downloadBlob(blob, `${stem()}.webm`);
-      say(`WebM, ${(blob.size / 1024).toFixed(0)} kB`);
+      downloadBlob(out.blob, `${stem()}-${out.width}.webm`);
+      say(`WebM, ${out.width} × ${out.height}, ${(out.blob.size / 1024).toFixed(0)} kB`, out.note);
       return;
     }
+    const asked = field('video-width', LIMITS.video.min, LIMITS.video.max, 1280, 'Video width');
     try {
-      recording = recordCanvas(canvas, 30);
+      let width = capArea(view, asked.value, LIMITS.video.pixels);
+      width -= width % 2; // video encoders want even sizes
+      recording = recordWebm(view, { width, animFps });
       record.textContent = 'Stop and save';
       record.setAttribute('aria-pressed', 'true');
-      say('Recording the canvas…');
-    } catch (e) { say(String(e.message ?? e)); }
+      say(`Recording ${recording.width} × ${recording.height}…`, asked.note,
+        width < asked.value - 1 ? `at most ${(LIMITS.video.pixels / 1e6).toFixed(1)} million pixels` : '');
+    } catch (e) { fail('Recording', e); }
   });
 }
