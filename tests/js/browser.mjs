@@ -14,30 +14,47 @@ mkdirSync(SHOTS, { recursive: true });
 export const CHROMIUM_ARGS = ['--no-sandbox', '--disable-gpu', '--disable-background-networking',
   '--disable-component-update', '--no-first-run', '--disable-sync'];
 
-/** Start the static server and the browser; returns {server, browser, base, close()}. */
-export async function startBrowser() {
+/**
+ * Keeps every section of the page open (the sidebar's "Overlays", "Edit the map", "Export for
+ * slides"… and the panels' "More parameters"), as a person opens them before using what is inside:
+ * most tests are about what the sections hold, not about the first screen, which
+ * page-learn.test.mjs checks with the sections as they are (startBrowser({openSections: false})).
+ */
+function openEverySection() {
+  const open = () => document.querySelectorAll('details:not([open])').forEach((d) => { d.open = true; });
+  document.addEventListener('DOMContentLoaded', () => {
+    open();
+    new MutationObserver(open).observe(document.body, { childList: true, subtree: true });
+  });
+}
+
+/**
+ * Start the static server and the browser; returns {server, browser, base, close()}. Its pages
+ * keep their sections open unless `openSections` is false.
+ */
+export async function startBrowser({ openSections = true } = {}) {
   const server = await serve({ port: 0 });
   const base = `http://127.0.0.1:${server.address().port}/`;
   const browser = await chromium.launch({ executablePath: '/usr/bin/chromium', args: CHROMIUM_ARGS });
+  if (openSections) {
+    const newPage = browser.newPage.bind(browser);
+    browser.newPage = async (options) => {
+      const page = await newPage(options);
+      await page.addInitScript(openEverySection);
+      return page;
+    };
+    const newContext = browser.newContext.bind(browser);
+    browser.newContext = async (options) => {
+      const context = await newContext(options);
+      await context.addInitScript(openEverySection);
+      return context;
+    };
+  }
   const close = async () => {
     await browser.close();
     await new Promise((resolve) => server.close(resolve));
   };
   return { server, browser, base, close };
-}
-
-/**
- * Open every closed section of the page (the sidebar's "Overlays", "Edit the map", "Export for
- * slides"… and the panels' "More parameters"), as a person does before using what is inside:
- * most tests are about what the sections hold, not about the first screen (page-learn.test.mjs
- * checks that, with the sections closed).
- */
-export async function openSections(page) {
-  for (;;) {
-    const closed = page.locator('details:not([open]) > summary').filter({ visible: true });
-    if (!(await closed.count())) return;
-    await closed.first().click();
-  }
 }
 
 /**
@@ -121,7 +138,6 @@ export async function pageFixture() {
     });
     await fx.page.goto(fx.env.base);
     await fx.waitState('idle', 30000);
-    await openSections(fx.page);
   });
   afterEach(async () => {
     await fx.page?.close();

@@ -74,7 +74,8 @@ for (const [scenario, planner, params, seed] of RUNS) {
     const linesSeen = new Set();
     let checked = 0;
     for (const r of recs) {
-      const { line, caption } = x.read(r);
+      x.read(r);
+      const { line, caption } = x;
       if (r[0] === K.CELL_SHAPE || r[0] === K.FIELD || r[0] === K.SAMPLE_TRY || r[0] === K.CELL || r[0] === K.POTENTIAL) continue;
       assert.ok(ids.has(line), `${planner}: kind ${r[0]} put the panel on line "${line}", not in its pseudocode`);
       linesSeen.add(line);
@@ -94,7 +95,8 @@ test('explain: a growth step reads sample → nearest → step → added or bloc
   const recs = records('narrow', 'rrt', {}, 7);
   let blocked = 0, added = 0;
   for (const r of recs) {
-    const { caption } = x.read(r);
+    x.read(r);
+    const { caption } = x;
     if (r[0] === K.COLLISION) {
       blocked++;
       assert.match(caption, /^sample (q_goal )?\(.*\)( \(goal bias\))? → nearest #\d+ at [\d.]+ → step [\d.]+( \(reaches it\))? → (blocked by obstacle \d+|blocked by the map's edge) at /);
@@ -114,4 +116,23 @@ test('explain: the pseudocode shows the lines of the options chosen', () => {
   const all = pseudocode('rrt', optionsOf({ planner: 'rrt', params: { goal_bias: 0.1, dd_radius: 0.1, exhausted: 3, extend: 'connect', sampler: 'bridge' } })).lines.map((l) => l.id);
   for (const id of ['goal', 'domain', 'exhausted', 'connect', 'try']) assert.ok(all.includes(id), id);
   assert.equal(pseudocode('no-such-planner'), null);
+});
+
+test('explain: a long reveal read at once says what reading every record one by one says', () => {
+  for (const [scenario, planner, params, seed] of [['narrow', 'rrt-connect', {}, 7], ['narrow', 'rrt', { extend: 'connect' }, 3], ['hex-trap', 'hex-potential', {}, 1]]) {
+    const recs = records(scenario, planner, params, seed);
+    const flat = new Float64Array(recs.length * STRIDE);
+    recs.forEach((r, i) => flat.set(r, i * STRIDE));
+    const store = { spans: function* (a, b) { yield [flat, a * STRIDE, b * STRIDE]; }, record: (i) => flat.subarray(i * STRIDE, (i + 1) * STRIDE) };
+    for (const end of [recs.length, Math.floor(recs.length / 2), Math.floor(recs.length / 3) + 7]) {
+      const one = new Explainer(planner, 'point');
+      for (let i = 0; i < end; i++) one.read(flat, i * STRIDE);
+      const bulk = new Explainer(planner, 'point');
+      const skipped = bulk.readStore(store, 0, end);
+      assert.ok(skipped, 'the long reveal was read from its last step');
+      assert.equal(bulk.line, one.line, `${planner} at ${end}: line`);
+      if (planner !== 'hex-potential') assert.equal(bulk.caption, one.caption, `${planner} at ${end}: caption`);
+      assert.deepEqual(bulk.actors, one.actors, `${planner} at ${end}: actors`);
+    }
+  }
 });

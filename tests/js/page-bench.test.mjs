@@ -351,6 +351,7 @@ test('a click on a run\'s dot offers that run in the playground, which opens wit
   const dot = dots.find((d) => d.series === 1 && d.seed === 2) || dots.find((d) => d.series === 1);
   const benchRow = (await fx.page.evaluate(() => window.planarium.report())).setups[1].rows.find((r) => r.seed === dot?.seed);
   assert.ok(dot, `a dot of "biased": ${JSON.stringify(dots)}`);
+  await fx.page.locator('#plot-cost-time').scrollIntoViewIfNeeded();
   const box = await fx.page.locator('#plot-cost-time').boundingBox();
   // a click away from every dot offers nothing
   await fx.page.mouse.click(box.x + 4, box.y + 4);

@@ -331,13 +331,14 @@ test('odd sizes typed into the export fields are bounded, and the status says so
   assert.equal(webmInfo(webm.bytes).width, 320);
   await page.screenshot({ path: join(SHOTS, 'exports-section.png') });
   await page.locator('#h-export').scrollIntoViewIfNeeded();
-  await page.locator('section[aria-labelledby="h-export"]').screenshot({ path: join(SHOTS, 'exports-controls.png') });
+  await page.locator('#sec-export').screenshot({ path: join(SHOTS, 'exports-controls.png') });
 });
 
 test('a GIF taken while a run grows follows it (the export view draws the records as they come)', async () => {
   await fx.pickScenario('narrow', 'Narrow passage');
   await page.fill('#gif-width', '240');
   await page.fill('#gif-frames', '25');
+  await page.click('#speed-instant'); // the run's batches shown as they come
   await watchCanvas();
   const [d] = await Promise.all([page.waitForEvent('download', { timeout: 120000 }), (async () => {
     await page.click('#export-gif'); // the first frame is taken at once: before the run

@@ -10,7 +10,7 @@ import { startBrowser, SHOTS } from './browser.mjs';
 import { EventKind as K } from '../../www/run/events.js';
 
 let env;
-before(async () => { env = await startBrowser(); });
+before(async () => { env = await startBrowser({ openSections: false }); });
 after(async () => { await env?.close(); });
 
 async function open(viewport, hash = '') {

@@ -9,7 +9,7 @@ import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { pageFixture, ROOT as root, SHOTS as shots } from './browser.mjs';
 import { initSync, planners, builtins } from '../../www/pkg/planarium.js';
-import { readShare, writeShare, setupFor, configOf, RESERVED, encodeScenario, decodeScenario } from '../../www/ui/links.js';
+import { readShare, writeShare, setupFor, configOf, RESERVED, encodeScenario, decodeScenario, VIEW_DEFAULTS } from '../../www/ui/links.js';
 import { OVERLAYS } from '../../www/draw/palette.js';
 
 const fx = await pageFixture();
@@ -118,7 +118,7 @@ test('a link restores scenario, planner, parameter, seed, overlay and speed, and
   await type(page, 'seed', '11');
   await waitState('idle');
   await page.click('#show-rejected'); // off by default
-  await page.click('#show-domains'); // on by default
+  await page.click('#show-collisions'); // on by default (the domains' box shows only with dynamic domains on)
   await type(page, 'step-size', '25');
   await fastPlayback();
   const before = await settingsOf(page);
@@ -133,7 +133,7 @@ test('a link restores scenario, planner, parameter, seed, overlay and speed, and
   console.log(`link: ${link}`);
   const hash = new URL(link).hash;
   assert.equal(hash, await page.evaluate(() => location.hash), 'the address bar holds the same link');
-  assert.match(hash, /^#scenario=narrow&planner=rrt&seed=11&goal_bias=0\.2&overlays=\+show-rejected,-show-domains&speed=100&step-size=25$/);
+  assert.match(hash, /^#scenario=narrow&planner=rrt&seed=11&goal_bias=0\.2&overlays=\+show-rejected,-show-collisions&speed=100&step-size=25$/);
 
   const other = await openPage(link);
   try {
@@ -198,7 +198,7 @@ test('a bad link shows a message, falls back to defaults, and the page still wor
     // defaults: the first built-in, its own planner block, the default speed
     assert.equal(await other.inputValue('#scenario'), builtinList[0].id);
     assert.equal(await other.inputValue('#planner'), builtinList[0].scenario.planner.name);
-    assert.equal(await other.inputValue('#speed'), '60');
+    assert.equal(await other.inputValue('#speed'), String(VIEW_DEFAULTS.speed));
     await other.$eval('#speed', (el) => { el.value = el.max; el.dispatchEvent(new Event('input', { bubbles: true })); });
     await other.click('#run');
     await other.waitForFunction(() => document.getElementById('status').textContent === 'solved', null, { timeout: 60000 });

@@ -179,7 +179,6 @@ export class Explainer {
   reset() {
     this.line = 'init';
     this.parts = [];
-    this.caption = '';
     this.actors = {};
     this.events = 0;
     this.connecting = false; // RRT-Connect: in CONNECT (growing the other tree toward q_new)
@@ -198,13 +197,14 @@ export class Explainer {
   }
 
   /**
-   * Read one record (`r`: STRIDE numbers, or a Float64Array view). Returns {line, caption}: the
-   * pseudocode line's id and the caption after it.
+   * Read one record: STRIDE numbers of `r` from offset `o` (an array, or a chunk of the record
+   * store: no copy is made). Then `line` is the pseudocode line's id and `caption` the step's
+   * words.
    */
-  read(r) {
+  read(r, o = 0) {
     this.events++;
-    const kind = r[0], tree = r[1], id = r[2], parent = r[3];
-    const [x, y, px, py, c0, c1, pc0] = [r[4], r[5], r[6], r[7], r[8], r[9], r[10]];
+    const kind = r[o], tree = r[o + 1], id = r[o + 2], parent = r[o + 3];
+    const x = r[o + 4], y = r[o + 5], px = r[o + 6], py = r[o + 7], c0 = r[o + 8], c1 = r[o + 9], pc0 = r[o + 10], pc1 = r[o + 11];
     const A = this.actors;
     switch (kind) {
       case K.SAMPLE_TRY:
@@ -350,8 +350,8 @@ export class Explainer {
         break;
       }
       case K.POTENTIAL:
-        if (this.line !== 'potential') this.begin(`U(#${id}) = ${num(c1)}${pc1(r) ? ' (lowest: step there)' : ''}`);
-        else this.then(`U(#${id}) = ${num(c1)}${pc1(r) ? ' (lowest)' : ''}`);
+        if (this.line !== 'potential') this.begin(`U(#${id}) = ${num(c1)}${pc1 === 1 ? ' (lowest: step there)' : ''}`);
+        else this.then(`U(#${id}) = ${num(c1)}${pc1 === 1 ? ' (lowest)' : ''}`);
         A.cell = [x, y];
         this.line = 'potential';
         break;
@@ -363,16 +363,38 @@ export class Explainer {
       default:
         break;
     }
-    this.caption = this.parts.join(' → ');
-    return { line: this.line, caption: this.caption };
   }
 
-  /** Read records [from, to) of `store` (a RecordStore). */
+  /** The caption of the step so far (joined when asked for: a bulk reveal reads thousands of records). */
+  get caption() { return this.parts.join(' → '); }
+
+  /**
+   * Read records [from, to) of `store` (a RecordStore). A long reveal (Instant, a step of many
+   * iterations) is read from the start of its last step only: the caption and line depend on the
+   * current step, which begins at a SAMPLE for the sampling planners (CONNECT included); it counts
+   * the records skipped. Returns whether records were skipped.
+   */
   readStore(store, from, to) {
-    for (const [d, o0, o1] of store.spans(from, to)) {
-      for (let o = o0; o < o1; o += STRIDE) this.read(d.subarray(o, o + STRIDE));
+    let start = from;
+    if (to - from > LONG_REVEAL) {
+      start = Math.max(from, to - LONG_REVEAL);
+      if (SAMPLING.has(this.planner)) {
+        for (let i = to - 1, n = 0; i >= from && n < MAX_LOOK_BACK; i--, n++) {
+          if (store.record(i)[0] === K.SAMPLE) { start = i; break; }
+        }
+      }
+      this.reset();
+      this.events = start;
     }
+    for (const [d, o0, o1] of store.spans(start, to)) {
+      for (let o = o0; o < o1; o += STRIDE) this.read(d, o);
+    }
+    return start > from;
   }
 }
 
-function pc1(r) { return r[11] === 1; }
+/** Reveals longer than this many records are read from their last step only (readStore). */
+const LONG_REVEAL = 256;
+/** How far back readStore looks for the last step's SAMPLE. */
+const MAX_LOOK_BACK = 1 << 17;
+const SAMPLING = new Set(['rrt', 'rrt-connect', 'rrt-star', 'inspection']);
