@@ -92,6 +92,12 @@ for (const [width, height, tag] of [[1280, 800, 'laptop'], [390, 844, 'phone']])
       return n;
     });
     assert.ok(ring > 20, `the step's actors are drawn (${ring} px)`);
+    // the stats follow the events shown (not the planner, which is ahead by the rest of its batch)
+    const st = await page.evaluate(() => ({ nodes: document.getElementById('stat-nodes').textContent, drawn: window.planarium.nodeCount() }));
+    assert.equal(Number(st.nodes.split(' of ')[0]), st.drawn, `stats nodes ${st.nodes}, drawn ${st.drawn}`);
+    // the legend names what the step draws
+    const legend = await page.$$eval('#legend li', (lis) => lis.map((li) => li.textContent));
+    for (const item of ['latest sample', 'this step: nearest node, step, range', 'this step: blocked']) assert.ok(legend.includes(item), `legend: ${item}`);
     await page.screenshot({ path: `${SHOTS}/learn-${tag}-step.png` });
 
     // Normal playback is watchable: a moment after Run the replay is still behind the planner,

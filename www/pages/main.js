@@ -130,6 +130,8 @@ const player = new Player({
       cspace.render(view.robotState);
       chart.render(lane.iterationNow);
       updateRunStatus();
+      // the stats say what is drawn: refreshed when the playback revealed more
+      if (playback.store.length !== statsShown) { statsShown = playback.store.length; updateStats(); }
     },
   },
 });
@@ -456,6 +458,7 @@ function runStatusText() {
   }
 }
 let lastRunStatus = '';
+let statsShown = -1; // the records revealed when the stats were last filled
 function updateRunStatus() {
   const text = registry ? runStatusText() : 'Loading the planning core…';
   if (text === lastRunStatus) return;
@@ -497,7 +500,7 @@ controller.onChange((state) => { syncButtons(); updateStats(); updateRunStatus()
 
 function buildLegend() {
   const name = panel?.planner()?.name;
-  fillLegend(ui.legend, [...view.legend(name), ...cellLegend(name)]);
+  fillLegend(ui.legend, [...view.legend(name), ...cellLegend(name), ...explain.legend(name)]);
 }
 
 // Start / goal editing and the solution file
@@ -522,7 +525,7 @@ const obstacleEditor = new ObstacleEditor({ canvas: ui.canvas, view, editor, roo
 // Exports for slides (exports.js): PNG at a width, SVG, GIF, WebM at a width; legend and transparency options
 wireExports({
   view, stem: () => (loaded?.name || 'planarium').replace(/[^\w.-]+/g, '-').toLowerCase(),
-  legend: () => [...view.legend(panel?.planner()?.name), ...cellLegend(panel?.planner()?.name)],
+  legend: () => [...view.legend(panel?.planner()?.name), ...cellLegend(panel?.planner()?.name), ...explain.legend(panel?.planner()?.name)],
   animFps: () => player.fps(),
 });
 

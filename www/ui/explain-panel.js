@@ -51,6 +51,22 @@ export class ExplainPanel {
     this.clearRun();
   }
 
+  /**
+   * Legend items for what the panel draws on the canvas and the marks a sampling planner's step
+   * leaves (the latest sample; RRT-Connect's meeting ring), for `planner` (registry name).
+   */
+  legend(planner) {
+    if (!['rrt', 'rrt-connect', 'rrt-star', 'inspection'].includes(planner)) return [];
+    /** @type {Array<{label: string, color: string, shape: string}>} */
+    const items = [
+      { label: 'latest sample', color: ACTOR.sample, shape: 'dot' },
+      { label: 'this step: nearest node, step, range', color: ACTOR.near, shape: 'ring' },
+      { label: 'this step: blocked', color: ACTOR.blocked, shape: 'cross' },
+    ];
+    if (planner === 'rrt-connect') items.push({ label: 'trees connected', color: PALETTE.connect, shape: 'ring' });
+    return items;
+  }
+
   /** Announce captions to screen readers (paused or stepping), or not (running: too many). */
   setLive(on) {
     if (on === this.live) return;
