@@ -161,6 +161,24 @@ test('only the overlays and parameters that apply are shown', async () => {
   const params = await page.evaluate(() => [...document.querySelectorAll('#planner-params label.field')].length);
   assert.ok(params <= 3, `${params} main parameters`);
   assert.match(await page.textContent('#more-params summary'), /^More parameters \(\d+\)/);
+  // a sampling planner: the sampler's own parameters show under the sampler that uses them
+  await page.selectOption('#scenario', 'narrow');
+  await page.waitForFunction(() => document.getElementById('scenario-name').textContent === 'Narrow passage' && window.planarium.state() === 'idle');
+  await page.selectOption('#planner', 'rrt');
+  await page.waitForFunction(() => window.planarium.state() === 'idle');
+  await page.click('#more-params > summary');
+  assert.ok(await page.isVisible('#param-sampler'));
+  assert.ok(!(await page.isVisible('#param-sigma')) && !(await page.isVisible('#param-perseverance')), 'uniform: no sigma, no perseverance');
+  await page.selectOption('#param-sampler', 'gaussian');
+  await page.waitForFunction(() => window.planarium.state() === 'idle');
+  assert.ok(await page.isVisible('#param-sigma') && !(await page.isVisible('#param-perseverance')), 'gaussian: sigma');
+  assert.ok(!(await page.isVisible('#param-dd_adaptive')), 'no domain radius: no adaptation');
+  await page.fill('#param-dd_radius', '0.1');
+  await page.press('#param-dd_radius', 'Enter');
+  await page.dispatchEvent('#param-dd_radius', 'change');
+  await page.waitForFunction(() => window.planarium.state() === 'idle');
+  assert.ok(await page.isVisible('#param-dd_adaptive'), 'a domain radius: its adaptation shows');
+  assert.ok((await visible()).includes('showDomains') && (await visible()).includes('showTries'), 'and the overlays of domains and raw tries');
   await page.close();
 });
 

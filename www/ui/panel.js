@@ -18,6 +18,22 @@ import { el } from './dom.js';
 /** How many of a planner's own parameters the panel shows before "More parameters". */
 export const MAIN_PARAMS = 3;
 
+/**
+ * Parameters that only act under another's value (their doc strings say so): shown only then.
+ * `values(name)` gives a parameter's value (set, or its default).
+ * @type {Record<string, (values: (name: string) => any) => boolean>}
+ */
+export const APPLIES = Object.freeze({
+  sigma: (v) => ['gaussian', 'bridge'].includes(v('sampler')),
+  collision_sigma: (v) => v('sampler') === 'near-collision',
+  random_sigma: (v) => v('sampler') === 'near-collision',
+  perseverance: (v) => v('sampler') === 'near-collision',
+  sampler_tries: (v) => ['gaussian', 'bridge', 'obstacle'].includes(v('sampler')),
+  dd_adaptive: (v) => Number(v('dd_radius')) > 0,
+  dd_min_radius: (v) => Number(v('dd_radius')) > 0,
+  exhausted_policy: (v) => Number(v('exhausted')) > 0,
+});
+
 /** Parse an input's text for `spec`: {ok, value} or {ok: false, why}. Empty text: {ok, value: undefined}. */
 export function parseParam(spec, text) {
   if (spec.kind === 'choice') {
@@ -61,6 +77,7 @@ export function createPanel(root, registry, onChange, { prefix = '', seed: withS
   };
   for (const p of planners) for (const g of groupsOf(p)) state.groups[g.name] ||= {};
   const controls = [];
+  const fields = new Map(); // parameter name → its label, for APPLIES
   const id = (name) => `${prefix}${name}`;
 
   const plannerSelect = el('select', { id: id('planner') });
@@ -139,10 +156,28 @@ export function createPanel(root, registry, onChange, { prefix = '', seed: withS
       } else {
         store[spec.name] = parsed.value;
       }
+      syncApplies();
       emit();
     });
     controls.push(input);
-    return el('label', { className: 'field', htmlFor: fid }, el('span', { text: spec.label }), input, hint);
+    const label = el('label', { className: 'field', htmlFor: fid }, el('span', { text: spec.label }), input, hint);
+    fields.set(spec.name, label);
+    return label;
+  }
+
+  /** Show only the parameters that act under the values chosen (APPLIES). */
+  function syncApplies() {
+    const p = current();
+    const value = (name) => {
+      const own = p.params.find((q) => q.name === name);
+      if (own) return state.set[p.name][name] ?? own.default;
+      for (const g of groupsOf(p)) {
+        const spec = g.params.find((q) => q.name === name);
+        if (spec) return state.groups[g.name][name] ?? spec.default;
+      }
+      return undefined;
+    };
+    for (const [name, label] of fields) label.hidden = !!APPLIES[name] && !APPLIES[name](value);
   }
 
   function renderOptions() {
@@ -173,6 +208,7 @@ export function createPanel(root, registry, onChange, { prefix = '', seed: withS
     summary.textContent = p.summary || '';
     const keep = new Set([plannerSelect, seed]);
     controls.splice(0, controls.length, ...keep);
+    fields.clear();
     params.replaceChildren(el('legend', { text: `${p.label} parameters` }));
     if (!p.params.length) params.append(el('p', { className: 'hint', text: 'No parameters.' }));
     const main = p.params.slice(0, MAIN_PARAMS), rest = p.params.slice(MAIN_PARAMS);
@@ -192,6 +228,7 @@ export function createPanel(root, registry, onChange, { prefix = '', seed: withS
     const n = rest.length + groupsOf(p).reduce((k, g) => k + g.params.length, 0) + runParams.length;
     moreSummary.textContent = `More parameters (${n}): ${[rest.length ? 'planner' : '', ...groupsOf(p).filter((g) => g.params.length).map((g) => g.label.toLowerCase()), 'limits'].filter(Boolean).join(', ')}`;
     more.replaceChildren(moreSummary, moreOwn, groupBox, limits);
+    syncApplies();
     seed.value = String(state.seed);
   }
 
