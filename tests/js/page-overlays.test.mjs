@@ -130,7 +130,10 @@ test('accepted and rejected samples are drawn in their own colours when switched
   await waitStatus('solved');
   await nextFrames();
   const colours = () => countColours('canvas', [PALETTE.accepted, PALETTE.rejected], 4);
-  assert.deepEqual(await colours(), [0, 0], 'both off by default');
+  // (a few anti-aliased pixels of the animated robot, grey at 55% over the scene, can match the
+  // rejected grey by chance, depending on where it is: off means fewer than 10, on more than 20)
+  const off = await colours();
+  assert.ok(off[0] < 10 && off[1] < 10, `both off by default: ${off}`);
   await toggle('show-accepted');
   await toggle('show-rejected');
   const [accepted, rejected] = await colours();
@@ -138,6 +141,6 @@ test('accepted and rejected samples are drawn in their own colours when switched
   assert.ok(accepted > 40 && rejected > 20, `accepted ${accepted}, rejected ${rejected}`);
   await toggle('show-accepted');
   const [acceptedOff, rejectedOn] = await colours();
-  assert.equal(acceptedOff, 0);
+  assert.ok(acceptedOff < 10, `accepted off: ${acceptedOff}`);
   assert.ok(rejectedOn > 20);
 });
