@@ -1,45 +1,34 @@
 //! The seeded, portable random number generator every planner uses.
 //!
-//! xoshiro256++ seeded through SplitMix64: a few lines of integer arithmetic, so the same seed gives
-//! the same stream natively, in Node and in the browser, whatever crate versions are in use. (The
-//! `rand` crate does not promise value stability of its distributions across versions; a planner's
-//! tree must not change because a dependency was upgraded.) No planner code may use a thread or OS RNG.
+//! xoshiro256++ (`rand_xoshiro::Xoshiro256PlusPlus`), seeded from a `u64` through SplitMix64
+//! (`rand_core::SeedableRng::seed_from_u64`), behind `rand_core`'s [`RngCore`] so code written
+//! for the `rand` traits can draw from it. The same seed gives the same stream natively, in Node and
+//! in the browser; a test pins its first values, which are the ones the generator written here by
+//! hand gave, so no saved run changed when the crate took its place. The conversions to numbers
+//! (unit interval, integer range, normal via `libm`) stay this file's: `rand`'s distributions do
+//! not promise the same values across versions, and a planner's tree must not change because a
+//! dependency was upgraded. No planner code may use a thread or OS RNG.
 
 use crate::math::Real;
+use rand_core::{RngCore, SeedableRng};
+use rand_xoshiro::Xoshiro256PlusPlus;
 
 /// A seeded xoshiro256++ generator.
 #[derive(Clone, Debug)]
 pub struct Rng {
-    s: [u64; 4],
+    inner: Xoshiro256PlusPlus,
 }
 
 impl Rng {
     /// A generator whose whole stream is fixed by `seed`.
     pub fn new(seed: u64) -> Self {
-        let mut z = seed;
-        let mut next = || {
-            z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
-            let mut x = z;
-            x = (x ^ (x >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-            x = (x ^ (x >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-            x ^ (x >> 31)
-        };
-        Rng { s: [next(), next(), next(), next()] }
+        Rng { inner: Xoshiro256PlusPlus::seed_from_u64(seed) }
     }
 
     /// The next 64 random bits.
     #[inline]
     pub fn next_u64(&mut self) -> u64 {
-        let s = &mut self.s;
-        let result = s[0].wrapping_add(s[3]).rotate_left(23).wrapping_add(s[0]);
-        let t = s[1] << 17;
-        s[2] ^= s[0];
-        s[3] ^= s[1];
-        s[1] ^= s[2];
-        s[0] ^= s[3];
-        s[2] ^= t;
-        s[3] = s[3].rotate_left(45);
-        result
+        self.inner.next_u64()
     }
 
     /// Uniform in `[0, 1)`, with 53 random bits.
@@ -70,6 +59,31 @@ impl Rng {
     }
 }
 
+impl RngCore for Rng {
+    #[inline]
+    fn next_u32(&mut self) -> u32 {
+        self.inner.next_u32()
+    }
+    #[inline]
+    fn next_u64(&mut self) -> u64 {
+        self.inner.next_u64()
+    }
+    #[inline]
+    fn fill_bytes(&mut self, dst: &mut [u8]) {
+        self.inner.fill_bytes(dst)
+    }
+}
+
+impl SeedableRng for Rng {
+    type Seed = <Xoshiro256PlusPlus as SeedableRng>::Seed;
+    fn from_seed(seed: Self::Seed) -> Self {
+        Rng { inner: Xoshiro256PlusPlus::from_seed(seed) }
+    }
+    fn seed_from_u64(seed: u64) -> Self {
+        Rng::new(seed)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -87,8 +101,18 @@ mod tests {
         assert_eq!(first, PINNED_SEED1);
     }
 
-    // Computed independently (a Python transcription of xoshiro256++ and SplitMix64).
+    // Computed independently (a Python transcription of xoshiro256++ and SplitMix64), and what the
+    // hand-written generator this file had before rand_xoshiro gave.
     const PINNED_SEED1: [u64; 3] = [14971601782005023387, 13781649495232077965, 1847458086238483744];
+
+    #[test]
+    fn the_rand_core_traits_draw_the_same_stream() {
+        let mut a = Rng::new(42);
+        let mut b = <Rng as SeedableRng>::seed_from_u64(42);
+        for _ in 0..100 {
+            assert_eq!(a.next_u64(), RngCore::next_u64(&mut b));
+        }
+    }
 
     #[test]
     fn uniform_in_range() {
