@@ -10,7 +10,7 @@
 // Read-only state for tests is exposed as window.planarium.
 
 import init, { builtins as builtinsJson, planners as plannersJson, bench_export as benchExport, parse_setups as parseSetups, import_file as importFile } from '../pkg/planarium.js';
-import { fillScenarioPicker } from '../ui/controls.js';
+import { fillScenarioPicker, removeCustomScenarios, markCustomScenario } from '../ui/controls.js';
 import { createPanel, taskOf } from '../ui/panel.js';
 import { setupFor, configOf } from '../ui/links.js';
 import { applyPageLimits } from '../run/limits.js';
@@ -330,20 +330,8 @@ function useText(text, name, label) {
   return null;
 }
 
-function removeCustom() {
-  for (const o of [...ui.scenario.options]) if (o.dataset.file) o.remove();
-}
-
-/** Show `label` in the scenario picker for a scenario that is not a built-in. */
-function markCustom(label) {
-  removeCustom();
-  const opt = new Option(label, '', true, true);
-  opt.dataset.file = 'yes';
-  opt.disabled = true;
-  ui.scenario.append(opt);
-  ui.scenario.value = '';
-  opt.selected = true;
-}
+const removeCustom = () => removeCustomScenarios(ui.scenario);
+const markCustom = (label) => markCustomScenario(ui.scenario, label);
 
 // The set-ups: the text is what runs; the list shows it, the builder adds to it
 

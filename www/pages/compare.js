@@ -20,7 +20,7 @@ import { Chart } from '../draw/chart.js';
 import { Lane } from '../run/lane.js';
 import { createStats } from '../ui/stats.js';
 import { createOverlays } from '../draw/overlays.js';
-import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend } from '../ui/controls.js';
+import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend, removeCustomScenarios, markCustomScenario } from '../ui/controls.js';
 import { applyPageLimits } from '../run/limits.js';
 import init, { parse_setups as parseSetups } from '../pkg/planarium.js';
 import { setupFor } from '../ui/links.js';
@@ -157,20 +157,8 @@ function load(text, defaults, file = null) {
   controller.fire('load');
 }
 
-function removeCustom() {
-  for (const o of [...ui.scenario.options]) if (o.dataset.file) o.remove();
-}
-
-/** Show `label` in the scenario picker for a scenario that is not a built-in. */
-function markCustom(label) {
-  removeCustom();
-  const opt = new Option(label, '', true, true);
-  opt.dataset.file = 'yes';
-  opt.disabled = true;
-  ui.scenario.append(opt);
-  ui.scenario.value = '';
-  opt.selected = true;
-}
+const removeCustom = () => removeCustomScenarios(ui.scenario);
+const markCustom = (label) => markCustomScenario(ui.scenario, label);
 
 function onLoaded(side, msg) {
   side.loadedGen = loadGen;

@@ -28,7 +28,7 @@ import { cellLegend, cellSummary } from '../draw/cells.js';
 import { linkViews } from '../draw/linked.js';
 import { ExplainPanel } from '../ui/explain-panel.js';
 import { createTrials } from '../ui/trials.js';
-import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend } from '../ui/controls.js';
+import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend, removeCustomScenarios, markCustomScenario } from '../ui/controls.js';
 import { readShare, setupFor, writeShare, checkLink, boundedProblems, cut, VIEW_DEFAULTS, MAX_HASH_CHARS, MAX_LINK_CHARS, MAX_SCENARIO_BYTES } from '../ui/links.js';
 import { OVERLAYS } from '../draw/palette.js';
 import { applyPageLimits } from '../run/limits.js';
@@ -370,20 +370,8 @@ window.addEventListener('hashchange', () => {
   if (location.hash.length > 1) restoreHash(location.hash);
 });
 
-function removeCustomOptions() {
-  for (const o of [...ui.scenario.options]) if (o.dataset.file) o.remove();
-}
-
-/** Show `label` in the scenario picker for a scenario that is not a built-in. */
-function markCustom(label) {
-  removeCustomOptions();
-  const opt = new Option(label, '', true, true);
-  opt.dataset.file = 'yes';
-  opt.disabled = true;
-  ui.scenario.append(opt);
-  ui.scenario.value = '';
-  opt.selected = true;
-}
+const removeCustomOptions = () => removeCustomScenarios(ui.scenario);
+const markCustom = (label) => markCustomScenario(ui.scenario, label);
 
 // Display
 

@@ -21,6 +21,12 @@ const SAMPLER_LINES = /** @type {Line[]} */ ([
   { id: 'try', text: 'SAMPLE(): uniform draws, checked', indent: 2, when: (o) => !!o.sampler && o.sampler !== 'uniform' && o.sampler !== 'goal-biased' },
 ]);
 
+// The tree variants' lines, under NEAREST (RRT and RRT-Connect grow with them).
+const VARIANT_LINES = /** @type {Line[]} */ ([
+  { id: 'exhausted', text: 'skip nodes that failed too often (exhausted)', indent: 2, when: (o) => !!o.exhausted },
+  { id: 'domain', text: 'if d > r(q_near): reject (dynamic domain)', indent: 2, when: (o) => !!o.domain },
+]);
+
 /** @type {Record<string, Pseudocode>} */
 export const PSEUDOCODE = {
   rrt: {
@@ -31,8 +37,7 @@ export const PSEUDOCODE = {
       { id: 'sample', text: 'q_rand ← SAMPLE()', indent: 1 },
       ...SAMPLER_LINES,
       { id: 'nearest', text: 'q_near ← NEAREST(T, q_rand)', indent: 1 },
-      { id: 'exhausted', text: 'skip nodes that failed too often (exhausted)', indent: 2, when: (o) => !!o.exhausted },
-      { id: 'domain', text: 'if d > r(q_near): reject (dynamic domain)', indent: 2, when: (o) => !!o.domain },
+      ...VARIANT_LINES,
       { id: 'steer', text: 'q_new ← STEER(q_near, q_rand, range)', indent: 1 },
       { id: 'check', text: 'if not MOTION_FREE(q_near, q_new): reject', indent: 1 },
       { id: 'add', text: 'T ← T ∪ {q_new}, parent(q_new) ← q_near', indent: 1 },
@@ -48,8 +53,7 @@ export const PSEUDOCODE = {
       { id: 'sample', text: 'q_rand ← SAMPLE()', indent: 1 },
       ...SAMPLER_LINES,
       { id: 'nearest', text: 'EXTEND(T_a, q_rand): q_near ← NEAREST(T_a, q_rand)', indent: 1 },
-      { id: 'exhausted', text: 'skip nodes that failed too often (exhausted)', indent: 2, when: (o) => !!o.exhausted },
-      { id: 'domain', text: 'if d > r(q_near): reject (dynamic domain)', indent: 2, when: (o) => !!o.domain },
+      ...VARIANT_LINES,
       { id: 'steer', text: 'q_new ← STEER(q_near, q_rand, range)', indent: 2 },
       { id: 'check', text: 'if not MOTION_FREE(q_near, q_new): reject', indent: 2 },
       { id: 'add', text: 'add q_new to T_a', indent: 2 },

@@ -96,3 +96,19 @@ export function errorBox(box, textEl) {
     },
   };
 }
+
+/** Take out of scenario picker `select` the entries of scenarios that are not built-ins. */
+export function removeCustomScenarios(select) {
+  for (const o of [...select.options]) if (o.dataset.file) o.remove();
+}
+
+/** Show `label` in scenario picker `select`, chosen, for a scenario that is not a built-in. */
+export function markCustomScenario(select, label) {
+  removeCustomScenarios(select);
+  const opt = new Option(label, '', true, true);
+  opt.dataset.file = 'yes';
+  opt.disabled = true;
+  select.append(opt);
+  select.value = '';
+  opt.selected = true;
+}
