@@ -122,14 +122,21 @@ fn plan(c: &mut Criterion) {
     let mut g = c.benchmark_group("plan");
     g.sample_size(10);
     for (id, range) in PROBLEMS {
-        let setup = parse_setup(&format!("rrt-connect --range {range}"), |spec| Ok(Params::defaults(spec))).expect("a set-up");
+        let setup =
+            parse_setup(&format!("rrt-connect --range {range}"), |spec| Ok(Params::defaults(spec))).expect("a set-up");
         let sc = scenario::builtin(id).expect("a built-in");
         // Seeds 1..=5 per iteration: one seed alone would time one tree.
         g.bench_function(BenchmarkId::new("rrt-connect seeds 1-5", id), |b| {
             b.iter(|| {
                 for seed in 1..=5 {
-                    let config = RunConfig { planner: setup.spec.name.into(), params: setup.params.clone(), seed, record_events: false };
-                    let mut s = Session::new(Problem::from_scenario(&sc).expect("a valid problem"), config).expect("a session");
+                    let config = RunConfig {
+                        planner: setup.spec.name.into(),
+                        params: setup.params.clone(),
+                        seed,
+                        record_events: false,
+                    };
+                    let mut s =
+                        Session::new(Problem::from_scenario(&sc).expect("a valid problem"), config).expect("a session");
                     assert!(s.run_to_end().is_finished());
                     black_box(s.stats());
                 }
@@ -151,7 +158,8 @@ pub fn blocks(n: usize, robot: serde_json::Value, start: serde_json::Value) -> P
                 break 'grid;
             }
             let (x, y) = (1.0 + i as f64 * cell, j as f64 * cell);
-            obstacles.push(serde_json::json!({ "rect": [x + 0.3 * cell, y + 0.3 * cell, x + 0.7 * cell, y + 0.7 * cell] }));
+            obstacles
+                .push(serde_json::json!({ "rect": [x + 0.3 * cell, y + 0.3 * cell, x + 0.7 * cell, y + 0.7 * cell] }));
         }
     }
     let v = serde_json::json!({ "bounds": [0, 0, 2, 1], "obstacles": obstacles, "robot": robot, "start": start, "goal": start, "resolution": 0.002 });
@@ -163,8 +171,16 @@ pub fn scaling_robots() -> [(&'static str, serde_json::Value, serde_json::Value)
     let pi = std::f64::consts::PI;
     [
         ("point", serde_json::json!({ "kind": "point" }), serde_json::json!([0.5, 0.5])),
-        ("rectangle", serde_json::json!({ "kind": "rigid", "footprint": [[-0.05, -0.01], [0.05, -0.01], [0.05, 0.01], [-0.05, 0.01]] }), serde_json::json!([0.5, 0.5, 0.0])),
-        ("arm", serde_json::json!({ "kind": "arm", "base": [1.0, 0.5], "links": [0.25, 0.2, 0.15], "limits": [[-pi, pi], [-pi, pi], [-pi, pi]] }), serde_json::json!([pi, 0.0, 0.0])),
+        (
+            "rectangle",
+            serde_json::json!({ "kind": "rigid", "footprint": [[-0.05, -0.01], [0.05, -0.01], [0.05, 0.01], [-0.05, 0.01]] }),
+            serde_json::json!([0.5, 0.5, 0.0]),
+        ),
+        (
+            "arm",
+            serde_json::json!({ "kind": "arm", "base": [1.0, 0.5], "links": [0.25, 0.2, 0.15], "limits": [[-pi, pi], [-pi, pi], [-pi, pi]] }),
+            serde_json::json!([pi, 0.0, 0.0]),
+        ),
     ]
 }
 

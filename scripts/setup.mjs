@@ -31,6 +31,11 @@ if (!out('cargo --version')) {
 
 const targets = out('rustup target list --installed') || '';
 if (!targets.split('\n').includes('wasm32-unknown-unknown')) sh('rustup target add wasm32-unknown-unknown');
+// rustfmt and clippy are checked by `npm test`; a minimal toolchain profile lacks them.
+const components = out('rustup component list --installed') || '';
+for (const c of ['rustfmt', 'clippy']) {
+  if (!components.split('\n').some((l) => l.startsWith(`${c}-`))) sh(`rustup component add ${c}`);
+}
 
 if (!existsSync(join(root, 'Cargo.lock'))) sh('cargo generate-lockfile');
 const lock = readFileSync(join(root, 'Cargo.lock'), 'utf8');

@@ -1,5 +1,5 @@
 // Runs every test: ESLint's recommended rules on the JavaScript (eslint.config.mjs), tsc --checkJs
-// (tsconfig.json; www/worker/tsconfig.json for the workers), clippy with
+// (tsconfig.json; www/worker/tsconfig.json for the workers), rustfmt (rustfmt.toml), clippy with
 // warnings as errors, native cargo tests, one untimed pass of the
 // micro-benchmarks, the core compiled to wasm under Node (wasm-pack test --node),
 // and the JavaScript tests (the wasm build in Node, the worker protocol, the page in headless
@@ -19,6 +19,8 @@ run('node node_modules/eslint/bin/eslint.js --max-warnings 0 .');
 run('node scripts/build.mjs');
 run('node node_modules/typescript/bin/tsc -p .');
 run('node node_modules/typescript/bin/tsc -p www/worker');
+run('cargo fmt --check');
+run('cargo fmt --check --manifest-path fuzz/Cargo.toml');
 run('cargo clippy --all-targets --release -- -D warnings');
 run('cargo test --release');
 // The micro-benchmarks once each, untimed (criterion's --test): they must keep working.

@@ -130,7 +130,17 @@ impl EventLog {
     /// coordinates of each state.
     #[allow(clippy::too_many_arguments)]
     #[inline]
-    pub fn push(&mut self, kind: EventKind, tree: usize, id: i64, parent: i64, p: Vec2, pp: Vec2, q: &[Real], pq: &[Real]) {
+    pub fn push(
+        &mut self,
+        kind: EventKind,
+        tree: usize,
+        id: i64,
+        parent: i64,
+        p: Vec2,
+        pp: Vec2,
+        q: &[Real],
+        pq: &[Real],
+    ) {
         if self.enabled {
             let c = |s: &[Real], i: usize| s.get(i).copied().unwrap_or(0.0);
             self.data.extend_from_slice(&[
@@ -160,7 +170,20 @@ impl EventLog {
     #[inline]
     pub fn mark(&mut self, kind: EventKind, tree: usize, id: i64, parent: f64, p: Vec2, a: f64, b: f64) {
         if self.enabled {
-            self.data.extend_from_slice(&[kind as u8 as f64, tree as f64, id as f64, parent, p.x, p.y, a, b, 0.0, 0.0, 0.0, 0.0]);
+            self.data.extend_from_slice(&[
+                kind as u8 as f64,
+                tree as f64,
+                id as f64,
+                parent,
+                p.x,
+                p.y,
+                a,
+                b,
+                0.0,
+                0.0,
+                0.0,
+                0.0,
+            ]);
         }
     }
     /// Record an event of values: `[kind, tree, id, parent, v[0], ..., v[7]]` (see each

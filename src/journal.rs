@@ -111,7 +111,8 @@ impl Default for Journal {
 impl Journal {
     /// Start a batch: replay from the first entry (none after a batch that finished).
     pub fn begin(&mut self) {
-        self.mode = if self.entries.len() >= MAX_ENTRIES || self.reals.len() >= MAX_REALS { Mode::Full } else { Mode::On };
+        self.mode =
+            if self.entries.len() >= MAX_ENTRIES || self.reals.len() >= MAX_REALS { Mode::Full } else { Mode::On };
         self.pos = 0;
     }
     /// End a batch that was not suspended: its iterations are done, forget their answers.
@@ -160,7 +161,12 @@ impl Journal {
         if self.mode != Mode::On {
             return;
         }
-        debug_assert_eq!(self.pos, self.entries.len(), "recording {e:?} while replay is unfinished: next {:?}", self.entries.get(self.pos));
+        debug_assert_eq!(
+            self.pos,
+            self.entries.len(),
+            "recording {e:?} while replay is unfinished: next {:?}",
+            self.entries.get(self.pos)
+        );
         self.entries.push(e);
         self.ends.push(self.reals.len());
         self.pos = self.entries.len();

@@ -94,7 +94,8 @@ pub fn to_json() -> serde_json::Value {
 
 /// The error for a text over [`MAX_TEXT_BYTES`], or `None`.
 pub fn text_too_large(text: &str) -> Option<String> {
-    (text.len() > MAX_TEXT_BYTES).then(|| format!("the file is {} bytes; the limit is {} bytes (16 MiB)", text.len(), MAX_TEXT_BYTES))
+    (text.len() > MAX_TEXT_BYTES)
+        .then(|| format!("the file is {} bytes; the limit is {} bytes (16 MiB)", text.len(), MAX_TEXT_BYTES))
 }
 
 /// `(x / step).ceil()` as a step count, or `None` when it is not a finite number at most `max`

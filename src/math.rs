@@ -154,7 +154,10 @@ mod tests {
     fn wrap_angle_is_bit_identical_to_rem_euclid() {
         let mut rng = crate::rng::Rng::new(7);
         let edges = [-3.0 * PI, -2.0 * PI - PI, -PI, -0.0, 0.0, PI, 2.0 * PI, 3.0 * PI, 1e-300, -1e-300, 40.0, -40.0];
-        let near = edges.iter().flat_map(|&e| [e, f64::from_bits(e.to_bits() + 1), f64::from_bits(e.to_bits().saturating_sub(1))]).filter(|a: &Real| a.is_finite());
+        let near = edges
+            .iter()
+            .flat_map(|&e| [e, f64::from_bits(e.to_bits() + 1), f64::from_bits(e.to_bits().saturating_sub(1))])
+            .filter(|a: &Real| a.is_finite());
         let random = (0..200_000).map(|_| rng.uniform(-30.0, 30.0));
         for a in near.chain(random) {
             let (w, r) = (wrap_angle(a), wrap_by_rem(a));

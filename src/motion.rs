@@ -10,9 +10,9 @@
 //!   (each body point stays within reach of one end); otherwise the interval is bisected, each new
 //!   state counted as a check, until it is certified or a collision is found.
 
+use crate::journal::Entry;
 use crate::math::Real;
 use crate::space::StateSpace;
-use crate::journal::Entry;
 use crate::space_info::SpaceInfo;
 
 /// A motion was found invalid (the state found is in the caller's scratch buffer).
@@ -63,7 +63,16 @@ fn in_bisection_order<E>(n: usize, mut visit: impl FnMut(usize) -> Result<(), E>
 /// calls `stop` with the units done; once that says so, it ends with [`Discrete::OutOfTime`],
 /// having visited (all valid) the states counted.
 #[allow(clippy::too_many_arguments)]
-pub fn check_discrete(space: &StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], skip: u64, stop: &dyn Fn(u64) -> bool, mut is_valid: impl FnMut(&[Real]) -> bool) -> (Discrete, u64) {
+pub fn check_discrete(
+    space: &StateSpace,
+    a: &[Real],
+    b: &[Real],
+    n: usize,
+    scratch: &mut [Real],
+    skip: u64,
+    stop: &dyn Fn(u64) -> bool,
+    mut is_valid: impl FnMut(&[Real]) -> bool,
+) -> (Discrete, u64) {
     const EVERY: u64 = 8;
     if skip == 0 && !is_valid(b) {
         scratch.copy_from_slice(b);
@@ -118,11 +127,13 @@ impl SpaceInfo {
             |e| if let Entry::Clear(c) = e { Some(*c) } else { None },
             Entry::Clear,
             0.0,
-            || match motion {
-                Some((a, b)) => self.validity.motion_clearance(a, b, q, cap),
-                None => self.validity.clearance(q, cap),
-            }
-            .unwrap_or(0.0),
+            || {
+                match motion {
+                    Some((a, b)) => self.validity.motion_clearance(a, b, q, cap),
+                    None => self.validity.clearance(q, cap),
+                }
+                .unwrap_or(0.0)
+            },
         )
     }
 
@@ -136,7 +147,8 @@ impl SpaceInfo {
             }
             _ => 0,
         };
-        let (outcome, checks) = self.validity.check_discrete(&self.space, a, b, n, scratch, skip, &|units| self.fresh_work(units));
+        let (outcome, checks) =
+            self.validity.check_discrete(&self.space, a, b, n, scratch, skip, &|units| self.fresh_work(units));
         self.count_checks(checks);
         match outcome {
             Discrete::Valid => Ok(()),
@@ -155,7 +167,15 @@ impl SpaceInfo {
     /// Like the discrete check, but computing each state's clearance (capped at the per-step
     /// displacement) and then certifying every interval between checked states.
     /// `motion`: clearances in units of the motion's parameter (then `disp` is 1).
-    fn check_certified(&self, a: &[Real], b: &[Real], n: usize, disp: Real, motion: bool, scratch: &mut [Real]) -> Result<(), Invalid> {
+    fn check_certified(
+        &self,
+        a: &[Real],
+        b: &[Real],
+        n: usize,
+        disp: Real,
+        motion: bool,
+        scratch: &mut [Real],
+    ) -> Result<(), Invalid> {
         let m = motion.then_some((a, b));
         let cap = disp / n as Real;
         let mut clear = self.clearances.take();
@@ -190,7 +210,17 @@ impl SpaceInfo {
     }
 
     #[allow(clippy::too_many_arguments)]
-    fn certify(&self, a: &[Real], b: &[Real], lo: (Real, Real), hi: (Real, Real), disp: Real, m: Option<(&[Real], &[Real])>, scratch: &mut [Real], depth: u32) -> Result<(), Invalid> {
+    fn certify(
+        &self,
+        a: &[Real],
+        b: &[Real],
+        lo: (Real, Real),
+        hi: (Real, Real),
+        disp: Real,
+        m: Option<(&[Real], &[Real])>,
+        scratch: &mut [Real],
+        depth: u32,
+    ) -> Result<(), Invalid> {
         let span = disp * (hi.0 - lo.0);
         if lo.1 + hi.1 > span {
             return Ok(());
@@ -253,7 +283,12 @@ impl SpaceInfo {
             self.interpolate(a, b, 0.5, scratch);
             return Err(Invalid);
         };
-        let sweep = self.journalled(|e| if let Entry::Hit(h) = e { Some(*h) } else { None }, Entry::Hit, Some(true), || self.validity.sweep_hits(a, b));
+        let sweep = self.journalled(
+            |e| if let Entry::Hit(h) = e { Some(*h) } else { None },
+            Entry::Hit,
+            Some(true),
+            || self.validity.sweep_hits(a, b),
+        );
         if self.stopped() {
             scratch.copy_from_slice(b);
             return Err(Invalid);

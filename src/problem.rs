@@ -88,13 +88,22 @@ impl Problem {
             sc.obstacles.iter().map(shape_of).collect(),
         );
         workspace.open = sc.touching_allowed;
-        let robot: Rc<dyn Robot> = robot::from_spec(&sc.robot, sc.body_in_bounds).map_err(|e| ScenarioError::at("robot.kind", e))?.into();
+        let robot: Rc<dyn Robot> =
+            robot::from_spec(&sc.robot, sc.body_in_bounds).map_err(|e| ScenarioError::at("robot.kind", e))?.into();
         let space = robot.space(&workspace);
         check_resolution(sc, &space)?;
         let check = |name: &str, q: &[Real]| -> Result<Vec<Real>, ScenarioError> {
             let dims = robot.external_dims();
             if q.len() != dims {
-                return Err(ScenarioError::at(name, format!("{} {} robot's state has {dims} numbers, found {}", if robot.kind().starts_with('a') { "an" } else { "a" }, robot.kind(), q.len())));
+                return Err(ScenarioError::at(
+                    name,
+                    format!(
+                        "{} {} robot's state has {dims} numbers, found {}",
+                        if robot.kind().starts_with('a') { "an" } else { "a" },
+                        robot.kind(),
+                        q.len()
+                    ),
+                ));
             }
             let mut q = robot.encode(q).map_err(|e| ScenarioError::at(name, e))?;
             space.enforce(&mut q);

@@ -173,7 +173,12 @@ impl SpaceInfo {
             self.interrupted.set(true);
         }
         // A batch is suspended only once it has done new work, so every batch advances the run.
-        if self.journal_on.get() && !self.suspended.get() && self.fresh.get() > 0 && self.suspend_at.get().0.is_some_and(|t| now >= t) && self.journal.borrow().on() {
+        if self.journal_on.get()
+            && !self.suspended.get()
+            && self.fresh.get() > 0
+            && self.suspend_at.get().0.is_some_and(|t| now >= t)
+            && self.journal.borrow().on()
+        {
             self.suspended.set(true);
         }
         if let Some(last) = self.last_look.get() {
@@ -227,7 +232,13 @@ impl SpaceInfo {
     /// Answer a question through the journal: replayed when recorded, else computed (and counted
     /// as a unit of new work), or `refuse` once the batch is suspended.
     #[inline]
-    pub(crate) fn journalled<T: Copy>(&self, get: impl Fn(&Entry) -> Option<T>, make: impl Fn(T) -> Entry, refuse: T, compute: impl FnOnce() -> T) -> T {
+    pub(crate) fn journalled<T: Copy>(
+        &self,
+        get: impl Fn(&Entry) -> Option<T>,
+        make: impl Fn(T) -> Entry,
+        refuse: T,
+        compute: impl FnOnce() -> T,
+    ) -> T {
         if !self.journal_on.get() {
             // Still a unit of work: the run's deadline is looked at inside long checks.
             let v = compute();
@@ -265,7 +276,12 @@ impl SpaceInfo {
     #[inline]
     pub fn is_valid(&self, q: &[Real]) -> bool {
         self.checks.set(self.checks.get() + 1);
-        self.journalled(|e| if let Entry::Valid(v) = e { Some(*v) } else { None }, Entry::Valid, false, || self.validity.is_valid(q))
+        self.journalled(
+            |e| if let Entry::Valid(v) = e { Some(*v) } else { None },
+            Entry::Valid,
+            false,
+            || self.validity.is_valid(q),
+        )
     }
     /// State checks so far.
     pub fn checks(&self) -> u64 {
@@ -289,7 +305,11 @@ impl SpaceInfo {
     /// better). The checks the robot's sampler spends count as state checks.
     #[inline]
     pub fn sample(&self, rng: &mut Rng, out: &mut [Real]) {
-        let spent = if self.journal_on.get() { self.sample_journalled(rng, out) } else { self.validity.sample(&self.space, rng, out) };
+        let spent = if self.journal_on.get() {
+            self.sample_journalled(rng, out)
+        } else {
+            self.validity.sample(&self.space, rng, out)
+        };
         self.checks.set(self.checks.get() + spent);
     }
     fn sample_journalled(&self, rng: &mut Rng, out: &mut [Real]) -> u64 {
@@ -377,6 +397,12 @@ impl SpaceInfo {
     /// Not counted as a state check.
     #[inline]
     pub fn sees(&self, pose: &SensorPose, p: Vec2, fov: Real, range: Real) -> bool {
-        pose.in_view(p, fov, range) && self.journalled(|e| if let Entry::Sight(v) = e { Some(*v) } else { None }, Entry::Sight, false, || self.validity.sight_clear(pose.at, p))
+        pose.in_view(p, fov, range)
+            && self.journalled(
+                |e| if let Entry::Sight(v) = e { Some(*v) } else { None },
+                Entry::Sight,
+                false,
+                || self.validity.sight_clear(pose.at, p),
+            )
     }
 }

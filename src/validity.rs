@@ -14,7 +14,16 @@ pub trait StateValidity {
     }
     /// The discrete check of a motion, as [`Robot::check_discrete`] describes it.
     #[allow(clippy::too_many_arguments)]
-    fn check_discrete(&self, space: &crate::space::StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], skip: u64, stop: &dyn Fn(u64) -> bool) -> (crate::motion::Discrete, u64);
+    fn check_discrete(
+        &self,
+        space: &crate::space::StateSpace,
+        a: &[Real],
+        b: &[Real],
+        n: usize,
+        scratch: &mut [Real],
+        skip: u64,
+        stop: &dyn Fn(u64) -> bool,
+    ) -> (crate::motion::Discrete, u64);
     /// Exact swept test of the straight motion `a → b`, when one exists (`Some(true)`: it hits).
     fn sweep_hits(&self, a: &[Real], b: &[Real]) -> Option<bool>;
     /// The workspace point a state is drawn at.
@@ -22,7 +31,14 @@ pub trait StateValidity {
     /// A random state (the robot's sampler).
     fn sample(&self, space: &crate::space::StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) -> u64;
     /// A Gaussian neighbour drawn the robot's own way, if it has one (`false`: it has none).
-    fn sample_gaussian(&self, space: &crate::space::StateSpace, rng: &mut crate::rng::Rng, centre: &[Real], sigma: Real, out: &mut [Real]) -> bool;
+    fn sample_gaussian(
+        &self,
+        space: &crate::space::StateSpace,
+        rng: &mut crate::rng::Rng,
+        centre: &[Real],
+        sigma: Real,
+        out: &mut [Real],
+    ) -> bool;
     /// Steps a motion of length `d` is checked in (`None`: more than can be checked; see
     /// [`Robot::motion_steps`]).
     fn motion_steps(&self, a: &[Real], b: &[Real], d: Real, resolution: Real) -> Option<usize>;
@@ -74,7 +90,16 @@ impl StateValidity for RobotInWorkspace {
     fn is_valid(&self, q: &[Real]) -> bool {
         self.robot.is_valid(&self.workspace, q)
     }
-    fn check_discrete(&self, space: &crate::space::StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], skip: u64, stop: &dyn Fn(u64) -> bool) -> (crate::motion::Discrete, u64) {
+    fn check_discrete(
+        &self,
+        space: &crate::space::StateSpace,
+        a: &[Real],
+        b: &[Real],
+        n: usize,
+        scratch: &mut [Real],
+        skip: u64,
+        stop: &dyn Fn(u64) -> bool,
+    ) -> (crate::motion::Discrete, u64) {
         self.robot.check_discrete(&self.workspace, space, a, b, n, scratch, skip, stop)
     }
     fn sweep_hits(&self, a: &[Real], b: &[Real]) -> Option<bool> {
@@ -86,7 +111,14 @@ impl StateValidity for RobotInWorkspace {
     fn sample(&self, space: &crate::space::StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) -> u64 {
         self.robot.sample(space, rng, out)
     }
-    fn sample_gaussian(&self, space: &crate::space::StateSpace, rng: &mut crate::rng::Rng, centre: &[Real], sigma: Real, out: &mut [Real]) -> bool {
+    fn sample_gaussian(
+        &self,
+        space: &crate::space::StateSpace,
+        rng: &mut crate::rng::Rng,
+        centre: &[Real],
+        sigma: Real,
+        out: &mut [Real],
+    ) -> bool {
         self.robot.sample_gaussian(space, rng, centre, sigma, out)
     }
     fn motion_steps(&self, a: &[Real], b: &[Real], d: Real, resolution: Real) -> Option<usize> {

@@ -93,8 +93,10 @@ pub fn import_file(text: &str, name: &str) -> Result<String, JsError> {
 #[wasm_bindgen]
 pub fn parse_setups(text: &str) -> Result<String, JsError> {
     let setups = crate::run::bench::parse_setup_lines(text).map_err(|e| JsError::new(&e))?;
-    let list: Vec<serde_json::Value> =
-        setups.iter().map(|s| serde_json::json!({"label": s.label, "planner": s.spec.name, "params": s.params.values()})).collect();
+    let list: Vec<serde_json::Value> = setups
+        .iter()
+        .map(|s| serde_json::json!({"label": s.label, "planner": s.spec.name, "params": s.params.values()}))
+        .collect();
     Ok(serde_json::to_string(&list).expect("set-ups serialise"))
 }
 
@@ -152,8 +154,14 @@ impl Scene {
     }
     /// The planning space's dimensions as JSON `[{lo, hi, wraps}]`.
     pub fn space_json(&self) -> String {
-        let dims: Vec<serde_json::Value> =
-            self.inner.si.space.dims.iter().map(|d| serde_json::json!({"lo": d.lo, "hi": d.hi, "wraps": d.wraps})).collect();
+        let dims: Vec<serde_json::Value> = self
+            .inner
+            .si
+            .space
+            .dims
+            .iter()
+            .map(|d| serde_json::json!({"lo": d.lo, "hi": d.hi, "wraps": d.wraps}))
+            .collect();
         serde_json::Value::Array(dims).to_string()
     }
     /// The robot's outline at scenario state `q`, flat: `[n_polygons, n_1, x, y, ..., n_2, ...]`
@@ -195,7 +203,8 @@ impl Run {
         let sc = Scenario::from_json(scenario).map_err(|e| error_json(&e))?;
         let problem = Problem::from_scenario(&sc).map_err(|e| error_json(&e))?;
         let spec = planners::find(planner).ok_or_else(|| JsError::new(&format!("unknown planner \"{planner}\"")))?;
-        let value: serde_json::Value = serde_json::from_str(params).map_err(|e| JsError::new(&format!("parameters: {e}")))?;
+        let value: serde_json::Value =
+            serde_json::from_str(params).map_err(|e| JsError::new(&format!("parameters: {e}")))?;
         let params = Params::from_json(spec, &value).map_err(|(k, m)| JsError::new(&format!("{k}: {m}")))?;
         if !(seed >= 0.0 && seed.fract() == 0.0 && seed < 9007199254740992.0) {
             return Err(JsError::new("seed: must be a whole number from 0 to 2^53"));
@@ -233,7 +242,8 @@ impl Run {
         if self.inner.status() != crate::status::Status::Solved {
             return Err(JsError::new("the run is not solved"));
         }
-        crate::io::asv::solution_text(self.inner.problem(), self.inner.planning_path(false)).map_err(|e| JsError::new(&e))
+        crate::io::asv::solution_text(self.inner.problem(), self.inner.planning_path(false))
+            .map_err(|e| JsError::new(&e))
     }
     /// The smoothed path (raw path if `raw`) sampled every `spacing` (robot metric) for animation,
     /// flat: `[dims, frames, then per frame: state…, outline (as [`Scene::outline`])…]`: each frame

@@ -22,7 +22,9 @@ fn run(sc: &Scenario, params: Value, seed: u64) -> (PlanResult, Vec<f64>, Sessio
     let spec = planners::find("potential-field").unwrap();
     let params = Params::from_json(spec, &params).unwrap();
     let problem = Problem::from_scenario(sc).unwrap();
-    let mut s = Session::new(problem, RunConfig { planner: "potential-field".into(), params, seed, record_events: true }).unwrap();
+    let mut s =
+        Session::new(problem, RunConfig { planner: "potential-field".into(), params, seed, record_events: true })
+            .unwrap();
     s.run_to_end();
     let events = s.drain_events();
     (s.result(), events, s)
@@ -209,7 +211,11 @@ fn the_field_is_drawn_on_a_grid_and_points_to_the_goal_far_from_obstacles() {
     let spec = planners::find("potential-field").unwrap();
     let checks = |record: bool| {
         let params = Params::from_json(spec, &json!({"escape": "give-up"})).unwrap();
-        let mut s = Session::new(Problem::from_scenario(&sc).unwrap(), RunConfig { planner: spec.name.into(), params, seed: 1, record_events: record }).unwrap();
+        let mut s = Session::new(
+            Problem::from_scenario(&sc).unwrap(),
+            RunConfig { planner: spec.name.into(), params, seed: 1, record_events: record },
+        )
+        .unwrap();
         s.run_to_end();
         s.result().stats.checks
     };
@@ -221,9 +227,12 @@ fn arms_are_refused_with_a_clear_message() {
     for name in ["arm-3", "asv-3-easy"] {
         let sc = builtin(name).unwrap();
         let spec = planners::find("potential-field").unwrap();
-        let err = Session::new(Problem::from_scenario(&sc).unwrap(), RunConfig { planner: spec.name.into(), params: Params::defaults(spec), seed: 1, record_events: false })
-            .err()
-            .expect("the potential field cannot plan for this robot");
+        let err = Session::new(
+            Problem::from_scenario(&sc).unwrap(),
+            RunConfig { planner: spec.name.into(), params: Params::defaults(spec), seed: 1, record_events: false },
+        )
+        .err()
+        .expect("the potential field cannot plan for this robot");
         assert!(err.contains("needs a point or rigid robot"), "{name}: {err}");
         let kind = if name.starts_with("arm") { "an arm" } else { "asv" };
         assert!(err.contains(kind), "{name}: {err}");

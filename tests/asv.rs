@@ -107,7 +107,7 @@ fn self_crossing() {
 #[test]
 fn area() {
     let sc = scenario(3, None); // minimum π·0.014² ≈ 6.16e-4
-    // Interior angle 40°: area 0.5·0.05²·sin 40° ≈ 8.0e-4.
+                                // Interior angle 40°: area 0.5·0.05²·sin 40° ≈ 8.0e-4.
     assert_valid(&sc, &chain((0.2, 0.2), &[0.0, 140.0]), "a 40° triangle");
     // Interior angle 20°: area ≈ 4.3e-4.
     assert_invalid(&sc, &chain((0.2, 0.2), &[0.0, 160.0]), "a 20° triangle", "area");
@@ -165,11 +165,13 @@ fn official_files() -> Vec<String> {
 /// Plan `sc` with RRT-Connect (its own defaults) and return the solution file's text.
 fn solve(sc: &Scenario, seed: u64) -> String {
     let spec = planners::find("rrt-connect").unwrap();
-    let defaults = sc.planner.as_ref().map(|p| serde_json::Value::Object(p.params.clone())).unwrap_or(serde_json::json!({}));
+    let defaults =
+        sc.planner.as_ref().map(|p| serde_json::Value::Object(p.params.clone())).unwrap_or(serde_json::json!({}));
     let mut params = Params::from_json(spec, &defaults).unwrap();
     params.set_text(spec, "time_limit", "20").unwrap();
     let problem = Problem::from_scenario(sc).unwrap_or_else(|e| panic!("{}: {e}", sc.name));
-    let mut s = Session::new(problem, RunConfig { planner: "rrt-connect".into(), params, seed, record_events: false }).unwrap();
+    let mut s =
+        Session::new(problem, RunConfig { planner: "rrt-connect".into(), params, seed, record_events: false }).unwrap();
     s.run_to_end();
     assert!(s.result().solved, "{}: {}", sc.name, s.result().status);
     solution_text(s.problem(), s.planning_path(false)).unwrap_or_else(|e| panic!("{}: {e}", sc.name))
@@ -201,9 +203,13 @@ fn broken_solutions_are_rejected() {
     let sc = import("7ASV-easy.txt");
     let configs = read_solution(&solve(&sc, 3)).unwrap();
     check_solution(&sc, &configs).unwrap();
-    let step = |a: &[f64], b: &[f64]| a.chunks(2).zip(b.chunks(2)).map(|(p, q)| (p[0] - q[0]).hypot(p[1] - q[1])).fold(0.0, f64::max);
+    let step = |a: &[f64], b: &[f64]| {
+        a.chunks(2).zip(b.chunks(2)).map(|(p, q)| (p[0] - q[0]).hypot(p[1] - q[1])).fold(0.0, f64::max)
+    };
     // Leave out one configuration between two long steps: one step too long.
-    let i = (1..configs.len() - 1).find(|&i| step(&configs[i - 1], &configs[i + 1]) > 0.001 + 1e-5).expect("two long steps in a row");
+    let i = (1..configs.len() - 1)
+        .find(|&i| step(&configs[i - 1], &configs[i + 1]) > 0.001 + 1e-5)
+        .expect("two long steps in a row");
     let mut gap = configs.clone();
     gap.remove(i);
     let e = check_solution(&sc, &gap).expect_err("a step too long passes");
@@ -241,8 +247,16 @@ fn problem_file_errors_name_line_and_column() {
         ("two\n", 1, "number of vehicles"),
         ("3\n0.1 0.2 0.3 0.4 0.5\n", 2, "needs 6 numbers"),
         ("3\n0.15 0.225 0.15 0.275 0.2 0.275\n0.85 0.225 0.85 0.275 0.9 x\n", 3, "expected a number"),
-        ("3\n0.15 0.225 0.15 0.275 0.2 0.275\n0.85 0.225 0.85 0.275 0.9 0.275\n2\n0 0 1 0 1 1 0 1\n", 6, "obstacle 2 of 2"),
-        ("3\n0.15 0.225 0.15 0.275 0.2 0.275\n\n0.85 0.225 0.85 0.275 0.9 0.275\n1\n0 0 1 0 1 1 0\n", 6, "needs 8 numbers"),
+        (
+            "3\n0.15 0.225 0.15 0.275 0.2 0.275\n0.85 0.225 0.85 0.275 0.9 0.275\n2\n0 0 1 0 1 1 0 1\n",
+            6,
+            "obstacle 2 of 2",
+        ),
+        (
+            "3\n0.15 0.225 0.15 0.275 0.2 0.275\n\n0.85 0.225 0.85 0.275 0.9 0.275\n1\n0 0 1 0 1 1 0\n",
+            6,
+            "needs 8 numbers",
+        ),
     ];
     for (text, line, what) in cases {
         let e = planarium::io::import(text, "bad").expect_err(text);
@@ -299,12 +313,17 @@ fn every_planner_solves_every_asv_builtin_in_valid_primitive_steps() {
                 let mut p = Params::from_json(spec, params).unwrap();
                 p.set_text(spec, "time_limit", "20").unwrap();
                 let problem = Problem::from_scenario(&sc).unwrap();
-                let mut s = Session::new(problem, RunConfig { planner: planner.to_string(), params: p, seed, record_events: false }).unwrap();
+                let mut s = Session::new(
+                    problem,
+                    RunConfig { planner: planner.to_string(), params: p, seed, record_events: false },
+                )
+                .unwrap();
                 s.run_to_end();
                 let what = format!("{name} / {planner} {params} / seed {seed}");
                 assert!(s.result().solved, "{what}: {}", s.result().status);
                 for raw in [true, false] {
-                    let text = solution_text(s.problem(), s.planning_path(raw)).unwrap_or_else(|e| panic!("{what}: {e}"));
+                    let text =
+                        solution_text(s.problem(), s.planning_path(raw)).unwrap_or_else(|e| panic!("{what}: {e}"));
                     if let Err(e) = check_solution(&sc, &read_solution(&text).unwrap()) {
                         panic!("{what} (raw {raw}): {e}");
                     }

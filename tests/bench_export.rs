@@ -213,8 +213,10 @@ fn read_ompl_log(text: &str) -> OmplLog {
             // `line.split('; ')[:-1]`: every value is followed by "; ".
             let parts: Vec<&str> = l.next().split("; ").collect();
             assert_eq!(parts.last(), Some(&""), "a run line ends with \"; \"");
-            let values: Vec<Option<String>> =
-                parts[..parts.len() - 1].iter().map(|x| (!x.is_empty() && *x != "nan" && *x != "inf").then(|| x.to_string())).collect();
+            let values: Vec<Option<String>> = parts[..parts.len() - 1]
+                .iter()
+                .map(|x| (!x.is_empty() && *x != "nan" && *x != "inf").then(|| x.to_string()))
+                .collect();
             assert_eq!(values.len(), properties.len(), "one value per property in {name}");
             runs.push(values);
         }
@@ -279,7 +281,10 @@ fn the_report_holds_every_run_and_the_benches_summaries() {
     let r = report(&benches);
     assert_eq!((r.runs, r.time_limit_s, r.setups.len()), (RUNS as usize, 30.0, 3));
     for (b, s) in benches.iter().zip(&r.setups) {
-        assert_eq!((s.label.as_str(), s.planner.as_str(), &s.params), (b.label.as_str(), b.planner.as_str(), &b.params));
+        assert_eq!(
+            (s.label.as_str(), s.planner.as_str(), &s.params),
+            (b.label.as_str(), b.planner.as_str(), &b.params)
+        );
         assert_eq!(s.rows.len(), b.per_run.len());
         for ((seed, solved, st), (row, status)) in b.per_run.iter().zip(s.rows.iter().zip(&b.statuses)) {
             assert_eq!(row, &RunRow::of(*seed, *status, st));
@@ -310,10 +315,14 @@ fn csv_reads_back_to_the_per_run_stats() {
     let text = export::to_csv(&r);
     assert!(text.ends_with("\r\n") && !text.replace("\r\n", "").contains('\n'), "RFC 4180 line breaks");
     let records = read_csv(&text);
-    assert_eq!(records[0].join(","), "setup,planner,seed,solved,status,time_ms,iterations,nodes,checks,cost,smoothed_cost");
+    assert_eq!(
+        records[0].join(","),
+        "setup,planner,seed,solved,status,time_ms,iterations,nodes,checks,cost,smoothed_cost"
+    );
     let rows = &records[1..];
     assert_eq!(rows.len(), 3 * RUNS as usize);
-    let expected = benches.iter().flat_map(|b| b.per_run.iter().zip(&b.statuses).map(move |(run, status)| (b, run, status)));
+    let expected =
+        benches.iter().flat_map(|b| b.per_run.iter().zip(&b.statuses).map(move |(run, status)| (b, run, status)));
     for (rec, (b, (seed, solved, st), status)) in rows.iter().zip(expected) {
         assert_eq!(rec.len(), 11);
         assert_eq!((rec[0].as_str(), rec[1].as_str()), (b.label.as_str(), b.planner.as_str()));
@@ -351,7 +360,12 @@ fn csv_quotes_as_rfc_4180_asks() {
         host: String::new(),
         time_limit_s: 1.0,
         runs: 1,
-        setups: vec![SetupReport { label: label.into(), planner: "rrt".into(), params: Default::default(), rows: vec![row] }],
+        setups: vec![SetupReport {
+            label: label.into(),
+            planner: "rrt".into(),
+            params: Default::default(),
+            rows: vec![row],
+        }],
     };
     let text = export::to_csv(&r);
     assert!(text.contains("\"bridge, \"\"tuned\"\"\nσ 0.02\",rrt,3,false,time_limit,1.5,2,3,4,,\r\n"), "{text}");
@@ -378,7 +392,13 @@ fn json_round_trips_and_carries_the_summaries() {
         let m = &s["summary"];
         assert_eq!(m["success_rate"].as_f64().unwrap(), b.summary.success_rate);
         assert_eq!(m["runs"], RUNS);
-        for (key, want) in [("time_ms", &b.summary.time_ms), ("nodes", &b.summary.nodes), ("checks", &b.summary.checks), ("cost", &b.summary.cost), ("smoothed_cost", &b.summary.smoothed_cost)] {
+        for (key, want) in [
+            ("time_ms", &b.summary.time_ms),
+            ("nodes", &b.summary.nodes),
+            ("checks", &b.summary.checks),
+            ("cost", &b.summary.cost),
+            ("smoothed_cost", &b.summary.smoothed_cost),
+        ] {
             assert_eq!(m[key], serde_json::to_value(want).unwrap(), "{key}");
         }
         assert_eq!(s["rows"].as_array().unwrap().len(), RUNS as usize);
@@ -399,8 +419,14 @@ fn from_json_takes_the_pages_minimal_report_and_says_what_is_wrong() {
     }
     let bad = [
         (minimal.replace("\"time_limit\"", "\"timeout\""), "setups[0].rows[1].status: unknown status \"timeout\""),
-        (minimal.replace("\"solved\": false", "\"solved\": true"), "setups[0].rows[1]: solved is true but status is \"time_limit\""),
-        (minimal.replace("\"time_ms\": 2.5", "\"time_ms\": -1"), "setups[0].rows[0].time_ms: must be a non-negative number"),
+        (
+            minimal.replace("\"solved\": false", "\"solved\": true"),
+            "setups[0].rows[1]: solved is true but status is \"time_limit\"",
+        ),
+        (
+            minimal.replace("\"time_ms\": 2.5", "\"time_ms\": -1"),
+            "setups[0].rows[0].time_ms: must be a non-negative number",
+        ),
         (minimal.replace("\"label\": \"a\", ", ""), "missing field `label`"),
         ("[1, 2]".to_string(), "bench report:"),
     ];
@@ -419,9 +445,16 @@ fn the_ompl_log_parses_and_holds_the_stats() {
     let log = read_ompl_log(&export::to_ompl_log(&r));
     assert_eq!(log.version, format!("Planarium {}", env!("CARGO_PKG_VERSION")));
     assert_eq!((log.experiment.as_str(), log.host.as_str(), log.date.as_str()), ("Narrow_passage", "test_host", DATE));
-    assert!(log.setup.contains("Narrow passage") && log.setup.contains("rrt capped: rrt {\"max_iterations\":5.0}"), "{}", log.setup);
+    assert!(
+        log.setup.contains("Narrow passage") && log.setup.contains("rrt capped: rrt {\"max_iterations\":5.0}"),
+        "{}",
+        log.setup
+    );
     assert_eq!(log.cpuinfo, None);
-    assert_eq!((log.seed.as_str(), log.time_limit, log.memory_limit, log.runs_per_planner), ("1", 30.0, -1.0, RUNS as i64));
+    assert_eq!(
+        (log.seed.as_str(), log.time_limit, log.memory_limit, log.runs_per_planner),
+        ("1", 30.0, -1.0, RUNS as i64)
+    );
     let total: f64 = r.setups.iter().flat_map(|s| &s.rows).map(|x| (x.time_ms + x.smoothing_ms) / 1000.0).sum();
     assert!((log.total_time - total).abs() < 1e-12);
     let status_enum = log.enums.iter().find(|e| e[0] == "status").expect("OMPL's status enum");
@@ -469,7 +502,14 @@ fn ompl_names_are_single_words_and_unique() {
     let log = read_ompl_log(&text);
     assert_eq!((log.experiment.as_str(), log.host.as_str()), ("My__scene__v2", "lab_machine_3"));
     let names: Vec<&str> = log.planners.iter().map(|p| p.name.as_str()).collect();
-    assert_eq!(names, ["geometric_rrt-connect", "geometric_near-collision_tuned_(p_3__σ_0.005)", "geometric_near-collision_tuned_(p_3__σ_0.005)_2"]);
+    assert_eq!(
+        names,
+        [
+            "geometric_rrt-connect",
+            "geometric_near-collision_tuned_(p_3__σ_0.005)",
+            "geometric_near-collision_tuned_(p_3__σ_0.005)_2"
+        ]
+    );
     assert_eq!(log.planners[0].common, ["planner = rrt-connect", "sampler = bridge"]);
 }
 
@@ -480,7 +520,8 @@ fn the_course_table_shows_the_summaries() {
     let t = export::course_table(&r);
     let lines: Vec<&str> = t.lines().collect();
     assert_eq!(lines.len(), 2 + 3);
-    assert!(lines[0].starts_with("| set-up | planner | runs | solved | mean time (ms) | std time (ms) | median time (ms) |"));
+    assert!(lines[0]
+        .starts_with("| set-up | planner | runs | solved | mean time (ms) | std time (ms) | median time (ms) |"));
     for (line, b) in lines[2..].iter().zip(&benches) {
         let cells: Vec<&str> = line.trim_matches('|').split('|').map(str::trim).collect();
         assert_eq!(cells.len(), 13);
@@ -525,7 +566,13 @@ fn ompl_without_times(mut log: OmplLog) -> OmplLog {
     log.host.clear();
     log.total_time = 0.0;
     for p in &mut log.planners {
-        let clocked: Vec<usize> = p.properties.iter().enumerate().filter(|(_, (n, _))| n == "time" || n == "simplification_time").map(|(i, _)| i).collect();
+        let clocked: Vec<usize> = p
+            .properties
+            .iter()
+            .enumerate()
+            .filter(|(_, (n, _))| n == "time" || n == "simplification_time")
+            .map(|(i, _)| i)
+            .collect();
         for run in &mut p.runs {
             for &i in &clocked {
                 run[i] = run[i].as_ref().map(|_| "t".to_string());
@@ -541,7 +588,18 @@ fn the_cli_writes_the_same_three_formats() {
     std::fs::create_dir_all(&dir).unwrap();
     let (csv, json, log) = (dir.join("b.csv"), dir.join("b.json"), dir.join("b.log"));
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_planarium"))
-        .args(["bench", "narrow", "--runs", &RUNS.to_string(), "--setup", "rrt-connect", "--setup", "rrt", "--setup", "rrt capped: rrt --max-iterations 5"])
+        .args([
+            "bench",
+            "narrow",
+            "--runs",
+            &RUNS.to_string(),
+            "--setup",
+            "rrt-connect",
+            "--setup",
+            "rrt",
+            "--setup",
+            "rrt capped: rrt --max-iterations 5",
+        ])
         .arg("--csv")
         .arg(&csv)
         .arg("--json-file")
@@ -576,5 +634,8 @@ fn the_cli_writes_the_same_three_formats() {
     };
     assert_eq!(drop_time(&csv_text), drop_time(&export::to_csv(&lib)));
     // OMPL log: the same log but times, date and host.
-    assert_eq!(ompl_without_times(read_ompl_log(&log_text)), ompl_without_times(read_ompl_log(&export::to_ompl_log(&lib))));
+    assert_eq!(
+        ompl_without_times(read_ompl_log(&log_text)),
+        ompl_without_times(read_ompl_log(&export::to_ompl_log(&lib)))
+    );
 }

@@ -40,15 +40,27 @@ fn a_second_run_is_identical() {
 #[test]
 fn runs_in_suspended_batches_match_the_pinned_fingerprints() {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/golden/runs.json");
-    let want: Vec<Value> = serde_json::from_str(&std::fs::read_to_string(path).expect("tests/golden/runs.json")).unwrap();
+    let want: Vec<Value> =
+        serde_json::from_str(&std::fs::read_to_string(path).expect("tests/golden/runs.json")).unwrap();
     let mut suspended = 0;
     for (case, want) in cases().iter().zip(&want) {
         let sc = builtin(case["scenario"].as_str().unwrap()).unwrap();
-        let (got, n) = fingerprint_in_batches(&sc, case["planner"].as_str().unwrap(), &case["params"], case["seed"].as_u64().unwrap(), 0.002).unwrap();
+        let (got, n) = fingerprint_in_batches(
+            &sc,
+            case["planner"].as_str().unwrap(),
+            &case["params"],
+            case["seed"].as_u64().unwrap(),
+            0.002,
+        )
+        .unwrap();
         assert_eq!(&serde_json::to_value(&got).unwrap(), want, "{case}: {n} batches suspended");
         suspended += u64::from(n > 0);
     }
-    assert!(suspended * 2 > want.len() as u64, "only {suspended} of {} runs had a batch suspended: the test does not exercise the journal", want.len());
+    assert!(
+        suspended * 2 > want.len() as u64,
+        "only {suspended} of {} runs had a batch suspended: the test does not exercise the journal",
+        want.len()
+    );
 }
 
 /// The same, beyond the pinned runs: every robot's way of checking motions (the point's exact
@@ -66,7 +78,11 @@ fn every_robot_and_planner_gives_the_same_run_in_suspended_batches() {
         ("technion-ip", "inspection", serde_json::json!({ "max_iterations": 300 })),
         ("narrow", "rrt", serde_json::json!({ "sampler": "bridge", "dd_radius": 0.3, "exhausted": 3 })),
         ("slot", "rrt-connect", serde_json::json!({ "sampler": "gaussian" })),
-        ("slot", "rrt", serde_json::json!({ "sampler": "obstacle", "exhausted": 2, "exhausted_policy": "weighted", "max_iterations": 1000 })),
+        (
+            "slot",
+            "rrt",
+            serde_json::json!({ "sampler": "obstacle", "exhausted": 2, "exhausted_policy": "weighted", "max_iterations": 1000 }),
+        ),
         ("hex-trap", "hex-potential", serde_json::json!({})),
     ];
     let mut suspended = 0;

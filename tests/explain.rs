@@ -23,22 +23,11 @@ fn run(
     let spec = planners::find(planner).unwrap();
     let params = Params::from_json(spec, &params).unwrap();
     let problem = Problem::from_scenario(&sc).unwrap();
-    let mut s = Session::new(
-        problem,
-        RunConfig {
-            planner: planner.into(),
-            params,
-            seed,
-            record_events: true,
-        },
-    )
-    .unwrap();
+    let mut s =
+        Session::new(problem, RunConfig { planner: planner.into(), params, seed, record_events: true }).unwrap();
     s.run_to_end();
     let log = s.drain_events();
-    let records = log
-        .chunks_exact(STRIDE)
-        .map(|c| <[f64; STRIDE]>::try_from(c).unwrap())
-        .collect();
+    let records = log.chunks_exact(STRIDE).map(|c| <[f64; STRIDE]>::try_from(c).unwrap()).collect();
     (sc, records)
 }
 
@@ -62,11 +51,7 @@ fn check_steps(records: &[[f64; STRIDE]], same_parent: bool) -> (usize, Vec<Bloc
             x if x == k(EventKind::Nearest) => {
                 // a sample target is the last sample drawn
                 if r[10] == 1.0 {
-                    assert_eq!(
-                        Some([r[6], r[7]]),
-                        last_sample,
-                        "a Nearest toward a sample names the sample: {r:?}"
-                    );
+                    assert_eq!(Some([r[6], r[7]]), last_sample, "a Nearest toward a sample names the sample: {r:?}");
                 }
                 assert!(r[8] >= 0.0 && r[8].is_finite(), "distance {r:?}");
                 nearest = Some(*r);
@@ -74,53 +59,26 @@ fn check_steps(records: &[[f64; STRIDE]], same_parent: bool) -> (usize, Vec<Bloc
             }
             x if x == k(EventKind::Steer) => {
                 let n = nearest.expect("a Steer follows a Nearest");
-                assert_eq!(
-                    (r[1], r[2]),
-                    (n[1], n[2]),
-                    "Steer from the node chosen: {r:?} after {n:?}"
-                );
-                assert_eq!(
-                    [r[6], r[7]],
-                    [n[4], n[5]],
-                    "Steer starts at the node's point"
-                );
-                assert!(
-                    r[8] <= r[9] * (1.0 + 1e-12),
-                    "a step is at most the range: {r:?}"
-                );
+                assert_eq!((r[1], r[2]), (n[1], n[2]), "Steer from the node chosen: {r:?} after {n:?}");
+                assert_eq!([r[6], r[7]], [n[4], n[5]], "Steer starts at the node's point");
+                assert!(r[8] <= r[9] * (1.0 + 1e-12), "a step is at most the range: {r:?}");
                 if r[10] == 1.0 {
-                    assert_eq!(
-                        [r[4], r[5]],
-                        [n[6], n[7]],
-                        "a step that reaches the target ends on it"
-                    );
+                    assert_eq!([r[4], r[5]], [n[6], n[7]], "a step that reaches the target ends on it");
                 }
                 steer = Some(*r);
                 steps += 1;
             }
             x if x == k(EventKind::NodeAdded) && r[3] >= 0.0 => {
                 if let Some(s) = steer.take() {
-                    assert_eq!(
-                        [r[4], r[5]],
-                        [s[4], s[5]],
-                        "the node added is the steered state: {r:?} after {s:?}"
-                    );
+                    assert_eq!([r[4], r[5]], [s[4], s[5]], "the node added is the steered state: {r:?} after {s:?}");
                     if same_parent {
-                        assert_eq!(
-                            (r[1], r[3]),
-                            (s[1], s[2]),
-                            "the node's parent is the node steered from"
-                        );
+                        assert_eq!((r[1], r[3]), (s[1], s[2]), "the node's parent is the node steered from");
                     }
                 }
             }
             x if x == k(EventKind::Collision) => {
                 let s = steer.take().expect("a Collision follows a Steer");
-                assert_eq!(
-                    (r[1], r[3]),
-                    (s[1], s[2]),
-                    "a blocked motion starts at the node steered from: {r:?}"
-                );
+                assert_eq!((r[1], r[3]), (s[1], s[2]), "a blocked motion starts at the node steered from: {r:?}");
                 assert_eq!([r[6], r[7]], [s[6], s[7]]);
                 blocked.push(([s[6], s[7]], [s[4], s[5]], *r));
             }
@@ -135,20 +93,14 @@ fn check_blockers(sc: &planarium::scenario::Scenario, blocked: &[Blocked]) {
     let mut named = 0;
     for (a, b, r) in blocked {
         let id = r[2];
-        assert!(
-            id >= -2.0,
-            "a point meets an obstacle or the map's edge: {r:?}"
-        );
+        assert!(id >= -2.0, "a point meets an obstacle or the map's edge: {r:?}");
         if id < 0.0 {
             continue;
         }
         named += 1;
         let mut alone = sc.clone();
         alone.obstacles = vec![sc.obstacles[id as usize].clone()];
-        assert!(
-            common::motion_problem(&alone, a, b).is_some(),
-            "obstacle {id} alone blocks {a:?} → {b:?}"
-        );
+        assert!(common::motion_problem(&alone, a, b).is_some(), "obstacle {id} alone blocks {a:?} → {b:?}");
     }
     assert!(named > 0, "some motions were blocked by a named obstacle");
 }
@@ -157,11 +109,7 @@ fn check_blockers(sc: &planarium::scenario::Scenario, blocked: &[Blocked]) {
 fn rrt_steps_name_the_node_the_step_and_the_obstacle() {
     let (sc, records) = run("narrow", "rrt", json!({}), 7);
     let (steps, blocked) = check_steps(&records, true);
-    assert!(
-        steps > 100 && blocked.len() > 10,
-        "{steps} steps, {} blocked",
-        blocked.len()
-    );
+    assert!(steps > 100 && blocked.len() > 10, "{steps} steps, {} blocked", blocked.len());
     check_blockers(&sc, &blocked);
 }
 
@@ -170,14 +118,8 @@ fn rrt_connect_steps_toward_samples_and_the_other_tree() {
     let (sc, records) = run("narrow", "rrt-connect", json!({}), 7);
     let (steps, blocked) = check_steps(&records, true);
     assert!(steps > 100, "{steps} steps");
-    let toward_tree = records
-        .iter()
-        .filter(|r| r[0] == k(EventKind::Nearest) && r[10] == 0.0)
-        .count();
-    assert!(
-        toward_tree > 10,
-        "CONNECT steps toward the other tree's node: {toward_tree}"
-    );
+    let toward_tree = records.iter().filter(|r| r[0] == k(EventKind::Nearest) && r[10] == 0.0).count();
+    assert!(toward_tree > 10, "CONNECT steps toward the other tree's node: {toward_tree}");
     check_blockers(&sc, &blocked);
 }
 
@@ -198,16 +140,9 @@ fn rrt_star_and_inspection_log_their_steps() {
 fn a_goal_sample_says_so() {
     let (sc, records) = run("open-field", "rrt", json!({"goal_bias": 0.3}), 2);
     let goal = sc.goal.clone().unwrap();
-    let samples: Vec<_> = records
-        .iter()
-        .filter(|r| r[0] == k(EventKind::Sample))
-        .collect();
+    let samples: Vec<_> = records.iter().filter(|r| r[0] == k(EventKind::Sample)).collect();
     let goals = samples.iter().filter(|r| r[2] == 1.0).count();
-    assert!(
-        goals > 0 && goals < samples.len(),
-        "{goals} of {}",
-        samples.len()
-    );
+    assert!(goals > 0 && goals < samples.len(), "{goals} of {}", samples.len());
     for r in samples {
         assert_eq!(r[2] == 1.0, r[4] == goal[0] && r[5] == goal[1], "{r:?}");
     }
@@ -218,7 +153,11 @@ fn nodes(scenario: &str, planner: &str, seed: u64) -> u64 {
     let sc = builtin(scenario).unwrap();
     let spec = planners::find(planner).unwrap();
     let problem = Problem::from_scenario(&sc).unwrap();
-    let mut s = Session::new(problem, RunConfig { planner: planner.into(), params: Params::defaults(spec), seed, record_events: false }).unwrap();
+    let mut s = Session::new(
+        problem,
+        RunConfig { planner: planner.into(), params: Params::defaults(spec), seed, record_events: false },
+    )
+    .unwrap();
     s.run_to_end();
     s.result().stats.nodes
 }
@@ -238,5 +177,8 @@ fn the_narrow_passage_caption_holds_on_its_default_seed_and_over_101_seeds() {
         v[50]
     };
     let (m_rrt, m_connect) = (median("rrt"), median("rrt-connect"));
-    assert!(notes.contains(&format!("the median RRT-Connect run adds {m_connect} nodes to RRT's {m_rrt}")), "{m_connect} {m_rrt}: {notes}");
+    assert!(
+        notes.contains(&format!("the median RRT-Connect run adds {m_connect} nodes to RRT's {m_rrt}")),
+        "{m_connect} {m_rrt}: {notes}"
+    );
 }

@@ -79,10 +79,7 @@ struct Frame {
 
 impl Frame {
     fn point(&self, rng: &mut Rng) -> [f64; 2] {
-        [
-            self.x0 + rng.uniform(0.0, self.w),
-            self.y0 + rng.uniform(0.0, self.h),
-        ]
+        [self.x0 + rng.uniform(0.0, self.w), self.y0 + rng.uniform(0.0, self.h)]
     }
     fn extent(&self) -> f64 {
         self.w.max(self.h)
@@ -91,18 +88,12 @@ impl Frame {
 
 /// A simple (star-shaped) polygon of `k` points around `c`, radii in `[r/3, r]`.
 fn star(rng: &mut Rng, c: [f64; 2], r: f64, k: usize) -> Vec<[f64; 2]> {
-    let mut angles: Vec<f64> = (0..k)
-        .map(|i| (i as f64 + rng.uniform(0.1, 0.9)) * std::f64::consts::TAU / k as f64)
-        .collect();
+    let mut angles: Vec<f64> =
+        (0..k).map(|i| (i as f64 + rng.uniform(0.1, 0.9)) * std::f64::consts::TAU / k as f64).collect();
     angles.sort_by(f64::total_cmp);
     angles
         .iter()
-        .map(|a| {
-            [
-                c[0] + r * rng.uniform(0.34, 1.0) * a.cos(),
-                c[1] + r * rng.uniform(0.34, 1.0) * a.sin(),
-            ]
-        })
+        .map(|a| [c[0] + r * rng.uniform(0.34, 1.0) * a.cos(), c[1] + r * rng.uniform(0.34, 1.0) * a.sin()])
         .collect()
 }
 
@@ -111,10 +102,7 @@ fn obstacle(rng: &mut Rng, f: &Frame) -> Value {
     match rng.below(4) {
         0 => {
             let a = f.point(rng);
-            let b = [
-                a[0] + rng.uniform(0.01, 0.3) * s,
-                a[1] + rng.uniform(0.01, 0.3) * s,
-            ];
+            let b = [a[0] + rng.uniform(0.01, 0.3) * s, a[1] + rng.uniform(0.01, 0.3) * s];
             json!({"rect": [a[0], a[1], b[0], b[1]]})
         }
         1 => {
@@ -143,12 +131,7 @@ fn angle(rng: &mut Rng) -> f64 {
 /// and goal may still collide (the problem then says which).
 fn valid_scenario(rng: &mut Rng, kind: usize) -> Value {
     let f = if kind == 3 {
-        Frame {
-            x0: 0.0,
-            y0: 0.0,
-            w: 1.0,
-            h: 1.0,
-        }
+        Frame { x0: 0.0, y0: 0.0, w: 1.0, h: 1.0 }
     } else {
         let s = *pick(rng, &[1.0, 2.0, 10.0, 300.0]);
         Frame {
@@ -163,12 +146,7 @@ fn valid_scenario(rng: &mut Rng, kind: usize) -> Value {
     let obstacles: Vec<Value> = (0..n_obstacles).map(|_| obstacle(rng, &f)).collect();
     let mut inspection = None;
     let (robot, start, goal, resolution) = match kind {
-        0 => (
-            json!({"kind": "point"}),
-            f.point(rng).to_vec(),
-            f.point(rng).to_vec(),
-            s * rng.uniform(0.001, 0.01),
-        ),
+        0 => (json!({"kind": "point"}), f.point(rng).to_vec(), f.point(rng).to_vec(), s * rng.uniform(0.001, 0.01)),
         1 => {
             let k = 3 + rng.below(5);
             let r = rng.uniform(0.01, 0.08) * s;
@@ -177,19 +155,12 @@ fn valid_scenario(rng: &mut Rng, kind: usize) -> Value {
                 robot["rotation_weight"] = json!(rng.uniform(0.01, 2.0) * r);
             }
             let (a, b) = (f.point(rng), f.point(rng));
-            (
-                robot,
-                vec![a[0], a[1], angle(rng)],
-                vec![b[0], b[1], angle(rng)],
-                s * rng.uniform(0.001, 0.01),
-            )
+            (robot, vec![a[0], a[1], angle(rng)], vec![b[0], b[1], angle(rng)], s * rng.uniform(0.001, 0.01))
         }
         2 => {
             let n = 1 + rng.below(5);
             let reach = 0.45 * f.w.min(f.h);
-            let links: Vec<f64> = (0..n)
-                .map(|_| reach / n as f64 * rng.uniform(0.5, 1.0))
-                .collect();
+            let links: Vec<f64> = (0..n).map(|_| reach / n as f64 * rng.uniform(0.5, 1.0)).collect();
             let limits: Vec<Value> = (0..n)
                 .map(|_| {
                     if chance(rng, 0.5) {
@@ -217,10 +188,8 @@ fn valid_scenario(rng: &mut Rng, kind: usize) -> Value {
                 robot["tip"] = json!(0.001);
             }
             if chance(rng, 0.25) {
-                inspection = Some(
-                    json!({"points": (0..1 + rng.below(6)).map(|_| f.point(rng)).collect::<Vec<_>>(),
-                                         "fov": rng.uniform(0.1, 3.0), "range": rng.uniform(0.1, 2.0) * s, "coverage": rng.uniform01()}),
-                );
+                inspection = Some(json!({"points": (0..1 + rng.below(6)).map(|_| f.point(rng)).collect::<Vec<_>>(),
+                                         "fov": rng.uniform(0.1, 3.0), "range": rng.uniform(0.1, 2.0) * s, "coverage": rng.uniform01()}));
             }
             (robot, start, goal, rng.uniform(0.005, 0.05))
         }
@@ -229,10 +198,7 @@ fn valid_scenario(rng: &mut Rng, kind: usize) -> Value {
             let broom = 0.05;
             let r = broom / (2.0 * (std::f64::consts::PI / n as f64).sin());
             let chain = |rng: &mut Rng| -> Vec<f64> {
-                let c = [
-                    rng.uniform(r + 0.01, 1.0 - r - 0.01),
-                    rng.uniform(r + 0.01, 1.0 - r - 0.01),
-                ];
+                let c = [rng.uniform(r + 0.01, 1.0 - r - 0.01), rng.uniform(r + 0.01, 1.0 - r - 0.01)];
                 let a0 = angle(rng);
                 let flip = if chance(rng, 0.5) { 1.0 } else { -1.0 };
                 (0..n)
@@ -333,13 +299,7 @@ fn splice_deep(text: String) -> String {
     let rest = &text[at + 1 + DEEP.len()..];
     let end = rest.find('"').unwrap_or(0);
     let depth: usize = rest[..end].parse().unwrap_or(1);
-    format!(
-        "{}{}1{}{}",
-        &text[..at],
-        "[".repeat(depth),
-        "]".repeat(depth),
-        &rest[end + 1..]
-    )
+    format!("{}{}1{}{}", &text[..at], "[".repeat(depth), "]".repeat(depth), &rest[end + 1..])
 }
 
 fn deep(depth: usize) -> Value {
@@ -353,10 +313,7 @@ fn mutate(rng: &mut Rng, doc: &mut Value) {
     }
     let mut all = Vec::new();
     nodes(doc, &mut all, &mut Vec::new());
-    let numbers: Vec<&Vec<Key>> = all
-        .iter()
-        .filter(|p| node_ref(doc, p).is_number())
-        .collect();
+    let numbers: Vec<&Vec<Key>> = all.iter().filter(|p| node_ref(doc, p).is_number()).collect();
     match rng.below(12) {
         0..=2 if !numbers.is_empty() => {
             let p = (*pick(rng, &numbers)).clone();
@@ -366,24 +323,12 @@ fn mutate(rng: &mut Rng, doc: &mut Value) {
             let p = pick(rng, &all).clone();
             *node_mut(doc, &p) = pick(
                 rng,
-                &[
-                    json!("x"),
-                    json!(true),
-                    Value::Null,
-                    json!({}),
-                    json!([]),
-                    json!([[1, 2]]),
-                    json!(-1),
-                    json!(1.5),
-                ],
+                &[json!("x"), json!(true), Value::Null, json!({}), json!([]), json!([[1, 2]]), json!(-1), json!(1.5)],
             )
             .clone();
         }
         4 => {
-            let objects: Vec<&Vec<Key>> = all
-                .iter()
-                .filter(|p| node_ref(doc, p).is_object())
-                .collect();
+            let objects: Vec<&Vec<Key>> = all.iter().filter(|p| node_ref(doc, p).is_object()).collect();
             let p = (*pick(rng, &objects)).clone();
             if let Value::Object(m) = node_mut(doc, &p) {
                 if !m.is_empty() {
@@ -423,11 +368,8 @@ fn mutate(rng: &mut Rng, doc: &mut Value) {
             let n = *pick(rng, &[1000usize, 5000, 20_000]);
             match rng.below(4) {
                 0 => {
-                    doc["obstacles"] = Value::Array(
-                        (0..n)
-                            .map(|i| json!({"circle": [i as f64 * 1e-3, 0.5, 1e-4]}))
-                            .collect(),
-                    )
+                    doc["obstacles"] =
+                        Value::Array((0..n).map(|i| json!({"circle": [i as f64 * 1e-3, 0.5, 1e-4]})).collect())
                 }
                 1 => doc["obstacles"] = json!([{"polygon": star(rng, [0.5, 0.5], 0.1, n)}]),
                 2 => {
@@ -445,12 +387,7 @@ fn mutate(rng: &mut Rng, doc: &mut Value) {
         }
         8 => doc["name"] = json!("n".repeat(*pick(rng, &[10_000usize, 1_000_000]))),
         // Deep nesting is spliced into the text at the end (see `DEEP`): walking it here is slow.
-        9 => {
-            doc["notes"] = json!(format!(
-                "{DEEP}{}",
-                *pick(rng, &[10usize, 100, 127, 128, 129, 500, 5000])
-            ))
-        }
+        9 => doc["notes"] = json!(format!("{DEEP}{}", *pick(rng, &[10usize, 100, 127, 128, 129, 500, 5000]))),
         10 => {
             if let Value::Object(m) = doc {
                 m.insert("planner".into(), json!({"name": pick(rng, &h::planner_names()), "max_nodes": 1e8, "time_limit": 3600, "max_iterations": 1e9}));
@@ -467,10 +404,7 @@ fn mutate(rng: &mut Rng, doc: &mut Value) {
 /// The scenario text with one top-level key written twice (serde_json keeps the last).
 fn duplicate_key(rng: &mut Rng, doc: &Value) -> String {
     let text = doc.to_string();
-    let keys: Vec<&String> = doc
-        .as_object()
-        .map(|m| m.keys().collect())
-        .unwrap_or_default();
+    let keys: Vec<&String> = doc.as_object().map(|m| m.keys().collect()).unwrap_or_default();
     if keys.is_empty() {
         return text;
     }
@@ -543,9 +477,7 @@ fn text_mutation(rng: &mut Rng) -> String {
             4 => {
                 // Replace the number starting at or after `at` by an extreme one.
                 if let Some(s) = (at..t.len()).find(|&i| t[i].is_ascii_digit()) {
-                    let e = (s..t.len())
-                        .find(|&i| !(t[i].is_ascii_digit() || t[i] == b'.'))
-                        .unwrap_or(t.len());
+                    let e = (s..t.len()).find(|&i| !(t[i].is_ascii_digit() || t[i] == b'.')).unwrap_or(t.len());
                     let tok = pick(rng, TOKENS[..6].as_ref()).as_bytes().to_vec();
                     t.splice(s..e, tok);
                 }
@@ -554,17 +486,9 @@ fn text_mutation(rng: &mut Rng) -> String {
             _ => {
                 // A huge first line (the vehicle count of an ASV file).
                 if !t.starts_with(b"{") {
-                    let n = pick(
-                        rng,
-                        &[
-                            "1000000000",
-                            "18446744073709551615",
-                            "4611686018427387904",
-                            "100000",
-                        ],
-                    )
-                    .as_bytes()
-                    .to_vec();
+                    let n = pick(rng, &["1000000000", "18446744073709551615", "4611686018427387904", "100000"])
+                        .as_bytes()
+                        .to_vec();
                     let end = t.iter().position(|&b| b == b'\n').unwrap_or(t.len());
                     t.splice(0..end, n);
                 }
@@ -586,11 +510,7 @@ fn make_case(seed: u64) -> (String, Option<h::Budget>) {
             for _ in 0..1 + rng.below(3) {
                 mutate(&mut rng, &mut doc);
             }
-            splice_deep(if chance(&mut rng, 0.15) {
-                duplicate_key(&mut rng, &doc)
-            } else {
-                doc.to_string()
-            })
+            splice_deep(if chance(&mut rng, 0.15) { duplicate_key(&mut rng, &doc) } else { doc.to_string() })
         }
         _ => text_mutation(&mut rng),
     };
@@ -624,20 +544,11 @@ fn in_time(r: &h::RunReport, b: &h::Budget) -> bool {
 fn regression_files() -> Vec<(String, std::path::PathBuf)> {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/regressions");
     let mut out = Vec::new();
-    for target in [
-        "scenario",
-        "technion",
-        "asv_problem",
-        "asv_solution",
-        "plan",
-    ] {
+    for target in ["scenario", "technion", "asv_problem", "asv_solution", "plan"] {
         let Ok(dir) = std::fs::read_dir(root.join(target)) else {
             continue;
         };
-        let mut files: Vec<_> = dir
-            .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| p.is_file())
-            .collect();
+        let mut files: Vec<_> = dir.filter_map(|e| e.ok().map(|e| e.path())).filter(|p| p.is_file()).collect();
         files.sort();
         out.extend(files.into_iter().map(|f| (target.to_string(), f)));
     }
@@ -655,12 +566,7 @@ fn run_regression(target: &str, data: &[u8]) -> Result<Option<(h::RunReport, h::
         "asv_solution" => {
             let (problem, solution) = match text.split_once("\n===\n") {
                 Some((p, s)) => (p.to_string(), s),
-                None => (
-                    planarium::scenario::builtin("asv-3-easy")
-                        .expect("built-in")
-                        .to_json(),
-                    &*text,
-                ),
+                None => (planarium::scenario::builtin("asv-3-easy").expect("built-in").to_json(), &*text),
             };
             h::check_asv_solution(&problem, solution).map(|_| None)
         }
@@ -676,8 +582,7 @@ static CURRENT: AtomicU64 = AtomicU64::new(u64::MAX);
 static PANIC: Mutex<Option<String>> = Mutex::new(None);
 
 fn seed_file_path() -> std::path::PathBuf {
-    std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join(format!("fuzz_props.{}.last-seed", std::process::id()))
+    std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("fuzz_props.{}.last-seed", std::process::id()))
 }
 
 /// The worker: runs cases `from..to` in this process and reports on stdout, one line each:
@@ -690,36 +595,24 @@ fn seed_file_path() -> std::path::PathBuf {
 fn worker() {
     use std::io::Write;
     let var = |k: &str| {
-        std::env::var(k).unwrap_or_else(|_| {
-            panic!("{k} not set: this test is run by generated_inputs_keep_the_properties")
-        })
+        std::env::var(k)
+            .unwrap_or_else(|_| panic!("{k} not set: this test is run by generated_inputs_keep_the_properties"))
     };
-    let (from, to): (u64, u64) = (
-        var("PLANARIUM_PROPS_FROM").parse().unwrap(),
-        var("PLANARIUM_PROPS_TO").parse().unwrap(),
-    );
+    let (from, to): (u64, u64) =
+        (var("PLANARIUM_PROPS_FROM").parse().unwrap(), var("PLANARIUM_PROPS_TO").parse().unwrap());
     let verbose = std::env::var_os("PLANARIUM_PROPS_VERBOSE").is_some();
-    let regressions = std::env::var_os("PLANARIUM_PROPS_REGRESSIONS")
-        .is_some()
-        .then(regression_files);
+    let regressions = std::env::var_os("PLANARIUM_PROPS_REGRESSIONS").is_some().then(regression_files);
     let seed_file = std::fs::File::create(var("PLANARIUM_PROPS_SEED_FILE")).expect("seed file");
     std::panic::set_hook(Box::new(|info| {
-        *PANIC.lock().unwrap_or_else(|e| e.into_inner()) =
-            Some(info.to_string().replace('\n', " "));
+        *PANIC.lock().unwrap_or_else(|e| e.into_inner()) = Some(info.to_string().replace('\n', " "));
     }));
     static STARTED: Mutex<Option<Instant>> = Mutex::new(None);
     std::thread::spawn(|| loop {
         std::thread::sleep(Duration::from_millis(200));
-        let since = STARTED
-            .lock()
-            .map(|t| t.map(|t| t.elapsed()))
-            .unwrap_or_default();
+        let since = STARTED.lock().map(|t| t.map(|t| t.elapsed())).unwrap_or_default();
         if since.is_some_and(|d| d > Duration::from_secs(WATCHDOG_S)) {
             let seed = CURRENT.load(Ordering::SeqCst);
-            let _ = writeln!(
-                std::io::stdout(),
-                "HANG {seed} still running after {WATCHDOG_S} s"
-            );
+            let _ = writeln!(std::io::stdout(), "HANG {seed} still running after {WATCHDOG_S} s");
             let _ = std::io::stdout().flush();
             std::process::exit(3);
         }
@@ -740,11 +633,7 @@ fn worker() {
             let (text, budget) = make_case(seed);
             if verbose {
                 let shown = if text.len() > 20_000 {
-                    format!(
-                        "{}… ({} bytes)",
-                        &text[..text.floor_char_boundary(20_000)],
-                        text.len()
-                    )
+                    format!("{}… ({} bytes)", &text[..text.floor_char_boundary(20_000)], text.len())
                 } else {
                     text.clone()
                 };
@@ -766,10 +655,7 @@ fn worker() {
                 let again = catch_unwind(AssertUnwindSafe(|| {
                     if let Some(files) = &regressions {
                         let (target, file) = &files[seed as usize];
-                        return run_regression(
-                            target,
-                            &std::fs::read(file).expect("regression file"),
-                        );
+                        return run_regression(target, &std::fs::read(file).expect("regression file"));
                     }
                     let (text, budget) = make_case(seed);
                     run_case(&text, budget).map(|r| r.map(|r| (r, budget.unwrap())))
@@ -794,20 +680,13 @@ fn worker() {
             other => other,
         };
         match r {
-            Ok(Ok(Some((report, b)))) => writeln!(
-                out,
-                "RUN {seed} {:.6} {} {}",
-                report.wall_s, b.time_s, report.planner
-            )
-            .unwrap(),
+            Ok(Ok(Some((report, b)))) => {
+                writeln!(out, "RUN {seed} {:.6} {} {}", report.wall_s, b.time_s, report.planner).unwrap()
+            }
             Ok(Ok(None)) => {}
             Ok(Err(e)) => writeln!(out, "FAIL {seed} {}", e.replace('\n', " ")).unwrap(),
             Err(_) => {
-                let msg = PANIC
-                    .lock()
-                    .unwrap_or_else(|e| e.into_inner())
-                    .take()
-                    .unwrap_or_default();
+                let msg = PANIC.lock().unwrap_or_else(|e| e.into_inner()).take().unwrap_or_default();
                 writeln!(out, "FAIL {seed} panic: {msg}").unwrap();
             }
         }
@@ -835,22 +714,11 @@ fn drive(first: u64, end: u64, regressions: bool, verbose: bool) -> Pass {
     while from < end {
         let _ = std::fs::remove_file(&seed_file);
         let mut cmd = std::process::Command::new(std::env::current_exe().expect("test binary"));
-        cmd.args([
-            "--ignored",
-            "--exact",
-            "worker",
-            "--nocapture",
-            "--test-threads=1",
-            "-q",
-        ])
-        .env("PLANARIUM_PROPS_FROM", from.to_string())
-        .env("PLANARIUM_PROPS_TO", end.to_string())
-        .env("PLANARIUM_PROPS_SEED_FILE", &seed_file)
-        .stderr(if verbose {
-            std::process::Stdio::inherit()
-        } else {
-            std::process::Stdio::piped()
-        });
+        cmd.args(["--ignored", "--exact", "worker", "--nocapture", "--test-threads=1", "-q"])
+            .env("PLANARIUM_PROPS_FROM", from.to_string())
+            .env("PLANARIUM_PROPS_TO", end.to_string())
+            .env("PLANARIUM_PROPS_SEED_FILE", &seed_file)
+            .stderr(if verbose { std::process::Stdio::inherit() } else { std::process::Stdio::piped() });
         if verbose {
             cmd.env("PLANARIUM_PROPS_VERBOSE", "1");
         }
@@ -862,11 +730,7 @@ fn drive(first: u64, end: u64, regressions: bool, verbose: bool) -> Pass {
         let mut done = false;
         for line in stdout.lines() {
             let mut w = line.splitn(3, ' ');
-            match (
-                w.next(),
-                w.next().and_then(|s| s.parse::<u64>().ok()),
-                w.next(),
-            ) {
+            match (w.next(), w.next().and_then(|s| s.parse::<u64>().ok()), w.next()) {
                 (Some("RUN"), Some(seed), Some(rest)) => {
                     pass.planned += 1;
                     let v: Vec<&str> = rest.split(' ').collect();
@@ -878,9 +742,7 @@ fn drive(first: u64, end: u64, regressions: bool, verbose: bool) -> Pass {
                 (Some("FAIL"), Some(seed), Some(msg)) | (Some("HANG"), Some(seed), Some(msg)) => {
                     pass.failures.push((seed, msg.to_string()))
                 }
-                (Some("STALL"), Some(seed), Some(rest)) => {
-                    pass.stalls.push((seed, rest.to_string()))
-                }
+                (Some("STALL"), Some(seed), Some(rest)) => pass.stalls.push((seed, rest.to_string())),
                 (Some("DONE"), ..) => done = true,
                 _ => {}
             }
@@ -889,10 +751,7 @@ fn drive(first: u64, end: u64, regressions: bool, verbose: bool) -> Pass {
             break;
         }
         // The worker died (an abort, or the watchdog): its last case is the culprit.
-        let last: u64 = std::fs::read_to_string(&seed_file)
-            .ok()
-            .and_then(|s| s.trim().parse().ok())
-            .unwrap_or(from);
+        let last: u64 = std::fs::read_to_string(&seed_file).ok().and_then(|s| s.trim().parse().ok()).unwrap_or(from);
         if !pass.failures.iter().any(|(s, _)| *s == last) {
             let stderr = String::from_utf8_lossy(&child.stderr);
             let why = stderr
@@ -900,8 +759,7 @@ fn drive(first: u64, end: u64, regressions: bool, verbose: bool) -> Pass {
                 .find(|l| l.contains("memory allocation") || l.contains("panicked"))
                 .unwrap_or("")
                 .to_string();
-            pass.failures
-                .push((last, format!("the process died ({}): {why}", child.status)));
+            pass.failures.push((last, format!("the process died ({}): {why}", child.status)));
         }
         from = last + 1;
     }
@@ -926,9 +784,8 @@ fn report_stalls(pass: &Pass) {
 /// Runs `CASES` generated cases, or only `PLANARIUM_PROPS_ONLY=<seed>` (printing its input).
 #[test]
 fn generated_inputs_keep_the_properties() {
-    let only: Option<u64> = std::env::var("PLANARIUM_PROPS_ONLY")
-        .ok()
-        .map(|s| s.trim().parse().expect("PLANARIUM_PROPS_ONLY: a seed"));
+    let only: Option<u64> =
+        std::env::var("PLANARIUM_PROPS_ONLY").ok().map(|s| s.trim().parse().expect("PLANARIUM_PROPS_ONLY: a seed"));
     let (first, end) = match only {
         Some(s) => (s, s + 1),
         None => (BASE_SEED, BASE_SEED + CASES),
@@ -949,7 +806,11 @@ fn generated_inputs_keep_the_properties() {
     );
     report_stalls(&pass);
     if !pass.failures.is_empty() {
-        let mut msg = format!("{} of {} generated inputs broke a property (repeat one with PLANARIUM_PROPS_ONLY=<seed>):\n", pass.failures.len(), end - first);
+        let mut msg = format!(
+            "{} of {} generated inputs broke a property (repeat one with PLANARIUM_PROPS_ONLY=<seed>):\n",
+            pass.failures.len(),
+            end - first
+        );
         for (seed, e) in pass.failures.iter().take(40) {
             let e: String = e.chars().take(300).collect();
             msg += &format!("  seed {seed}: {e}\n");
@@ -962,18 +823,11 @@ fn generated_inputs_keep_the_properties() {
 #[test]
 fn regressions_keep_the_properties() {
     let files = regression_files();
-    assert!(
-        !files.is_empty(),
-        "fuzz/regressions/ holds the findings' inputs"
-    );
+    assert!(!files.is_empty(), "fuzz/regressions/ holds the findings' inputs");
     let pass = drive(0, files.len() as u64, true, false);
     report_stalls(&pass);
     if !pass.failures.is_empty() {
-        let mut msg = format!(
-            "{} of {} regression inputs broke a property:\n",
-            pass.failures.len(),
-            files.len()
-        );
+        let mut msg = format!("{} of {} regression inputs broke a property:\n", pass.failures.len(), files.len());
         for (i, e) in &pass.failures {
             let e: String = e.chars().take(300).collect();
             msg += &format!("  {}: {e}\n", files[*i as usize].1.display());

@@ -25,7 +25,8 @@ fn run(sc: &Scenario, over: Value) -> (PlanResult, Vec<f64>) {
     }
     let params = Params::from_json(spec, &Value::Object(values)).unwrap();
     let problem = Problem::from_scenario(sc).unwrap();
-    let mut s = Session::new(problem, RunConfig { planner: spec.name.into(), params, seed: 1, record_events: true }).unwrap();
+    let mut s =
+        Session::new(problem, RunConfig { planner: spec.name.into(), params, seed: 1, record_events: true }).unwrap();
     s.run_to_end();
     (s.result(), s.drain_events())
 }
@@ -79,11 +80,18 @@ fn the_corridor_goes_through_the_wide_gap() {
     assert_eq!(ys.len(), 1, "one crossing of the wall: {ys:?}");
     assert!(ys[0] > 0.66 && ys[0] < 0.82, "through the wide gap, not the narrow one: y = {}", ys[0]);
     // The narrow gap was tried and refused by the step test.
-    assert!(records(&ev, EventKind::CellState).any(|s| s[6] == 1.0 && s[5] > 0.5 && s[5] < 0.6 && s[4] < 0.45), "a blocked step at the narrow gap's mouth");
+    assert!(
+        records(&ev, EventKind::CellState).any(|s| s[6] == 1.0 && s[5] > 0.5 && s[5] < 0.6 && s[4] < 0.45),
+        "a blocked step at the narrow gap's mouth"
+    );
     // A sampling planner drives through the narrow gap, which is wider than the robot.
     let problem = Problem::from_scenario(&sc).unwrap();
     let spec = planners::find("rrt-connect").unwrap();
-    let mut s = Session::new(problem, RunConfig { planner: spec.name.into(), params: Params::defaults(spec), seed: 1, record_events: false }).unwrap();
+    let mut s = Session::new(
+        problem,
+        RunConfig { planner: spec.name.into(), params: Params::defaults(spec), seed: 1, record_events: false },
+    )
+    .unwrap();
     s.run_to_end();
     assert!(s.result().solved);
 }
@@ -92,7 +100,8 @@ fn the_corridor_goes_through_the_wide_gap() {
 fn closed_gap(l: f64, w: f64) -> Scenario {
     let mut v: Value = serde_json::to_value(builtin("hex-corridor").unwrap()).unwrap();
     v["obstacles"][2] = json!({"rect": [0.45, 0.66, 0.55, 1.0]});
-    v["robot"]["footprint"] = json!([[-l / 2.0, -w / 2.0], [l / 2.0, -w / 2.0], [l / 2.0, w / 2.0], [-l / 2.0, w / 2.0]]);
+    v["robot"]["footprint"] =
+        json!([[-l / 2.0, -w / 2.0], [l / 2.0, -w / 2.0], [l / 2.0, w / 2.0], [-l / 2.0, w / 2.0]]);
     // Start and goal on the row of cell centres through the gap (y = 0.5625 at every level).
     v["start"] = json!([0.1, 0.5625, 0.0]);
     v["goal"] = json!([0.9, 0.5625, 0.0]);
@@ -109,7 +118,8 @@ fn a_gap_narrower_than_t_is_impassable_and_one_wider_is_not() {
     assert_eq!(r.status, "no_path", "{:?}", r.reason);
     assert!(r.reason.as_deref().unwrap().contains("region of influence"), "{:?}", r.reason);
     assert!(
-        records(&ev, EventKind::CellState).any(|s| s[6] == 1.0 && (s[7] == 1.0 || s[7] == 2.0) && s[4] > 0.4 && s[4] < 0.6),
+        records(&ev, EventKind::CellState)
+            .any(|s| s[6] == 1.0 && (s[7] == 1.0 || s[7] == 2.0) && s[4] > 0.4 && s[4] < 0.6),
         "a step into the gap refused by the report's vertex tests"
     );
     // 0.03 × 0.015: t ≈ 0.034 < 0.045: straight through.
@@ -132,7 +142,9 @@ fn the_trap_traps_with_the_plain_potential() {
     let regions: Vec<&[f64]> = records(&ev, EventKind::Region).collect();
     assert!(regions.len() >= 2, "the region grew at least once");
     for attempt in 0..regions.len() {
-        let inside = records(&ev, EventKind::NodeAdded).filter(|n| n[1] as usize == attempt).any(|n| n[4] < 0.6 && n[5] > 0.43 && n[5] < 0.55);
+        let inside = records(&ev, EventKind::NodeAdded)
+            .filter(|n| n[1] as usize == attempt)
+            .any(|n| n[4] < 0.6 && n[5] > 0.43 && n[5] < 0.55);
         assert!(inside, "attempt {attempt} did not enter the dead end");
     }
     // The region doubled (or grew to d_maxOb + t) each time, and stopped there.
@@ -180,7 +192,9 @@ fn cells_partition_their_parents_and_the_search_is_a_chain() {
             }
         }
     }
-    let area = |p: &[(f64, f64)]| (0..p.len()).map(|i| p[i].0 * p[(i + 1) % p.len()].1 - p[(i + 1) % p.len()].0 * p[i].1).sum::<f64>() / 2.0;
+    let area = |p: &[(f64, f64)]| {
+        (0..p.len()).map(|i| p[i].0 * p[(i + 1) % p.len()].1 - p[(i + 1) % p.len()].0 * p[i].1).sum::<f64>() / 2.0
+    };
     let cells: Vec<&[f64]> = records(&ev, EventKind::Cell).collect();
     for c in &cells {
         assert_eq!(outline[&(c[2] as i64)].len(), c[8] as usize, "cell {}: vertex count", c[2]);
@@ -229,13 +243,26 @@ fn a_point_robot_works_and_other_robots_are_refused() {
     let (r, _) = run(&sc, json!({}));
     check_valid(&sc, &r, "point robot");
     let arm = builtin("arm-2").unwrap();
-    let err = Session::new(Problem::from_scenario(&arm).unwrap(), RunConfig { planner: "hex-potential".into(), params: Params::defaults(planners::find("hex-potential").unwrap()), seed: 1, record_events: false })
-        .err()
-        .expect("an arm is refused");
+    let err = Session::new(
+        Problem::from_scenario(&arm).unwrap(),
+        RunConfig {
+            planner: "hex-potential".into(),
+            params: Params::defaults(planners::find("hex-potential").unwrap()),
+            seed: 1,
+            record_events: false,
+        },
+    )
+    .err()
+    .expect("an arm is refused");
     assert!(err.contains("point or a rigid robot"), "{err}");
     // A trapping obstacle that does not exist is an error, not a panic.
     let spec = planners::find("hex-potential").unwrap();
     let params = Params::from_json(spec, &json!({"trap_obstacle": 9})).unwrap();
-    let err = Session::new(Problem::from_scenario(&sc).unwrap(), RunConfig { planner: spec.name.into(), params, seed: 1, record_events: false }).err().unwrap();
+    let err = Session::new(
+        Problem::from_scenario(&sc).unwrap(),
+        RunConfig { planner: spec.name.into(), params, seed: 1, record_events: false },
+    )
+    .err()
+    .unwrap();
     assert!(err.contains("trap_obstacle 9"), "{err}");
 }

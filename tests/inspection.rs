@@ -54,11 +54,16 @@ fn crosses_interior(poly: &[P], a: P, b: P) -> bool {
         }
     }
     ts.sort_by(f64::total_cmp);
-    ts.windows(2).any(|w| w[1] - w[0] > 1e-12 && strictly_inside(poly, (a.0 + 0.5 * (w[0] + w[1]) * r.0, a.1 + 0.5 * (w[0] + w[1]) * r.1)))
+    ts.windows(2).any(|w| {
+        w[1] - w[0] > 1e-12 && strictly_inside(poly, (a.0 + 0.5 * (w[0] + w[1]) * r.0, a.1 + 0.5 * (w[0] + w[1]) * r.1))
+    })
 }
 
 fn polygons(sc: &Scenario) -> Vec<Vec<P>> {
-    sc.obstacles.iter().map(|o| obstacle_polygon(o).unwrap_or_else(|| panic!("the test's visibility model has no {o:?}"))).collect()
+    sc.obstacles
+        .iter()
+        .map(|o| obstacle_polygon(o).unwrap_or_else(|| panic!("the test's visibility model has no {o:?}")))
+        .collect()
 }
 
 /// The sensor at `q`: an arm's end effector and the sum of its joint angles; a point, all round.
@@ -113,7 +118,8 @@ fn seen_by_path(sc: &Scenario, path: &[Vec<f64>]) -> Vec<bool> {
     };
     look(&path[0]);
     for w in path.windows(2) {
-        let diff: Vec<f64> = w[0].iter().zip(&w[1]).map(|(a, b)| if arm { angle_diff(*a, *b) } else { b - a }).collect();
+        let diff: Vec<f64> =
+            w[0].iter().zip(&w[1]).map(|(a, b)| if arm { angle_diff(*a, *b) } else { b - a }).collect();
         let d = diff.iter().map(|x| x * x).sum::<f64>().sqrt();
         let n = 2 * ((d / sc.resolution).ceil() as usize).max(1);
         for i in 1..=n {
@@ -158,7 +164,12 @@ fn run(sc: &Scenario, params: Value, seed: u64) -> (PlanResult, Vec<f64>) {
 
 fn task(sc: &Scenario) -> InspectionTask {
     let i = sc.inspection.as_ref().unwrap();
-    InspectionTask { points: i.points.iter().map(|p| Vec2::new(p[0], p[1])).collect(), fov: i.fov, range: i.range, coverage: i.coverage }
+    InspectionTask {
+        points: i.points.iter().map(|p| Vec2::new(p[0], p[1])).collect(),
+        fov: i.fov,
+        range: i.range,
+        coverage: i.coverage,
+    }
 }
 
 /// Solved, valid, and seeing at least `target` by the independent model and by the crate's.
@@ -174,7 +185,11 @@ fn check_solution(sc: &Scenario, r: &PlanResult, target: f64, what: &str) {
     assert!(own >= target, "{what}: path_coverage {own}, below {target}");
     if matches!(sc.robot, RobotSpec::Arm { .. }) {
         // The cost: the sum of joint-space distances.
-        let cost: f64 = r.path.windows(2).map(|w| w[0].iter().zip(&w[1]).map(|(a, b)| angle_diff(*a, *b).powi(2)).sum::<f64>().sqrt()).sum();
+        let cost: f64 = r
+            .path
+            .windows(2)
+            .map(|w| w[0].iter().zip(&w[1]).map(|(a, b)| angle_diff(*a, *b).powi(2)).sum::<f64>().sqrt())
+            .sum();
         assert!((r.stats.cost.unwrap() - cost).abs() < 1e-9, "{what}: cost {:?} vs {cost}", r.stats.cost);
     }
 }
@@ -248,7 +263,12 @@ fn the_sensor_by_hand() {
     assert!(si.sees(&inside, v(135.0, 195.0), fov, range));
     // 50 away but 37° off the heading: outside the field of view; seen when looking its way.
     assert!(!si.sees(&inside, v(120.0, 180.0), fov, range));
-    assert!(si.sees(&SensorPose { at: v(150.0, 140.0), heading: Some(40f64.atan2(-30.0)) }, v(120.0, 180.0), fov, range));
+    assert!(si.sees(
+        &SensorPose { at: v(150.0, 140.0), heading: Some(40f64.atan2(-30.0)) },
+        v(120.0, 180.0),
+        fov,
+        range
+    ));
     assert!(!si.sees(&inside, v(195.0, 145.0), fov, range), "84° off");
     assert!(si.sees(&SensorPose { at: v(150.0, 140.0), heading: Some(0.0) }, v(195.0, 145.0), fov, range));
     // Out of range: 65 away, straight ahead.
@@ -313,7 +333,9 @@ fn every_tree_edge_is_a_valid_motion() {
 #[test]
 fn variants_solve_too() {
     let sc = builtin("technion-ip").unwrap();
-    for params in [json!({"k": 0}), json!({"focus": 0.0}), json!({"k": 10, "focus": 1.0}), json!({"sampler": "gaussian"})] {
+    for params in
+        [json!({"k": 0}), json!({"focus": 0.0}), json!({"k": 10, "focus": 1.0}), json!({"sampler": "gaussian"})]
+    {
         let (r, _) = run(&sc, params.clone(), 5);
         check_solution(&sc, &r, 0.5, &format!("technion-ip {params}"));
     }
@@ -326,7 +348,10 @@ fn the_same_seed_gives_the_same_run() {
     let (b, eb) = run(&sc, json!({"coverage": 0.75}), 11);
     assert_eq!(a.path, b.path);
     assert_eq!(a.smoothed, b.smoothed);
-    assert_eq!((a.stats.iterations, a.stats.nodes, a.stats.checks), (b.stats.iterations, b.stats.nodes, b.stats.checks));
+    assert_eq!(
+        (a.stats.iterations, a.stats.nodes, a.stats.checks),
+        (b.stats.iterations, b.stats.nodes, b.stats.checks)
+    );
     assert_eq!(ea, eb);
     let (c, _) = run(&sc, json!({"coverage": 0.75}), 12);
     assert_ne!(a.path, c.path);

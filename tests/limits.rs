@@ -8,8 +8,8 @@ use planarium::planners::{self, smoothing, Params};
 use planarium::problem::Problem;
 use planarium::rng::Rng;
 use planarium::run::{RunConfig, Session};
-use planarium::space_info::Deadline;
 use planarium::scenario::{self, Scenario, ScenarioError};
+use planarium::space_info::Deadline;
 use serde_json::{json, Value};
 use std::time::Instant;
 
@@ -106,7 +106,11 @@ fn resolutions_of_1e_9_and_1e_12_are_refused_not_run_for_a_minute_or_skipped() {
     let d = 0.84 * std::f64::consts::SQRT_2;
     let expected = (d / v["resolution"].as_f64().unwrap()).ceil() as u64;
     assert_eq!(r.status, "solved");
-    assert!(r.stats.checks >= expected, "a fine resolution checks every state: {} checks, {expected} steps", r.stats.checks);
+    assert!(
+        r.stats.checks >= expected,
+        "a fine resolution checks every state: {} checks, {expected} steps",
+        r.stats.checks
+    );
 }
 
 #[test]
@@ -181,7 +185,8 @@ fn a_hexagonal_tiling_too_fine_for_its_map_is_refused() {
 /// y = 0.0005 and so hold the line from the start (0, 0.0005) to the goal (1, 0.0005), which the
 /// discs themselves leave free. Each state on it is tested exactly against every disc.
 fn cluttered(n: usize, resolution: f64) -> Value {
-    let obstacles: Vec<Value> = (0..n).map(|i| json!({"circle": [1.5, 1.5, 1.5 - 0.0004 * i as f64 / n as f64]})).collect();
+    let obstacles: Vec<Value> =
+        (0..n).map(|i| json!({"circle": [1.5, 1.5, 1.5 - 0.0004 * i as f64 / n as f64]})).collect();
     json!({"bounds": [0, 0, 1, 1], "obstacles": obstacles, "robot": {"kind": "point"},
            "start": [0.0, 0.0005], "goal": [1.0, 0.0005], "resolution": resolution})
 }
@@ -209,7 +214,10 @@ fn the_time_limit_holds_inside_one_long_motion_check() {
         s.run_to_end();
         let took = t.elapsed().as_secs_f64();
         let r = s.result();
-        eprintln!("{} {planner}: {} after {took:.3} s (limit 0.3 s), {} checks", v["robot"]["kind"], r.status, r.stats.checks);
+        eprintln!(
+            "{} {planner}: {} after {took:.3} s (limit 0.3 s), {} checks",
+            v["robot"]["kind"], r.status, r.stats.checks
+        );
         assert_eq!(r.status, "time_limit", "{planner}");
         assert!(took < 0.3 + 0.25, "{planner} ran {took:.3} s against a 0.3 s limit");
     }
@@ -250,11 +258,24 @@ fn the_cli_honours_its_time_limit_and_names_bad_input() {
     std::fs::write(&slow, cluttered(20_000, 1.5e-5).to_string()).unwrap();
     let t = Instant::now();
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_planarium"))
-        .args(["plan", slow.to_str().unwrap(), "--planner", "rrt", "--goal-bias", "1", "--range", "2", "--time-limit", "0.3", "--json"])
+        .args([
+            "plan",
+            slow.to_str().unwrap(),
+            "--planner",
+            "rrt",
+            "--goal-bias",
+            "1",
+            "--range",
+            "2",
+            "--time-limit",
+            "0.3",
+            "--json",
+        ])
         .output()
         .unwrap();
     let took = t.elapsed().as_secs_f64();
-    let r: Value = serde_json::from_slice(&out.stdout).unwrap_or_else(|_| panic!("{}", String::from_utf8_lossy(&out.stderr)));
+    let r: Value =
+        serde_json::from_slice(&out.stdout).unwrap_or_else(|_| panic!("{}", String::from_utf8_lossy(&out.stderr)));
     eprintln!("CLI: {} after {took:.3} s (limit 0.3 s, process start and file parse included)", r["status"]);
     assert_eq!(r["status"], "time_limit");
     // The one motion to the goal checks 66,667 states against 20,000 obstacles (about a second
@@ -269,7 +290,10 @@ fn the_cli_honours_its_time_limit_and_names_bad_input() {
     v["bounds"] = json!([-9.2e18, 0, 1, 1]);
     std::fs::write(&bad, v.to_string()).unwrap();
     for cmd in ["validate", "plan"] {
-        let out = std::process::Command::new(env!("CARGO_BIN_EXE_planarium")).args([cmd, bad.to_str().unwrap()]).output().unwrap();
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_planarium"))
+            .args([cmd, bad.to_str().unwrap()])
+            .output()
+            .unwrap();
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(matches!(out.status.code(), Some(1 | 2)), "{cmd}: an error exit, not a crash: {:?}", out.status);
         assert!(err.contains("bounds[0]") && !err.contains("panicked"), "{cmd}: {err}");
@@ -376,7 +400,8 @@ fn at_the_limits_every_planners_batches_return_within_50_ms() {
     arm_start[0] = pi;
     let limits: Vec<Value> = (0..64).map(|_| json!([-pi, pi])).collect();
     let arm = json!({"bounds": [0, 0, 2, 1], "obstacles": right_half_blocks(100_000), "robot": {"kind": "arm", "base": [1.0, 0.5], "links": vec![0.9 / 64.0; 64], "limits": limits, "self_collision": true}, "start": arm_start, "goal": arm_start, "resolution": 0.01});
-    let points: Vec<Value> = (0..10_000).map(|i| json!([0.05 + 0.009 * (i % 100) as f64, 0.05 + 0.009 * (i / 100) as f64])).collect();
+    let points: Vec<Value> =
+        (0..10_000).map(|i| json!([0.05 + 0.009 * (i % 100) as f64, 0.05 + 0.009 * (i / 100) as f64])).collect();
     let inspect = json!({"bounds": [0, 0, 2, 1], "obstacles": right_half_blocks(100_000), "robot": {"kind": "rigid", "footprint": [[-0.01, -0.01], [0.01, -0.01], [0.01, 0.01], [-0.01, 0.01]]}, "start": [0.5, 0.5, 0.0], "resolution": 0.001, "inspection": {"points": points, "fov": 1.0, "range": 0.5, "coverage": 0.9}});
     let point = json!({"bounds": [0, 0, 2, 1], "obstacles": right_half_blocks(100_000), "robot": {"kind": "point"}, "start": [0.5, 0.5], "goal": [1.999, 0.999], "resolution": 3e-5});
     for (v, planner, params) in [
@@ -399,7 +424,12 @@ fn at_the_limits_every_planners_batches_return_within_50_ms() {
             batches += 1;
         }
         let robot = v["robot"]["kind"].as_str().unwrap();
-        eprintln!("{robot} {planner}: {batches} batches, the longest {longest:.1} ms, {} suspended, {} iterations, {}", s.suspensions(), s.stats().iterations, s.status().name());
+        eprintln!(
+            "{robot} {planner}: {batches} batches, the longest {longest:.1} ms, {} suspended, {} iterations, {}",
+            s.suspensions(),
+            s.stats().iterations,
+            s.status().name()
+        );
         assert!(longest < 50.0, "{robot} {planner}: a 12 ms batch took {longest:.1} ms");
     }
 }

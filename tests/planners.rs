@@ -52,7 +52,9 @@ fn every_planner_solves_every_builtin_with_valid_paths() {
                 let mut p = Params::from_json(spec, &params).unwrap();
                 p.set_text(spec, "max_iterations", "200000").unwrap();
                 let problem = Problem::from_scenario(&sc).unwrap();
-                let mut s = Session::new(problem, RunConfig { planner: planner.into(), params: p, seed, record_events: false }).unwrap();
+                let mut s =
+                    Session::new(problem, RunConfig { planner: planner.into(), params: p, seed, record_events: false })
+                        .unwrap();
                 s.run_to_end();
                 let r = s.result();
                 let what = format!("{name} / {planner} {params} / seed {seed}");
@@ -93,7 +95,11 @@ fn one_iteration_cannot_outlast_the_time_limit_under_a_chain_metric() {
     let spec = planners::find("rrt-connect").unwrap();
     for seed in 1..=3 {
         let params = Params::from_json(spec, &json!({"range": 0.55, "time_limit": 5.0})).unwrap();
-        let mut s = Session::new(Problem::from_scenario(&sc).unwrap(), RunConfig { planner: "rrt-connect".into(), params, seed, record_events: false }).unwrap();
+        let mut s = Session::new(
+            Problem::from_scenario(&sc).unwrap(),
+            RunConfig { planner: "rrt-connect".into(), params, seed, record_events: false },
+        )
+        .unwrap();
         s.run_to_end();
         assert!(s.stats().time_ms < 6000.0, "seed {seed}: {} ms", s.stats().time_ms);
     }

@@ -31,7 +31,11 @@ fn params_for(planner: &str, sc: &Scenario, v: &Value) -> Params {
 
 fn session(sc: &Scenario, planner: &str, v: &Value, seed: u64, record_events: bool) -> Session {
     let params = params_for(planner, sc, v);
-    Session::new(Problem::from_scenario(sc).unwrap(), RunConfig { planner: planner.into(), params, seed, record_events }).unwrap()
+    Session::new(
+        Problem::from_scenario(sc).unwrap(),
+        RunConfig { planner: planner.into(), params, seed, record_events },
+    )
+    .unwrap()
 }
 
 /// Run to the end; the result and (when recorded) the events.
@@ -91,11 +95,22 @@ fn tree_costs(si: &planarium::space_info::SpaceInfo, data: &PlannerData) -> Vec<
 
 /// Drive an RRT* directly (no session), as the session does, for `iterations` iterations or until
 /// it returns; the planner, the problem and what it returned.
-fn drive(sc: &Scenario, v: &Value, seed: u64, iterations: u64, nodes_left: Option<usize>) -> (RrtStar, Problem, Option<Vec<Vec<f64>>>) {
+fn drive(
+    sc: &Scenario,
+    v: &Value,
+    seed: u64,
+    iterations: u64,
+    nodes_left: Option<usize>,
+) -> (RrtStar, Problem, Option<Vec<Vec<f64>>>) {
     let problem = Problem::from_scenario(sc).unwrap();
     let spec = planners::find("rrt-star").unwrap();
     let params = params_for("rrt-star", sc, v);
-    let task = Task { start: problem.start.clone(), goal: problem.goal.clone(), goal_tolerance: problem.goal_tolerance, inspection: None };
+    let task = Task {
+        start: problem.start.clone(),
+        goal: problem.goal.clone(),
+        goal_tolerance: problem.goal_tolerance,
+        inspection: None,
+    };
     let mut planner = RrtStar::new(&problem.si, &task, &params);
     let mut sampler = Sampler::from_params(&problem.si, task.goal.as_deref(), &params);
     let mut rng = Rng::new(seed);
@@ -142,7 +157,13 @@ fn solves_every_builtin_with_valid_paths_and_edges() {
                 s.run_to_end();
                 let r = s.result();
                 assert!(r.solved, "{what}: {}", r.status);
-                println!("{what}: cost {:.4}, {} iterations, {} nodes, {:.0} ms", r.stats.cost.unwrap(), r.stats.iterations, r.stats.nodes, r.stats.time_ms);
+                println!(
+                    "{what}: cost {:.4}, {} iterations, {} nodes, {:.0} ms",
+                    r.stats.cost.unwrap(),
+                    r.stats.iterations,
+                    r.stats.nodes,
+                    r.stats.time_ms
+                );
                 if let Some(e) = common::path_problem(&sc, &r.path) {
                     panic!("{what}: raw path: {e}");
                 }
@@ -192,7 +213,10 @@ fn node_costs_match_the_tree_after_rewiring() {
         let kept = planner.costs();
         assert_eq!(kept.len(), recomputed.len(), "{name}");
         for (i, (a, b)) in kept.iter().zip(&recomputed).enumerate() {
-            assert!((a - b).abs() <= 1e-12 * b.max(1.0), "{name} {v}: node {i} keeps cost {a}, its path from the root is {b}");
+            assert!(
+                (a - b).abs() <= 1e-12 * b.max(1.0),
+                "{name} {v}: node {i} keeps cost {a}, its path from the root is {b}"
+            );
         }
         // Each node's cost is its parent's plus the edge's length.
         let tree = &data.trees[0];
@@ -205,7 +229,10 @@ fn node_costs_match_the_tree_after_rewiring() {
         // The best solution is a goal node's cost.
         if let Some(best) = planner.best_cost() {
             let path = planner.best_so_far().unwrap();
-            assert!((planners::smoothing::path_cost(&problem.si, &path) - best).abs() <= 1e-9 * best.max(1.0), "{name}");
+            assert!(
+                (planners::smoothing::path_cost(&problem.si, &path) - best).abs() <= 1e-9 * best.max(1.0),
+                "{name}"
+            );
         }
     }
 }
@@ -216,7 +243,12 @@ fn node_costs_match_the_tree_after_rewiring() {
 /// from them), and a missing `Solved` event.
 #[test]
 fn the_event_log_tells_the_story_of_the_tree_and_its_cost() {
-    for (name, v) in [("open-field", json!({})), ("narrow", json!({"rewire": "radius"})), ("arm-2", json!({})), ("slot", json!({"improve_for": 800}))] {
+    for (name, v) in [
+        ("open-field", json!({})),
+        ("narrow", json!({"rewire": "radius"})),
+        ("arm-2", json!({})),
+        ("slot", json!({"improve_for": 800})),
+    ] {
         let sc = builtin(name).unwrap();
         for seed in [2, 9] {
             let what = format!("{name} / {v} / seed {seed}");
@@ -230,7 +262,10 @@ fn the_event_log_tells_the_story_of_the_tree_and_its_cost() {
             }
             let last = costs.last().unwrap()[6];
             let reported = r.stats.cost.unwrap();
-            assert!((last - reported).abs() <= 1e-9 * reported.max(1.0), "{what}: last Cost event {last}, result {reported}");
+            assert!(
+                (last - reported).abs() <= 1e-9 * reported.max(1.0),
+                "{what}: last Cost event {last}, result {reported}"
+            );
             assert_eq!(records(&events, EventKind::Solved).len(), 1, "{what}");
             // Replay the tree from the events.
             let tree = &data.trees[0];
@@ -283,11 +318,16 @@ fn more_improvement_lowers_the_median_cost() {
         let sc = builtin(name).unwrap();
         let mut medians = Vec::new();
         for improve in [0, 1000, 8000] {
-            let costs: Vec<f64> = (1..=9).map(|seed| run(&sc, "rrt-star", &json!({"improve_for": improve}), seed, false).0.stats.cost.unwrap()).collect();
+            let costs: Vec<f64> = (1..=9)
+                .map(|seed| run(&sc, "rrt-star", &json!({"improve_for": improve}), seed, false).0.stats.cost.unwrap())
+                .collect();
             medians.push(median(costs));
         }
         println!("{name}: median cost after 0 / 1000 / 8000 improvement iterations: {medians:?}");
-        assert!(medians[1] < medians[0] && medians[2] < medians[1] && medians[2] < 0.99 * medians[0], "{name}: {medians:?}");
+        assert!(
+            medians[1] < medians[0] && medians[2] < medians[1] && medians[2] < 0.99 * medians[0],
+            "{name}: {medians:?}"
+        );
     }
 }
 
@@ -298,7 +338,9 @@ fn more_improvement_lowers_the_median_cost() {
 fn rrt_star_is_shorter_than_rrt() {
     for name in ["open-field", "narrow", "slot", "arm-2", "arm-3"] {
         let sc = builtin(name).unwrap();
-        let cost = |planner: &str| median((1..=9).map(|seed| run(&sc, planner, &json!({}), seed, false).0.stats.cost.unwrap()).collect());
+        let cost = |planner: &str| {
+            median((1..=9).map(|seed| run(&sc, planner, &json!({}), seed, false).0.stats.cost.unwrap()).collect())
+        };
         let (star, rrt) = (cost("rrt-star"), cost("rrt"));
         println!("{name}: median raw cost RRT* {star:.4}, RRT {rrt:.4}");
         assert!(star < 0.9 * rrt, "{name}: RRT* {star}, RRT {rrt}");
@@ -317,7 +359,11 @@ fn without_a_near_set_rrt_star_is_rrt() {
             let (rrt, _, _) = run(&sc, "rrt", &json!({}), seed, false);
             assert!(star.solved && rrt.solved, "{name} / seed {seed}");
             assert_eq!(star.path, rrt.path, "{name} / seed {seed}");
-            assert_eq!((star.stats.iterations, star.stats.nodes), (rrt.stats.iterations, rrt.stats.nodes), "{name} / seed {seed}");
+            assert_eq!(
+                (star.stats.iterations, star.stats.nodes),
+                (rrt.stats.iterations, rrt.stats.nodes),
+                "{name} / seed {seed}"
+            );
         }
     }
 }
@@ -363,7 +409,8 @@ fn open_field_optimum(sc: &Scenario) -> (f64, Vec<Vec<f64>>) {
     let mut done = vec![false; n];
     let mut scratch = vec![0.0; 2];
     dist[0] = 0.0;
-    while let Some(u) = (0..n).filter(|&i| !done[i] && dist[i].is_finite()).min_by(|&a, &b| dist[a].total_cmp(&dist[b])) {
+    while let Some(u) = (0..n).filter(|&i| !done[i] && dist[i].is_finite()).min_by(|&a, &b| dist[a].total_cmp(&dist[b]))
+    {
         done[u] = true;
         if u == 1 {
             break;
@@ -394,7 +441,11 @@ fn open_field_optimum(sc: &Scenario) -> (f64, Vec<Vec<f64>>) {
 fn open_field_cost_approaches_the_optimum() {
     let sc = builtin("open-field").unwrap();
     let (opt, path) = open_field_optimum(&sc);
-    assert!(common::path_problem(&sc, &path).is_none(), "the visibility-graph path: {:?}", common::path_problem(&sc, &path));
+    assert!(
+        common::path_problem(&sc, &path).is_none(),
+        "the visibility-graph path: {:?}",
+        common::path_problem(&sc, &path)
+    );
     let (s, g) = (&sc.start, sc.goal.as_ref().unwrap());
     let straight = ((g[0] - s[0]).powi(2) + (g[1] - s[1]).powi(2)).sqrt();
     assert!(common::motion_problem(&sc, s, g).is_some(), "the straight line is blocked");
@@ -410,7 +461,10 @@ fn open_field_cost_approaches_the_optimum() {
         })
         .collect();
     let m = median(costs.clone());
-    println!("open-field: RRT* costs after 20000 improvement iterations {costs:?}, median {m:.5} ({:.2}% above the optimum)", 100.0 * (m / opt - 1.0));
+    println!(
+        "open-field: RRT* costs after 20000 improvement iterations {costs:?}, median {m:.5} ({:.2}% above the optimum)",
+        100.0 * (m / opt - 1.0)
+    );
     assert!(m <= opt * (1.0 + margin), "median {m}, optimum {opt}: more than {}% above", margin * 100.0);
 }
 

@@ -50,11 +50,19 @@ impl Bench {
     /// `b − a` per coordinate as a fraction of its range (the short way round a wrapping angle).
     fn deviation(&self, a: &[Real], b: &[Real]) -> Vec<Real> {
         let dims = &self.p.si.space.dims;
-        (0..a.len()).map(|i| if dims[i].wraps { angle_diff(a[i], b[i]) } else { b[i] - a[i] } / (dims[i].hi - dims[i].lo)).collect()
+        (0..a.len())
+            .map(|i| if dims[i].wraps { angle_diff(a[i], b[i]) } else { b[i] - a[i] } / (dims[i].hi - dims[i].lo))
+            .collect()
     }
     /// Whether `q` is inside the space's bounds, wrapping angles in [−π, π).
     fn in_bounds(&self, q: &[Real]) -> bool {
-        self.p.si.space.dims.iter().zip(q).all(|(d, &v)| if d.wraps { (-PI..PI).contains(&v) } else { v >= d.lo && v <= d.hi })
+        self.p
+            .si
+            .space
+            .dims
+            .iter()
+            .zip(q)
+            .all(|(d, &v)| if d.wraps { (-PI..PI).contains(&v) } else { v >= d.lo && v <= d.hi })
     }
 }
 
@@ -180,7 +188,10 @@ fn gaussian_keeps_the_free_one_of_a_uniform_and_gaussian_pair() {
                 continue;
             }
             accepted += 1;
-            let (a, n) = b.s.witnesses().map(|(a, n)| (a.to_vec(), n.to_vec())).expect("an accepted gaussian sample has its pair");
+            let (a, n) =
+                b.s.witnesses()
+                    .map(|(a, n)| (a.to_vec(), n.to_vec()))
+                    .expect("an accepted gaussian sample has its pair");
             let (fa, fn_) = (b.valid(&a), b.valid(&n));
             assert_ne!(fa, fn_, "{name}: exactly one of the pair is free");
             assert_eq!(b.out, if fa { a.clone() } else { n.clone() }, "{name}: the sample is the free one of the pair");
@@ -233,7 +244,8 @@ fn bridge_keeps_the_free_midpoint_of_two_occupied_ends_a_gaussian_distance_apart
                 continue;
             }
             accepted += 1;
-            let (e1, e2) = b.s.witnesses().map(|(a, n)| (a.to_vec(), n.to_vec())).expect("an accepted bridge has its ends");
+            let (e1, e2) =
+                b.s.witnesses().map(|(a, n)| (a.to_vec(), n.to_vec())).expect("an accepted bridge has its ends");
             assert!(!b.valid(&e1) && !b.valid(&e2), "{name}: both ends of a bridge are occupied");
             assert!(b.valid(&b.out), "{name}: the midpoint is free");
             let mut mid = vec![0.0; e1.len()];
@@ -306,7 +318,10 @@ fn obstacle_based_keeps_the_last_free_state_walking_toward_the_occupied_one() {
                 continue;
             }
             accepted += 1;
-            let (free, occ) = b.s.witnesses().map(|(a, n)| (a.to_vec(), n.to_vec())).expect("an accepted obstacle sample has its witnesses");
+            let (free, occ) =
+                b.s.witnesses()
+                    .map(|(a, n)| (a.to_vec(), n.to_vec()))
+                    .expect("an accepted obstacle sample has its witnesses");
             assert!(b.valid(&free) && !b.valid(&occ), "{name}: the walk goes from a free state to an occupied one");
             // Walk again, independently of the sampler's bookkeeping: states on the way at the
             // resolution; the sample must be the one before the first occupied.
@@ -329,7 +344,10 @@ fn obstacle_based_keeps_the_last_free_state_walking_toward_the_occupied_one() {
             // One step is one resolution, except under the chain metrics (equal joint steps are
             // not equal link moves), where only the step in joint space is bounded.
             let gap = si.distance(&b.out, &at(first_occupied));
-            assert!(chain || gap <= res * (1.0 + 1e-9), "{name}: the occupied state beyond the sample is {gap} away (resolution {res})");
+            assert!(
+                chain || gap <= res * (1.0 + 1e-9),
+                "{name}: the occupied state beyond the sample is {gap} away (resolution {res})"
+            );
             // The trace's walk: one check per state up to the first occupied (the end is not checked again).
             let walked = trace.len() - start;
             assert_eq!(walked, first_occupied.min(steps - 1), "{name}: checks on the walk");
@@ -344,9 +362,14 @@ fn obstacle_based_keeps_the_last_free_state_walking_toward_the_occupied_one() {
 fn near_collision_samples_gather_around_the_collision_point() {
     let cs = 0.03;
     for (name, centre) in [("narrow", vec![0.3, 0.6]), ("slot", vec![]), ("arm-2", vec![3.1, -3.1])] {
-        let mut b = Bench::new(name, json!({"sampler": "near-collision", "collision_sigma": cs, "random_sigma": 0.5, "perseverance": 1e6}), 8);
+        let mut b = Bench::new(
+            name,
+            json!({"sampler": "near-collision", "collision_sigma": cs, "random_sigma": 0.5, "perseverance": 1e6}),
+            8,
+        );
         let dims = b.p.si.space.dims.clone();
-        let c: Vec<Real> = if centre.is_empty() { dims.iter().map(|d| d.lo + 0.4 * (d.hi - d.lo)).collect() } else { centre };
+        let c: Vec<Real> =
+            if centre.is_empty() { dims.iter().map(|d| d.lo + 0.4 * (d.hi - d.lo)).collect() } else { centre };
         // A few samples around a random centre first, then the collision.
         for _ in 0..5 {
             b.sample();
@@ -365,7 +388,10 @@ fn near_collision_samples_gather_around_the_collision_point() {
         }
         for (i, d) in devs.iter().enumerate() {
             let (mean, sd) = moments(d);
-            assert!(mean.abs() < 4.0 * cs / (n as Real).sqrt(), "{name}: coordinate {i}: mean deviation {mean} of the range");
+            assert!(
+                mean.abs() < 4.0 * cs / (n as Real).sqrt(),
+                "{name}: coordinate {i}: mean deviation {mean} of the range"
+            );
             assert!((sd / cs - 1.0).abs() < 0.06, "{name}: coordinate {i}: sd {sd} of the range, want {cs}");
         }
     }
@@ -376,7 +402,11 @@ fn near_collision_samples_gather_around_the_collision_point() {
 /// counted as draws.
 #[test]
 fn near_collision_recentres_at_random_every_perseverance_samples() {
-    let mut b = Bench::new("narrow", json!({"sampler": "near-collision", "collision_sigma": 0.01, "random_sigma": 0.4, "perseverance": 5}), 9);
+    let mut b = Bench::new(
+        "narrow",
+        json!({"sampler": "near-collision", "collision_sigma": 0.01, "random_sigma": 0.4, "perseverance": 5}),
+        9,
+    );
     assert!(b.s.centre().is_none());
     b.sample();
     let (r1, sigma, count) = b.s.centre().map(|(c, s, n)| (c.to_vec(), s, n)).unwrap();
@@ -451,7 +481,11 @@ fn statistics_count_what_the_sampler_spent() {
     for name in ["narrow", "arm-2", "asv-3"] {
         for sampler in NAMES {
             let tries_ = 20;
-            let mut b = Bench::new(name, json!({"sampler": sampler, "sampler_tries": tries_, "goal_bias": 0.1, "perseverance": 7}), 13);
+            let mut b = Bench::new(
+                name,
+                json!({"sampler": sampler, "sampler_tries": tries_, "goal_bias": 0.1, "perseverance": 7}),
+                13,
+            );
             let goal = b.p.goal.clone().unwrap();
             let checks0 = b.p.si.checks();
             let (mut accepted, mut failed, mut draws, mut events_seen) = (0u64, 0u64, 0u64, 0u64);
@@ -515,7 +549,11 @@ fn the_run_reports_the_samplers_statistics() {
         assert_eq!(st["name"], json!(sampler));
         let accepted = st["accepted"].as_u64().unwrap();
         assert_eq!(accepted, count(EventKind::Sample), "{sampler}: one Sample event per accepted sample");
-        assert_eq!(st["checks"].as_u64().unwrap(), count(EventKind::SampleTry), "{sampler}: one SampleTry event per check");
+        assert_eq!(
+            st["checks"].as_u64().unwrap(),
+            count(EventKind::SampleTry),
+            "{sampler}: one SampleTry event per check"
+        );
         assert!(st["checks"].as_u64().unwrap() <= result["stats"]["checks"].as_u64().unwrap());
         let draws = st["draws"].as_u64().unwrap();
         assert!(draws >= accepted);
@@ -563,7 +601,8 @@ fn narrow_passage_samplers_favour_the_obstacles_and_the_passage() {
         let mut s = Session::new(Problem::from_scenario(&sc).unwrap(), config).unwrap();
         s.run_to_end();
         let events = s.drain_events();
-        let samples: Vec<_> = events.chunks(STRIDE).filter(|r| r[0] == EventKind::Sample as u8 as f64).map(|r| [r[8], r[9]]).collect();
+        let samples: Vec<_> =
+            events.chunks(STRIDE).filter(|r| r[0] == EventKind::Sample as u8 as f64).map(|r| [r[8], r[9]]).collect();
         assert!(samples.len() > 200, "{sampler}: {} samples", samples.len());
         samples.iter().filter(|q| wall_distance(&q[..]) <= 0.05).count() as Real / samples.len() as Real
     };
@@ -605,7 +644,10 @@ fn every_sampler_on_every_builtin_stays_in_bounds_valid_and_reproducible() {
             let (first, trace, stats) = run(21);
             assert!(!first.is_empty(), "{name} {sampler}: gave up on all {n} samples");
             let (again, trace_again, stats_again) = run(21);
-            assert!(first == again && trace == trace_again && stats == stats_again, "{name} {sampler}: same seed, other samples");
+            assert!(
+                first == again && trace == trace_again && stats == stats_again,
+                "{name} {sampler}: same seed, other samples"
+            );
             let (other, _, _) = run(22);
             assert_ne!(first, other, "{name} {sampler}: the seed changes nothing");
         }
@@ -694,5 +736,8 @@ fn the_vehicle_chain_draws_gaussian_neighbours_that_stay_chains() {
         let wind = |s: &[Real]| s[3..].iter().sum::<Real>().signum();
         assert!(own[3..].iter().all(|t| t * wind(&q) >= 0.0), "a turn changed side: {:?} → {:?}", &q[3..], &own[3..]);
     }
-    assert!(own_valid > 2 * generic_valid && own_valid > 40, "own {own_valid}/300 valid, per-coordinate {generic_valid}/300");
+    assert!(
+        own_valid > 2 * generic_valid && own_valid > 40,
+        "own {own_valid}/300 valid, per-coordinate {generic_valid}/300"
+    );
 }

@@ -41,7 +41,14 @@ impl Rig {
         Rig { problem, rng: Rng::new(1), events: EventLog::new(true), sampler }
     }
     fn cx(&mut self) -> Context<'_> {
-        Context { si: &self.problem.si, rng: &mut self.rng, events: &mut self.events, nodes_left: 1000, sampler: &mut self.sampler, iteration: 0 }
+        Context {
+            si: &self.problem.si,
+            rng: &mut self.rng,
+            events: &mut self.events,
+            nodes_left: 1000,
+            sampler: &mut self.sampler,
+            iteration: 0,
+        }
     }
     fn kinds(&self, kind: EventKind) -> Vec<Vec<f64>> {
         self.events.records().chunks(STRIDE).filter(|r| r[0] == kind as u8 as f64).map(<[f64]>::to_vec).collect()
@@ -172,7 +179,11 @@ fn every_variant_solves_on_every_robot_kind() {
                 }
                 v["time_limit"] = json!(20.0);
                 let params = Params::from_json(spec, &v).unwrap();
-                let mut s = Session::new(Problem::from_scenario(&sc).unwrap(), RunConfig { planner: planner.into(), params, seed: 3, record_events: false }).unwrap();
+                let mut s = Session::new(
+                    Problem::from_scenario(&sc).unwrap(),
+                    RunConfig { planner: planner.into(), params, seed: 3, record_events: false },
+                )
+                .unwrap();
                 s.run_to_end();
                 let r = s.result();
                 // Single-tree RRT with exhausted nodes can lose the nodes by a narrow passage to
@@ -184,7 +195,10 @@ fn every_variant_solves_on_every_robot_kind() {
                 let mut scratch = vec![0.0; si.dims()];
                 use planarium::motion::MotionValidator;
                 for w in s.planning_path(true).windows(2) {
-                    assert!(si.check_motion(&w[0], &w[1], &mut scratch).is_ok(), "{name} / {planner} {v}: invalid path motion");
+                    assert!(
+                        si.check_motion(&w[0], &w[1], &mut scratch).is_ok(),
+                        "{name} / {planner} {v}: invalid path motion"
+                    );
                 }
             }
         }

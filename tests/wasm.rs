@@ -13,7 +13,8 @@ fn seeded_runs_match_the_native_fingerprints() {
     let want: Value = serde_json::from_str(include_str!("golden/runs.json")).unwrap();
     for (i, case) in cases.iter().enumerate() {
         let sc = builtin(case["scenario"].as_str().unwrap()).unwrap();
-        let got = fingerprint(&sc, case["planner"].as_str().unwrap(), &case["params"], case["seed"].as_u64().unwrap()).unwrap();
+        let got = fingerprint(&sc, case["planner"].as_str().unwrap(), &case["params"], case["seed"].as_u64().unwrap())
+            .unwrap();
         assert_eq!(serde_json::to_value(&got).unwrap(), want[i], "case {i}: {case}");
     }
 }

@@ -12,12 +12,7 @@ fuzz_target!(|data: &[u8]| {
         let t = text(data);
         let (problem, solution) = match t.split_once(SEPARATOR) {
             Some((p, s)) => (p.to_string(), s),
-            None => (
-                planarium::scenario::builtin("asv-3-easy")
-                    .expect("built-in")
-                    .to_json(),
-                &*t,
-            ),
+            None => (planarium::scenario::builtin("asv-3-easy").expect("built-in").to_json(), &*t),
         };
         expect(harness::check_asv_solution(&problem, solution));
     });

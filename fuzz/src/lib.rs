@@ -29,9 +29,7 @@ pub fn expect<T>(r: Result<T, String>) -> T {
 pub fn timed(target: &str, data: &[u8], f: impl FnOnce()) {
     static INIT: std::sync::Once = std::sync::Once::new();
     INIT.call_once(|| {
-        harness::set_require_location(
-            std::env::var("PLANARIUM_FUZZ_LOCATION").map_or(true, |v| v != "0"),
-        )
+        harness::set_require_location(std::env::var("PLANARIUM_FUZZ_LOCATION").map_or(true, |v| v != "0"))
     });
     let t = std::time::Instant::now();
     f();
@@ -46,10 +44,7 @@ pub fn timed(target: &str, data: &[u8], f: impl FnOnce()) {
     let stats = dir.join(format!("{target}.slowest.txt"));
     let best = SLOWEST.with(|s| {
         s.get().unwrap_or_else(|| {
-            std::fs::read_to_string(&stats)
-                .ok()
-                .and_then(|t| t.split_whitespace().next()?.parse().ok())
-                .unwrap_or(0.0)
+            std::fs::read_to_string(&stats).ok().and_then(|t| t.split_whitespace().next()?.parse().ok()).unwrap_or(0.0)
         })
     });
     if secs > best {

@@ -29,7 +29,11 @@ fn with_param_flags(mut cmd: Command) -> Command {
     for p in all_param_specs() {
         let id: &'static str = p.name;
         cmd = cmd.arg(
-            Arg::new(id).long(&*Box::leak(param_flag(p.name).into_boxed_str())).value_name("VALUE").help(p.doc).help_heading("Planner parameters"),
+            Arg::new(id)
+                .long(&*Box::leak(param_flag(p.name).into_boxed_str()))
+                .value_name("VALUE")
+                .help(p.doc)
+                .help_heading("Planner parameters"),
         );
     }
     cmd
@@ -117,16 +121,18 @@ fn load(arg: &str) -> Result<Scenario, String> {
     } else if scenario::builtin_names().contains(&arg) {
         scenario::builtin(arg).map_err(|e| e.to_string())
     } else {
-        Err(format!("{arg}: no such file, and not a built-in scenario (built-ins: {})", scenario::builtin_names().join(", ")))
+        Err(format!(
+            "{arg}: no such file, and not a built-in scenario (built-ins: {})",
+            scenario::builtin_names().join(", ")
+        ))
     }
 }
 
 fn params_for(spec: &'static PlannerSpec, sc: &Scenario, m: &ArgMatches) -> Result<Params, String> {
     // Scenario defaults first (when they are for this planner), then flags.
     let mut params = match &sc.planner {
-        Some(d) if d.name == spec.name => {
-            Params::from_json(spec, &serde_json::Value::Object(d.params.clone())).map_err(|(k, e)| format!("planner.{k}: {e}"))?
-        }
+        Some(d) if d.name == spec.name => Params::from_json(spec, &serde_json::Value::Object(d.params.clone()))
+            .map_err(|(k, e)| format!("planner.{k}: {e}"))?,
         _ => Params::defaults(spec),
     };
     for p in all_param_specs() {
@@ -151,20 +157,37 @@ fn plan(m: &ArgMatches) -> Result<(), String> {
     let sc = load(m.get_one::<String>("scenario").unwrap())?;
     // As the page does: the scenario's planner block chooses the planner and seed unless told.
     let block = sc.planner.as_ref();
-    let name = m.get_one::<String>("planner").cloned().or_else(|| block.map(|b| b.name.clone())).unwrap_or_else(|| "rrt-connect".into());
+    let name = m
+        .get_one::<String>("planner")
+        .cloned()
+        .or_else(|| block.map(|b| b.name.clone()))
+        .unwrap_or_else(|| "rrt-connect".into());
     let spec = find_planner(&name)?;
     let params = params_for(spec, &sc, m)?;
     let problem = Problem::from_scenario(&sc).map_err(|e| e.to_string())?;
-    let seed = m.get_one::<u64>("seed").copied().or_else(|| block.filter(|b| b.name == spec.name).and_then(|b| b.seed)).unwrap_or(1);
+    let seed = m
+        .get_one::<u64>("seed")
+        .copied()
+        .or_else(|| block.filter(|b| b.name == spec.name).and_then(|b| b.seed))
+        .unwrap_or(1);
     let events_file = m.get_one::<String>("events");
-    let mut s = Session::new(problem, RunConfig { planner: spec.name.into(), params, seed, record_events: events_file.is_some() })?;
+    let mut s = Session::new(
+        problem,
+        RunConfig { planner: spec.name.into(), params, seed, record_events: events_file.is_some() },
+    )?;
     s.run_to_end();
     let r = s.result();
     if let Some(file) = events_file {
-        let kinds: serde_json::Map<String, serde_json::Value> =
-            planarium::events::EventKind::ALL.iter().map(|(k, name)| (name.to_string(), serde_json::json!(*k as u8))).collect();
+        let kinds: serde_json::Map<String, serde_json::Value> = planarium::events::EventKind::ALL
+            .iter()
+            .map(|(k, name)| (name.to_string(), serde_json::json!(*k as u8)))
+            .collect();
         // NaN (unused slots) is not JSON: written as null.
-        let records: Vec<serde_json::Value> = s.drain_events().into_iter().map(|v| if v.is_finite() { serde_json::json!(v) } else { serde_json::Value::Null }).collect();
+        let records: Vec<serde_json::Value> = s
+            .drain_events()
+            .into_iter()
+            .map(|v| if v.is_finite() { serde_json::json!(v) } else { serde_json::Value::Null })
+            .collect();
         let doc = serde_json::json!({"stride": planarium::events::STRIDE, "kinds": kinds, "records": records});
         std::fs::write(file, doc.to_string()).map_err(|e| format!("{file}: {e}"))?;
     }
@@ -189,7 +212,11 @@ fn plan(m: &ArgMatches) -> Result<(), String> {
             sm.name, sm.accepted, sm.failed, sm.draws_per_sample, sm.checks_per_sample
         );
         if let Some(c) = st.coverage {
-            println!("  coverage {:.1}% (smoothed path: {:.1}%)", c * 100.0, st.smoothed_coverage.unwrap_or(0.0) * 100.0);
+            println!(
+                "  coverage {:.1}% (smoothed path: {:.1}%)",
+                c * 100.0,
+                st.smoothed_coverage.unwrap_or(0.0) * 100.0
+            );
         }
         if let Some(why) = &r.reason {
             println!("  {why}");
@@ -209,19 +236,34 @@ fn run_bench(m: &ArgMatches) -> Result<(), String> {
     let mut rows = Vec::new();
     let setups: Vec<String> = match m.get_many::<String>("setup") {
         Some(v) => v.cloned().collect(),
-        None => m.get_one::<String>("planners").unwrap().split(',').map(str::trim).filter(|s| !s.is_empty()).map(String::from).collect(),
+        None => m
+            .get_one::<String>("planners")
+            .unwrap()
+            .split(',')
+            .map(str::trim)
+            .filter(|s| !s.is_empty())
+            .map(String::from)
+            .collect(),
     };
     for text in &setups {
-        let setup = bench::parse_setup(text, |spec| params_for(spec, &sc, m)).map_err(|e| format!("--setup \"{text}\": {e}"))?;
+        let setup = bench::parse_setup(text, |spec| params_for(spec, &sc, m))
+            .map_err(|e| format!("--setup \"{text}\": {e}"))?;
         let mut row = bench::bench_planner(&sc, setup.spec.name, &setup.params, runs)?;
         row.label = setup.label;
-        eprintln!("{}: {:.0}% solved, median {:.0} checks", row.label, row.summary.success_rate * 100.0, row.summary.checks.median);
+        eprintln!(
+            "{}: {:.0}% solved, median {:.0} checks",
+            row.label,
+            row.summary.success_rate * 100.0,
+            row.summary.checks.median
+        );
         rows.push(row);
     }
     let scenario_arg = m.get_one::<String>("scenario").unwrap();
     // As `load` reads it: a file (its stem) before a built-in (its id).
     let path = std::path::Path::new(scenario_arg);
-    let scenario_id = if path.exists() { path.file_stem().and_then(|s| s.to_str()).unwrap_or(scenario_arg) } else { scenario_arg }.to_string();
+    let scenario_id =
+        if path.exists() { path.file_stem().and_then(|s| s.to_str()).unwrap_or(scenario_arg) } else { scenario_arg }
+            .to_string();
     let report = export::BenchReport::new(&sc.name, &scenario_id, &now_utc(), &host_name(), &rows);
     for (flag, format) in [("csv", "csv"), ("json-file", "json"), ("ompl-log", "ompl")] {
         if let Some(file) = m.get_one::<String>(flag) {
@@ -255,8 +297,13 @@ fn now_utc() -> String {
 /// else "unknown".
 fn host_name() -> String {
     let from_env = ["HOSTNAME", "COMPUTERNAME"].iter().find_map(|k| std::env::var(k).ok());
-    let from_file = || ["/proc/sys/kernel/hostname", "/etc/hostname"].iter().find_map(|f| std::fs::read_to_string(f).ok());
-    from_env.or_else(from_file).map(|s| s.trim().to_string()).filter(|s| !s.is_empty()).unwrap_or_else(|| "unknown".into())
+    let from_file =
+        || ["/proc/sys/kernel/hostname", "/etc/hostname"].iter().find_map(|f| std::fs::read_to_string(f).ok());
+    from_env
+        .or_else(from_file)
+        .map(|s| s.trim().to_string())
+        .filter(|s| !s.is_empty())
+        .unwrap_or_else(|| "unknown".into())
 }
 
 fn main() -> ExitCode {

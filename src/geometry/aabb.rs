@@ -35,7 +35,10 @@ impl Aabb {
     /// their distance is at least `√(gx² + gy²)`.
     #[inline]
     pub fn gap(&self, o: &Aabb) -> Vec2 {
-        Vec2::new((self.min.x - o.max.x).at_least(o.min.x - self.max.x).at_least(0.0), (self.min.y - o.max.y).at_least(o.min.y - self.max.y).at_least(0.0))
+        Vec2::new(
+            (self.min.x - o.max.x).at_least(o.min.x - self.max.x).at_least(0.0),
+            (self.min.y - o.max.y).at_least(o.min.y - self.max.y).at_least(0.0),
+        )
     }
     /// The box grown by `r` on every side.
     pub fn grown(&self, r: Real) -> Aabb {

@@ -18,7 +18,14 @@ pub fn segment_disc_cmp(a: Vec2, b: Vec2, c: Vec2, r: Real) -> Ordering {
     let d2 = distance2_point_segment(c, a, b);
     // The computed distance is within about 10 ulps of the largest coordinate of the exact one;
     // outside 64 ulps the filter decides.
-    let s = a.x.abs().at_least(a.y.abs()).at_least(b.x.abs()).at_least(b.y.abs()).at_least(c.x.abs()).at_least(c.y.abs()).at_least(r);
+    let s =
+        a.x.abs()
+            .at_least(a.y.abs())
+            .at_least(b.x.abs())
+            .at_least(b.y.abs())
+            .at_least(c.x.abs())
+            .at_least(c.y.abs())
+            .at_least(r);
     let m = 64.0 * Real::EPSILON * s;
     let hi = r + m;
     if d2 > hi * hi {

@@ -18,7 +18,11 @@ use crate::math::{MinMax, Real, Vec2};
 /// differences between about `1e-140` and `1e140` in magnitude, or 0).
 #[inline(always)]
 pub fn orient(a: Vec2, b: Vec2, c: Vec2) -> Real {
-    robust::orient2d(robust::Coord { x: a.x, y: a.y }, robust::Coord { x: b.x, y: b.y }, robust::Coord { x: c.x, y: c.y })
+    robust::orient2d(
+        robust::Coord { x: a.x, y: a.y },
+        robust::Coord { x: b.x, y: b.y },
+        robust::Coord { x: c.x, y: c.y },
+    )
 }
 
 /// The sign of [`orient`] as -1, 0 or 1.

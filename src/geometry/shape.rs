@@ -2,7 +2,10 @@ use std::cmp::Ordering;
 
 use super::circle::{interior_meets_segment_circle, intersect_segment_circle, point_disc_cmp};
 use super::polygon::{contains_polygon_point, interior_meets_segment_polygon, intersect_segment_polygon};
-use super::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment_apart, intersect_segment_segment, orient_sign};
+use super::segment::{
+    contains_segment_point, distance2_point_segment, distance_segment_segment_apart, intersect_segment_segment,
+    orient_sign,
+};
 use super::Aabb;
 use crate::math::{MinMax, Real, Vec2};
 
@@ -82,7 +85,8 @@ impl Shape {
                 let c = [r.min, Vec2::new(r.max.x, r.min.y), r.max, Vec2::new(r.min.x, r.max.y)];
                 (0..4).for_each(|i| best = best.at_most(distance_segment_segment_apart(a, b, c[i], c[(i + 1) % 4])));
             }
-            Shape::Polygon(p) => (0..p.len()).for_each(|i| best = best.at_most(distance_segment_segment_apart(a, b, p[i], p[(i + 1) % p.len()]))),
+            Shape::Polygon(p) => (0..p.len())
+                .for_each(|i| best = best.at_most(distance_segment_segment_apart(a, b, p[i], p[(i + 1) % p.len()]))),
             Shape::Segment(c, d) => best = best.at_most(distance_segment_segment_apart(a, b, *c, *d)),
             Shape::Circle(c, r) => best = best.at_most(distance2_point_segment(*c, a, b).sqrt() - r),
         }

@@ -76,7 +76,10 @@ mod tests {
     fn sight_lines_are_blocked_by_interiors_only() {
         let b = Aabb { min: v(-10.0, -10.0), max: v(10.0, 10.0) };
         let square = Shape::Polygon(vec![v(0.0, 0.0), v(1.0, 0.0), v(1.0, 1.0), v(0.0, 1.0)]);
-        for ws in [Workspace::new(b, vec![square.clone()]), Workspace::new(b, vec![Shape::Rect(Aabb { min: v(0.0, 0.0), max: v(1.0, 1.0) })])] {
+        for ws in [
+            Workspace::new(b, vec![square.clone()]),
+            Workspace::new(b, vec![Shape::Rect(Aabb { min: v(0.0, 0.0), max: v(1.0, 1.0) })]),
+        ] {
             assert!(!ws.sight_clear(v(-1.0, 0.5), v(2.0, 0.5)), "through");
             assert!(!ws.sight_clear(v(-1.0, -1.0), v(2.0, 2.0)), "along the diagonal, through the inside");
             assert!(ws.sight_clear(v(-1.0, 1.0), v(1.0, -1.0)), "grazing the vertex (0, 0)");

@@ -127,7 +127,10 @@ impl Workspace {
     pub fn new(bounds: Aabb, obstacles: Vec<Shape>) -> Self {
         let boxes: Vec<Aabb> = obstacles.iter().map(Shape::aabb).collect();
         let bvh = (boxes.len() >= BVH_FROM).then(|| {
-            let leaves: Vec<ParryAabb> = boxes.iter().map(|b| ParryAabb::new(Vector::new(b.min.x, b.min.y), Vector::new(b.max.x, b.max.y))).collect();
+            let leaves: Vec<ParryAabb> = boxes
+                .iter()
+                .map(|b| ParryAabb::new(Vector::new(b.min.x, b.min.y), Vector::new(b.max.x, b.max.y)))
+                .collect();
             Bvh::from_leaves(BvhBuildStrategy::Binned, &leaves)
         });
         Workspace { bounds, obstacles, boxes, bvh, open: false }
@@ -161,10 +164,12 @@ impl Workspace {
             Some(t) => {
                 let probe = probe();
                 let mut tests = 0;
-                let found = t.leaves(|n| probe.may_meet(Vec2::new(n.mins().x, n.mins().y), Vec2::new(n.maxs().x, n.maxs().y))).any(|i| {
-                    tests += 1;
-                    f(i as usize)
-                });
+                let found = t
+                    .leaves(|n| probe.may_meet(Vec2::new(n.mins().x, n.mins().y), Vec2::new(n.maxs().x, n.maxs().y)))
+                    .any(|i| {
+                        tests += 1;
+                        f(i as usize)
+                    });
                 if tests > 0 {
                     add_tests(tests);
                 }
@@ -239,7 +244,11 @@ impl Workspace {
 
     /// Whether the closed segment `a b` meets an obstacle.
     pub fn segment_hits(&self, a: Vec2, b: Vec2) -> bool {
-        self.near_by(&Aabb::of_points(&[a, b]), || Probe::of_segment(a, b), |i| self.obstacles[i].intersects_segment(a, b))
+        self.near_by(
+            &Aabb::of_points(&[a, b]),
+            || Probe::of_segment(a, b),
+            |i| self.obstacles[i].intersects_segment(a, b),
+        )
     }
 
     /// The distance from the closed polygon `poly` to the nearest obstacle, capped at `cap`
@@ -252,7 +261,17 @@ impl Workspace {
     /// The index of the first obstacle that the segment `a b` meets (its interior only when the
     /// workspace is [`open`](Workspace::open)), if any.
     pub fn segment_hit(&self, a: Vec2, b: Vec2) -> Option<usize> {
-        self.first(&Aabb::of_points(&[a, b]), || Probe::of_segment(a, b), |i| if self.open { self.obstacles[i].interior_meets_segment(a, b) } else { self.obstacles[i].intersects_segment(a, b) })
+        self.first(
+            &Aabb::of_points(&[a, b]),
+            || Probe::of_segment(a, b),
+            |i| {
+                if self.open {
+                    self.obstacles[i].interior_meets_segment(a, b)
+                } else {
+                    self.obstacles[i].intersects_segment(a, b)
+                }
+            },
+        )
     }
 
     /// The distance from the segment `a b` to the nearest obstacle, capped at `cap` (0 when it
@@ -265,7 +284,11 @@ impl Workspace {
     /// obstacle's interior. Touching (grazing a vertex, running along an edge, ending on the
     /// boundary) does not block, whatever [`open`](Workspace::open) says (see [`super::sight`]).
     pub fn sight_clear(&self, a: Vec2, b: Vec2) -> bool {
-        !self.near_by(&Aabb::of_points(&[a, b]), || Probe::of_segment(a, b), |i| self.obstacles[i].interior_meets_segment(a, b))
+        !self.near_by(
+            &Aabb::of_points(&[a, b]),
+            || Probe::of_segment(a, b),
+            |i| self.obstacles[i].interior_meets_segment(a, b),
+        )
     }
 
     /// The index of the first obstacle that the closed polygon `poly` meets, if any.
@@ -283,7 +306,17 @@ impl Workspace {
 
     /// Like [`Workspace::segment_hit`], but any obstacle met (see [`Workspace::polygon_hit_any`]).
     pub fn segment_hit_any(&self, a: Vec2, b: Vec2) -> Option<usize> {
-        self.any(&Aabb::of_points(&[a, b]), || Probe::of_segment(a, b), |i| if self.open { self.obstacles[i].interior_meets_segment(a, b) } else { self.obstacles[i].intersects_segment(a, b) })
+        self.any(
+            &Aabb::of_points(&[a, b]),
+            || Probe::of_segment(a, b),
+            |i| {
+                if self.open {
+                    self.obstacles[i].interior_meets_segment(a, b)
+                } else {
+                    self.obstacles[i].intersects_segment(a, b)
+                }
+            },
+        )
     }
 
     /// An obstacle whose box meets `bb` and that passes `hit`, the first the broad phase finds.

@@ -27,7 +27,9 @@ pub fn detect(text: &str) -> Format {
         return Format::AsvProblem;
     }
     match serde_json::from_str::<serde_json::Value>(text) {
-        Ok(serde_json::Value::Object(m)) if m.contains_key("OBSTACLES") || m.contains_key("WIDTH") => Format::TechnionMap,
+        Ok(serde_json::Value::Object(m)) if m.contains_key("OBSTACLES") || m.contains_key("WIDTH") => {
+            Format::TechnionMap
+        }
         _ => Format::Scenario,
     }
 }
@@ -44,4 +46,3 @@ pub fn import(text: &str, name: &str) -> Result<Scenario, ScenarioError> {
         Format::AsvProblem => asv::import_problem(text, name),
     }
 }
-

@@ -37,9 +37,9 @@ pub fn import_map(text: &str, name: &str) -> Result<Scenario, ScenarioError> {
         .iter()
         .map(|p| json!({ "polygon": p }))
         .collect();
-    let inspection = map.get("INSPECTION_POINTS").map(|pts| {
-        json!({"points": pts, "fov": std::f64::consts::FRAC_PI_3, "range": 60.0, "coverage": 0.5})
-    });
+    let inspection = map
+        .get("INSPECTION_POINTS")
+        .map(|pts| json!({"points": pts, "fov": std::f64::consts::FRAC_PI_3, "range": 60.0, "coverage": 0.5}));
     let task = if inspection.is_some() { "inspection" } else { "motion planning" };
     let mut sc = json!({
         "format": crate::scenario::FORMAT,
@@ -65,7 +65,12 @@ pub fn import_map(text: &str, name: &str) -> Result<Scenario, ScenarioError> {
     }
     // Errors from the scenario checks name scenario paths; say which map key they came from.
     let rename = |mut e: ScenarioError| {
-        for (from, to) in [("obstacles", "OBSTACLES"), ("start", "START"), ("goal", "GOAL"), ("inspection.points", "INSPECTION_POINTS")] {
+        for (from, to) in [
+            ("obstacles", "OBSTACLES"),
+            ("start", "START"),
+            ("goal", "GOAL"),
+            ("inspection.points", "INSPECTION_POINTS"),
+        ] {
             if let Some(rest) = e.path.strip_prefix(from) {
                 e.path = format!("{to}{rest}");
             }
@@ -100,7 +105,11 @@ mod tests {
     fn a_scenario_mentioning_the_map_keys_is_still_a_scenario() {
         let sc = crate::scenario::builtin("narrow").unwrap();
         let mut text = sc.to_json();
-        text = text.replacen("\"notes\": \"", "\"notes\": \"Unlike a Technion map it has no \\\"WIDTH\\\" or \\\"OBSTACLES\\\" key. ", 1);
+        text = text.replacen(
+            "\"notes\": \"",
+            "\"notes\": \"Unlike a Technion map it has no \\\"WIDTH\\\" or \\\"OBSTACLES\\\" key. ",
+            1,
+        );
         assert_eq!(crate::io::detect(&text), crate::io::Format::Scenario);
         assert_eq!(crate::io::detect(MP), crate::io::Format::TechnionMap);
         assert_eq!(crate::io::detect("3\n0.1 0.1 ..."), crate::io::Format::AsvProblem);
@@ -108,7 +117,8 @@ mod tests {
 
     #[test]
     fn errors_name_the_map_key() {
-        let e = import_map(&MP.replace(r#""START": [0.78, -0.78, 0.0, 0.0]"#, r#""START": [0.78, -0.78, 0.0]"#), "m").unwrap_err();
+        let e = import_map(&MP.replace(r#""START": [0.78, -0.78, 0.0, 0.0]"#, r#""START": [0.78, -0.78, 0.0]"#), "m")
+            .unwrap_err();
         assert_eq!(e.to_string(), "START: an arm robot's state has 4 numbers, found 3");
         let e = import_map(&MP.replace("[[[130,80], [80,80]", "[[[130,80]"), "m").unwrap_err();
         assert!(e.path.starts_with("OBSTACLES[0]"), "{e}");

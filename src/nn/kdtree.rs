@@ -184,10 +184,14 @@ impl KdTree {
             crate::space::Metric::Weighted { weights } => weights[k],
             _ => 1.0,
         };
-        let s = (0..d).max_by(|&a, &b| ((hi[a] - lo[a]) * weight(a)).total_cmp(&((hi[b] - lo[b]) * weight(b)))).unwrap_or(0);
+        let s = (0..d)
+            .max_by(|&a, &b| ((hi[a] - lo[a]) * weight(a)).total_cmp(&((hi[b] - lo[b]) * weight(b))))
+            .unwrap_or(0);
         let mid = idx.len() / 2;
         let keys = &self.keys;
-        idx.select_nth_unstable_by(mid, |&a, &b| keys[a as usize * d + s].total_cmp(&keys[b as usize * d + s]).then(a.cmp(&b)));
+        idx.select_nth_unstable_by(mid, |&a, &b| {
+            keys[a as usize * d + s].total_cmp(&keys[b as usize * d + s]).then(a.cmp(&b))
+        });
         let m = idx[mid] as usize;
         let (left, rest) = idx.split_at_mut(mid);
         let l = self.build(space, left);
@@ -228,7 +232,13 @@ impl KdTree {
         }
     }
 
-    fn search_nearest(&self, space: &StateSpace, qk: &[Real], keep: impl Fn(u32) -> bool, stack: &mut Vec<(u32, Real)>) -> Option<(u32, Real)> {
+    fn search_nearest(
+        &self,
+        space: &StateSpace,
+        qk: &[Real],
+        keep: impl Fn(u32) -> bool,
+        stack: &mut Vec<(u32, Real)>,
+    ) -> Option<(u32, Real)> {
         let mut best: Option<(u32, Real)> = None;
         let mut best_i = usize::MAX;
         if self.root == NONE {
@@ -252,7 +262,11 @@ impl KdTree {
                 self.consider(i, self.dist(space, qk, i), &mut best, &mut best_i);
             }
             let s = self.split[i] as usize;
-            let (near, far) = if qk[s] < self.keys[i * self.kd + s] { (self.left[i], self.right[i]) } else { (self.right[i], self.left[i]) };
+            let (near, far) = if qk[s] < self.keys[i * self.kd + s] {
+                (self.left[i], self.right[i])
+            } else {
+                (self.right[i], self.left[i])
+            };
             if far != NONE {
                 let b = self.box_bound(space, qk, far as usize);
                 if best.is_none_or(|(_, bd)| b <= bd) {
@@ -290,7 +304,14 @@ impl KdTree {
         found.into_iter().map(|(dist, i)| (self.ids[i], dist)).collect()
     }
 
-    fn search_collect(&self, space: &StateSpace, qk: &[Real], k: usize, r: Real, stack: &mut Vec<(u32, Real)>) -> Vec<(Real, usize)> {
+    fn search_collect(
+        &self,
+        space: &StateSpace,
+        qk: &[Real],
+        k: usize,
+        r: Real,
+        stack: &mut Vec<(u32, Real)>,
+    ) -> Vec<(Real, usize)> {
         // (distance, insertion index), kept sorted; the bound is the k-th distance once full.
         let mut found: Vec<(Real, usize)> = Vec::new();
         let bound = |found: &Vec<(Real, usize)>| if found.len() >= k { found[k - 1].0 } else { r };
@@ -317,7 +338,11 @@ impl KdTree {
             offer(self.dist(space, qk, i), i, &mut found);
             // Far side pushed first, so the near side is searched first and tightens the bound.
             let s = self.split[i] as usize;
-            let (near, far) = if qk[s] < self.keys[i * self.kd + s] { (self.left[i], self.right[i]) } else { (self.right[i], self.left[i]) };
+            let (near, far) = if qk[s] < self.keys[i * self.kd + s] {
+                (self.left[i], self.right[i])
+            } else {
+                (self.right[i], self.left[i])
+            };
             if far != NONE {
                 let cb = self.box_bound(space, qk, far as usize);
                 if cb <= bound(&found) {

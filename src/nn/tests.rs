@@ -41,7 +41,11 @@ fn matches_linear_scan_in_the_plane() {
 
 #[test]
 fn matches_linear_scan_with_wrapping_angle() {
-    let dims = vec![Dim { lo: 0.0, hi: 1.0, wraps: false }, Dim { lo: 0.0, hi: 1.0, wraps: false }, Dim { lo: -PI, hi: PI, wraps: true }];
+    let dims = vec![
+        Dim { lo: 0.0, hi: 1.0, wraps: false },
+        Dim { lo: 0.0, hi: 1.0, wraps: false },
+        Dim { lo: -PI, hi: PI, wraps: true },
+    ];
     check_space(StateSpace { dims, metric: Metric::TranslationRotation { weight: 0.5 } }, 2);
 }
 
@@ -72,7 +76,8 @@ fn check_collect(s: &StateSpace, seed: u64, n: u32, every: u32, k: usize, r: imp
         if i % every == 0 || i == n - 1 {
             let mut query = vec![0.0; d];
             s.sample_uniform(&mut rng, &mut query);
-            let mut all: Vec<(u32, Real)> = pts.iter().enumerate().map(|(j, p)| (j as u32, s.distance(&query, p))).collect();
+            let mut all: Vec<(u32, Real)> =
+                pts.iter().enumerate().map(|(j, p)| (j as u32, s.distance(&query, p))).collect();
             all.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
             assert_eq!(t.k_nearest(s, &query, k), all.iter().take(k).copied().collect::<Vec<_>>());
             let r = r(&all);
@@ -83,7 +88,11 @@ fn check_collect(s: &StateSpace, seed: u64, n: u32, every: u32, k: usize, r: imp
 
 #[test]
 fn k_nearest_and_within_match_a_sorted_scan() {
-    let dims = vec![Dim { lo: 0.0, hi: 1.0, wraps: false }, Dim { lo: 0.0, hi: 1.0, wraps: false }, Dim { lo: -PI, hi: PI, wraps: true }];
+    let dims = vec![
+        Dim { lo: 0.0, hi: 1.0, wraps: false },
+        Dim { lo: 0.0, hi: 1.0, wraps: false },
+        Dim { lo: -PI, hi: PI, wraps: true },
+    ];
     let s = StateSpace { dims, metric: Metric::TranslationRotation { weight: 0.3 } };
     check_collect(&s, 5, 500, 50, 7, |_| 0.4);
 }

@@ -55,11 +55,11 @@
 //! check, besides the checks of the motion validator.
 
 use crate::events::EventKind;
+use crate::journal::Entry;
 use crate::math::Real;
 use crate::motion::MotionValidator;
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::space::Metric;
-use crate::journal::Entry;
 use crate::space_info::SpaceInfo;
 use std::collections::VecDeque;
 
@@ -194,7 +194,12 @@ impl PotentialField {
             goal: task.goal().to_vec(),
             start: task.start.clone(),
             goal_tolerance: task.goal_tolerance,
-            gains: Gains { k_att: params.real("k_att"), d_star: params.real("d_star"), eta: params.real("eta"), rho0: params.real("rho0") },
+            gains: Gains {
+                k_att: params.real("k_att"),
+                d_star: params.real("d_star"),
+                eta: params.real("eta"),
+                rho0: params.real("rho0"),
+            },
             step: params.real("step"),
             window: params.real("window") as usize,
             min_progress: params.real("min_progress"),
@@ -220,7 +225,8 @@ impl PotentialField {
     pub fn potential(&self, si: &SpaceInfo, q: &[Real]) -> Potential {
         let Gains { k_att, d_star, eta, rho0 } = self.gains;
         let d = si.distance(q, &self.goal);
-        let attraction = if d <= d_star { 0.5 * k_att * d * d } else { k_att * d_star * d - 0.5 * k_att * d_star * d_star };
+        let attraction =
+            if d <= d_star { 0.5 * k_att * d * d } else { k_att * d_star * d - 0.5 * k_att * d_star * d_star };
         let rho = clearance(si, q, rho0);
         let repulsion = if rho <= 0.0 {
             Real::INFINITY
@@ -296,7 +302,16 @@ impl PotentialField {
         let id = tree.add(cx, &self.next, parent);
         cx.nodes_left = cx.nodes_left.saturating_sub(1);
         let (p, pp) = (cx.si.project(&self.next), cx.si.project(tree.state(parent)));
-        cx.events.push(EventKind::NodeAdded, tree_index, id as i64, parent as i64, p, pp, &self.next, tree.state(parent));
+        cx.events.push(
+            EventKind::NodeAdded,
+            tree_index,
+            id as i64,
+            parent as i64,
+            p,
+            pp,
+            &self.next,
+            tree.state(parent),
+        );
         self.current = id;
     }
 
@@ -365,7 +380,10 @@ impl PotentialField {
         if self.give_up_at_first {
             self.reason = Some(format!("local minimum at ({:.2}, {:.2}): escape is give-up", at.x, at.y));
         } else if self.escapes >= self.max_escapes {
-            self.reason = Some(format!("local minimum at ({:.2}, {:.2}): still trapped after {} random-walk escapes", at.x, at.y, self.escapes));
+            self.reason = Some(format!(
+                "local minimum at ({:.2}, {:.2}): still trapped after {} random-walk escapes",
+                at.x, at.y, self.escapes
+            ));
         } else {
             self.escapes += 1;
             self.mode = Mode::Walk(self.walk_steps);
@@ -422,7 +440,8 @@ impl PotentialField {
         let mut dir = vec![0.0; q.len()];
         for _ in 0..WALK_TRIES {
             dir.iter_mut().for_each(|v| *v = cx.rng.normal());
-            if self.advance(cx.si, &q, &dir, self.step) && cx.si.check_motion(&q, &self.next, &mut self.scratch).is_ok() {
+            if self.advance(cx.si, &q, &dir, self.step) && cx.si.check_motion(&q, &self.next, &mut self.scratch).is_ok()
+            {
                 self.add_step(cx, 1);
                 break;
             }
@@ -504,4 +523,3 @@ impl Planner for PotentialField {
         self.reason.clone()
     }
 }
-

@@ -36,7 +36,9 @@ use crate::events::EventKind;
 use crate::math::{Real, Vec2};
 use crate::motion::MotionValidator;
 use crate::planners::tree::ROOT;
-use crate::planners::{Context, InspectionTask, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
+use crate::planners::{
+    Context, InspectionTask, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree,
+};
 use crate::sampler::SAMPLER_GROUP;
 use crate::space_info::SpaceInfo;
 
@@ -124,7 +126,8 @@ impl Sensor {
         }
         // At most `MAX_MOTION_STEPS` (the problem's resolution check), each looking at every
         // point: the run's deadline is looked at as it goes.
-        let Some(steps) = crate::limits::steps(si.distance(a, b), si.resolution, crate::limits::MAX_MOTION_STEPS) else {
+        let Some(steps) = crate::limits::steps(si.distance(a, b), si.resolution, crate::limits::MAX_MOTION_STEPS)
+        else {
             return;
         };
         for i in 1..=steps {
@@ -171,7 +174,13 @@ pub fn path_coverage(si: &SpaceInfo, task: &InspectionTask, path: &[Vec<Real>]) 
 /// [`smoothing::shortcut`](super::smoothing::shortcut) is kept only if the shortened path still
 /// sees every point the original saw (plain shortcutting cuts the detours an inspection path takes
 /// to look at things).
-pub fn shortcut(si: &SpaceInfo, task: &InspectionTask, path: &[Vec<Real>], attempts: usize, rng: &mut crate::rng::Rng) -> Vec<Vec<Real>> {
+pub fn shortcut(
+    si: &SpaceInfo,
+    task: &InspectionTask,
+    path: &[Vec<Real>],
+    attempts: usize,
+    rng: &mut crate::rng::Rng,
+) -> Vec<Vec<Real>> {
     let must = seen_along(si, task, path);
     let mut path = path.to_vec();
     for _ in 0..attempts {
@@ -226,7 +235,12 @@ pub struct Inspection {
 impl Inspection {
     /// An inspection planner for `task` with `params`.
     pub fn new(si: &SpaceInfo, task: &Task, params: &Params) -> Self {
-        let insp = task.inspection.clone().unwrap_or(InspectionTask { points: Vec::new(), fov: 0.0, range: 0.0, coverage: 0.0 });
+        let insp = task.inspection.clone().unwrap_or(InspectionTask {
+            points: Vec::new(),
+            fov: 0.0,
+            range: 0.0,
+            coverage: 0.0,
+        });
         let own = params.real("coverage");
         let n = si.dims();
         Inspection {
@@ -312,7 +326,15 @@ impl Inspection {
             }
             self.top.push(i);
             self.in_top[i as usize] = true;
-            cx.events.mark(EventKind::Coverage, 0, i as i64, cx.iteration as f64, cx.si.project(tree.state(i)), self.fraction(c), c as f64);
+            cx.events.mark(
+                EventKind::Coverage,
+                0,
+                i as i64,
+                cx.iteration as f64,
+                cx.si.project(tree.state(i)),
+                self.fraction(c),
+                c as f64,
+            );
         } else if c == b {
             if !self.in_top[i as usize] {
                 self.in_top[i as usize] = true;
@@ -346,7 +368,15 @@ impl Inspection {
         self.top = vec![0];
         self.in_top[0] = true;
         let c = self.counts[0];
-        cx.events.mark(EventKind::Coverage, 0, 0, cx.iteration as f64, cx.si.project(&self.start), self.fraction(c), c as f64);
+        cx.events.mark(
+            EventKind::Coverage,
+            0,
+            0,
+            cx.iteration as f64,
+            cx.si.project(&self.start),
+            self.fraction(c),
+            c as f64,
+        );
         tree
     }
 

@@ -18,9 +18,9 @@ pub use params::{ParamKind, ParamSpec, Params};
 pub use tree::{PlannerData, Tree};
 
 use crate::events::{EventKind, EventLog};
-use crate::sampler::{Draw, Sampler};
 use crate::math::Real;
 use crate::rng::Rng;
+use crate::sampler::{Draw, Sampler};
 use crate::space_info::SpaceInfo;
 
 /// What a planner is asked to solve.
@@ -97,19 +97,49 @@ impl Context<'_> {
     /// `target`, at distance `d`; `domain`: the node's dynamic-domain radius (∞: none);
     /// `sample`: whether the target is a sample (not a state of the other tree).
     #[allow(clippy::too_many_arguments)]
-    pub fn note_nearest(&mut self, tree: usize, near: u32, from: &[Real], target: &[Real], d: Real, domain: Real, sample: bool) {
+    pub fn note_nearest(
+        &mut self,
+        tree: usize,
+        near: u32,
+        from: &[Real],
+        target: &[Real],
+        d: Real,
+        domain: Real,
+        sample: bool,
+    ) {
         if self.events.enabled {
             let (p, t) = (self.si.project(from), self.si.project(target));
-            self.events.values(EventKind::Nearest, tree, near as i64, -1, [p.x, p.y, t.x, t.y, d, domain, sample as u8 as f64, 0.0]);
+            self.events.values(
+                EventKind::Nearest,
+                tree,
+                near as i64,
+                -1,
+                [p.x, p.y, t.x, t.y, d, domain, sample as u8 as f64, 0.0],
+            );
         }
     }
     /// Log a growth step's steering: from node `near` (state `from`) a step of `step` (the range
     /// `range`) to the state `new`, which is the target itself when `reached`.
     #[allow(clippy::too_many_arguments)]
-    pub fn note_steer(&mut self, tree: usize, near: u32, from: &[Real], new: &[Real], step: Real, range: Real, reached: bool) {
+    pub fn note_steer(
+        &mut self,
+        tree: usize,
+        near: u32,
+        from: &[Real],
+        new: &[Real],
+        step: Real,
+        range: Real,
+        reached: bool,
+    ) {
         if self.events.enabled {
             let (p, q) = (self.si.project(new), self.si.project(from));
-            self.events.values(EventKind::Steer, tree, near as i64, -1, [p.x, p.y, q.x, q.y, step, range, reached as u8 as f64, 0.0]);
+            self.events.values(
+                EventKind::Steer,
+                tree,
+                near as i64,
+                -1,
+                [p.x, p.y, q.x, q.y, step, range, reached as u8 as f64, 0.0],
+            );
         }
     }
     /// Log a blocked motion from node `from` (state `a`) toward `b`, found invalid at `at`, with
@@ -202,7 +232,8 @@ impl PlannerSpec {
 }
 
 /// Every planner.
-pub static REGISTRY: &[PlannerSpec] = &[rrt::rrt::SPEC, rrt::rrt_connect::SPEC, rrt::rrt_star::SPEC, inspection::SPEC, hex::SPEC, apf::SPEC];
+pub static REGISTRY: &[PlannerSpec] =
+    &[rrt::rrt::SPEC, rrt::rrt_connect::SPEC, rrt::rrt_star::SPEC, inspection::SPEC, hex::SPEC, apf::SPEC];
 
 /// A planner by name.
 pub fn find(name: &str) -> Option<&'static PlannerSpec> {
@@ -236,8 +267,22 @@ pub fn registry_json() -> String {
 
 /// Parameters every run loop understands, beside the planner's own: smoothing and limits.
 pub static RUN_PARAMS: &[ParamSpec] = &[
-    ParamSpec::int("shortcut_attempts", "Shortcut attempts", 0.0, 10000.0, 100.0, "Random shortcut smoothing attempts on the found path (0: no smoothing)."),
+    ParamSpec::int(
+        "shortcut_attempts",
+        "Shortcut attempts",
+        0.0,
+        10000.0,
+        100.0,
+        "Random shortcut smoothing attempts on the found path (0: no smoothing).",
+    ),
     ParamSpec::real("time_limit", "Time limit (s)", 0.01, 3600.0, 30.0, "Stop after this much planning time."),
     ParamSpec::int("max_iterations", "Iteration limit", 1.0, 1e9, 1e7, "Stop after this many iterations."),
-    ParamSpec::int("max_nodes", "Node limit", 2.0, crate::limits::MAX_NODES, 1e6, "Stop when the trees hold this many nodes (at most a million: see docs/limits.md)."),
+    ParamSpec::int(
+        "max_nodes",
+        "Node limit",
+        2.0,
+        crate::limits::MAX_NODES,
+        1e6,
+        "Stop when the trees hold this many nodes (at most a million: see docs/limits.md).",
+    ),
 ];

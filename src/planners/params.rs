@@ -32,15 +32,35 @@ pub struct ParamSpec {
 
 impl ParamSpec {
     /// A real parameter.
-    pub const fn real(name: &'static str, label: &'static str, min: f64, max: f64, default: f64, doc: &'static str) -> Self {
+    pub const fn real(
+        name: &'static str,
+        label: &'static str,
+        min: f64,
+        max: f64,
+        default: f64,
+        doc: &'static str,
+    ) -> Self {
         ParamSpec { name, label, kind: ParamKind::Real, min, max, default, doc }
     }
     /// An integer parameter.
-    pub const fn int(name: &'static str, label: &'static str, min: f64, max: f64, default: f64, doc: &'static str) -> Self {
+    pub const fn int(
+        name: &'static str,
+        label: &'static str,
+        min: f64,
+        max: f64,
+        default: f64,
+        doc: &'static str,
+    ) -> Self {
         ParamSpec { name, label, kind: ParamKind::Int, min, max, default, doc }
     }
     /// A choice parameter.
-    pub const fn choice(name: &'static str, label: &'static str, options: &'static [&'static str], default: usize, doc: &'static str) -> Self {
+    pub const fn choice(
+        name: &'static str,
+        label: &'static str,
+        options: &'static [&'static str],
+        default: usize,
+        doc: &'static str,
+    ) -> Self {
         ParamSpec { name, label, kind: ParamKind::Choice(options), min: 0.0, max: 0.0, default: default as f64, doc }
     }
     /// The spec as JSON for the page.
@@ -95,7 +115,10 @@ impl Params {
             let ps = spec.param(k).ok_or_else(|| {
                 let mut known: Vec<&str> = spec.all_params().map(|p| p.name).collect();
                 known.dedup();
-                (crate::limits::cut(k, 100), format!("unknown parameter of {} (known: {})", spec.name, known.join(", ")))
+                (
+                    crate::limits::cut(k, 100),
+                    format!("unknown parameter of {} (known: {})", spec.name, known.join(", ")),
+                )
             })?;
             values.insert(k.clone(), ps.check(val).map_err(|m| (k.clone(), m))?);
         }

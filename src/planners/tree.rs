@@ -95,7 +95,18 @@ impl Tree {
     pub fn with_options(cx: &mut Context, root: &[Real], index: usize, opts: TreeOptions) -> Tree {
         let dims = root.len();
         let (radius, fails) = (Vec::new(), Vec::new());
-        let mut t = Tree { dims, states: Vec::new(), parents: Vec::new(), nn: KdTree::new(dims), index, opts, radius, fails, rejected: 0, dist: Vec::new() };
+        let mut t = Tree {
+            dims,
+            states: Vec::new(),
+            parents: Vec::new(),
+            nn: KdTree::new(dims),
+            index,
+            opts,
+            radius,
+            fails,
+            rejected: 0,
+            dist: Vec::new(),
+        };
         t.add(cx, root, ROOT);
         cx.nodes_left = cx.nodes_left.saturating_sub(1);
         t
@@ -206,7 +217,15 @@ impl Tree {
         if o.exhausted > 0 && failed {
             self.fails[i] += 1;
             if self.fails[i] == o.exhausted {
-                cx.events.mark(EventKind::Exhausted, self.index, near as i64, -1.0, cx.si.project(self.state(near)), 0.0, 0.0);
+                cx.events.mark(
+                    EventKind::Exhausted,
+                    self.index,
+                    near as i64,
+                    -1.0,
+                    cx.si.project(self.state(near)),
+                    0.0,
+                    0.0,
+                );
             }
         }
         if o.dd_radius > 0.0 {
@@ -219,7 +238,15 @@ impl Tree {
             };
             if next != r {
                 self.radius[i] = next;
-                cx.events.mark(EventKind::Domain, self.index, near as i64, -1.0, cx.si.project(self.state(near)), next, 0.0);
+                cx.events.mark(
+                    EventKind::Domain,
+                    self.index,
+                    near as i64,
+                    -1.0,
+                    cx.si.project(self.state(near)),
+                    next,
+                    0.0,
+                );
             }
         }
     }
@@ -238,17 +265,39 @@ impl Tree {
     /// [`select`](Self::select) picks; a sample outside that node's dynamic domain is rejected
     /// unchecked. Returns the outcome and the node reached or added (the selected node when
     /// trapped or rejected).
-    pub fn extend_sample(&mut self, cx: &mut Context, target: &[Real], range: Real, scratch: &mut [Real], new: &mut [Real]) -> (Grow, u32) {
+    pub fn extend_sample(
+        &mut self,
+        cx: &mut Context,
+        target: &[Real],
+        range: Real,
+        scratch: &mut [Real],
+        new: &mut [Real],
+    ) -> (Grow, u32) {
         self.grow(cx, target, range, scratch, new, true)
     }
 
     /// Grow one step of at most `range` toward `target` (a state of the other tree, or the next
     /// step of a CONNECT), from the node [`select`](Self::select) picks; no domain applies.
-    pub fn extend(&mut self, cx: &mut Context, target: &[Real], range: Real, scratch: &mut [Real], new: &mut [Real]) -> (Grow, u32) {
+    pub fn extend(
+        &mut self,
+        cx: &mut Context,
+        target: &[Real],
+        range: Real,
+        scratch: &mut [Real],
+        new: &mut [Real],
+    ) -> (Grow, u32) {
         self.grow(cx, target, range, scratch, new, false)
     }
 
-    fn grow(&mut self, cx: &mut Context, target: &[Real], range: Real, scratch: &mut [Real], new: &mut [Real], sample: bool) -> (Grow, u32) {
+    fn grow(
+        &mut self,
+        cx: &mut Context,
+        target: &[Real],
+        range: Real,
+        scratch: &mut [Real],
+        new: &mut [Real],
+        sample: bool,
+    ) -> (Grow, u32) {
         let (near, d) = self.select(cx, target);
         cx.note_nearest(self.index, near, self.state(near), target, d, self.domain(near), sample);
         if d == 0.0 {
@@ -291,7 +340,14 @@ impl Tree {
     /// Grow step after step toward `target` (RRT-Connect's CONNECT) until it is reached, a step is
     /// trapped, or [`MAX_CONNECT_STEPS`] steps were taken. Returns the last outcome and the last
     /// node reached or added.
-    pub fn connect(&mut self, cx: &mut Context, target: &[Real], range: Real, scratch: &mut [Real], new: &mut [Real]) -> (Grow, u32) {
+    pub fn connect(
+        &mut self,
+        cx: &mut Context,
+        target: &[Real],
+        range: Real,
+        scratch: &mut [Real],
+        new: &mut [Real],
+    ) -> (Grow, u32) {
         let mut last = (Grow::Trapped, 0);
         for _ in 0..MAX_CONNECT_STEPS {
             last = self.extend(cx, target, range, scratch, new);

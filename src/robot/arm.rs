@@ -17,9 +17,11 @@
 //! fell from 24 254 (one displacement bound for the whole arm) to 3 904.
 
 use super::{Robot, Verdict};
-use crate::geometry::segment::{contains_segment_point, distance2_point_segment, distance_segment_segment, intersect_segment_segment};
+use crate::geometry::segment::{
+    contains_segment_point, distance2_point_segment, distance_segment_segment, intersect_segment_segment,
+};
 use crate::geometry::{Aabb, SensorPose, Workspace};
-use crate::math::{MinMax, PI, Real, Vec2, angle_diff};
+use crate::math::{angle_diff, MinMax, Real, Vec2, PI};
 use crate::scenario::RobotSpec;
 use crate::space::{Dim, Metric, StateSpace};
 
@@ -161,7 +163,13 @@ impl ArmRobot {
         let segs = self.point_count() - 1;
         let MotionRates { a: ra, b: rb, seg, rel, segs: rs, dq, prefix, .. } = rates;
         dq.clear();
-        dq.extend((0..n).map(|i| if self.limits[i].is_some() { (b[i] - a[i]).abs() } else { angle_diff(a[i], b[i]).abs() }));
+        dq.extend((0..n).map(|i| {
+            if self.limits[i].is_some() {
+                (b[i] - a[i]).abs()
+            } else {
+                angle_diff(a[i], b[i]).abs()
+            }
+        }));
         // R(m, k), by prefix sums of the segment lengths.
         prefix.clear();
         prefix.push(0.0);
@@ -198,7 +206,15 @@ impl ArmRobot {
         let seg_rate = |k: usize| seg[k];
         let pair_rate = |i: usize, j: usize| rel[i * *segs + j];
         // A distance over a rate, in the clearance's units (a constraint that cannot close: none).
-        let over = |dist: Real, rate: Real| if dist <= 0.0 { 0.0 } else if rate <= 0.0 { Real::INFINITY } else { dist / rate };
+        let over = |dist: Real, rate: Real| {
+            if dist <= 0.0 {
+                0.0
+            } else if rate <= 0.0 {
+                Real::INFINITY
+            } else {
+                dist / rate
+            }
+        };
         pts.resize(self.point_count(), Vec2::default());
         self.joint_points(q, pts);
         let pts = &pts[..];
@@ -274,7 +290,9 @@ impl ArmRobot {
             for j in i + 2..segs {
                 // Boxes apart: the links cannot meet (most pairs of a long chain; exact).
                 let (p, q, r, s) = (pts[i], pts[i + 1], pts[j], pts[j + 1]);
-                if Aabb::of_points(&[p, q]).intersects(&Aabb::of_points(&[r, s])) && intersect_segment_segment(p, q, r, s) {
+                if Aabb::of_points(&[p, q]).intersects(&Aabb::of_points(&[r, s]))
+                    && intersect_segment_segment(p, q, r, s)
+                {
                     return Some("the arm crosses itself");
                 }
             }

@@ -61,7 +61,17 @@ pub trait Robot: std::fmt::Debug {
     /// directly (in wasm, a dynamic call per state cost more than the point robot's check itself).
     /// It resumes after `skip` states and calls `stop` as it goes (see the function).
     #[allow(clippy::too_many_arguments)]
-    fn check_discrete(&self, ws: &Workspace, space: &StateSpace, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real], skip: u64, stop: &dyn Fn(u64) -> bool) -> (crate::motion::Discrete, u64) {
+    fn check_discrete(
+        &self,
+        ws: &Workspace,
+        space: &StateSpace,
+        a: &[Real],
+        b: &[Real],
+        n: usize,
+        scratch: &mut [Real],
+        skip: u64,
+        stop: &dyn Fn(u64) -> bool,
+    ) -> (crate::motion::Discrete, u64) {
         crate::motion::check_discrete(space, a, b, n, scratch, skip, stop, |q| self.is_valid(ws, q))
     }
     /// Write a random state into `out` (default: uniform over the space) and return the state
@@ -74,7 +84,14 @@ pub trait Robot: std::fmt::Debug {
     /// Write into `out` a Gaussian neighbour of `centre` (spread `sigma` × each coordinate's range)
     /// drawn the robot's own way and return `true`; the default returns `false`, and samplers move
     /// every coordinate independently.
-    fn sample_gaussian(&self, _space: &StateSpace, _rng: &mut crate::rng::Rng, _centre: &[Real], _sigma: Real, _out: &mut [Real]) -> bool {
+    fn sample_gaussian(
+        &self,
+        _space: &StateSpace,
+        _rng: &mut crate::rng::Rng,
+        _centre: &[Real],
+        _sigma: Real,
+        _out: &mut [Real],
+    ) -> bool {
         false
     }
     /// How many steps a motion `a → b` of length `d` is checked in (default: `ceil(d / resolution)`);
@@ -138,9 +155,11 @@ pub trait Robot: std::fmt::Debug {
 pub fn from_spec(spec: &RobotSpec, body_in_bounds: bool) -> Result<Box<dyn Robot>, String> {
     Ok(match spec {
         RobotSpec::Point => Box::new(PointRobot),
-        RobotSpec::Rigid { footprint, rotation_weight } => {
-            Box::new(RigidRobot::new(footprint.iter().map(|p| Vec2::new(p[0], p[1])).collect(), *rotation_weight, body_in_bounds))
-        }
+        RobotSpec::Rigid { footprint, rotation_weight } => Box::new(RigidRobot::new(
+            footprint.iter().map(|p| Vec2::new(p[0], p[1])).collect(),
+            *rotation_weight,
+            body_in_bounds,
+        )),
         RobotSpec::Arm { .. } => Box::new(ArmRobot::from_spec(spec)?),
         RobotSpec::Asv { .. } => Box::new(AsvRobot::from_spec(spec)?),
     })
@@ -149,7 +168,10 @@ pub fn from_spec(spec: &RobotSpec, body_in_bounds: bool) -> Result<Box<dyn Robot
 /// The translation dimensions over the workspace bounds.
 fn xy_dims(ws: &Workspace) -> [crate::space::Dim; 2] {
     let b = ws.bounds;
-    [crate::space::Dim { lo: b.min.x, hi: b.max.x, wraps: false }, crate::space::Dim { lo: b.min.y, hi: b.max.y, wraps: false }]
+    [
+        crate::space::Dim { lo: b.min.x, hi: b.max.x, wraps: false },
+        crate::space::Dim { lo: b.min.y, hi: b.max.y, wraps: false },
+    ]
 }
 
 /// Whether the reference point `[x, y]` is inside the bounds (`OutOfBounds` names the dimension).

@@ -1,6 +1,6 @@
 use super::{xy_dims, xy_in_bounds, Robot, Verdict};
 use crate::geometry::{SensorPose, Workspace};
-use crate::math::{MinMax, PI, Real, Vec2};
+use crate::math::{MinMax, Real, Vec2, PI};
 use crate::space::{Dim, Metric, StateSpace};
 
 /// The most footprint vertices transformed on the stack; larger footprints use the heap.
@@ -84,7 +84,10 @@ impl Robot for RigidRobot {
     }
     fn space(&self, ws: &Workspace) -> StateSpace {
         let [x, y] = xy_dims(ws);
-        StateSpace { dims: vec![x, y, Dim { lo: -PI, hi: PI, wraps: true }], metric: Metric::TranslationRotation { weight: self.rotation_weight } }
+        StateSpace {
+            dims: vec![x, y, Dim { lo: -PI, hi: PI, wraps: true }],
+            metric: Metric::TranslationRotation { weight: self.rotation_weight },
+        }
     }
     fn verdict(&self, ws: &Workspace, q: &[Real]) -> Verdict {
         self.verdict_at(ws, q, false)
@@ -118,7 +121,10 @@ impl Robot for RigidRobot {
     }
     fn displacement_bound(&self, a: &[Real], b: &[Real]) -> Option<Real> {
         // A body point at distance ≤ radius from the origin moves at most |Δxy| + radius·|Δθ|.
-        Some(((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt() + self.radius * crate::math::angle_diff(a[2], b[2]).abs())
+        Some(
+            ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt()
+                + self.radius * crate::math::angle_diff(a[2], b[2]).abs(),
+        )
     }
     /// At the body origin, looking along the body's x axis (heading θ).
     fn sensor(&self, q: &[Real]) -> SensorPose {

@@ -14,7 +14,11 @@ fn ws() -> Workspace {
 }
 
 fn bar() -> RigidRobot {
-    RigidRobot::new(vec![Vec2::new(-0.1, -0.015), Vec2::new(0.1, -0.015), Vec2::new(0.1, 0.015), Vec2::new(-0.1, 0.015)], None, false)
+    RigidRobot::new(
+        vec![Vec2::new(-0.1, -0.015), Vec2::new(0.1, -0.015), Vec2::new(0.1, 0.015), Vec2::new(-0.1, 0.015)],
+        None,
+        false,
+    )
 }
 
 #[test]
@@ -91,7 +95,10 @@ mod arm {
         assert!(!si.is_valid(&[-0.6, 0.0, 0.0]), "down and right, into the wall");
         assert!(!si.is_valid(&[PI / 2.0, PI, 0.0]), "the second link folded back onto the first");
         assert!(!si.is_valid(&[PI / 2.0, 2.8, 2.5]), "the third link crosses the first");
-        assert!(problem(r#", "self_collision": false"#).si.is_valid(&[PI / 2.0, 2.8, 2.5]), "allowed without self-collision");
+        assert!(
+            problem(r#", "self_collision": false"#).si.is_valid(&[PI / 2.0, 2.8, 2.5]),
+            "allowed without self-collision"
+        );
         let limited = problem(r#", "limits": [[-1, 2], [-1.5, 1.5], [-1.5, 1.5]]"#);
         assert!(limited.si.is_valid(&[PI / 2.0, 1.0, 0.5]));
         assert!(!limited.si.is_valid(&[PI / 2.0, 1.6, 0.0]), "second joint past its limit");
@@ -108,7 +115,8 @@ mod arm {
             )
         };
         let closed = Problem::from_scenario(&Scenario::from_json(&text("")).unwrap()).unwrap();
-        let open = Problem::from_scenario(&Scenario::from_json(&text(r#", "touching_allowed": true"#)).unwrap()).unwrap();
+        let open =
+            Problem::from_scenario(&Scenario::from_json(&text(r#", "touching_allowed": true"#)).unwrap()).unwrap();
         let down = [-PI / 2.0]; // the link's end at (0.5, 0.25), on the obstacle's top edge
         assert!(!closed.si.is_valid(&down), "closed obstacles: touching collides");
         assert!(open.si.is_valid(&down), "open obstacles: touching is allowed");

@@ -75,7 +75,11 @@ pub struct Setup {
 
 impl std::fmt::Debug for Setup {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("Setup").field("label", &self.label).field("planner", &self.spec.name).field("params", &self.params.values()).finish()
+        f.debug_struct("Setup")
+            .field("label", &self.label)
+            .field("planner", &self.spec.name)
+            .field("params", &self.params.values())
+            .finish()
     }
 }
 
@@ -89,10 +93,12 @@ pub fn parse_setup(text: &str, base: impl Fn(&'static PlannerSpec) -> Result<Par
     };
     let mut words = rest.split_whitespace();
     let name = words.next().ok_or("no planner name")?;
-    let spec = planners::find(name).ok_or_else(|| format!("unknown planner \"{name}\" (known: {})", planners::names().join(", ")))?;
+    let spec = planners::find(name)
+        .ok_or_else(|| format!("unknown planner \"{name}\" (known: {})", planners::names().join(", ")))?;
     let mut params = base(spec)?;
     while let Some(flag) = words.next() {
-        let key = flag.strip_prefix("--").ok_or_else(|| format!("expected --param, found \"{flag}\""))?.replace('-', "_");
+        let key =
+            flag.strip_prefix("--").ok_or_else(|| format!("expected --param, found \"{flag}\""))?.replace('-', "_");
         let value = words.next().ok_or_else(|| format!("{flag} needs a value"))?;
         if spec.param(&key).is_none() {
             return Err(format!("{flag} is not a parameter of {}", spec.name));
@@ -145,7 +151,8 @@ pub fn bench_planner(scenario: &Scenario, planner: &str, params: &Params, runs: 
         per_run.push((seed, status == Status::Solved, s.stats()));
         statuses.push(status);
     }
-    let rows: Vec<RunRow> = per_run.iter().zip(&statuses).map(|((seed, _, st), status)| RunRow::of(*seed, *status, st)).collect();
+    let rows: Vec<RunRow> =
+        per_run.iter().zip(&statuses).map(|((seed, _, st), status)| RunRow::of(*seed, *status, st)).collect();
     Ok(PlannerBench {
         label: planner.to_string(),
         planner: planner.to_string(),
@@ -160,14 +167,27 @@ pub fn bench_planner(scenario: &Scenario, planner: &str, params: &Params, runs: 
 /// A plain-text table of benchmark results: per planner its success rate, then median, mean and
 /// standard deviation of each metric.
 pub fn table(rows: &[PlannerBench]) -> String {
-    let mut out = format!("{:<16} {:>8}  {:<14} {:>12} {:>12} {:>12}\n", "planner", "success", "metric", "median", "mean", "std");
+    let mut out =
+        format!("{:<16} {:>8}  {:<14} {:>12} {:>12} {:>12}\n", "planner", "success", "metric", "median", "mean", "std");
     for r in rows {
         let m = &r.summary;
-        let metrics: [(&str, &Summary); 5] =
-            [("time_ms", &m.time_ms), ("nodes", &m.nodes), ("checks", &m.checks), ("cost", &m.cost), ("smoothed_cost", &m.smoothed_cost)];
+        let metrics: [(&str, &Summary); 5] = [
+            ("time_ms", &m.time_ms),
+            ("nodes", &m.nodes),
+            ("checks", &m.checks),
+            ("cost", &m.cost),
+            ("smoothed_cost", &m.smoothed_cost),
+        ];
         for (k, (name, m)) in metrics.iter().enumerate() {
-            let (p, sr) = if k == 0 { (r.label.as_str(), format!("{:.0}%", r.summary.success_rate * 100.0)) } else { ("", String::new()) };
-            out.push_str(&format!("{:<16} {:>8}  {:<14} {:>12.4} {:>12.4} {:>12.4}\n", p, sr, name, m.median, m.mean, m.std));
+            let (p, sr) = if k == 0 {
+                (r.label.as_str(), format!("{:.0}%", r.summary.success_rate * 100.0))
+            } else {
+                ("", String::new())
+            };
+            out.push_str(&format!(
+                "{:<16} {:>8}  {:<14} {:>12.4} {:>12.4} {:>12.4}\n",
+                p, sr, name, m.median, m.mean, m.std
+            ));
         }
     }
     out

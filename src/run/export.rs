@@ -159,8 +159,15 @@ pub struct SetupSummary {
 /// The formats [`render`] writes.
 pub const FORMATS: [&str; 4] = ["csv", "json", "ompl", "table"];
 
-const STATUSES: [Status; 7] =
-    [Status::Running, Status::Solved, Status::TimeLimit, Status::IterationLimit, Status::NodeLimit, Status::Cancelled, Status::NoPath];
+const STATUSES: [Status; 7] = [
+    Status::Running,
+    Status::Solved,
+    Status::TimeLimit,
+    Status::IterationLimit,
+    Status::NodeLimit,
+    Status::Cancelled,
+    Status::NoPath,
+];
 
 /// OMPL's `PlannerStatus::StatusType` names, in value order (`status|...` enum line).
 const OMPL_STATUS: [&str; 10] = [
@@ -217,7 +224,8 @@ impl From<&PlannerBench> for SetupReport {
             .enumerate()
             .map(|(i, (seed, solved, st))| {
                 // `statuses` is parallel to `per_run`; a bench made without it still converts.
-                let status = b.statuses.get(i).copied().unwrap_or(if *solved { Status::Solved } else { Status::TimeLimit });
+                let status =
+                    b.statuses.get(i).copied().unwrap_or(if *solved { Status::Solved } else { Status::TimeLimit });
                 RunRow::of(*seed, status, st)
             })
             .collect();
@@ -288,7 +296,12 @@ impl BenchReport {
                 if r.solved != (status == Status::Solved) {
                     return Err(format!("{at}: solved is {} but status is \"{}\"", r.solved, r.status));
                 }
-                for (name, v) in [("time_ms", Some(r.time_ms)), ("smoothing_ms", Some(r.smoothing_ms)), ("cost", r.cost), ("smoothed_cost", r.smoothed_cost)] {
+                for (name, v) in [
+                    ("time_ms", Some(r.time_ms)),
+                    ("smoothing_ms", Some(r.smoothing_ms)),
+                    ("cost", r.cost),
+                    ("smoothed_cost", r.smoothed_cost),
+                ] {
                     if let Some(v) = v {
                         if !(v.is_finite() && v >= 0.0) {
                             return Err(format!("{at}.{name}: must be a non-negative number, not {v}"));
@@ -390,7 +403,10 @@ pub fn to_csv(r: &BenchReport) -> String {
 
 /// A word the OMPL reader keeps whole: whitespace, `;`, `|` and backquotes become `_`.
 fn ompl_word(s: &str) -> String {
-    s.trim().chars().map(|c| if c.is_whitespace() || c.is_control() || matches!(c, ';' | '|' | '`') { '_' } else { c }).collect()
+    s.trim()
+        .chars()
+        .map(|c| if c.is_whitespace() || c.is_control() || matches!(c, ';' | '|' | '`') { '_' } else { c })
+        .collect()
 }
 
 /// One line of free text (no line breaks).
@@ -450,7 +466,11 @@ pub fn to_ompl_log(r: &BenchReport) -> String {
         o.push('\n');
     };
     line(&format!("Planarium version {}", env!("CARGO_PKG_VERSION")));
-    let exp = [&r.scenario, &r.scenario_id].iter().map(|s| ompl_word(s)).find(|s| !s.is_empty()).unwrap_or_else(|| "NO_NAME".into());
+    let exp = [&r.scenario, &r.scenario_id]
+        .iter()
+        .map(|s| ompl_word(s))
+        .find(|s| !s.is_empty())
+        .unwrap_or_else(|| "NO_NAME".into());
     line(&format!("Experiment {exp}"));
     line("0 experiment properties");
     let host = ompl_word(&r.host);
@@ -458,7 +478,11 @@ pub fn to_ompl_log(r: &BenchReport) -> String {
     line(&format!("Starting at {}", one_line(r.date.trim())));
     // The setup text: what OMPL's SimpleSetup::print and printProperties would say.
     line("<<<|");
-    line(&format!("Planarium benchmark of scenario \"{}\" (id \"{}\")", one_line(&r.scenario), one_line(&r.scenario_id)));
+    line(&format!(
+        "Planarium benchmark of scenario \"{}\" (id \"{}\")",
+        one_line(&r.scenario),
+        one_line(&r.scenario_id)
+    ));
     line(&format!("{} runs per set-up, time limit {} s per run", r.runs, r.time_limit_s));
     line("Set-ups (label: planner, explicit parameters as JSON):");
     for s in &r.setups {

@@ -37,13 +37,24 @@ pub struct Fingerprint {
 }
 
 /// Run `planner` with `params` (a JSON object) and `seed` on `scenario` to the end, and fingerprint it.
-pub fn fingerprint(scenario: &Scenario, planner: &str, params: &serde_json::Value, seed: u64) -> Result<Fingerprint, String> {
+pub fn fingerprint(
+    scenario: &Scenario,
+    planner: &str,
+    params: &serde_json::Value,
+    seed: u64,
+) -> Result<Fingerprint, String> {
     fingerprint_in_batches(scenario, planner, params, seed, f64::INFINITY).map(|(f, _)| f)
 }
 
 /// Like [`fingerprint`], but run in bounded batches of `max_ms` (as the page's worker does), which
 /// may be suspended and replayed ([`crate::journal`]); also returns how many were suspended.
-pub fn fingerprint_in_batches(scenario: &Scenario, planner: &str, params: &serde_json::Value, seed: u64, max_ms: f64) -> Result<(Fingerprint, u64), String> {
+pub fn fingerprint_in_batches(
+    scenario: &Scenario,
+    planner: &str,
+    params: &serde_json::Value,
+    seed: u64,
+    max_ms: f64,
+) -> Result<(Fingerprint, u64), String> {
     let spec = planners::find(planner).ok_or("unknown planner")?;
     let params = Params::from_json(spec, params).map_err(|(k, e)| format!("{k}: {e}"))?;
     let problem = Problem::from_scenario(scenario).map_err(|e| e.to_string())?;

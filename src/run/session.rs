@@ -1,10 +1,12 @@
 use super::{PlanResult, SamplerSummary, Stats};
 use crate::events::EventLog;
 use crate::math::Real;
-use crate::planners::{self, smoothing, Context, InspectionTask, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind};
-use crate::sampler::Sampler;
+use crate::planners::{
+    self, smoothing, Context, InspectionTask, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind,
+};
 use crate::problem::Problem;
 use crate::rng::Rng;
+use crate::sampler::Sampler;
 use crate::space_info::Deadline;
 use crate::status::Status;
 use web_time::Instant;
@@ -90,10 +92,12 @@ pub struct Session {
 impl Session {
     /// A run of `config` on `problem`. Errors name an unknown planner or a task it cannot do.
     pub fn new(problem: Problem, mut config: RunConfig) -> Result<Session, String> {
-        let spec = planners::find(&config.planner)
-            .ok_or_else(|| format!("unknown planner \"{}\" (known: {})", config.planner, planners::names().join(", ")))?;
+        let spec = planners::find(&config.planner).ok_or_else(|| {
+            format!("unknown planner \"{}\" (known: {})", config.planner, planners::names().join(", "))
+        })?;
         // Re-check the values against this planner, so its own defaults apply.
-        config.params = Params::from_json(spec, &serde_json::Value::Object(config.params.values().clone())).map_err(|(k, e)| format!("{k}: {e}"))?;
+        config.params = Params::from_json(spec, &serde_json::Value::Object(config.params.values().clone()))
+            .map_err(|(k, e)| format!("{k}: {e}"))?;
         let inspection = problem.scenario.inspection.as_ref().map(|i| InspectionTask {
             points: i.points.iter().map(|p| crate::math::Vec2::new(p[0], p[1])).collect(),
             fov: i.fov,
@@ -101,16 +105,27 @@ impl Session {
             coverage: i.coverage,
         });
         match spec.task {
-            TaskKind::Goal if problem.goal.is_none() => return Err(format!("{} needs a goal; this scenario has none", spec.label)),
+            TaskKind::Goal if problem.goal.is_none() => {
+                return Err(format!("{} needs a goal; this scenario has none", spec.label))
+            }
             TaskKind::Inspection if inspection.is_none() => {
                 return Err(format!("{} needs inspection points; this scenario has none", spec.label))
             }
             _ => {}
         }
-        let task = Task { start: problem.start.clone(), goal: problem.goal.clone(), goal_tolerance: problem.goal_tolerance, inspection };
+        let task = Task {
+            start: problem.start.clone(),
+            goal: problem.goal.clone(),
+            goal_tolerance: problem.goal_tolerance,
+            inspection,
+        };
         problem.si.reset_checks();
         let p = &config.params;
-        let limits = Limits { time_ms: p.real("time_limit") * 1000.0, iterations: p.real("max_iterations") as u64, nodes: p.real("max_nodes") as usize };
+        let limits = Limits {
+            time_ms: p.real("time_limit") * 1000.0,
+            iterations: p.real("max_iterations") as u64,
+            nodes: p.real("max_nodes") as usize,
+        };
         // Setting a planner up may be long work too (a decomposition's tiling): the time limit holds.
         problem.si.set_deadline(Deadline::in_ms(limits.time_ms));
         let planner = (spec.make)(&problem.si, &task, &config.params).map_err(|e| format!("{}: {e}", spec.label))?;
@@ -210,7 +225,11 @@ impl Session {
         self.problem.si.begin_batch(Deadline::in_ms(max_ms.max(0.0) * SUSPEND_AFTER - took));
         let status = self.run_batch(max_iterations, max_ms);
         let suspended = self.problem.si.end_batch();
-        self.risky = if suspended || begin.elapsed().as_secs_f64() * 1000.0 > max_ms * SUSPEND_AFTER { RISKY_BATCHES } else { self.risky.saturating_sub(1) };
+        self.risky = if suspended || begin.elapsed().as_secs_f64() * 1000.0 > max_ms * SUSPEND_AFTER {
+            RISKY_BATCHES
+        } else {
+            self.risky.saturating_sub(1)
+        };
         if suspended {
             // Back to the batch's start; the next batch replays it from the journal.
             self.planner = kept.planner;
@@ -332,7 +351,9 @@ impl Session {
         // An inspection path's detours are what it is for: only shortcuts that keep every point
         // it sees are taken.
         self.smoothed = match (&self.task.inspection, self.spec.task) {
-            (Some(i), TaskKind::Inspection) => planners::inspection::shortcut(&self.problem.si, i, &path, attempts, &mut rng),
+            (Some(i), TaskKind::Inspection) => {
+                planners::inspection::shortcut(&self.problem.si, i, &path, attempts, &mut rng)
+            }
             _ => smoothing::shortcut(&self.problem.si, &path, attempts, &mut rng),
         };
         self.smoothing_ms = t.elapsed().as_secs_f64() * 1000.0;
@@ -398,7 +419,9 @@ impl Session {
     /// path exists).
     fn coverage(&self, path: &[Vec<Real>]) -> Option<Real> {
         match (&self.task.inspection, self.spec.task) {
-            (Some(i), TaskKind::Inspection) if !path.is_empty() => Some(planners::inspection::path_coverage(&self.problem.si, i, path)),
+            (Some(i), TaskKind::Inspection) if !path.is_empty() => {
+                Some(planners::inspection::path_coverage(&self.problem.si, i, path))
+            }
             _ => None,
         }
     }

@@ -21,7 +21,11 @@ fn limits_are_honoured() {
     assert_eq!(s.stats().nodes, 20);
     // Strict inside an iteration too: connect growth adds many nodes per iteration.
     for planner in ["rrt", "rrt-connect"] {
-        let params = if planner == "rrt" { serde_json::json!({"max_nodes": 37, "extend": "connect", "range": 0.01}) } else { serde_json::json!({"max_nodes": 37, "range": 0.01}) };
+        let params = if planner == "rrt" {
+            serde_json::json!({"max_nodes": 37, "extend": "connect", "range": 0.01})
+        } else {
+            serde_json::json!({"max_nodes": 37, "range": 0.01})
+        };
         let mut s = session("narrow", planner, 2, params);
         assert_eq!(s.run_to_end(), Status::NodeLimit, "{planner}");
         assert_eq!(s.stats().nodes, 37, "{planner}");

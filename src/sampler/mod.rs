@@ -48,13 +48,54 @@ pub const NAMES: &[&str] = &["uniform", "goal-biased", "gaussian", "bridge", "ob
 
 /// The sampler parameters, shared by every sampling planner.
 pub static SAMPLER_PARAMS: &[ParamSpec] = &[
-    ParamSpec::choice("sampler", "Sampler", NAMES, 0, "Where samples come from: uniform, goal-biased, gaussian, bridge, obstacle (based) or near-collision."),
+    ParamSpec::choice(
+        "sampler",
+        "Sampler",
+        NAMES,
+        0,
+        "Where samples come from: uniform, goal-biased, gaussian, bridge, obstacle (based) or near-collision.",
+    ),
     ParamSpec::real("goal_bias", "Goal bias", 0.0, 1.0, 0.0, "Probability of sampling the goal itself (any sampler)."),
-    ParamSpec::real("sigma", "Sigma", 0.0, 1.0, 0.05, "Gaussian and bridge samplers: standard deviation, as a fraction of each coordinate's range."),
-    ParamSpec::real("collision_sigma", "Collision sigma", 0.0, 1.0, 0.03, "Near-collision sampler: standard deviation around the last collision point (fraction of each range)."),
-    ParamSpec::real("random_sigma", "Random sigma", 0.0, 10.0, 0.5, "Near-collision sampler: standard deviation around a random centre (fraction of each range)."),
-    ParamSpec::int("perseverance", "Perseverance", 1.0, 1e6, 20.0, "Near-collision sampler: samples around one centre before re-centring at random."),
-    ParamSpec::int("sampler_tries", "Sampler tries", 1.0, 1e4, 100.0, "Attempts (of one or two draws) a validity-checking sampler makes for one sample before giving up."),
+    ParamSpec::real(
+        "sigma",
+        "Sigma",
+        0.0,
+        1.0,
+        0.05,
+        "Gaussian and bridge samplers: standard deviation, as a fraction of each coordinate's range.",
+    ),
+    ParamSpec::real(
+        "collision_sigma",
+        "Collision sigma",
+        0.0,
+        1.0,
+        0.03,
+        "Near-collision sampler: standard deviation around the last collision point (fraction of each range).",
+    ),
+    ParamSpec::real(
+        "random_sigma",
+        "Random sigma",
+        0.0,
+        10.0,
+        0.5,
+        "Near-collision sampler: standard deviation around a random centre (fraction of each range).",
+    ),
+    ParamSpec::int(
+        "perseverance",
+        "Perseverance",
+        1.0,
+        1e6,
+        20.0,
+        "Near-collision sampler: samples around one centre before re-centring at random.",
+    ),
+    ParamSpec::int(
+        "sampler_tries",
+        "Sampler tries",
+        1.0,
+        1e4,
+        100.0,
+        "Attempts (of one or two draws) a validity-checking sampler makes for one sample before giving up.",
+    ),
 ];
 
 /// The sampler parameters as a group of the page's parameter panel.
@@ -175,7 +216,13 @@ impl Draw<'_> {
 
 /// The generic Gaussian neighbour: every coordinate moved independently (what a sampler's
 /// `Draw::gaussian_near` falls back to). Public for robots that move some coordinates this way.
-pub fn gaussian_coordinates(space: &crate::space::StateSpace, rng: &mut Rng, centre: &[Real], sigma: Real, out: &mut [Real]) {
+pub fn gaussian_coordinates(
+    space: &crate::space::StateSpace,
+    rng: &mut Rng,
+    centre: &[Real],
+    sigma: Real,
+    out: &mut [Real],
+) {
     for (i, d) in space.dims.iter().enumerate() {
         let v = centre[i] + rng.normal() * sigma * (d.hi - d.lo);
         out[i] = if d.wraps { v } else { reflect(v, d.lo, d.hi) };

@@ -63,7 +63,8 @@ fn gaussian_neighbour_has_sigma_times_the_range_per_coordinate() {
     let sigma = 0.04;
     let xs = neighbours(&p, &centre, sigma, 6000);
     for (i, d) in dims.iter().enumerate() {
-        let dev: Vec<Real> = xs.iter().map(|q| if d.wraps { angle_diff(centre[i], q[i]) } else { q[i] - centre[i] }).collect();
+        let dev: Vec<Real> =
+            xs.iter().map(|q| if d.wraps { angle_diff(centre[i], q[i]) } else { q[i] - centre[i] }).collect();
         let (mean, sd) = moments(&dev);
         let want = sigma * (d.hi - d.lo);
         assert!(mean.abs() < 4.0 * want / (dev.len() as Real).sqrt(), "coordinate {i}: mean deviation {mean}");

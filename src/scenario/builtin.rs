@@ -46,9 +46,8 @@ pub fn builtin_names() -> Vec<&'static str> {
 
 /// A built-in scenario by id.
 pub fn builtin(id: &str) -> Result<Scenario, ScenarioError> {
-    let (_, text) = BUILTINS
-        .iter()
-        .find(|(n, _)| *n == id)
-        .ok_or_else(|| ScenarioError::at("", format!("no built-in scenario \"{id}\" (known: {})", builtin_names().join(", "))))?;
+    let (_, text) = BUILTINS.iter().find(|(n, _)| *n == id).ok_or_else(|| {
+        ScenarioError::at("", format!("no built-in scenario \"{id}\" (known: {})", builtin_names().join(", ")))
+    })?;
     Scenario::from_json(text)
 }

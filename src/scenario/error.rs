@@ -16,7 +16,12 @@ pub struct ScenarioError {
 impl ScenarioError {
     /// A JSON syntax error, with its line and column.
     pub fn syntax(e: &serde_json::Error) -> Self {
-        ScenarioError { path: String::new(), message: format!("invalid JSON: {e}"), line: Some(e.line()), column: Some(e.column()) }
+        ScenarioError {
+            path: String::new(),
+            message: format!("invalid JSON: {e}"),
+            line: Some(e.line()),
+            column: Some(e.column()),
+        }
     }
     /// An error about the document as a whole (not an object, too large): at line 1, column 1.
     pub fn document(message: impl Into<String>) -> Self {

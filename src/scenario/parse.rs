@@ -40,7 +40,9 @@ impl<'a> Obj<'a> {
         match v {
             Value::Object(map) => Ok(Obj { path: path.to_string(), map, used: Vec::new() }),
             // The document itself: it starts at line 1, column 1.
-            other if path.is_empty() => Err(ScenarioError::document(format!("must be an object, found {}", describe(other)))),
+            other if path.is_empty() => {
+                Err(ScenarioError::document(format!("must be an object, found {}", describe(other))))
+            }
             other => Err(ScenarioError::at(path, format!("must be an object, found {}", describe(other)))),
         }
     }
@@ -72,9 +74,10 @@ impl<'a> Obj<'a> {
 /// A finite number within [`limits::MAX_MAGNITUDE`], and 0 or at least [`limits::MIN_MAGNITUDE`].
 fn number(v: &Value, path: &str) -> Result<Real> {
     match v.as_f64() {
-        Some(x) if x != 0.0 && x.abs() < limits::MIN_MAGNITUDE => {
-            Err(ScenarioError::at(path, format!("{x:e} is too small: numbers other than 0 must be at least 1e-100 in size")))
-        }
+        Some(x) if x != 0.0 && x.abs() < limits::MIN_MAGNITUDE => Err(ScenarioError::at(
+            path,
+            format!("{x:e} is too small: numbers other than 0 must be at least 1e-100 in size"),
+        )),
         Some(x) if x.is_finite() && x.abs() <= limits::MAX_MAGNITUDE => Ok(x),
         Some(x) => Err(ScenarioError::at(path, format!("{x:e} is too large: numbers must lie between -1e9 and 1e9"))),
         None => Err(ScenarioError::at(path, format!("must be a number, found {}", describe(v)))),
@@ -83,7 +86,8 @@ fn number(v: &Value, path: &str) -> Result<Real> {
 
 /// An array of at most `max` items (`what` names them in the error).
 fn array<'a>(v: &'a Value, path: &str, expected: &str, max: usize, what: &str) -> Result<&'a Vec<Value>> {
-    let arr = v.as_array().ok_or_else(|| ScenarioError::at(path, format!("must be {expected}, found {}", describe(v))))?;
+    let arr =
+        v.as_array().ok_or_else(|| ScenarioError::at(path, format!("must be {expected}, found {}", describe(v))))?;
     if arr.len() > max {
         return Err(ScenarioError::at(path, format!("has {} {what}; the limit is {max}", arr.len())));
     }
@@ -100,7 +104,9 @@ fn numbers(v: &Value, path: &str) -> Result<Vec<Real>> {
 
 fn fixed<const N: usize>(v: &Value, path: &str, what: &str) -> Result<[Real; N]> {
     let xs = numbers(v, path)?;
-    xs.try_into().map_err(|xs: Vec<Real>| ScenarioError::at(path, format!("must be {what} ({N} numbers), found {} numbers", xs.len())))
+    xs.try_into().map_err(|xs: Vec<Real>| {
+        ScenarioError::at(path, format!("must be {what} ({N} numbers), found {} numbers", xs.len()))
+    })
 }
 
 fn points(v: &Value, path: &str, max: usize) -> Result<Vec<[Real; 2]>> {
@@ -109,7 +115,9 @@ fn points(v: &Value, path: &str, max: usize) -> Result<Vec<[Real; 2]>> {
 }
 
 fn string(v: &Value, path: &str) -> Result<String> {
-    v.as_str().map(str::to_string).ok_or_else(|| ScenarioError::at(path, format!("must be a string, found {}", describe(v))))
+    v.as_str()
+        .map(str::to_string)
+        .ok_or_else(|| ScenarioError::at(path, format!("must be a string, found {}", describe(v))))
 }
 
 /// A string of at most `max` characters.
@@ -132,7 +140,10 @@ fn polygon_check(pts: &[[Real; 2]], path: &str) -> Result<()> {
     }
     let poly: Vec<Vec2> = pts.iter().map(|p| Vec2::new(p[0], p[1])).collect();
     if !is_simple(&poly) {
-        return Err(ScenarioError::at(path, "must be a simple polygon (its edges cross, fold back, or repeat a point)"));
+        return Err(ScenarioError::at(
+            path,
+            "must be a simple polygon (its edges cross, fold back, or repeat a point)",
+        ));
     }
     Ok(())
 }
@@ -196,7 +207,12 @@ fn robot(v: &Value, path: &str) -> Result<RobotSpec> {
         }
         "arm" => arm(&mut o)?,
         "asv" => asv(&mut o)?,
-        other => return Err(ScenarioError::at(kp, format!("unknown robot kind \"{}\" (use point, rigid, arm or asv)", limits::cut(other, 100)))),
+        other => {
+            return Err(ScenarioError::at(
+                kp,
+                format!("unknown robot kind \"{}\" (use point, rigid, arm or asv)", limits::cut(other, 100)),
+            ))
+        }
     };
     o.finish()?;
     Ok(spec)
@@ -236,7 +252,9 @@ fn arm(o: &mut Obj) -> Result<RobotSpec> {
         None => vec![None; n],
         Some((Value::Null, _)) => vec![None; n],
         Some((v, p)) => {
-            let arr = v.as_array().ok_or_else(|| ScenarioError::at(&p, "must be an array of [lo, hi] or null per joint, or null"))?;
+            let arr = v
+                .as_array()
+                .ok_or_else(|| ScenarioError::at(&p, "must be an array of [lo, hi] or null per joint, or null"))?;
             if arr.len() != n {
                 return Err(ScenarioError::at(&p, format!("needs one entry per joint ({n}), found {}", arr.len())));
             }
@@ -285,7 +303,8 @@ fn arm(o: &mut Obj) -> Result<RobotSpec> {
 
 fn asv(o: &mut Obj) -> Result<RobotSpec> {
     let (cv, cp) = o.req("count")?;
-    let count = cv.as_u64().filter(|c| *c >= 2).ok_or_else(|| ScenarioError::at(&cp, "must be a whole number, 2 or more"))?;
+    let count =
+        cv.as_u64().filter(|c| *c >= 2).ok_or_else(|| ScenarioError::at(&cp, "must be a whole number, 2 or more"))?;
     if count > limits::MAX_VEHICLES as u64 {
         return Err(ScenarioError::at(&cp, format!("{count} vehicles; the limit is {}", limits::MAX_VEHICLES)));
     }
@@ -330,12 +349,22 @@ fn inspection(v: &Value, path: &str) -> Result<Inspection> {
 }
 
 fn planner(v: &Value, path: &str) -> Result<PlannerDefaults> {
-    let map = v.as_object().ok_or_else(|| ScenarioError::at(path, format!("must be an object, found {}", describe(v))))?;
-    let name = string(map.get("name").ok_or_else(|| ScenarioError::at(join(path, "name"), "is missing (a required key)"))?, &join(path, "name"))?;
-    let spec = crate::planners::find(&name)
-        .ok_or_else(|| ScenarioError::at(join(path, "name"), format!("unknown planner \"{}\" (known: {})", limits::cut(&name, 100), crate::planners::names().join(", "))))?;
+    let map =
+        v.as_object().ok_or_else(|| ScenarioError::at(path, format!("must be an object, found {}", describe(v))))?;
+    let name = string(
+        map.get("name").ok_or_else(|| ScenarioError::at(join(path, "name"), "is missing (a required key)"))?,
+        &join(path, "name"),
+    )?;
+    let spec = crate::planners::find(&name).ok_or_else(|| {
+        ScenarioError::at(
+            join(path, "name"),
+            format!("unknown planner \"{}\" (known: {})", limits::cut(&name, 100), crate::planners::names().join(", ")),
+        )
+    })?;
     let seed = match map.get("seed") {
-        Some(s) => Some(s.as_u64().ok_or_else(|| ScenarioError::at(join(path, "seed"), "must be a non-negative integer"))?),
+        Some(s) => {
+            Some(s.as_u64().ok_or_else(|| ScenarioError::at(join(path, "seed"), "must be a non-negative integer"))?)
+        }
         None => None,
     };
     let mut params = map.clone();
@@ -364,7 +393,10 @@ impl Scenario {
         if let Some((f, p)) = o.get("format") {
             let f = string(f, &p)?;
             if f != FORMAT {
-                return Err(ScenarioError::at(p, format!("unsupported format \"{}\" (this version reads \"{FORMAT}\")", limits::cut(&f, 100))));
+                return Err(ScenarioError::at(
+                    p,
+                    format!("unsupported format \"{}\" (this version reads \"{FORMAT}\")", limits::cut(&f, 100)),
+                ));
             }
         }
         let name = match o.get("name") {
@@ -395,7 +427,10 @@ impl Scenario {
                     if vertices > limits::MAX_TOTAL_VERTICES {
                         return Err(ScenarioError::at(
                             path,
-                            format!("the obstacles up to here have {vertices} vertices (a rect counts 4); the limit is {}", limits::MAX_TOTAL_VERTICES),
+                            format!(
+                                "the obstacles up to here have {vertices} vertices (a rect counts 4); the limit is {}",
+                                limits::MAX_TOTAL_VERTICES
+                            ),
                         ));
                     }
                     out.push(o);

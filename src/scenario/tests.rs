@@ -30,27 +30,60 @@ fn builtins_parse_and_build() {
 #[test]
 fn errors_name_their_json_path() {
     assert_eq!(
-        err(&with(r#", "obstacles": [{"rect": [0,0,0.1,0.1]}, {"rect": [0.3,0.3,0.4,0.4]}, {"circle": [0.5,0.5,0.01]}, {"polygon": [[0,0],[1,1]]}]"#)),
+        err(&with(
+            r#", "obstacles": [{"rect": [0,0,0.1,0.1]}, {"rect": [0.3,0.3,0.4,0.4]}, {"circle": [0.5,0.5,0.01]}, {"polygon": [[0,0],[1,1]]}]"#
+        )),
         "obstacles[3].polygon: needs at least 3 points, found 2"
     );
     assert_eq!(err(&with(r#", "obstacels": []"#)).split(' ').next().unwrap(), "obstacels:");
     assert!(err(&with(r#", "obstacels": []"#)).contains("unknown key"));
-    assert_eq!(err(&with(r#", "obstacles": [{"rect": [0,0,0.1]}]"#)), "obstacles[0].rect: must be [x0, y0, x1, y1] (4 numbers), found 3 numbers");
-    assert_eq!(err(&with(r#", "obstacles": [{"box": [0,0,0.1,0.2]}]"#)), "obstacles[0].box: unknown obstacle kind (use rect, polygon, circle or segment)");
-    assert_eq!(err(&with(r#", "obstacles": [{"circle": [0.5,0.5,-1]}]"#)), "obstacles[0].circle[2]: radius must be positive");
-    assert!(err(&with(r#", "obstacles": [{"polygon": [[0,0],[1,1],[1,0],[0,1]]}]"#)).starts_with("obstacles[0].polygon: must be a simple polygon"));
+    assert_eq!(
+        err(&with(r#", "obstacles": [{"rect": [0,0,0.1]}]"#)),
+        "obstacles[0].rect: must be [x0, y0, x1, y1] (4 numbers), found 3 numbers"
+    );
+    assert_eq!(
+        err(&with(r#", "obstacles": [{"box": [0,0,0.1,0.2]}]"#)),
+        "obstacles[0].box: unknown obstacle kind (use rect, polygon, circle or segment)"
+    );
+    assert_eq!(
+        err(&with(r#", "obstacles": [{"circle": [0.5,0.5,-1]}]"#)),
+        "obstacles[0].circle[2]: radius must be positive"
+    );
+    assert!(err(&with(r#", "obstacles": [{"polygon": [[0,0],[1,1],[1,0],[0,1]]}]"#))
+        .starts_with("obstacles[0].polygon: must be a simple polygon"));
     assert!(err(&with(r#", "robot2": 1"#)).starts_with("robot2: unknown key"));
-    assert_eq!(err(r#"{"bounds": [0,0,1,1], "robot": {"kind": "point", "size": 2}, "start": [0.1,0.1], "goal": [0.2,0.2]}"#).split(':').next().unwrap(), "robot.size");
-    assert_eq!(err(r#"{"bounds": [0,0,1,1], "robot": {"kind": "tank"}, "start": [0.1,0.1], "goal": [0.2,0.2]}"#), "robot.kind: unknown robot kind \"tank\" (use point, rigid, arm or asv)");
-    assert_eq!(err(r#"{"bounds": [1,0,0,1], "robot": {"kind": "point"}, "start": [0.1,0.1], "goal": [0.2,0.2]}"#), "bounds: needs xmin < xmax and ymin < ymax");
-    assert_eq!(err(r#"{"bounds": [0,0,1,1], "robot": {"kind": "point"}, "start": [0.1,0.1]}"#), "goal: is missing (only an inspection task may omit it)");
-    assert_eq!(err(&with(r#", "planner": {"name": "rrt", "goal_bias": 2}"#)), "planner.goal_bias: must be between 0 and 1");
+    assert_eq!(
+        err(r#"{"bounds": [0,0,1,1], "robot": {"kind": "point", "size": 2}, "start": [0.1,0.1], "goal": [0.2,0.2]}"#)
+            .split(':')
+            .next()
+            .unwrap(),
+        "robot.size"
+    );
+    assert_eq!(
+        err(r#"{"bounds": [0,0,1,1], "robot": {"kind": "tank"}, "start": [0.1,0.1], "goal": [0.2,0.2]}"#),
+        "robot.kind: unknown robot kind \"tank\" (use point, rigid, arm or asv)"
+    );
+    assert_eq!(
+        err(r#"{"bounds": [1,0,0,1], "robot": {"kind": "point"}, "start": [0.1,0.1], "goal": [0.2,0.2]}"#),
+        "bounds: needs xmin < xmax and ymin < ymax"
+    );
+    assert_eq!(
+        err(r#"{"bounds": [0,0,1,1], "robot": {"kind": "point"}, "start": [0.1,0.1]}"#),
+        "goal: is missing (only an inspection task may omit it)"
+    );
+    assert_eq!(
+        err(&with(r#", "planner": {"name": "rrt", "goal_bias": 2}"#)),
+        "planner.goal_bias: must be between 0 and 1"
+    );
     assert!(err(&with(r#", "planner": {"name": "prm"}"#)).starts_with("planner.name: unknown planner \"prm\""));
 }
 
 #[test]
 fn syntax_errors_give_line_and_column() {
-    let e = Scenario::from_json("{\n  \"bounds\": [0, 0, 1, 1],\n  \"robot\": {\"kind\": \"point\"}\n  \"start\": [0.1, 0.1]\n}").unwrap_err();
+    let e = Scenario::from_json(
+        "{\n  \"bounds\": [0, 0, 1, 1],\n  \"robot\": {\"kind\": \"point\"}\n  \"start\": [0.1, 0.1]\n}",
+    )
+    .unwrap_err();
     assert_eq!((e.line, e.column), (Some(4), Some(3)));
     assert!(e.to_string().starts_with("line 4, column 3: invalid JSON"));
 }
@@ -58,13 +91,21 @@ fn syntax_errors_give_line_and_column() {
 #[test]
 fn start_and_goal_errors_say_which_and_why() {
     let obst = r#", "obstacles": [{"rect": [0.4,0.4,0.6,0.6]}]"#;
-    let e = err(&format!(r#"{{"bounds": [0,0,1,1], "robot": {{"kind": "point"}}, "start": [0.5, 0.5], "goal": [0.9, 0.9]{obst}}}"#));
+    let e = err(&format!(
+        r#"{{"bounds": [0,0,1,1], "robot": {{"kind": "point"}}, "start": [0.5, 0.5], "goal": [0.9, 0.9]{obst}}}"#
+    ));
     assert_eq!(e, "start: in collision with obstacles[0] (a rect)");
-    let e = err(&format!(r#"{{"bounds": [0,0,1,1], "robot": {{"kind": "point"}}, "start": [0.1, 0.1], "goal": [0.9, 1.5]{obst}}}"#));
+    let e = err(&format!(
+        r#"{{"bounds": [0,0,1,1], "robot": {{"kind": "point"}}, "start": [0.1, 0.1], "goal": [0.9, 1.5]{obst}}}"#
+    ));
     assert_eq!(e, "goal: out of bounds: y must stay within [0, 1]");
-    let e = err(r#"{"bounds": [0,0,1,1], "robot": {"kind": "rigid", "footprint": [[0,0],[0.1,0],[0,0.1]]}, "start": [0.1, 0.1], "goal": [0.9, 0.9, 0]}"#);
+    let e = err(
+        r#"{"bounds": [0,0,1,1], "robot": {"kind": "rigid", "footprint": [[0,0],[0.1,0],[0,0.1]]}, "start": [0.1, 0.1], "goal": [0.9, 0.9, 0]}"#,
+    );
     assert_eq!(e, "start: a rigid robot's state has 3 numbers, found 2");
     // A rigid robot's start touching an obstacle (closed sets).
-    let e = err(r#"{"bounds": [0,0,1,1], "obstacles": [{"segment": [0.2,0,0.2,1]}], "robot": {"kind": "rigid", "footprint": [[-0.1,-0.01],[0.1,-0.01],[0.1,0.01],[-0.1,0.01]]}, "start": [0.1, 0.5, 0], "goal": [0.9, 0.9, 0]}"#);
+    let e = err(
+        r#"{"bounds": [0,0,1,1], "obstacles": [{"segment": [0.2,0,0.2,1]}], "robot": {"kind": "rigid", "footprint": [[-0.1,-0.01],[0.1,-0.01],[0.1,0.01],[-0.1,0.01]]}, "start": [0.1, 0.5, 0], "goal": [0.9, 0.9, 0]}"#,
+    );
     assert_eq!(e, "start: in collision with obstacles[0] (a segment)");
 }

@@ -4,7 +4,7 @@
 //! [`StateSpace::dims`] numbers; the space says how far apart two of them are, how to move between
 //! them, and which dimensions wrap around (angles).
 
-use crate::math::{MinMax, Real, angle_diff, wrap_angle};
+use crate::math::{angle_diff, wrap_angle, MinMax, Real};
 use crate::rng::Rng;
 
 /// One dimension of a state space.
@@ -83,8 +83,16 @@ impl StateSpace {
     pub fn distance(&self, a: &[Real], b: &[Real]) -> Real {
         match &self.metric {
             // Zipped rather than indexed: no bounds checks in the nearest-neighbour hot loop.
-            Metric::Euclidean => a.iter().zip(b).zip(&self.dims).map(|((x, y), d)| Self::delta_in(d, *x, *y).powi(2)).sum::<Real>().sqrt(),
-            Metric::Weighted { weights } => (0..a.len()).map(|i| (weights[i] * self.delta(i, a[i], b[i])).powi(2)).sum::<Real>().sqrt(),
+            Metric::Euclidean => a
+                .iter()
+                .zip(b)
+                .zip(&self.dims)
+                .map(|((x, y), d)| Self::delta_in(d, *x, *y).powi(2))
+                .sum::<Real>()
+                .sqrt(),
+            Metric::Weighted { weights } => {
+                (0..a.len()).map(|i| (weights[i] * self.delta(i, a[i], b[i])).powi(2)).sum::<Real>().sqrt()
+            }
             Metric::TranslationRotation { weight } => {
                 let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
                 (dx * dx + dy * dy).sqrt() + weight * angle_diff(a[2], b[2]).abs()
@@ -124,7 +132,8 @@ impl StateSpace {
     /// The distance between two states from their embeddings (chain metrics only).
     #[inline]
     pub fn embedded_distance(&self, ea: &[Real], eb: &[Real]) -> Real {
-        let moves = (0..ea.len() / 2).map(|k| ((ea[2 * k] - eb[2 * k]).powi(2) + (ea[2 * k + 1] - eb[2 * k + 1]).powi(2)).sqrt());
+        let moves = (0..ea.len() / 2)
+            .map(|k| ((ea[2 * k] - eb[2 * k]).powi(2) + (ea[2 * k + 1] - eb[2 * k + 1]).powi(2)).sqrt());
         match &self.metric {
             Metric::ChainMax { .. } => moves.fold(0.0, Real::max),
             _ => moves.sum(),
@@ -137,10 +146,20 @@ impl StateSpace {
     /// so in floating point too it never exceeds the distance to a point of the box.
     #[inline(always)]
     pub fn embedded_box_lower_bound(&self, eq: &[Real], lo: &[Real], hi: &[Real]) -> Real {
-        let gap = |v: Real, l: Real, h: Real| if v < l { l - v } else if v > h { v - h } else { 0.0 };
-        let moves = eq.chunks_exact(2).zip(lo.chunks_exact(2)).zip(hi.chunks_exact(2)).map(|((e, l), h)| {
-            (gap(e[0], l[0], h[0]).powi(2) + gap(e[1], l[1], h[1]).powi(2)).sqrt()
-        });
+        let gap = |v: Real, l: Real, h: Real| {
+            if v < l {
+                l - v
+            } else if v > h {
+                v - h
+            } else {
+                0.0
+            }
+        };
+        let moves = eq
+            .chunks_exact(2)
+            .zip(lo.chunks_exact(2))
+            .zip(hi.chunks_exact(2))
+            .map(|((e, l), h)| (gap(e[0], l[0], h[0]).powi(2) + gap(e[1], l[1], h[1]).powi(2)).sqrt());
         match &self.metric {
             Metric::ChainMax { .. } => moves.fold(0.0, Real::max),
             _ => moves.sum(),
@@ -179,7 +198,9 @@ impl StateSpace {
         let reach = |links: &[Real], k: usize| -> Real { links[..=k].iter().sum() };
         match &self.metric {
             Metric::Euclidean => self.dims.iter().map(|d| ext(d).powi(2)).sum::<Real>().sqrt(),
-            Metric::Weighted { weights } => self.dims.iter().zip(weights).map(|(d, w)| (w * ext(d)).powi(2)).sum::<Real>().sqrt(),
+            Metric::Weighted { weights } => {
+                self.dims.iter().zip(weights).map(|(d, w)| (w * ext(d)).powi(2)).sum::<Real>().sqrt()
+            }
             Metric::ChainSum { links } => (0..links.len()).map(|k| 2.0 * reach(links, k)).sum(),
             Metric::ChainMax { links } => 2.0 * links.iter().sum::<Real>(),
             Metric::TranslationRotation { weight } => {
@@ -206,9 +227,14 @@ impl StateSpace {
         }
         let gap = |i: usize| gap_in(&self.dims[i], q[i], lo[i], hi[i]);
         match &self.metric {
-            Metric::Euclidean => {
-                q.iter().zip(lo).zip(hi).zip(&self.dims).map(|(((v, l), h), d)| gap_in(d, *v, *l, *h).powi(2)).sum::<Real>().sqrt()
-            }
+            Metric::Euclidean => q
+                .iter()
+                .zip(lo)
+                .zip(hi)
+                .zip(&self.dims)
+                .map(|(((v, l), h), d)| gap_in(d, *v, *l, *h).powi(2))
+                .sum::<Real>()
+                .sqrt(),
             Metric::Weighted { weights } => (0..q.len()).map(|i| (weights[i] * gap(i)).powi(2)).sum::<Real>().sqrt(),
             Metric::TranslationRotation { weight } => (gap(0).powi(2) + gap(1).powi(2)).sqrt() + weight * gap(2),
             // A box of joint angles bounds a chain's moves poorly: the tree bounds the chain metrics

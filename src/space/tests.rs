@@ -3,7 +3,11 @@ use crate::math::PI;
 
 fn se2(weight: Real) -> StateSpace {
     StateSpace {
-        dims: vec![Dim { lo: 0.0, hi: 1.0, wraps: false }, Dim { lo: 0.0, hi: 1.0, wraps: false }, Dim { lo: -PI, hi: PI, wraps: true }],
+        dims: vec![
+            Dim { lo: 0.0, hi: 1.0, wraps: false },
+            Dim { lo: 0.0, hi: 1.0, wraps: false },
+            Dim { lo: -PI, hi: PI, wraps: true },
+        ],
         metric: Metric::TranslationRotation { weight },
     }
 }

@@ -13,7 +13,11 @@ pub type P = (f64, f64);
 
 /// The exact orientation sign of `o, a, b` (> 0 counter-clockwise), as an `f64`.
 pub fn cross(o: P, a: P, b: P) -> f64 {
-    robust::orient2d(robust::Coord { x: o.0, y: o.1 }, robust::Coord { x: a.0, y: a.1 }, robust::Coord { x: b.0, y: b.1 })
+    robust::orient2d(
+        robust::Coord { x: o.0, y: o.1 },
+        robust::Coord { x: a.0, y: a.1 },
+        robust::Coord { x: b.0, y: b.1 },
+    )
 }
 
 fn on_segment(a: P, b: P, p: P) -> bool {
@@ -242,7 +246,12 @@ pub fn motion_problem(sc: &Scenario, a: &[f64], b: &[f64]) -> Option<String> {
             // No arm point moves more than 1/1000 of the bounds' size between two checked states.
             let size = (sc.bounds[2] - sc.bounds[0]).max(sc.bounds[3] - sc.bounds[1]);
             let total: f64 = links.iter().sum();
-            let moved: f64 = a.iter().zip(b).zip(limits).map(|((x, y), l)| if l.is_some() { (y - x).abs() } else { angle_diff(*x, *y).abs() }).sum();
+            let moved: f64 = a
+                .iter()
+                .zip(b)
+                .zip(limits)
+                .map(|((x, y), l)| if l.is_some() { (y - x).abs() } else { angle_diff(*x, *y).abs() })
+                .sum();
             ((moved * total) / (0.001 * size)).ceil() as usize
         }
         _ => (metric(sc, a, b) / (sc.resolution / 2.0)).ceil() as usize,
@@ -291,7 +300,10 @@ pub fn self_test() {
     assert!(state_problem(&arm, &[0.0, 2.0, 0.0]).is_some(), "joint limit");
     let horn = planarium::scenario::builtin("horn-10").unwrap();
     assert!(state_problem(&horn, &horn.start).is_none());
-    assert!(state_problem(&horn, &[0.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0]).is_some(), "curled into itself or the horn");
+    assert!(
+        state_problem(&horn, &[0.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0]).is_some(),
+        "curled into itself or the horn"
+    );
     let slot = planarium::scenario::builtin("slot").unwrap();
     assert!(state_problem(&slot, &[0.5, 0.5, std::f64::consts::FRAC_PI_2]).is_some());
     assert!(state_problem(&slot, &[0.5, 0.5, 0.0]).is_none());

@@ -44,9 +44,7 @@ fn require_located(stage: &str, e: &ScenarioError) -> Result<(), String> {
     if located(e) || !REQUIRE_LOCATION.load(std::sync::atomic::Ordering::Relaxed) {
         Ok(())
     } else {
-        Err(format!(
-            "{stage} rejected the input without saying where: {e:?}"
-        ))
+        Err(format!("{stage} rejected the input without saying where: {e:?}"))
     }
 }
 
@@ -62,10 +60,7 @@ pub enum Outcome {
 
 /// A scenario read, then built into a problem; both errors must say where; an accepted scenario
 /// must survive `to_json` and back.
-pub fn scenario_outcome(
-    stage: &str,
-    read: Result<Scenario, ScenarioError>,
-) -> Result<Outcome, String> {
+pub fn scenario_outcome(stage: &str, read: Result<Scenario, ScenarioError>) -> Result<Outcome, String> {
     let sc = match read {
         Ok(sc) => sc,
         Err(e) => {
@@ -76,16 +71,8 @@ pub fn scenario_outcome(
     let text = sc.to_json();
     match Scenario::from_json(&text) {
         Ok(back) if back == sc => {}
-        Ok(back) => {
-            return Err(format!(
-                "{stage}: the scenario written back reads as another one:\n{text}\n{back:?}"
-            ))
-        }
-        Err(e) => {
-            return Err(format!(
-                "{stage}: the scenario written back is rejected ({e}):\n{text}"
-            ))
-        }
+        Ok(back) => return Err(format!("{stage}: the scenario written back reads as another one:\n{text}\n{back:?}")),
+        Err(e) => return Err(format!("{stage}: the scenario written back is rejected ({e}):\n{text}")),
     }
     match Problem::from_scenario(&sc) {
         Ok(p) => Ok(Outcome::Problem(Box::new(p))),
@@ -103,10 +90,7 @@ pub fn check_scenario(text: &str) -> Result<Outcome, String> {
 
 /// Target (b): a Technion HW3 map.
 pub fn check_technion(text: &str) -> Result<Outcome, String> {
-    scenario_outcome(
-        "technion::import_map",
-        io::technion::import_map(text, "fuzz"),
-    )
+    scenario_outcome("technion::import_map", io::technion::import_map(text, "fuzz"))
 }
 
 /// Target (c): an ASV problem file.
@@ -132,12 +116,8 @@ pub fn check_asv_solution(problem_text: &str, solution_text: &str) -> Result<boo
     let configs = match io::asv::read_solution(solution_text) {
         Ok(c) => c,
         Err(e) => {
-            if !e.starts_with("line ")
-                && REQUIRE_LOCATION.load(std::sync::atomic::Ordering::Relaxed)
-            {
-                return Err(format!(
-                    "asv::read_solution rejected the file without naming a line: {e}"
-                ));
+            if !e.starts_with("line ") && REQUIRE_LOCATION.load(std::sync::atomic::Ordering::Relaxed) {
+                return Err(format!("asv::read_solution rejected the file without naming a line: {e}"));
             }
             return Ok(false);
         }
@@ -206,33 +186,17 @@ pub fn plan(problem: Problem, budget: &Budget) -> Result<Option<RunReport>, Stri
         _ => serde_json::Map::new(),
     };
     values.insert("time_limit".into(), serde_json::json!(budget.time_s));
-    values.insert(
-        "max_iterations".into(),
-        serde_json::json!(budget.iterations),
-    );
+    values.insert("max_iterations".into(), serde_json::json!(budget.iterations));
     values.insert("max_nodes".into(), serde_json::json!(budget.nodes));
-    values.insert(
-        "shortcut_attempts".into(),
-        serde_json::json!(budget.shortcuts),
-    );
+    values.insert("shortcut_attempts".into(), serde_json::json!(budget.shortcuts));
     let params = Params::from_json(spec, &serde_json::Value::Object(values))
         .map_err(|(k, e)| format!("the harness's own parameters were refused: {k}: {e}"))?;
-    let config = RunConfig {
-        planner: spec.name.into(),
-        params,
-        seed: budget.seed,
-        record_events: budget.events,
-    };
+    let config = RunConfig { planner: spec.name.into(), params, seed: budget.seed, record_events: budget.events };
     let t0 = Instant::now();
     let mut s = match Session::new(problem, config) {
         Ok(s) => s,
         Err(e) if !e.is_empty() => return Ok(None),
-        Err(_) => {
-            return Err(format!(
-                "{}: Session::new failed with an empty message",
-                spec.name
-            ))
-        }
+        Err(_) => return Err(format!("{}: Session::new failed with an empty message", spec.name)),
     };
     s.run_to_end();
     let r = s.result();
@@ -250,18 +214,10 @@ pub fn plan(problem: Problem, budget: &Budget) -> Result<Option<RunReport>, Stri
         };
         if let (true, Some(text)) = (s.problem().robot.kind() == "asv", written) {
             let text = text?;
-            let configs = io::asv::read_solution(&text).map_err(|e| {
-                format!(
-                    "{}: the solution file written does not read back: {e}",
-                    spec.name
-                )
-            })?;
-            io::asv::check_solution(&s.problem().scenario, &configs).map_err(|e| {
-                format!(
-                    "{}: the solution file written fails the checker: {e}",
-                    spec.name
-                )
-            })?;
+            let configs = io::asv::read_solution(&text)
+                .map_err(|e| format!("{}: the solution file written does not read back: {e}", spec.name))?;
+            io::asv::check_solution(&s.problem().scenario, &configs)
+                .map_err(|e| format!("{}: the solution file written fails the checker: {e}", spec.name))?;
         }
     }
     let wall_s = t0.elapsed().as_secs_f64();
@@ -279,16 +235,10 @@ pub fn plan(problem: Problem, budget: &Budget) -> Result<Option<RunReport>, Stri
         ));
     }
     if report.nodes > budget.nodes {
-        return Err(format!(
-            "{}: {} nodes past max_nodes {}",
-            spec.name, report.nodes, budget.nodes
-        ));
+        return Err(format!("{}: {} nodes past max_nodes {}", spec.name, report.nodes, budget.nodes));
     }
     if !report.status.is_finished() {
-        return Err(format!(
-            "{}: run_to_end returned while still running",
-            spec.name
-        ));
+        return Err(format!("{}: run_to_end returned while still running", spec.name));
     }
     Ok(Some(report))
 }
@@ -324,12 +274,7 @@ pub fn path_frames(s: &Session, raw: bool) -> usize {
 }
 
 fn outline_len(robot: &dyn Robot, q: &[f64]) -> usize {
-    robot
-        .outline(q)
-        .iter()
-        .map(|poly| 1 + 2 * poly.len())
-        .sum::<usize>()
-        + 1
+    robot.outline(q).iter().map(|poly| 1 + 2 * poly.len()).sum::<usize>() + 1
 }
 
 /// The planner names, for reports.

@@ -25,7 +25,10 @@ pub fn max_move(a: &[Real], b: &[Real]) -> Real {
 /// The course's cost of a path of configurations: the sum over steps of the distances moved by
 /// all vehicles.
 pub fn path_cost(configs: &[Vec<Real>]) -> Real {
-    configs.windows(2).map(|w| points(&w[0]).into_iter().zip(points(&w[1])).map(|(p, q)| dist(p, q)).sum::<Real>()).sum()
+    configs
+        .windows(2)
+        .map(|w| points(&w[0]).into_iter().zip(points(&w[1])).map(|(p, q)| dist(p, q)).sum::<Real>())
+        .sum()
 }
 
 /// An angle in `(−π, π]`.
@@ -81,7 +84,11 @@ fn simple(p: &[P]) -> bool {
     let n = p.len();
     // The exact orientation sign (robust, not the crate's geometry: this checker stays independent).
     let cross = |o: P, a: P, b: P| {
-        let d = robust::orient2d(robust::Coord { x: o.0, y: o.1 }, robust::Coord { x: a.0, y: a.1 }, robust::Coord { x: b.0, y: b.1 });
+        let d = robust::orient2d(
+            robust::Coord { x: o.0, y: o.1 },
+            robust::Coord { x: a.0, y: a.1 },
+            robust::Coord { x: b.0, y: b.1 },
+        );
         (d > 0.0) as i8 as Real - (d < 0.0) as i8 as Real
     };
     for i in 0..n {
@@ -170,7 +177,8 @@ pub fn check_configuration(sc: &Scenario, c: &[Real]) -> Result<(), String> {
                 }
                 other => {
                     let (a, b) = (p[i], p[i + 1]);
-                    crate::problem::shape_of(other).intersects_segment(crate::math::Vec2::new(a.0, a.1), crate::math::Vec2::new(b.0, b.1))
+                    crate::problem::shape_of(other)
+                        .intersects_segment(crate::math::Vec2::new(a.0, a.1), crate::math::Vec2::new(b.0, b.1))
                 }
             };
             if hit {
@@ -210,7 +218,11 @@ pub fn check_solution(sc: &Scenario, configs: &[Vec<Real>]) -> Result<(), String
     for (i, w) in configs.windows(2).enumerate() {
         let d = max_move(&w[0], &w[1]);
         if d > max_step + E {
-            return Err(format!("step {} (configurations {i} to {}) moves a vehicle {d}, more than {max_step}", i + 1, i + 1));
+            return Err(format!(
+                "step {} (configurations {i} to {}) moves a vehicle {d}, more than {max_step}",
+                i + 1,
+                i + 1
+            ));
         }
     }
     Ok(())

@@ -86,9 +86,15 @@ fn numbers(line: usize, words: &[(usize, &str)], count: usize, what: &str) -> Re
     words[..count]
         .iter()
         .map(|(c, w)| match w.parse::<Real>() {
-            Ok(x) if x != 0.0 && x.abs() < crate::limits::MIN_MAGNITUDE => Err(at(line, *c, format!("{what}: {x:e} is too small: numbers other than 0 must be at least 1e-100 in size"))),
+            Ok(x) if x != 0.0 && x.abs() < crate::limits::MIN_MAGNITUDE => Err(at(
+                line,
+                *c,
+                format!("{what}: {x:e} is too small: numbers other than 0 must be at least 1e-100 in size"),
+            )),
             Ok(x) if x.is_finite() && x.abs() <= crate::limits::MAX_MAGNITUDE => Ok(x),
-            Ok(x) if x.is_finite() => Err(at(line, *c, format!("{what}: {x:e} is too large: numbers must lie between -1e9 and 1e9"))),
+            Ok(x) if x.is_finite() => {
+                Err(at(line, *c, format!("{what}: {x:e} is too large: numbers must lie between -1e9 and 1e9")))
+            }
             _ => Err(at(line, *c, format!("{what}: expected a number, found \"{}\"", crate::limits::cut(w, 40)))),
         })
         .collect()
@@ -216,7 +222,9 @@ pub fn primitive_steps(problem: &Problem, path: &[Vec<Real>]) -> Result<Vec<Vec<
     for w in path.windows(2) {
         let (a, b) = (&w[0], &w[1]);
         // The same states `SpaceInfo::check_motion` checked: i/n of the way for i in 1..n, then b.
-        let n = robot.motion_steps(a, b, si.distance(a, b), si.resolution).ok_or("a motion of the path has too many primitive steps to write")?;
+        let n = robot
+            .motion_steps(a, b, si.distance(a, b), si.resolution)
+            .ok_or("a motion of the path has too many primitive steps to write")?;
         if configs.len().saturating_add(n) > crate::limits::MAX_SOLUTION_STEPS {
             return Err(format!("the solution would have more than {} steps", crate::limits::MAX_SOLUTION_STEPS));
         }
@@ -265,7 +273,11 @@ pub fn read_solution(text: &str) -> Result<Vec<Vec<Real>>, String> {
         }
         if let Some(first) = configs.first() {
             if first.len() != c.len() {
-                return Err(format!("line {l}: configuration {i} has {} numbers, the first has {}", c.len(), first.len()));
+                return Err(format!(
+                    "line {l}: configuration {i} has {} numbers, the first has {}",
+                    c.len(),
+                    first.len()
+                ));
             }
         }
         configs.push(c);

@@ -1,6 +1,7 @@
 use super::*;
 
-const SEVEN: &str = "7\n0.193301 0.238602 0.15 0.213602 0.125 0.170301 0.150 0.127 0.200 0.127 0.225 0.170301 0.225 0.220301\t\n\
+const SEVEN: &str =
+    "7\n0.193301 0.238602 0.15 0.213602 0.125 0.170301 0.150 0.127 0.200 0.127 0.225 0.170301 0.225 0.220301\t\n\
 0.893301 0.238602 0.85 0.213602 0.825 0.170301 0.850 0.127 0.900 0.127 0.925 0.170301 0.925 0.220301\n\
 2\n0.25 0.0 0.35 0.0 0.35 0.3 0.35 0.3\n0.25 0.33 0.35 0.33 0.35 0.65 0.35 0.65\n";
 
@@ -18,7 +19,10 @@ fn a_problem_file_becomes_the_course_scenario() {
     assert_eq!(sc.start.len(), 14);
     assert_eq!(sc.goal.as_ref().unwrap()[0], 0.893301);
     // Corners (0.25,0) (0.35,0) (0.35,0.3) (0.35,0.3): the box of the four.
-    assert_eq!(sc.obstacles, vec![ObstacleSpec::Rect([0.25, 0.0, 0.35, 0.3]), ObstacleSpec::Rect([0.25, 0.33, 0.35, 0.65])]);
+    assert_eq!(
+        sc.obstacles,
+        vec![ObstacleSpec::Rect([0.25, 0.0, 0.35, 0.3]), ObstacleSpec::Rect([0.25, 0.33, 0.35, 0.65])]
+    );
     match sc.robot {
         RobotSpec::Asv { count, broom, min_area, convex, max_step } => {
             assert_eq!((count, broom, convex, max_step), (7, 0.05, true, 0.001));
@@ -38,7 +42,10 @@ fn a_problem_file_becomes_the_course_scenario() {
 fn problem_errors_point_at_the_word() {
     let e = import_problem("3\n0.1 0.2 0.3 oops 0.5 0.6\n", "x").unwrap_err();
     assert_eq!((e.line, e.column), (Some(2), Some(13)));
-    assert!(e.to_string().starts_with("line 2, column 13: the initial positions: expected a number, found \"oops\""), "{e}");
+    assert!(
+        e.to_string().starts_with("line 2, column 13: the initial positions: expected a number, found \"oops\""),
+        "{e}"
+    );
     let e = import_problem("3\n", "x").unwrap_err();
     assert_eq!(e.line, Some(2));
     assert!(e.message.contains("end of the file"), "{e}");

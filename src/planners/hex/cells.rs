@@ -198,7 +198,8 @@ impl Decomposition {
     pub fn tiling(bounds: &Aabb, s: Real) -> Decomposition {
         let (dx, dy) = (SQRT3 * s, 1.5 * s);
         let rows = ((bounds.max.y - bounds.min.y) / dy).ceil() as i64 + 1;
-        let rect = [bounds.min, Vec2::new(bounds.max.x, bounds.min.y), bounds.max, Vec2::new(bounds.min.x, bounds.max.y)];
+        let rect =
+            [bounds.min, Vec2::new(bounds.max.x, bounds.min.y), bounds.max, Vec2::new(bounds.min.x, bounds.max.y)];
         let mut cells = Vec::new();
         for r in 0..=rows {
             let y = bounds.min.y + r as Real * dy;
@@ -211,7 +212,16 @@ impl Decomposition {
                     continue;
                 }
                 let bbox = Aabb::of_points(&outline);
-                cells.push(Cell { level: 0, centre: centroid(&outline), radius: s, outline, bbox, parent: None, children: Vec::new(), label: CellLabel::Free });
+                cells.push(Cell {
+                    level: 0,
+                    centre: centroid(&outline),
+                    radius: s,
+                    outline,
+                    bbox,
+                    parent: None,
+                    children: Vec::new(),
+                    label: CellLabel::Free,
+                });
             }
         }
         Decomposition { cells, base_radius: s }
@@ -229,7 +239,16 @@ impl Decomposition {
             }
             let centre = centroid(&outline);
             let bbox = Aabb::of_points(&outline);
-            self.cells.push(Cell { level: level + 1, centre, radius: s / 2.0, outline, bbox, parent: Some(i), children: Vec::new(), label: CellLabel::Free });
+            self.cells.push(Cell {
+                level: level + 1,
+                centre,
+                radius: s / 2.0,
+                outline,
+                bbox,
+                parent: Some(i),
+                children: Vec::new(),
+                label: CellLabel::Free,
+            });
         }
         let range = first..self.cells.len();
         self.cells[i].children = range.clone().collect();

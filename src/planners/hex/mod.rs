@@ -143,7 +143,11 @@ impl HexPotential {
         };
         let trap = params.real("trap_obstacle");
         if trap >= 0.0 && trap as usize >= ws.obstacles.len() {
-            return Err(format!("trap_obstacle {} does not exist (the scenario has {} obstacles, numbered from 0)", trap, ws.obstacles.len()));
+            return Err(format!(
+                "trap_obstacle {} does not exist (the scenario has {} obstacles, numbered from 0)",
+                trap,
+                ws.obstacles.len()
+            ));
         }
         let side = match params.choice("trap_side") {
             "above" => Side::Above,
@@ -170,7 +174,10 @@ impl HexPotential {
         // Cells count as nodes: the coarse tiling alone must fit under the node limit.
         let max_nodes = params.real("max_nodes");
         if dec.cells.len() as Real > max_nodes {
-            return Err(format!("the coarse tiling has {} cells, more than max_nodes ({max_nodes}): raise max_nodes or cell_size", dec.cells.len()));
+            return Err(format!(
+                "the coarse tiling has {} cells, more than max_nodes ({max_nodes}): raise max_nodes or cell_size",
+                dec.cells.len()
+            ));
         }
         let queue = (0..dec.cells.len()).collect();
         let region = Region::new(p0, r0, &ws.obstacles, t, b, g);
@@ -222,7 +229,9 @@ impl HexPotential {
         cx.si.count_checks(1);
         let cell = &self.dec.cells[i];
         let mut label = cells::label_of(&self.ws, &cell.outline, &cell.bbox);
-        let split_free = self.refine == Refine::Clearance && label == CellLabel::Free && self.ws.polygon_clearance(&cell.outline, self.t / 2.0) < self.t / 2.0;
+        let split_free = self.refine == Refine::Clearance
+            && label == CellLabel::Free
+            && self.ws.polygon_clearance(&cell.outline, self.t / 2.0) < self.t / 2.0;
         let can_split = cell.level < self.max_level && cell.radius / 2.0 >= self.min_radius;
         if split_free && can_split {
             label = CellLabel::Mixed;
@@ -252,7 +261,8 @@ impl HexPotential {
             return;
         };
         let c = &self.dec.cells;
-        self.nodes = (0..c.len()).filter(|&i| c[i].is_leaf() && (c[i].label == CellLabel::Free || i == sl || i == gl)).collect();
+        self.nodes =
+            (0..c.len()).filter(|&i| c[i].is_leaf() && (c[i].label == CellLabel::Free || i == sl || i == gl)).collect();
         self.node_of = vec![None; c.len()];
         for (k, &i) in self.nodes.iter().enumerate() {
             self.node_of[i] = Some(k);
@@ -275,7 +285,13 @@ impl HexPotential {
         self.trees.push(Tree::new(cx, &q0, self.attempt));
         let r = self.region;
         let inside = self.counted.iter().filter(|&&b| b).count();
-        cx.events.values(EventKind::Region, 0, self.attempt as i64, -1, [r.centre.x, r.centre.y, r.radius, r.limit, inside as f64, self.t, 0.0, 0.0]);
+        cx.events.values(
+            EventKind::Region,
+            0,
+            self.attempt as i64,
+            -1,
+            [r.centre.x, r.centre.y, r.radius, r.limit, inside as f64, self.t, 0.0, 0.0],
+        );
         self.emit_field(cx);
         if self.t > 0.0 {
             if let Some(why) = disc_blocked(&self.ws, p0, self.t) {
@@ -304,7 +320,13 @@ impl HexPotential {
                 .map(|n| (potential(&self.weights, &self.ws.obstacles, &self.counted, c, n, g).total, n))
                 .min_by(|a, b| a.0.total_cmp(&b.0));
             let dir = best.map(|(_, n)| (n - c).scale(1.0 / (n - c).norm().max(1e-12))).unwrap_or(Vec2::new(0.0, 0.0));
-            cx.events.values(EventKind::Field, 0, i as i64, -1, [c.x, c.y, rep + trap, rep, trap, dir.x, dir.y, self.dec.cells[i].radius]);
+            cx.events.values(
+                EventKind::Field,
+                0,
+                i as i64,
+                -1,
+                [c.x, c.y, rep + trap, rep, trap, dir.x, dir.y, self.dec.cells[i].radius],
+            );
         }
     }
 
@@ -318,13 +340,25 @@ impl HexPotential {
             let gc = self.nodes[self.goal_node] as i64;
             match step_test(&self.ws, p, g, self.t) {
                 Ok(()) => {
-                    cx.events.values(EventKind::CellState, 0, gc, self.nodes[k] as i64, [g.x, g.y, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]);
+                    cx.events.values(
+                        EventKind::CellState,
+                        0,
+                        gc,
+                        self.nodes[k] as i64,
+                        [g.x, g.y, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+                    );
                     self.advance(cx, g);
                     let path = self.path();
                     cx.events.at(EventKind::Solved, self.attempt, g, &self.goal);
                     return Some(path);
                 }
-                Err(why) => cx.events.values(EventKind::CellState, 0, gc, self.nodes[k] as i64, [g.x, g.y, 1.0, why as u8 as f64, 0.0, 0.0, 0.0, 0.0]),
+                Err(why) => cx.events.values(
+                    EventKind::CellState,
+                    0,
+                    gc,
+                    self.nodes[k] as i64,
+                    [g.x, g.y, 1.0, why as u8 as f64, 0.0, 0.0, 0.0, 0.0],
+                ),
             }
         }
         // Judge every neighbour: visited, outside the region, blocked, or a candidate.
@@ -342,7 +376,13 @@ impl HexPotential {
             }
             cx.si.count_checks(1);
             match step_test(&self.ws, p, c, self.t) {
-                Err(why) => cx.events.values(EventKind::CellState, 0, i as i64, from, [c.x, c.y, 1.0, why as u8 as f64, 0.0, 0.0, 0.0, 0.0]),
+                Err(why) => cx.events.values(
+                    EventKind::CellState,
+                    0,
+                    i as i64,
+                    from,
+                    [c.x, c.y, 1.0, why as u8 as f64, 0.0, 0.0, 0.0, 0.0],
+                ),
                 Ok(()) => candidates.push((m, potential(&self.weights, &self.ws.obstacles, &self.counted, p, c, g))),
             }
         }
@@ -351,7 +391,13 @@ impl HexPotential {
             let i = self.nodes[*m];
             let c = self.dec.cells[i].centre;
             let chosen = if Some(*m) == best { 1.0 } else { 0.0 };
-            cx.events.values(EventKind::Potential, 0, i as i64, from, [c.x, c.y, t.repulsion, t.trap, t.goal, t.total, t.alpha, chosen]);
+            cx.events.values(
+                EventKind::Potential,
+                0,
+                i as i64,
+                from,
+                [c.x, c.y, t.repulsion, t.trap, t.goal, t.total, t.alpha, chosen],
+            );
         }
         match best {
             Some(m) => {
@@ -446,7 +492,13 @@ fn emit_cell(cx: &mut Context, dec: &Decomposition, i: usize) {
     let c = &dec.cells[i];
     let parent = c.parent.map_or(-1, |p| p as i64);
     let n = c.outline.len();
-    cx.events.values(EventKind::Cell, c.level as usize, i as i64, parent, [c.centre.x, c.centre.y, c.label as u8 as f64, c.radius, n as f64, 0.0, 0.0, 0.0]);
+    cx.events.values(
+        EventKind::Cell,
+        c.level as usize,
+        i as i64,
+        parent,
+        [c.centre.x, c.centre.y, c.label as u8 as f64, c.radius, n as f64, 0.0, 0.0, 0.0],
+    );
     for chunk in c.outline.chunks(4) {
         let mut v = [f64::NAN; 8];
         for (j, p) in chunk.iter().enumerate() {

@@ -42,7 +42,10 @@ pub fn d_max_ob(o: Vec2, obstacles: &[Shape]) -> Real {
     obstacles
         .iter()
         .map(|s| match s {
-            Shape::Rect(r) => [r.min, Vec2::new(r.max.x, r.min.y), r.max, Vec2::new(r.min.x, r.max.y)].into_iter().map(far).fold(0.0, Real::max),
+            Shape::Rect(r) => [r.min, Vec2::new(r.max.x, r.min.y), r.max, Vec2::new(r.min.x, r.max.y)]
+                .into_iter()
+                .map(far)
+                .fold(0.0, Real::max),
             Shape::Polygon(p) => p.iter().map(|&v| far(v)).fold(0.0, Real::max),
             Shape::Segment(a, b) => far(*a).max(far(*b)),
             Shape::Circle(c, r) => far(*c) + r,
@@ -62,7 +65,9 @@ impl Region {
     /// Whether the region covers the whole map.
     pub fn covers_map(&self) -> bool {
         let b = self.bounds;
-        [b.min, Vec2::new(b.max.x, b.min.y), b.max, Vec2::new(b.min.x, b.max.y)].iter().all(|&p| (p - self.centre).norm() <= self.radius)
+        [b.min, Vec2::new(b.max.x, b.min.y), b.max, Vec2::new(b.min.x, b.max.y)]
+            .iter()
+            .all(|&p| (p - self.centre).norm() <= self.radius)
     }
     /// Whether it can grow no further: it has reached `d_maxOb + t`, or covers the map.
     pub fn is_final(&self) -> bool {
@@ -190,7 +195,11 @@ mod tests {
     #[test]
     fn d_max_ob_is_the_farthest_vertex() {
         let o = Vec2::new(0.0, 0.0);
-        let obs = [rect(0.1, 0.1, 0.2, 0.3), Shape::Circle(Vec2::new(0.5, 0.0), 0.1), Shape::Segment(Vec2::new(0.0, 0.2), Vec2::new(0.0, 0.55))];
+        let obs = [
+            rect(0.1, 0.1, 0.2, 0.3),
+            Shape::Circle(Vec2::new(0.5, 0.0), 0.1),
+            Shape::Segment(Vec2::new(0.0, 0.2), Vec2::new(0.0, 0.55)),
+        ];
         assert!((d_max_ob(o, &obs) - 0.6).abs() < 1e-12);
         assert_eq!(d_max_ob(o, &[]), 0.0);
     }

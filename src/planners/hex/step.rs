@@ -81,7 +81,10 @@ pub fn step_test(ws: &Workspace, a: Vec2, b: Vec2, t: Real) -> Result<(), Blocke
     }
     // 4. The map's edge.
     let inside = |p: Vec2| ws.bounds.contains(p);
-    let disc_inside = b.x - r >= ws.bounds.min.x && b.x + r <= ws.bounds.max.x && b.y - r >= ws.bounds.min.y && b.y + r <= ws.bounds.max.y;
+    let disc_inside = b.x - r >= ws.bounds.min.x
+        && b.x + r <= ws.bounds.max.x
+        && b.y - r >= ws.bounds.min.y
+        && b.y + r <= ws.bounds.max.y;
     if !disc_inside || !rect.iter().all(|&p| inside(p)) {
         return Err(Blocked::MapEdge);
     }

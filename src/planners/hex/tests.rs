@@ -46,7 +46,10 @@ fn a_hexagon_splits_exactly_into_a_hexagon_and_six_half_hexagons() {
 
 #[test]
 fn cells_are_labelled_free_mixed_or_full() {
-    let ws = Workspace::new(Aabb { min: Vec2::new(0.0, 0.0), max: Vec2::new(1.0, 1.0) }, vec![Shape::Rect(Aabb { min: Vec2::new(0.3, 0.3), max: Vec2::new(0.7, 0.7) })]);
+    let ws = Workspace::new(
+        Aabb { min: Vec2::new(0.0, 0.0), max: Vec2::new(1.0, 1.0) },
+        vec![Shape::Rect(Aabb { min: Vec2::new(0.3, 0.3), max: Vec2::new(0.7, 0.7) })],
+    );
     let hex = |c: Vec2, s: Real| hexagon(c, s).to_vec();
     let lab = |o: Vec<Vec2>| label_of(&ws, &o, &Aabb::of_points(&o));
     assert_eq!(lab(hex(Vec2::new(0.5, 0.5), 0.1)), CellLabel::Full);
@@ -80,7 +83,10 @@ fn neighbours_share_an_edge_across_levels() {
         }
     }
     // Corner-touching cells are not neighbours.
-    assert!(!share_edge(&hexagon(Vec2::new(0.0, 0.0), 1.0), &[Vec2::new(0.866, 0.5), Vec2::new(2.0, 0.0), Vec2::new(2.0, 1.0)]));
+    assert!(!share_edge(
+        &hexagon(Vec2::new(0.0, 0.0), 1.0),
+        &[Vec2::new(0.866, 0.5), Vec2::new(2.0, 0.0), Vec2::new(2.0, 1.0)]
+    ));
 }
 
 #[test]

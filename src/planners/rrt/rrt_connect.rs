@@ -71,7 +71,8 @@ impl Planner for RrtConnect {
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         if self.trees.is_empty() {
             let o = self.opts;
-            self.trees = vec![Tree::with_options(cx, &self.task.start, 0, o), Tree::with_options(cx, self.task.goal(), 1, o)];
+            self.trees =
+                vec![Tree::with_options(cx, &self.task.start, 0, o), Tree::with_options(cx, self.task.goal(), 1, o)];
         }
         let (a, b) = (self.turn, 1 - self.turn);
         self.turn = b;
@@ -89,7 +90,16 @@ impl Planner for RrtConnect {
             Grow::Trapped | Grow::Advanced | Grow::Rejected => None,
             Grow::Reached => {
                 let p = cx.si.project(&self.target);
-                cx.events.push(EventKind::TreesConnected, a, added as i64, reached as i64, p, p, &self.target, &self.target);
+                cx.events.push(
+                    EventKind::TreesConnected,
+                    a,
+                    added as i64,
+                    reached as i64,
+                    p,
+                    p,
+                    &self.target,
+                    &self.target,
+                );
                 let goal = self.task.goal();
                 cx.events.at(EventKind::Solved, a, cx.si.project(goal), goal);
                 let (from_start, from_goal) = if a == 0 { (added, reached) } else { (reached, added) };

@@ -260,7 +260,7 @@ impl RrtStar {
             }
             let old = tree.parent(j);
             let len = dj; // the near-set query measured distance(new, j), the edge's own order
-            // Acyclic: j cannot be an ancestor of the new node, whose cost is at least j's then.
+                          // Acyclic: j cannot be an ancestor of the new node, whose cost is at least j's then.
             tree.set_parent(j, id);
             let (pj, pn) = (cx.si.project(tree.state(j)), cx.si.project(&self.new));
             cx.events.push(EventKind::Rewire, 0, j as i64, id as i64, pj, pn, tree.state(j), &self.new);

@@ -30,7 +30,7 @@ mod sampler;
 
 use super::{Robot, Verdict};
 use crate::geometry::Workspace;
-use crate::math::{MinMax, PI, Real, Vec2, angle_diff, wrap_angle};
+use crate::math::{angle_diff, wrap_angle, MinMax, Real, Vec2, PI};
 use crate::scenario::RobotSpec;
 use crate::space::{Dim, Metric, StateSpace};
 use std::cell::{Cell, RefCell};
@@ -285,7 +285,14 @@ impl Robot for AsvRobot {
     fn sample(&self, space: &StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) -> u64 {
         sampler::sample(self, space, rng, out)
     }
-    fn sample_gaussian(&self, space: &StateSpace, rng: &mut crate::rng::Rng, centre: &[Real], sigma: Real, out: &mut [Real]) -> bool {
+    fn sample_gaussian(
+        &self,
+        space: &StateSpace,
+        rng: &mut crate::rng::Rng,
+        centre: &[Real],
+        sigma: Real,
+        out: &mut [Real],
+    ) -> bool {
         sampler::sample_gaussian(self, space, rng, centre, sigma, out);
         true
     }

@@ -1,9 +1,9 @@
 //! The chain's validity rules on vehicle positions (courses.md §1), with the planner's margin.
 
 use super::{AsvRobot, MARGIN};
-use crate::geometry::{Aabb, Shape, Workspace};
-use crate::math::{MinMax, PI, Real, Vec2, wrap_angle};
 use crate::geometry::segment::distance2_point_segment;
+use crate::geometry::{Aabb, Shape, Workspace};
+use crate::math::{wrap_angle, MinMax, Real, Vec2, PI};
 use crate::robot::Verdict;
 
 /// Twice the signed area of the closed polygon (shoelace; > 0 counter-clockwise).
@@ -43,7 +43,8 @@ pub(super) fn broom_hit(ws: &Workspace, a: Vec2, b: Vec2) -> Option<usize> {
     for (i, o) in ws.obstacles.iter().enumerate() {
         let hit = match o {
             Shape::Rect(r) => {
-                let (lo, hi) = (Vec2::new(r.min.x + shrink, r.min.y + shrink), Vec2::new(r.max.x - shrink, r.max.y - shrink));
+                let (lo, hi) =
+                    (Vec2::new(r.min.x + shrink, r.min.y + shrink), Vec2::new(r.max.x - shrink, r.max.y - shrink));
                 lo.x <= hi.x && lo.y <= hi.y && segment_meets_box(a, b, lo, hi)
             }
             other => other.aabb().intersects(&Aabb::of_points(&[a, b])) && other.intersects_segment(a, b),
@@ -64,7 +65,8 @@ fn broom_distance(ws: &Workspace, a: Vec2, b: Vec2, cap: Real) -> Real {
     for o in &ws.obstacles {
         match o {
             Shape::Rect(r) => {
-                let (lo, hi) = (Vec2::new(r.min.x + shrink, r.min.y + shrink), Vec2::new(r.max.x - shrink, r.max.y - shrink));
+                let (lo, hi) =
+                    (Vec2::new(r.min.x + shrink, r.min.y + shrink), Vec2::new(r.max.x - shrink, r.max.y - shrink));
                 if lo.x > hi.x || lo.y > hi.y {
                     continue;
                 }
@@ -156,7 +158,11 @@ impl AsvRobot {
         let b = ws.bounds;
         let mut c = cap.at_most(0.5 * self.broom);
         for p in pts {
-            c = c.at_most(p.x - b.min.x + MARGIN).at_most(b.max.x + MARGIN - p.x).at_most(p.y - b.min.y + MARGIN).at_most(b.max.y + MARGIN - p.y);
+            c = c
+                .at_most(p.x - b.min.x + MARGIN)
+                .at_most(b.max.x + MARGIN - p.x)
+                .at_most(p.y - b.min.y + MARGIN)
+                .at_most(b.max.y + MARGIN - p.y);
         }
         let area2 = signed_area2(pts);
         let closing = pts[0] - pts[n - 1];
@@ -176,7 +182,12 @@ impl AsvRobot {
                     if i == 0 && j == n - 1 {
                         continue;
                     }
-                    let d = crate::geometry::segment::distance_segment_segment(pts[i], pts[(i + 1) % n], pts[j], pts[(j + 1) % n]);
+                    let d = crate::geometry::segment::distance_segment_segment(
+                        pts[i],
+                        pts[(i + 1) % n],
+                        pts[j],
+                        pts[(j + 1) % n],
+                    );
                     c = c.at_most(0.5 * d);
                 }
             }

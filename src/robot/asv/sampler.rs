@@ -114,7 +114,8 @@ fn across(ws: &Workspace, m: Vec2, reach: Real) -> Option<Real> {
         }
         t
     };
-    let widths: Vec<(Real, Real)> = (0..PROBES).map(|i| PI * i as Real / PROBES as Real).map(|b| (b, free(b, 1.0) + free(b, -1.0))).collect();
+    let widths: Vec<(Real, Real)> =
+        (0..PROBES).map(|i| PI * i as Real / PROBES as Real).map(|b| (b, free(b, 1.0) + free(b, -1.0))).collect();
     let (beta, _) = widths.iter().copied().fold((0.0, Real::INFINITY), |best, w| if w.1 < best.1 { w } else { best });
     let along = beta + 0.5 * PI;
     (free(along, 1.0) >= 0.5 * reach && free(along, -1.0) >= 0.5 * reach).then_some(beta)
@@ -156,7 +157,8 @@ pub(super) fn sample(robot: &AsvRobot, space: &StateSpace, rng: &mut Rng, out: &
                     out[3 + j] *= rng.uniform(0.0, FLAT);
                 }
                 let before: Real = out[3..3 + broom].iter().sum();
-                let dir = along + rng.uniform(-ALONG_SPREAD, ALONG_SPREAD) + if rng.uniform01() < 0.5 { 0.0 } else { PI };
+                let dir =
+                    along + rng.uniform(-ALONG_SPREAD, ALONG_SPREAD) + if rng.uniform01() < 0.5 { 0.0 } else { PI };
                 out[2] = wrap_angle(dir - before);
                 p
             }
@@ -186,13 +188,24 @@ pub(super) fn sample(robot: &AsvRobot, space: &StateSpace, rng: &mut Rng, out: &
 /// together they would leave no room to close the polygon. (Moving every coordinate
 /// independently, as for other robots, almost always breaks convexity: Gaussian, bridge and
 /// near-collision sampling would then only ever see invalid chains.)
-pub(super) fn sample_gaussian(robot: &AsvRobot, space: &StateSpace, rng: &mut Rng, centre: &[Real], sigma: Real, out: &mut [Real]) {
+pub(super) fn sample_gaussian(
+    robot: &AsvRobot,
+    space: &StateSpace,
+    rng: &mut Rng,
+    centre: &[Real],
+    sigma: Real,
+    out: &mut [Real],
+) {
     let placement = StateSpace { dims: space.dims[..3].to_vec(), metric: crate::space::Metric::Euclidean };
     crate::sampler::gaussian_coordinates(&placement, rng, &centre[..3], sigma, &mut out[..3]);
     let winding = match robot.orientation() {
         0.0 => {
             let s: Real = centre[3..].iter().sum();
-            if s < 0.0 { -1.0 } else { 1.0 }
+            if s < 0.0 {
+                -1.0
+            } else {
+                1.0
+            }
         }
         w => w,
     };
@@ -233,4 +246,3 @@ fn shape(robot: &AsvRobot, rng: &mut Rng, winding: Real, angles: &mut [Real]) {
         angles[1 + k] = winding * t.min(PI - 1e-6);
     }
 }
-
