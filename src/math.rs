@@ -1,7 +1,10 @@
-//! Scalar and 2-D point types used everywhere in the core.
+//! Scalar, vector and pose types used everywhere in the core.
 //!
-//! The hot path (collision checks, distances, nearest neighbours) runs on plain `f64` and this small
-//! [`Vec2`]; see `docs/architecture.md` for why the core does not use nalgebra or parry types here.
+//! Points and vectors are nalgebra's ([`Vec2`] is `nalgebra::Vector2<f64>`), and a placed body is
+//! an [`Pose2`] (`nalgebra::Isometry2`), so code reads as Rust robotics code does. Angles become
+//! rotations only through [`pose`] and [`rotation`], from libm's `sincos`: nalgebra's own
+//! `Rotation2::new(angle)` calls the platform's `sin`/`cos`, which may differ in the last bit
+//! between native code and wasm, and runs must be identical everywhere.
 
 /// The scalar type of every coordinate, angle and distance.
 pub type Real = f64;
@@ -9,70 +12,35 @@ pub type Real = f64;
 /// π as a [`Real`].
 pub const PI: Real = std::f64::consts::PI;
 
-/// A 2-D point or vector.
-#[derive(Clone, Copy, Debug, PartialEq, Default)]
-pub struct Vec2 {
-    /// x coordinate.
-    pub x: Real,
-    /// y coordinate.
-    pub y: Real,
-}
+/// A 2-D point or vector (nalgebra's `Vector2`; `x`, `y`, `dot`, `perp`, `norm`, `scale`).
+pub type Vec2 = nalgebra::Vector2<Real>;
 
 /// A 2-D point (alias of [`Vec2`], as parry names them).
 pub type Point2 = Vec2;
 
-impl Vec2 {
-    /// A new vector.
-    #[inline]
-    pub const fn new(x: Real, y: Real) -> Self {
-        Vec2 { x, y }
-    }
-    /// `self * s`.
-    #[inline]
-    pub fn scale(self, s: Real) -> Vec2 {
-        Vec2::new(self.x * s, self.y * s)
-    }
-    /// Dot product.
-    #[inline]
-    pub fn dot(self, o: Vec2) -> Real {
-        self.x * o.x + self.y * o.y
-    }
-    /// z component of the cross product.
-    #[inline]
-    pub fn cross(self, o: Vec2) -> Real {
-        self.x * o.y - self.y * o.x
-    }
-    /// Squared length.
-    #[inline]
-    pub fn norm2(self) -> Real {
-        self.dot(self)
-    }
-    /// Length.
-    #[inline]
-    pub fn norm(self) -> Real {
-        self.norm2().sqrt()
-    }
-    /// Rotate by an angle given as its cosine and sine.
-    #[inline]
-    pub fn rotate(self, c: Real, s: Real) -> Vec2 {
-        Vec2::new(c * self.x - s * self.y, s * self.x + c * self.y)
-    }
+/// A planar rotation (nalgebra's unit complex number).
+pub type Rot2 = nalgebra::UnitComplex<Real>;
+
+/// A planar pose: a rotation, then a translation (nalgebra's `Isometry2`).
+pub type Pose2 = nalgebra::Isometry2<Real>;
+
+/// The rotation by `theta`, its cosine and sine from libm (value-stable on every platform).
+#[inline]
+pub fn rotation(theta: Real) -> Rot2 {
+    let (s, c) = libm::sincos(theta);
+    Rot2::from_cos_sin_unchecked(c, s)
 }
 
-impl std::ops::Sub for Vec2 {
-    type Output = Vec2;
-    #[inline]
-    fn sub(self, o: Vec2) -> Vec2 {
-        Vec2::new(self.x - o.x, self.y - o.y)
-    }
+/// The pose at `(x, y)` with heading `theta`.
+#[inline]
+pub fn pose(x: Real, y: Real, theta: Real) -> Pose2 {
+    Pose2::from_parts(nalgebra::Translation2::new(x, y), rotation(theta))
 }
 
-impl std::ops::Add for Vec2 {
-    type Output = Vec2;
-    #[inline]
-    fn add(self, o: Vec2) -> Vec2 {
-        Vec2::new(self.x + o.x, self.y + o.y)
-    }
+/// `pose` applied to the body-frame point `p`: `R p + t`.
+#[inline]
+pub fn place(pose: &Pose2, p: Vec2) -> Vec2 {
+    pose.transform_point(&nalgebra::Point2::from(p)).coords
 }
 
 /// Minimum and maximum of two [`Real`]s as one comparison each, for the hot loops.

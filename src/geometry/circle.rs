@@ -47,7 +47,7 @@ pub fn segment_disc_cmp(a: Vec2, b: Vec2, c: Vec2, r: Real) -> Ordering {
 pub fn point_disc_cmp(p: Vec2, c: Vec2, r: Real) -> Ordering {
     const REL: Real = 8.0 * Real::EPSILON;
     const TINY: Real = 1e-280;
-    let d2 = (p - c).norm2();
+    let d2 = (p - c).norm_squared();
     let r2 = r * r;
     if r2 > TINY && d2 > TINY {
         if d2 > r2 * (1.0 + REL) {

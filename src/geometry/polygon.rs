@@ -191,7 +191,7 @@ pub fn is_simple(poly: &[Vec2]) -> bool {
                 let other_i = if j == i + 1 { a } else { b };
                 let other_j = if j == i + 1 { d } else { c };
                 if super::segment::orient(other_i, shared, other_j) == 0.0
-                    && (other_i - shared).dot(other_j - shared) > 0.0
+                    && (other_i - shared).dot(&(other_j - shared)) > 0.0
                 {
                     return false;
                 }
@@ -206,5 +206,5 @@ pub fn is_simple(poly: &[Vec2]) -> bool {
 /// Twice the signed area (shoelace; > 0 for counter-clockwise).
 pub fn signed_area2(poly: &[Vec2]) -> f64 {
     let n = poly.len();
-    (0..n).map(|i| poly[i].cross(poly[(i + 1) % n])).sum()
+    (0..n).map(|i| poly[i].perp(&poly[(i + 1) % n])).sum()
 }

@@ -99,10 +99,10 @@ pub fn distance_segment_segment_apart(a: Vec2, b: Vec2, c: Vec2, d: Vec2) -> Rea
 #[inline(always)]
 pub fn distance2_point_segment(p: Vec2, a: Vec2, b: Vec2) -> Real {
     let ab = b - a;
-    let l2 = ab.norm2();
+    let l2 = ab.norm_squared();
     if l2 == 0.0 {
-        return (p - a).norm2();
+        return (p - a).norm_squared();
     }
-    let t = ((p - a).dot(ab) / l2).clamp(0.0, 1.0);
-    (p - (a + ab.scale(t))).norm2()
+    let t = ((p - a).dot(&ab) / l2).clamp(0.0, 1.0);
+    (p - (a + ab.scale(t))).norm_squared()
 }

@@ -31,7 +31,7 @@ impl SensorPose {
     #[inline]
     pub fn in_view(&self, p: Vec2, fov: Real, range: Real) -> bool {
         let d = p - self.at;
-        let d2 = d.norm2();
+        let d2 = d.norm_squared();
         if d2 > range * range {
             return false;
         }

@@ -112,7 +112,7 @@ use std::cmp::Ordering;
 
 /// The formula `orient` used before issue 13, kept to measure what it got wrong.
 fn naive_orient(a: Vec2, b: Vec2, c: Vec2) -> f64 {
-    (b - a).cross(c - a)
+    (b - a).perp(&(c - a))
 }
 
 fn sign(x: f64) -> i8 {

@@ -101,7 +101,7 @@ impl ArmRobot {
             theta += q[i];
             // sincos shares one argument reduction; it equals sin and cos bit for bit.
             (s, c) = libm::sincos(theta);
-            p = p + Vec2::new(l * c, l * s);
+            p += Vec2::new(l * c, l * s);
             out[i + 1] = p;
         }
         if self.tip > 0.0 {
@@ -262,7 +262,7 @@ impl ArmRobot {
                         // (the result is the same; most pairs of a long chain are far apart).
                         let g = bi.gap(&boxes[j]);
                         let reach = c * rate;
-                        if g.norm2() >= reach * reach && g.x + g.y > 0.0 {
+                        if g.norm_squared() >= reach * reach && g.x + g.y > 0.0 {
                             continue;
                         }
                         distance_segment_segment(pts[i], pts[i + 1], pts[j], pts[j + 1])

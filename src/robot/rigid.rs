@@ -1,6 +1,6 @@
 use super::{xy_dims, xy_in_bounds, Robot, Verdict};
 use crate::geometry::{SensorPose, Workspace};
-use crate::math::{MinMax, Real, Vec2, PI};
+use crate::math::{self, MinMax, Real, Vec2, PI};
 use crate::space::{Dim, Metric, StateSpace};
 
 /// The most footprint vertices transformed on the stack; larger footprints use the heap.
@@ -48,10 +48,9 @@ impl RigidRobot {
     /// Write the footprint at state `q` into `out`.
     #[inline]
     fn place(&self, q: &[Real], out: &mut [Vec2]) {
-        let (s, c) = libm::sincos(q[2]);
-        let t = Vec2::new(q[0], q[1]);
+        let body = math::pose(q[0], q[1], q[2]);
         for (o, p) in out.iter_mut().zip(&self.footprint) {
-            *o = p.rotate(c, s) + t;
+            *o = math::place(&body, *p);
         }
     }
 

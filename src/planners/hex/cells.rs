@@ -88,7 +88,7 @@ pub fn clip_convex(subject: &[Vec2], clip: &[Vec2]) -> Vec<Vec2> {
             break;
         }
         let (a, b) = (clip[i], clip[(i + 1) % n]);
-        let inside = |p: Vec2| (b - a).cross(p - a) >= 0.0;
+        let inside = |p: Vec2| (b - a).perp(&(p - a)) >= 0.0;
         let input = std::mem::take(&mut out);
         let m = input.len();
         for j in 0..m {
@@ -99,7 +99,7 @@ pub fn clip_convex(subject: &[Vec2], clip: &[Vec2]) -> Vec<Vec2> {
             }
             if pi != qi {
                 // The edge p→q crosses the clip line a→b.
-                let (dp, dq) = ((b - a).cross(p - a), (b - a).cross(q - a));
+                let (dp, dq) = ((b - a).perp(&(p - a)), (b - a).perp(&(q - a)));
                 let t = dp / (dp - dq);
                 out.push(p + (q - p).scale(t));
             }
@@ -127,13 +127,13 @@ fn dedup_ring(ring: &mut Vec<Vec2>) {
 /// Twice the signed area of a ring (positive: counter-clockwise).
 fn area2(ring: &[Vec2]) -> Real {
     let n = ring.len();
-    (0..n).map(|i| ring[i].cross(ring[(i + 1) % n])).sum()
+    (0..n).map(|i| ring[i].perp(&ring[(i + 1) % n])).sum()
 }
 
 /// Whether the convex counter-clockwise polygon `poly` contains `p` (boundary included).
 pub fn convex_contains(poly: &[Vec2], p: Vec2) -> bool {
     let n = poly.len();
-    (0..n).all(|i| (poly[(i + 1) % n] - poly[i]).cross(p - poly[i]) >= -1e-12)
+    (0..n).all(|i| (poly[(i + 1) % n] - poly[i]).perp(&(p - poly[i])) >= -1e-12)
 }
 
 /// The cell label of a convex outline among the workspace's obstacles.
@@ -170,7 +170,7 @@ fn contains_outline(shape: &Shape, outline: &[Vec2]) -> bool {
 
 fn strictly_inside(poly: &[Vec2], p: Vec2) -> bool {
     let n = poly.len();
-    (0..n).all(|i| (poly[(i + 1) % n] - poly[i]).cross(p - poly[i]) > 1e-12)
+    (0..n).all(|i| (poly[(i + 1) % n] - poly[i]).perp(&(p - poly[i])) > 1e-12)
 }
 
 /// How refinement decides which cells to split.
@@ -321,7 +321,7 @@ fn centroid(ring: &[Vec2]) -> Vec2 {
     let (mut cx, mut cy, mut a) = (0.0, 0.0, 0.0);
     for i in 0..n {
         let (p, q) = (ring[i], ring[(i + 1) % n]);
-        let w = p.cross(q);
+        let w = p.perp(&q);
         a += w;
         cx += (p.x + q.x) * w;
         cy += (p.y + q.y) * w;
@@ -344,10 +344,10 @@ pub fn share_edge(a: &[Vec2], b: &[Vec2]) -> bool {
         for j in 0..m {
             let (r, s) = (b[j], b[(j + 1) % m]);
             // Both ends of r s on the line p q?
-            if (d.cross(r - p) / len).abs() > eps || (d.cross(s - p) / len).abs() > eps {
+            if (d.perp(&(r - p)) / len).abs() > eps || (d.perp(&(s - p)) / len).abs() > eps {
                 continue;
             }
-            let (t0, t1) = (d.dot(r - p) / len, d.dot(s - p) / len);
+            let (t0, t1) = (d.dot(&(r - p)) / len, d.dot(&(s - p)) / len);
             let (lo, hi) = (t0.min(t1).max(0.0), t0.max(t1).min(len));
             if hi - lo > 1e3 * eps {
                 return true;

@@ -432,7 +432,7 @@ impl HexPotential {
         if self.dims < 3 {
             return vec![vec![b.x, b.y]];
         }
-        let h = if (b - a).norm2() > 0.0 { libm::atan2(b.y - a.y, b.x - a.x) } else { self.goal[2] };
+        let h = if (b - a).norm_squared() > 0.0 { libm::atan2(b.y - a.y, b.x - a.x) } else { self.goal[2] };
         vec![vec![a.x, a.y, wrap_angle(h)], vec![b.x, b.y, wrap_angle(h)]]
     }
 

@@ -150,10 +150,10 @@ pub struct Terms {
 
 /// The angle between `u` and `v` in `[0, π]` (0 if either is zero).
 pub fn angle_between(u: Vec2, v: Vec2) -> Real {
-    if u.norm2() == 0.0 || v.norm2() == 0.0 {
+    if u.norm_squared() == 0.0 || v.norm_squared() == 0.0 {
         return 0.0;
     }
-    libm::atan2(u.cross(v).abs(), u.dot(v)).clamp(0.0, PI)
+    libm::atan2(u.perp(&v).abs(), u.dot(&v)).clamp(0.0, PI)
 }
 
 /// The obstacle part of the potential at `c`: `(repulsion, trap term)`. `counted[i]`: whether

@@ -63,7 +63,7 @@ pub fn step_test(ws: &Workspace, a: Vec2, b: Vec2, t: Real) -> Result<(), Blocke
     let region_box = Aabb::of_points(&rect).grown(r);
     let near: Vec<&Shape> = ws.obstacles.iter().filter(|s| s.aabb().intersects(&region_box)).collect();
     // 1. A vertex within the circle about b (on the circle counts).
-    if near.iter().any(|s| vertices(s).iter().any(|&v| (v - b).norm2() <= r * r)) {
+    if near.iter().any(|s| vertices(s).iter().any(|&v| (v - b).norm_squared() <= r * r)) {
         return Err(Blocked::VertexInCircle);
     }
     // 2. A vertex inside the swept rectangle (the crossing-number test; the boundary counts).
@@ -108,8 +108,8 @@ mod tests {
         Shape::Rect(Aabb { min: Vec2::new(x0, y0), max: Vec2::new(x1, y1) })
     }
     // Numbers exact in binary, so "on the circle" is exactly on it: t/2 = 0.0625.
-    const A: Vec2 = Vec2 { x: 0.25, y: 0.5 };
-    const B: Vec2 = Vec2 { x: 0.5, y: 0.5 };
+    const A: Vec2 = Vec2::new(0.25, 0.5);
+    const B: Vec2 = Vec2::new(0.5, 0.5);
     const T: Real = 0.125;
     fn tri(p: Vec2) -> Shape {
         Shape::Polygon(vec![p, Vec2::new(0.7, 0.45), Vec2::new(0.7, 0.55)])

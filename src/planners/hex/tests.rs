@@ -4,7 +4,7 @@ use crate::math::{Real, Vec2};
 
 fn area(ring: &[Vec2]) -> Real {
     let n = ring.len();
-    (0..n).map(|i| ring[i].cross(ring[(i + 1) % n])).sum::<Real>() / 2.0
+    (0..n).map(|i| ring[i].perp(&ring[(i + 1) % n])).sum::<Real>() / 2.0
 }
 
 fn unit() -> Aabb {

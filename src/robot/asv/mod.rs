@@ -109,11 +109,11 @@ impl AsvRobot {
         offsets(self.broom, &q[2..], out);
         let mut sum = Vec2::default();
         for p in out.iter() {
-            sum = sum + *p;
+            sum += *p;
         }
         let shift = Vec2::new(q[0] - sum.x / n as Real, q[1] - sum.y / n as Real);
         for p in out.iter_mut() {
-            *p = *p + shift;
+            *p += shift;
         }
     }
 
@@ -149,7 +149,7 @@ fn offsets(l: Real, angles: &[Real], out: &mut [Vec2]) {
     out[0] = p;
     for k in 1..out.len() {
         let (s, c) = libm::sincos(h);
-        p = p + Vec2::new(l * c, l * s);
+        p += Vec2::new(l * c, l * s);
         out[k] = p;
         if k < angles.len() {
             h += angles[k];

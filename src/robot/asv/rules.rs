@@ -9,13 +9,13 @@ use crate::robot::Verdict;
 /// Twice the signed area of the closed polygon (shoelace; > 0 counter-clockwise).
 pub(super) fn signed_area2(p: &[Vec2]) -> Real {
     let n = p.len();
-    (0..n).map(|i| p[i].cross(p[(i + 1) % n])).sum()
+    (0..n).map(|i| p[i].perp(&p[(i + 1) % n])).sum()
 }
 
 /// The signed turn from direction `d` to direction `e`, in `[−π, π]`.
 #[inline]
 fn turn(d: Vec2, e: Vec2) -> Real {
-    libm::atan2(d.cross(e), d.dot(e))
+    libm::atan2(d.perp(&e), d.dot(&e))
 }
 
 /// Whether the closed segment `a b` meets the closed box `[lo, hi]`: the boxes overlap and the
@@ -71,7 +71,7 @@ fn broom_distance(ws: &Workspace, a: Vec2, b: Vec2, cap: Real) -> Real {
                     continue;
                 }
                 // Box-to-box gap first: most rectangles are farther than `best`.
-                if (Aabb { min: lo, max: hi }).gap(&bb).norm2() >= best * best {
+                if (Aabb { min: lo, max: hi }).gap(&bb).norm_squared() >= best * best {
                     continue;
                 }
                 if segment_meets_box(a, b, lo, hi) {
