@@ -13,6 +13,17 @@ use crate::math::Real;
 use rand_core::{RngCore, SeedableRng};
 use rand_xoshiro::Xoshiro256PlusPlus;
 
+/// The largest seed a fresh seed can be: 2⁵³ − 1, so it is exact as a JavaScript number (the
+/// page's seed field, share links) and in JSON.
+pub const MAX_FRESH_SEED: u64 = (1 << 53) - 1;
+
+/// A fresh seed from the operating system's entropy (Web Crypto in a worker or Node), in
+/// `0..=MAX_FRESH_SEED`. Only for choosing a seed to show and record: a run is always seeded,
+/// and the seed it used is printed or shown, so it can be replayed.
+pub fn fresh_seed() -> Result<u64, String> {
+    getrandom::u64().map(|x| x & MAX_FRESH_SEED).map_err(|e| format!("no entropy for a fresh seed: {e}"))
+}
+
 /// A seeded xoshiro256++ generator.
 #[derive(Clone, Debug)]
 pub struct Rng {
@@ -87,6 +98,14 @@ impl SeedableRng for Rng {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn fresh_seeds_are_safe_integers_and_differ() {
+        let seeds: Vec<u64> = (0..8).map(|_| fresh_seed().unwrap()).collect();
+        assert!(seeds.iter().all(|&s| s <= MAX_FRESH_SEED), "{seeds:?}");
+        // Eight draws of 53 bits all equal would mean no entropy at all.
+        assert!(seeds.iter().any(|&s| s != seeds[0]), "{seeds:?}");
+    }
 
     #[test]
     fn same_seed_same_stream_and_known_values() {

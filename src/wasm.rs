@@ -29,6 +29,13 @@ pub fn last_panic() -> String {
     PANIC.with(|p| p.borrow().clone())
 }
 
+/// A fresh seed from the browser's entropy (`getrandom` → Web Crypto), at most 2⁵³ − 1 so it is
+/// exact as a JavaScript number. For the page's "New seed"; a run itself is always seeded.
+#[wasm_bindgen]
+pub fn fresh_seed() -> Result<f64, JsError> {
+    crate::rng::fresh_seed().map(|s| s as f64).map_err(|e| JsError::new(&e))
+}
+
 /// Crash on purpose (tests of the worker's panic handling).
 #[wasm_bindgen]
 pub fn debug_panic(message: &str) {

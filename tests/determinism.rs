@@ -95,3 +95,34 @@ fn every_robot_and_planner_gives_the_same_run_in_suspended_batches() {
     }
     assert!(suspended as usize * 2 > cases.len(), "only {suspended} of {} runs had a batch suspended", cases.len());
 }
+
+/// `--seed random`: the CLI draws a fresh seed, says which on stderr, records it in the result, and
+/// `--seed N` with that number replays the run exactly.
+#[cfg(not(target_arch = "wasm32"))]
+#[test]
+fn cli_fresh_seed_is_printed_and_replays() {
+    let plan = |seed: &str| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_planarium"))
+            .args(["plan", "narrow", "--planner", "rrt", "--seed", seed, "--json"])
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        (json, String::from_utf8(out.stderr).unwrap())
+    };
+    let (a, said) = plan("random");
+    let seed = a["seed"].as_u64().unwrap();
+    assert!(seed < 1 << 53, "a fresh seed is exact as a JavaScript number: {seed}");
+    assert!(said.contains(&format!("fresh seed {seed} (--seed {seed} replays this run)")), "{said}");
+    let (b, _) = plan(&seed.to_string());
+    assert_eq!(a["path"], b["path"], "the printed seed replays the path");
+    assert_eq!(a["stats"]["checks"], b["stats"]["checks"]);
+    let (c, _) = plan("random");
+    assert_ne!(c["seed"], a["seed"], "two fresh seeds differ");
+    let bad = std::process::Command::new(env!("CARGO_BIN_EXE_planarium"))
+        .args(["plan", "narrow", "--seed", "dice"])
+        .output()
+        .unwrap();
+    assert!(!bad.status.success());
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("\"dice\" is not a seed"));
+}

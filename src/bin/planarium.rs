@@ -51,7 +51,7 @@ fn cli() -> Command {
                 .about("Plan once and print the result")
                 .arg(scenario_arg.clone())
                 .arg(Arg::new("planner").long("planner").help("Planner name (default: the scenario's planner block's, else rrt-connect)"))
-                .arg(Arg::new("seed").long("seed").value_parser(clap::value_parser!(u64)).help("Seed (default: the scenario's planner block's, else 1)"))
+                .arg(Arg::new("seed").long("seed").value_parser(seed_arg).help("Seed, or \"random\" for a fresh one (printed, so the run can be replayed); default: the scenario's planner block's, else 1"))
                 .arg(Arg::new("json").long("json").action(ArgAction::SetTrue).help("Print the result JSON of the contract"))
                 .arg(
                     Arg::new("events")
@@ -153,6 +153,22 @@ fn find_planner(name: &str) -> Result<&'static PlannerSpec, String> {
     planners::find(name).ok_or_else(|| format!("unknown planner \"{name}\" (known: {})", planners::names().join(", ")))
 }
 
+/// `--seed`: a number, or `random` for a fresh one drawn when the run starts.
+#[derive(Clone, Debug)]
+enum SeedArg {
+    Fixed(u64),
+    Fresh,
+}
+
+fn seed_arg(text: &str) -> Result<SeedArg, String> {
+    if text == "random" {
+        return Ok(SeedArg::Fresh);
+    }
+    text.parse()
+        .map(SeedArg::Fixed)
+        .map_err(|_| format!("\"{text}\" is not a seed: a whole number from 0 to {}, or \"random\"", u64::MAX))
+}
+
 fn plan(m: &ArgMatches) -> Result<(), String> {
     let sc = load(m.get_one::<String>("scenario").unwrap())?;
     // As the page does: the scenario's planner block chooses the planner and seed unless told.
@@ -165,11 +181,15 @@ fn plan(m: &ArgMatches) -> Result<(), String> {
     let spec = find_planner(&name)?;
     let params = params_for(spec, &sc, m)?;
     let problem = Problem::from_scenario(&sc).map_err(|e| e.to_string())?;
-    let seed = m
-        .get_one::<u64>("seed")
-        .copied()
-        .or_else(|| block.filter(|b| b.name == spec.name).and_then(|b| b.seed))
-        .unwrap_or(1);
+    let seed = match m.get_one::<SeedArg>("seed") {
+        Some(SeedArg::Fixed(seed)) => *seed,
+        Some(SeedArg::Fresh) => {
+            let seed = planarium::rng::fresh_seed()?;
+            eprintln!("fresh seed {seed} (--seed {seed} replays this run)");
+            seed
+        }
+        None => block.filter(|b| b.name == spec.name).and_then(|b| b.seed).unwrap_or(1),
+    };
     let events_file = m.get_one::<String>("events");
     let mut s = Session::new(
         problem,

@@ -216,3 +216,35 @@ test('Compare from the playground\'s link, with 20 seeds', async () => {
   await page.screenshot({ path: `${SHOTS}/learn-compare-seeds.png` });
   await page.close();
 });
+
+test('New seed: a fresh seed from the core\'s entropy, shown, in the share link, and replayable', async () => {
+  const { page, errors } = await open({ width: 1280, height: 800 });
+  assert.equal(await page.inputValue('#seed'), '1');
+  await page.click('#new-seed');
+  await page.waitForFunction(() => document.getElementById('seed').value !== '1' && window.planarium.state() === 'idle');
+  const first = Number(await page.inputValue('#seed'));
+  assert.ok(Number.isSafeInteger(first) && first >= 0, `a whole number exact in JavaScript: ${first}`);
+  assert.match(await page.textContent('#run-status'), new RegExp(`seed ${first}\\.$`), 'the status says which seed Run uses');
+  assert.match(await page.evaluate(() => window.planarium.shareLink()), new RegExp(`seed=${first}\\b`), 'the share link carries it');
+  await page.click('#new-seed');
+  await page.waitForFunction((s) => document.getElementById('seed').value !== String(s), first);
+  const second = Number(await page.inputValue('#seed'));
+  assert.notEqual(second, first, 'two fresh seeds differ');
+  // the run on a fresh seed replays: the same seed typed in gives the same run
+  const runOnce = async () => {
+    await page.click('#speed-instant');
+    await page.click('#run');
+    await page.waitForFunction(() => window.planarium.state() === 'finished', null, { timeout: 20000 });
+    const r = await page.evaluate(() => window.planarium.result());
+    return JSON.stringify([r.status, r.stats.iterations, r.stats.nodes, r.stats.checks, r.path]);
+  };
+  const a = await runOnce();
+  await page.fill('#seed', '1');
+  await page.dispatchEvent('#seed', 'change');
+  await page.fill('#seed', String(second));
+  await page.dispatchEvent('#seed', 'change');
+  await page.waitForFunction(() => window.planarium.state() === 'idle');
+  assert.equal(await runOnce(), a, 'the same seed typed in replays the same run');
+  assert.deepEqual(errors, []);
+  await page.close();
+});

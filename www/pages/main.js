@@ -122,6 +122,7 @@ const player = new Player({
       showInvalid(error, sentEdit);
     },
     error(message) { showError(message); },
+    seed(seed) { panel?.setSeed(seed); },
     asv(text) { downloadText(text, `${(loaded?.name || 'solution').replace(/[^\w.-]+/g, '_')}-solution.txt`); },
     stopped: showStopped,
     changed: () => { updateStats(); syncDownload(); },
@@ -141,7 +142,8 @@ function onReady(msg) {
   if (!registry) {
     registry = applyPageLimits(msg.planners);
     builtins = msg.builtins;
-    panel = createPanel(ui.panel, registry, () => { configure(); clearError(); syncChart(); });
+    panel = createPanel(ui.panel, registry, () => { configure(); clearError(); syncChart(); },
+      { freshSeed: () => lane.session.send({ type: 'fresh-seed' }) });
     const first = fillScenarioPicker(ui.scenario, builtins);
     if (location.hash.length > 1) restoreHash(location.hash);
     else {

@@ -10,7 +10,7 @@ import { WorkerSession } from './session.js';
 export class Lane {
   /**
    * `playback`: a Playback; `views`: [View, ...] fed with revealed records; `chart`: a Chart or
-   * null; `hooks`: {ready, loaded, invalid, error, asv, stopped} (see session.js), plus
+   * null; `hooks`: {ready, loaded, invalid, error, asv, seed, stopped} (see session.js), plus
    * `revealed()` after records were revealed or the result came (the page checks whether the run
    * is finished), `finished()` whether the page is in its finished state (a late batch is then
    * shown at once), and `changed()` when the stats changed.
@@ -34,6 +34,7 @@ export class Lane {
         hooks.error?.(message);
       },
       asv: (text) => hooks.asv?.(text),
+      seed: (seed) => hooks.seed?.(seed),
       stopped: (message, fatal, why) => { this.clearRun(); hooks.stopped?.(message, fatal, why); },
     });
     this.clearRun(false);

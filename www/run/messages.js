@@ -6,7 +6,7 @@
  * @typedef {{type: 'load', text: string}
  *   | {type: 'import', text: string, name: string}
  *   | {type: 'configure', planner: string, params: Record<string, number | string>, seed: number}
- *   | {type: 'run' | 'pause' | 'reset' | 'cancel' | 'asv-solution' | 'ping'}
+ *   | {type: 'run' | 'pause' | 'reset' | 'cancel' | 'asv-solution' | 'ping' | 'fresh-seed'}
  *   | {type: 'step', iterations: number}
  *   | {type: 'debug-panic', message?: string}
  *   | {type: 'debug-hang', ms: number}} WorkerRequest
@@ -29,6 +29,7 @@
  *   | {type: 'status', status: string}
  *   | {type: 'ack', ack: number}
  *   | {type: 'asv-solution', text: string}
+ *   | {type: 'seed', seed: number}
  *   | {type: 'error' | 'crashed', message: string}} WorkerReply
  * @typedef {WorkerReply & {run?: number}} WorkerOut
  */

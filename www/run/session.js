@@ -29,7 +29,7 @@ HUNG.import = HUNG.load;
 export class WorkerSession {
   /**
    * `hooks`: {ready(msg), loaded(msg), invalid(error), events(msg), result(msg), error(message),
-   * asv(text), stopped(message, fatal, why)}; `stopped` is called when the worker died (why:
+   * asv(text), seed(seed), stopped(message, fatal, why)}; `stopped` is called when the worker died (why:
    * 'crashed', a panic or a failed start) or was replaced by the watchdog (why: 'hung'; the message
    * says so in words): the session starts a new one, whose `ready` follows, unless the worker keeps
    * dying (`fatal`: more than CRASH_LIMIT times in CRASH_WINDOW_MS; the next load() starts one).
@@ -178,6 +178,7 @@ export class WorkerSession {
       case 'asv-solution':
         if (msg.run === this.latestRun) h.asv?.(msg.text);
         return;
+      case 'seed': h.seed?.(msg.seed); return;
       case 'crashed': this.recover(msg.message); return;
       default:
         console.warn('unknown message from the worker', /** @type {any} */ (msg).type); // a worker newer than the page

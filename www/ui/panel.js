@@ -61,9 +61,11 @@ export function plannerFits(p, task) {
  * Build the panel into `root`. `onChange(config)` is called after every valid change, with
  * config = {planner, params, seed}. Options: `prefix` for every element id (two panels on one
  * page), `seed: false` to leave the seed out (the caller supplies it), `title` for the planner
- * picker's label. Returns {config(), apply(block), setTask(task), planner(), setDisabled(bool)}.
+ * picker's label, `freshSeed` (a function) to offer a "New seed" button that calls it (the page asks
+ * the core for a fresh seed and gives it back with setSeed). Returns {config(), apply(block),
+ * setTask(task), planner(), setDisabled(bool), setSeed(n)}.
  */
-export function createPanel(root, registry, onChange, { prefix = '', seed: withSeed = true, title = 'Planner' } = {}) {
+export function createPanel(root, registry, onChange, { prefix = '', seed: withSeed = true, title = 'Planner', freshSeed = null } = {}) {
   const planners = registry.planners;
   const runParams = registry.run_params || [];
   const groupsOf = (p) => p.groups || [];
@@ -93,7 +95,9 @@ export function createPanel(root, registry, onChange, { prefix = '', seed: withS
   const moreOwn = el('fieldset', { className: 'params', id: id('planner-more-params') });
   const seed = el('input', { id: id('seed'), type: 'number', min: '0', step: '1', value: '1', inputMode: 'numeric' });
   const seedHint = el('span', { className: 'hint' });
-  controls.push(plannerSelect, seed);
+  const newSeed = el('button', { id: id('new-seed'), type: 'button', className: 'new-seed', text: 'New seed',
+    title: 'A fresh random seed from the browser\'s entropy. It is shown here and goes into share links, so the run can be replayed.' });
+  controls.push(plannerSelect, seed, newSeed);
 
   root.replaceChildren(
     el('label', { className: 'field', htmlFor: id('planner') }, el('span', { text: title }), plannerSelect),
@@ -102,7 +106,7 @@ export function createPanel(root, registry, onChange, { prefix = '', seed: withS
     params,
     more,
     ...(withSeed ? [el('label', { className: 'field', htmlFor: id('seed'), title: 'Random seed: the same seed replays the same run.' },
-      el('span', { text: 'Seed' }), seed, seedHint)] : []), // (replaceChildren would write a null as "null")
+      el('span', { text: 'Seed' }), seed, ...(freshSeed ? [newSeed] : []), seedHint)] : []), // (replaceChildren would write a null as "null")
   );
 
   const emit = () => onChange(config());
@@ -237,6 +241,16 @@ export function createPanel(root, registry, onChange, { prefix = '', seed: withS
     renderParams();
     emit();
   });
+  newSeed.addEventListener('click', () => freshSeed?.());
+  /** Set the seed (a whole number ≥ 0, exact as a JavaScript number) and call onChange. */
+  function setSeed(n) {
+    if (!Number.isSafeInteger(n) || n < 0) return;
+    state.seed = n;
+    seed.value = String(n);
+    seed.removeAttribute('aria-invalid');
+    seedHint.textContent = '';
+    emit();
+  }
   seed.addEventListener('change', () => {
     const v = Number(seed.value);
     if (seed.value.trim() === '' || !Number.isSafeInteger(v) || v < 0) {
@@ -302,5 +316,5 @@ export function createPanel(root, registry, onChange, { prefix = '', seed: withS
 
   renderOptions();
   renderParams();
-  return { config, apply, setTask, setDisabled, planner: () => current() };
+  return { config, apply, setTask, setDisabled, setSeed, planner: () => current() };
 }

@@ -12,6 +12,7 @@
 //   cancel    {}                             stop the run now; it is finished
 //   asv-solution {}                          the finished run's path as an ASV solution file
 //   ping      {}                             nothing (with `ack`: shows the worker reads messages)
+//   fresh-seed {}                            a fresh seed from the core's entropy (a `seed` reply)
 //   debug-panic  {message}                   tests only: make the core panic (a `crashed` reply)
 //   debug-hang   {ms}                        tests only: stay busy for `ms` milliseconds without
 //                                            reading messages (a batch that never ends)
@@ -34,11 +35,12 @@
 //   status    {status}
 //   ack       {ack}                          the message carrying `ack` was read
 //   asv-solution {text}
+//   seed      {seed}                         a fresh seed (asked for by fresh-seed), ≤ 2^53 − 1
 //   error     {message}                      a bad request; the worker stays usable
 //   crashed   {message}                      the core panicked; the page must replace this worker
 // `run` is a counter bumped on every run/reset/load, so the page can drop stale replies.
 
-import init, { Scene, Run, builtins, import_file, planners, event_kinds, install_panic_hook, last_panic, debug_panic }
+import init, { Scene, Run, builtins, import_file, planners, event_kinds, install_panic_hook, last_panic, debug_panic, fresh_seed }
   from '../pkg/planarium.js';
 import { thinTries } from './thin.js';
 
@@ -163,7 +165,7 @@ function load(text) {
 
 function handle(msg) {
   // Any request but another step ends a step in progress.
-  if (msg.type !== 'step' && msg.type !== 'asv-solution' && msg.type !== 'ping') stepping = null;
+  if (msg.type !== 'step' && msg.type !== 'asv-solution' && msg.type !== 'ping' && msg.type !== 'fresh-seed') stepping = null;
   switch (msg.type) {
     case 'load':
       load(msg.text);
@@ -233,6 +235,9 @@ function handle(msg) {
       return;
     }
     case 'ping':
+      return;
+    case 'fresh-seed': // entropy from the core (getrandom → Web Crypto); the page shows and records it
+      post({ type: 'seed', seed: fresh_seed() });
       return;
     default:
       post({ type: 'error', run: runId, message: `unknown message type ${msg.type}` });
