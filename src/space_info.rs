@@ -1,6 +1,7 @@
 //! [`SpaceInfo`]: everything a planner may know about the problem's space, in one bundle
 //! (OMPL's `SpaceInformation`). Planners import this, never scenario or robot types.
 
+use crate::clock::Instant;
 use crate::geometry::SensorPose;
 use crate::journal::{Entry, Journal};
 use crate::math::{Real, Vec2};
@@ -8,7 +9,6 @@ use crate::rng::Rng;
 use crate::space::StateSpace;
 use crate::validity::StateValidity;
 use std::cell::{Cell, RefCell};
-use web_time::Instant;
 
 /// When long work must stop: the run's time limit, as an instant (none: no limit). Loops that can
 /// run long inside one planner iteration (a motion check's states, smoothing, a heat map) look at

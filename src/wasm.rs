@@ -2,7 +2,7 @@
 //! core types and translate at the edge (JSON text, flat `Float64Array`s). No DOM work here.
 //!
 //! A panic aborts the wasm instance; the hook below keeps its message so the worker can read it
-//! with [`last_panic`], report it, and be replaced by the page.
+//! with [`last_panic`], report it, and be replaced by the page, and writes it to the console.
 
 use crate::planners::{self, Params};
 use crate::problem::Problem;
@@ -19,7 +19,10 @@ thread_local! {
 #[wasm_bindgen]
 pub fn install_panic_hook() {
     std::panic::set_hook(Box::new(|info| {
-        PANIC.with(|p| *p.borrow_mut() = info.to_string());
+        let message = info.to_string();
+        // In the devtools console too (web-sys's typed console), with the worker's own stack.
+        web_sys::console::error_1(&format!("planarium core panicked: {message}").into());
+        PANIC.with(|p| *p.borrow_mut() = message);
     }));
 }
 

@@ -1,4 +1,5 @@
 use super::{PlanResult, SamplerSummary, Stats};
+use crate::clock::Instant;
 use crate::events::EventLog;
 use crate::math::Real;
 use crate::planners::{
@@ -9,7 +10,6 @@ use crate::rng::Rng;
 use crate::sampler::Sampler;
 use crate::space_info::Deadline;
 use crate::status::Status;
-use web_time::Instant;
 
 /// What to run: a planner by name, its parameters (which include smoothing and limits), a seed.
 #[derive(Clone, Debug)]
