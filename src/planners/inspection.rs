@@ -24,9 +24,10 @@
 //!    best one) loses a point it saw, and an edge's stored set may omit what its parent's branch had
 //!    already seen.
 //!
-//! What the sensor sees is the robot's business ([`SpaceInfo::sensor`], [`SpaceInfo::sees`]): an
-//! arm's end effector looking along its last link, a rigid body's origin looking along its x axis,
-//! a point seeing all around; sight lines are blocked by obstacle interiors only.
+//! What the sensor sees is the robot's business (its [`Sensor`](crate::robot::Sensor) capability,
+//! through [`SpaceInfo::sensor`], and [`SpaceInfo::sees`]): an arm's end effector looking along its
+//! last link, a rigid body's origin looking along its x axis, a point seeing all around; sight
+//! lines are blocked by obstacle interiors only. Robots without a sensor are refused.
 //!
 //! Events: `NodeAdded`, `Collision`, `Rewire`, `Coverage` (whenever the best branch sees more),
 //! `PointSeen` (the first time any node sees a point) and `Solved`.
@@ -50,7 +51,10 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     params: PARAMS,
     groups: &[SAMPLER_GROUP],
     task: TaskKind::Inspection,
-    make: |si, task, params| Ok(Box::new(Inspection::new(si, task, params))),
+    make: |si, task, params| {
+        si.sensor().ok_or_else(|| format!("needs a robot with a sensor (a {} robot has none)", si.robot_kind()))?;
+        Ok(Box::new(Inspection::new(si, task, params)))
+    },
 };
 
 /// The inspection planner's parameters.
@@ -101,7 +105,9 @@ impl Sensor {
     /// (One unit of the batch journal: a bounded batch replays it without looking again.)
     fn look(&self, si: &SpaceInfo, q: &[Real], skip: &Bits, out: &mut Bits) {
         si.journalled_bits(0, out, |out| {
-            let pose = si.sensor(q);
+            // A robot without a sensor sees nothing (the planner refuses it).
+            let Some(sensor) = si.sensor() else { return };
+            let pose = sensor.pose(q);
             for (j, p) in self.points.iter().enumerate() {
                 if !has(skip, j) && !has(out, j) && si.sees(&pose, *p, self.fov, self.range) {
                     set(out, j);
