@@ -316,7 +316,7 @@ impl MotionModel for AsvRobot {
     }
 }
 
-/// Uniform chains are almost never valid: see [`sampler`].
+/// Uniform chains are almost never valid: the chain draws its own (the `sampler` module).
 impl OwnSampler for AsvRobot {
     fn sample(&self, space: &StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) -> u64 {
         sampler::sample(self, space, rng, out)
