@@ -12,6 +12,7 @@
 
 use crate::journal::Entry;
 use crate::math::Real;
+use crate::robot::MotionModel;
 use crate::space::StateSpace;
 use crate::space_info::SpaceInfo;
 
@@ -114,10 +115,17 @@ pub fn check_discrete(
 const MAX_DEPTH: u32 = 40;
 
 impl SpaceInfo {
-    /// Clearance of `q` capped at `cap`, counted as one state check: in workspace units, or (when
-    /// the robot supports it, `motion` given) in units of the motion's parameter.
+    /// Clearance of `q` capped at `cap` by the robot's motion model `model`, counted as one state
+    /// check: in workspace units, or (when the robot supports it, `motion` given) in units of the
+    /// motion's parameter.
     #[inline]
-    fn clearance_checked(&self, motion: Option<(&[Real], &[Real])>, q: &[Real], cap: Real) -> Real {
+    fn clearance_checked(
+        &self,
+        model: &dyn MotionModel,
+        motion: Option<(&[Real], &[Real])>,
+        q: &[Real],
+        cap: Real,
+    ) -> Real {
         self.checks.set(self.checks.get() + 1);
         // Past the deadline, a clearance of 0 refuses the motion (and the run stops).
         if self.interrupted() {
@@ -129,8 +137,8 @@ impl SpaceInfo {
             0.0,
             || {
                 match motion {
-                    Some((a, b)) => self.validity.motion_clearance(a, b, q, cap),
-                    None => self.validity.clearance(q, cap),
+                    Some((a, b)) => model.motion_clearance(&self.validity.workspace, a, b, q, cap),
+                    None => model.clearance(&self.validity.workspace, q, cap),
                 }
                 .unwrap_or(0.0)
             },
@@ -147,8 +155,11 @@ impl SpaceInfo {
             }
             _ => 0,
         };
-        let (outcome, checks) =
-            self.validity.check_discrete(&self.space, a, b, n, scratch, skip, &|units| self.fresh_work(units));
+        let ws = &self.validity.workspace;
+        let (outcome, checks) = self
+            .validity
+            .robot
+            .check_discrete(ws, &self.space, a, b, n, scratch, skip, &|units| self.fresh_work(units));
         self.count_checks(checks);
         match outcome {
             Discrete::Valid => Ok(()),
@@ -167,8 +178,10 @@ impl SpaceInfo {
     /// Like the discrete check, but computing each state's clearance (capped at the per-step
     /// displacement) and then certifying every interval between checked states.
     /// `motion`: clearances in units of the motion's parameter (then `disp` is 1).
+    #[allow(clippy::too_many_arguments)]
     fn check_certified(
         &self,
+        model: &dyn MotionModel,
         a: &[Real],
         b: &[Real],
         n: usize,
@@ -182,25 +195,25 @@ impl SpaceInfo {
         clear.clear();
         clear.resize(n + 1, 0.0);
         let outcome = (|| {
-            clear[n] = self.clearance_checked(m, b, cap);
+            clear[n] = self.clearance_checked(model, m, b, cap);
             if clear[n] == 0.0 {
                 scratch.copy_from_slice(b);
                 return Err(Invalid);
             }
             in_bisection_order(n, |i| {
                 self.interpolate(a, b, i as Real / n as Real, scratch);
-                clear[i] = self.clearance_checked(m, scratch, cap);
+                clear[i] = self.clearance_checked(model, m, scratch, cap);
                 if clear[i] == 0.0 {
                     Err(Invalid)
                 } else {
                     Ok(())
                 }
             })?;
-            clear[0] = self.clearance_checked(m, a, cap);
+            clear[0] = self.clearance_checked(model, m, a, cap);
             for i in 0..n {
                 if clear[i] + clear[i + 1] <= cap {
                     let (t0, t1) = (i as Real / n as Real, (i + 1) as Real / n as Real);
-                    self.certify(a, b, (t0, clear[i]), (t1, clear[i + 1]), disp, m, scratch, 0)?;
+                    self.certify(model, a, b, (t0, clear[i]), (t1, clear[i + 1]), disp, m, scratch, 0)?;
                 }
             }
             Ok(())
@@ -212,6 +225,7 @@ impl SpaceInfo {
     #[allow(clippy::too_many_arguments)]
     fn certify(
         &self,
+        model: &dyn MotionModel,
         a: &[Real],
         b: &[Real],
         lo: (Real, Real),
@@ -227,12 +241,12 @@ impl SpaceInfo {
         }
         let tm = 0.5 * (lo.0 + hi.0);
         self.interpolate(a, b, tm, scratch);
-        let cm = self.clearance_checked(m, scratch, span);
+        let cm = self.clearance_checked(model, m, scratch, span);
         if cm == 0.0 || depth >= MAX_DEPTH {
             return Err(Invalid);
         }
-        self.certify(a, b, lo, (tm, cm), disp, m, scratch, depth + 1)?;
-        self.certify(a, b, (tm, cm), hi, disp, m, scratch, depth + 1)
+        self.certify(model, a, b, lo, (tm, cm), disp, m, scratch, depth + 1)?;
+        self.certify(model, a, b, (tm, cm), hi, disp, m, scratch, depth + 1)
     }
 }
 
@@ -277,9 +291,10 @@ impl SpaceInfo {
     /// The motion check itself.
     fn check_motion_now(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Invalid> {
         let d = self.distance(a, b);
+        let model = self.motion_model();
         // More steps than can be checked (unreachable for states in bounds: `Problem` refuses
         // such a resolution): refuse the motion rather than check it more coarsely.
-        let Some(n) = self.validity.motion_steps(a, b, d, self.resolution) else {
+        let Some(n) = model.steps(a, b, d, self.resolution) else {
             self.interpolate(a, b, 0.5, scratch);
             return Err(Invalid);
         };
@@ -287,7 +302,7 @@ impl SpaceInfo {
             |e| if let Entry::Hit(h) = e { Some(*h) } else { None },
             Entry::Hit,
             Some(true),
-            || self.validity.sweep_hits(a, b),
+            || model.sweep_hits(&self.validity.workspace, a, b),
         );
         if self.stopped() {
             scratch.copy_from_slice(b);
@@ -304,9 +319,9 @@ impl SpaceInfo {
                 Ok(())
             }
             // Clearances in units of the motion: every constraint closes at most at rate 1.
-            None if self.validity.has_motion_clearance() => self.check_certified(a, b, n, 1.0, true, scratch),
-            None => match self.validity.displacement_bound(a, b) {
-                Some(disp) => self.check_certified(a, b, n, disp, false, scratch),
+            None if model.has_motion_clearance() => self.check_certified(model, a, b, n, 1.0, true, scratch),
+            None => match model.displacement_bound(a, b) {
+                Some(disp) => self.check_certified(model, a, b, n, disp, false, scratch),
                 None => self.check_discrete(a, b, n, scratch),
             },
         }

@@ -127,7 +127,7 @@ impl Problem {
         Ok(Problem {
             robot,
             scenario: sc.clone(),
-            si: SpaceInfo::new(space, Box::new(validity), sc.resolution),
+            si: SpaceInfo::new(space, validity, sc.resolution),
             start,
             goal,
             goal_tolerance: sc.goal_tolerance,

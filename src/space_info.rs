@@ -6,8 +6,9 @@ use crate::geometry::SensorPose;
 use crate::journal::{Entry, Journal};
 use crate::math::{Real, Vec2};
 use crate::rng::Rng;
+use crate::robot::{DiscreteOnly, MotionModel, OwnSampler, Sensor, Verdict, WorkspaceBody};
 use crate::space::StateSpace;
-use crate::validity::StateValidity;
+use crate::validity::RobotInWorkspace;
 use std::cell::{Cell, RefCell};
 
 /// When long work must stop: the run's time limit, as an instant (none: no limit). Loops that can
@@ -43,12 +44,20 @@ pub const CLOCK_EVERY: u64 = 256;
 pub const SLOW_LOOK_MS: f64 = 0.5;
 
 /// The state space, validity checker and motion resolution, with the count of state checks.
+///
+/// The robot's capabilities are asked for here ([`motion_model`](SpaceInfo::motion_model),
+/// [`own_sampler`](SpaceInfo::own_sampler), [`body`](SpaceInfo::body),
+/// [`sensor`](SpaceInfo::sensor)): `None` when the robot lacks one (a robot without a motion model
+/// has its motions checked discretely). Questions a planner decides by
+/// go through the counted, journalled methods ([`is_valid`](SpaceInfo::is_valid),
+/// [`sample`](SpaceInfo::sample), [`sees`](SpaceInfo::sees), motion checks); the capabilities'
+/// own methods are neither counted nor journalled.
 pub struct SpaceInfo {
     /// The state space.
     pub space: StateSpace,
     /// Largest step between two checked states along a motion, in the space's metric.
     pub resolution: Real,
-    pub(crate) validity: Box<dyn StateValidity>,
+    pub(crate) validity: RobotInWorkspace,
     pub(crate) checks: Cell<u64>,
     /// Scratch for the clearances along a motion (reused, so checking does not allocate).
     pub(crate) clearances: RefCell<Vec<Real>>,
@@ -70,7 +79,7 @@ pub struct SpaceInfo {
 
 impl SpaceInfo {
     /// A bundle over a space and validity checker.
-    pub fn new(space: StateSpace, validity: Box<dyn StateValidity>, resolution: Real) -> Self {
+    pub fn new(space: StateSpace, validity: RobotInWorkspace, resolution: Real) -> Self {
         SpaceInfo {
             space,
             resolution,
@@ -305,12 +314,19 @@ impl SpaceInfo {
     /// better). The checks the robot's sampler spends count as state checks.
     #[inline]
     pub fn sample(&self, rng: &mut Rng, out: &mut [Real]) {
-        let spent = if self.journal_on.get() {
-            self.sample_journalled(rng, out)
-        } else {
-            self.validity.sample(&self.space, rng, out)
-        };
+        let spent = if self.journal_on.get() { self.sample_journalled(rng, out) } else { self.sample_now(rng, out) };
         self.checks.set(self.checks.get() + spent);
+    }
+    /// A state from the robot's own sampler, else uniform; the checks it spent.
+    #[inline]
+    fn sample_now(&self, rng: &mut Rng, out: &mut [Real]) -> u64 {
+        match self.own_sampler() {
+            Some(own) => own.sample(&self.space, rng, out),
+            None => {
+                self.space.sample_uniform(rng, out);
+                0
+            }
+        }
     }
     fn sample_journalled(&self, rng: &mut Rng, out: &mut [Real]) -> u64 {
         let mut j = self.journal.borrow_mut();
@@ -330,7 +346,7 @@ impl SpaceInfo {
             self.space.sample_uniform(rng, out);
             return 0;
         }
-        let spent = self.validity.sample(&self.space, rng, out);
+        let spent = self.sample_now(rng, out);
         let mut j = self.journal.borrow_mut();
         let at = j.store(out);
         j.push(Entry::Sample { spent, at, rng: rng.clone() });
@@ -338,26 +354,61 @@ impl SpaceInfo {
         self.fresh_work(1);
         spent
     }
-    /// A Gaussian neighbour of `centre` (spread `sigma` × each coordinate's range) drawn the
-    /// robot's own way, when it has one (OMPL's `StateSampler::sampleGaussian`); `false`: the
-    /// generic per-coordinate neighbour applies.
-    pub fn sample_gaussian(&self, rng: &mut Rng, centre: &[Real], sigma: Real, out: &mut [Real]) -> bool {
-        self.validity.sample_gaussian(&self.space, rng, centre, sigma, out)
+    /// The robot's own sampler (OMPL's `StateSampler`), when it has one; `None`: samples are
+    /// uniform and Gaussian neighbours move each coordinate independently. Its draws are not
+    /// counted: planners sample through [`SpaceInfo::sample`] (and the run's sampler).
+    #[inline]
+    pub fn own_sampler(&self) -> Option<&dyn OwnSampler> {
+        self.validity.robot.sampler()
+    }
+    /// How the robot's motions are checked ([`DiscreteOnly`] when it has no model of its own).
+    /// Planners check motions through [`MotionValidator`](crate::motion::MotionValidator).
+    #[inline]
+    pub fn motion_model(&self) -> &dyn MotionModel {
+        self.validity.robot.motion().unwrap_or(&DiscreteOnly)
+    }
+    /// The robot as a mobile body in the workspace (workspace planners: hexagonal decomposition,
+    /// potential fields); `None` for robots that are not one.
+    #[inline]
+    pub fn body(&self) -> Option<&dyn WorkspaceBody> {
+        self.validity.robot.body()
+    }
+    /// The robot's sensor (inspection tasks), when it has one; what it sees is [`SpaceInfo::sees`].
+    #[inline]
+    pub fn sensor(&self) -> Option<&dyn Sensor> {
+        self.validity.robot.sensor()
+    }
+    /// The `robot.kind` of the scenario format (for messages).
+    pub fn robot_kind(&self) -> &'static str {
+        self.validity.robot.kind()
     }
     /// Where a state is drawn in the workspace.
     #[inline]
     pub fn project(&self, q: &[Real]) -> Vec2 {
-        self.validity.project(q)
+        self.validity.robot.project(q)
     }
-    /// The robot's sensor at `q`: where it is and which way it looks (inspection tasks).
+    /// The body's outline at `q`, as closed polygons (none for a point robot).
+    pub fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>> {
+        self.validity.robot.outline(q)
+    }
+    /// The workspace (for planners that plan in it rather than in configuration space, and for
+    /// the capabilities' methods that take it).
     #[inline]
-    pub fn sensor(&self, q: &[Real]) -> SensorPose {
-        self.validity.sensor(q)
+    pub fn workspace(&self) -> &crate::geometry::Workspace {
+        &self.validity.workspace
     }
-    /// The workspace, for planners that plan in it rather than in configuration space (cell
-    /// decomposition, potential fields). `None` for a space with no workspace behind it.
-    pub fn workspace(&self) -> Option<&crate::geometry::Workspace> {
-        self.validity.workspace()
+    /// Whether `q` is valid, and if not, why: **not** counted as a state check, not journalled
+    /// (for explanations and checks of a finished path, which decide nothing in the run).
+    pub fn verdict(&self, q: &[Real]) -> Verdict {
+        self.validity.verdict(q)
+    }
+    /// Whether `q` is valid, **not** counted as a state check and not journalled: for work that
+    /// counts its own checks (a potential field's clearances, inside one journalled answer) or that
+    /// is not part of a run (a configuration-space picture). Planners deciding by a state use
+    /// [`SpaceInfo::is_valid`].
+    #[inline]
+    pub fn is_valid_uncounted(&self, q: &[Real]) -> bool {
+        self.validity.is_valid(q)
     }
     /// What blocked the motion `a → b`, found invalid at `at`, for the explanation of a
     /// [`Collision`](crate::events::EventKind::Collision) event: the index of the obstacle the
@@ -367,24 +418,15 @@ impl SpaceInfo {
     /// unchecked: out of time, or too long to check). Not counted as a state check, not journalled:
     /// it asks nothing a planner decides by.
     pub fn blocker(&self, a: &[Real], b: &[Real], at: &[Real]) -> i64 {
-        use crate::robot::Verdict;
         match self.validity.verdict(at) {
             Verdict::Collision(i) => i as i64,
             Verdict::OutOfBounds(_) => -2,
             Verdict::Invalid(_) => -3,
-            Verdict::Valid => match (self.workspace(), self.validity.sweep_hits(a, b)) {
-                (Some(ws), Some(true)) => ws.segment_hit(self.project(a), self.project(b)).map_or(-1, |i| i as i64),
+            Verdict::Valid => match self.motion_model().sweep_hits(self.workspace(), a, b) {
+                Some(true) => self.workspace().segment_hit(self.project(a), self.project(b)).map_or(-1, |i| i as i64),
                 _ => -1,
             },
         }
-    }
-    /// The body's outline at `q`, as closed polygons (none for a point robot).
-    pub fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>> {
-        self.validity.outline(q)
-    }
-    /// The length and width of a mobile body (point: 0 × 0); `None` for robots that are not one.
-    pub fn body_size(&self) -> Option<(Real, Real)> {
-        self.validity.body_size()
     }
     /// Count `n` geometric tests as state checks (workspace planners test cells and steps rather
     /// than states; their tests are counted here so `checks` compares work across planners).
@@ -402,7 +444,7 @@ impl SpaceInfo {
                 |e| if let Entry::Sight(v) = e { Some(*v) } else { None },
                 Entry::Sight,
                 false,
-                || self.validity.sight_clear(pose.at, p),
+                || self.validity.workspace.sight_clear(pose.at, p),
             )
     }
 }

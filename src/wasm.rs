@@ -157,7 +157,7 @@ impl Scene {
                     d[0].lo + (i as f64 + 0.5) / n as f64 * (d[0].hi - d[0].lo),
                     d[1].lo + (j as f64 + 0.5) / n as f64 * (d[1].hi - d[1].lo),
                 ];
-                out.push(u8::from(si.validity.is_valid(&q)));
+                out.push(u8::from(si.is_valid_uncounted(&q)));
             }
         }
         out

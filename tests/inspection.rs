@@ -251,10 +251,10 @@ fn the_sensor_by_hand() {
     let up = Some(PI / 2.0);
     // The arm's sensor: the end effector, heading the sum of the joint angles. Links 80 along x,
     // 70 up, 40 along x, 40 up: the end effector at (120, 110), looking up.
-    let s = si.sensor(&[0.0, PI / 2.0, -PI / 2.0, PI / 2.0]);
+    let s = si.sensor().unwrap().pose(&[0.0, PI / 2.0, -PI / 2.0, PI / 2.0]);
     assert!((s.at.x - 120.0).abs() < 1e-9 && (s.at.y - 110.0).abs() < 1e-9, "{s:?}");
     assert!((s.heading.unwrap() - PI / 2.0).abs() < 1e-12);
-    let s = si.sensor(&sc.start);
+    let s = si.sensor().unwrap().pose(&sc.start);
     assert!((s.heading.unwrap() - (0.78 - 0.78)).abs() < 1e-12);
 
     // In the room, looking up: the top row's points 55 to 57 away, 5° and 15° off the heading.
@@ -289,7 +289,7 @@ fn the_sensor_by_hand() {
     // A point robot's sensor sees all around.
     let pt = point_scenario();
     let pp = Problem::from_scenario(&pt).unwrap();
-    let s = pp.si.sensor(&[0.1, 0.2]);
+    let s = pp.si.sensor().unwrap().pose(&[0.1, 0.2]);
     assert_eq!(s, SensorPose { at: v(0.1, 0.2), heading: None });
     assert!(pp.si.sees(&s, v(0.1, 0.1), fov, 0.15));
     assert!(!pp.si.sees(&s, v(0.1, 0.2 + 0.16), fov, 0.15));

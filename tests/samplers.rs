@@ -728,7 +728,8 @@ fn the_vehicle_chain_draws_gaussian_neighbours_that_stay_chains() {
             continue;
         }
         centres += 1;
-        assert!(si.sample_gaussian(&mut rng, &q, 0.05, &mut own), "the chain has its own neighbour");
+        let chain = si.own_sampler().expect("the chain has its own sampler");
+        chain.sample_gaussian(&si.space, &mut rng, &q, 0.05, &mut own);
         planarium::sampler::gaussian_coordinates(&si.space, &mut rng, &q, 0.05, &mut generic);
         own_valid += si.is_valid(&own) as usize;
         generic_valid += si.is_valid(&generic) as usize;

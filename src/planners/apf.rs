@@ -163,25 +163,20 @@ pub struct PotentialField {
     scratch: Vec<Real>,
 }
 
-/// Why this space is not a point or rigid robot's, for the error of `make`.
+/// The error of `make` for a robot that is not a body in the plane (it has no
+/// [`WorkspaceBody`](crate::robot::WorkspaceBody)).
 fn not_a_body(si: &SpaceInfo) -> String {
-    let n = si.dims();
-    let what = match si.space.metric {
-        Metric::Weighted { .. } => format!("a vehicle chain (asv), whose state is {n} numbers"),
-        _ => format!("an arm, whose state is {n} joint angles"),
-    };
-    format!("needs a point or rigid robot (this is {what}, not a body moving in the plane)")
+    let (kind, n) = (si.robot_kind(), si.dims());
+    let a = if kind.starts_with(['a', 'e', 'i', 'o', 'u']) { "an" } else { "a" };
+    format!("needs a point or rigid robot (this is {a} {kind} robot, whose state is {n} numbers, not a body moving in the plane)")
 }
 
 impl PotentialField {
     /// A potential-field planner for `task` with `params`; an error for robots that are not a
     /// point or a rigid body in a workspace.
     pub fn new(si: &SpaceInfo, task: &Task, params: &Params) -> Result<Self, String> {
-        if si.body_size().is_none() {
+        if si.body().is_none() {
             return Err(not_a_body(si));
-        }
-        if si.workspace().is_none() {
-            return Err("needs a point or rigid robot in a workspace (this space has none)".into());
         }
         let n = si.dims();
         let scale = (0..n)
@@ -318,7 +313,7 @@ impl PotentialField {
     /// The heat map's events (see the module documentation); not counted as checks.
     fn emit_field(&self, cx: &mut Context) {
         let n = self.field_grid;
-        let Some(ws) = cx.si.workspace() else { return };
+        let ws = cx.si.workspace();
         if n == 0 || !cx.events.enabled {
             return;
         }
@@ -463,8 +458,10 @@ impl PotentialField {
     }
 }
 
-/// The distance from the body at `q` to the nearest obstacle, capped at `cap`; 0 when `q` is
-/// invalid (in collision or out of bounds). Not counted as a check.
+/// The distance from the body at `q` to the nearest obstacle, capped at `cap`
+/// ([`WorkspaceBody::obstacle_clearance`](crate::robot::WorkspaceBody::obstacle_clearance)); 0
+/// when `q` is invalid (in collision or out of bounds). Not counted as a check (the descent counts
+/// its evaluations itself).
 /// (One answer of the batch journal: a bounded batch replays it rather than compute it again.)
 fn clearance(si: &SpaceInfo, q: &[Real], cap: Real) -> Real {
     si.journalled(
@@ -472,16 +469,11 @@ fn clearance(si: &SpaceInfo, q: &[Real], cap: Real) -> Real {
         Entry::Clear,
         0.0,
         || {
-            let Some(ws) = si.workspace() else { return 0.0 };
-            if !si.validity.is_valid(q) {
+            let Some(body) = si.body() else { return 0.0 };
+            if !si.is_valid_uncounted(q) {
                 return 0.0;
             }
-            let outline = si.outline(q);
-            if outline.is_empty() {
-                let p = si.project(q);
-                return ws.segment_clearance(p, p, cap);
-            }
-            outline.iter().map(|poly| ws.polygon_clearance(poly, cap)).fold(cap, Real::min)
+            body.obstacle_clearance(si.workspace(), q, cap)
         },
     )
 }

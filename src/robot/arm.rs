@@ -16,6 +16,7 @@
 //! force fine steps because the whole arm swings: on the 10-link horn, RRT-Connect's median checks
 //! fell from 24 254 (one displacement bound for the whole arm) to 3 904.
 
+use super::capability::{MotionModel, Sensor};
 use super::{Robot, Verdict};
 use crate::geometry::segment::{
     contains_segment_point, distance2_point_segment, distance_segment_segment, intersect_segment_segment,
@@ -325,6 +326,25 @@ impl Robot for ArmRobot {
     fn is_valid(&self, ws: &Workspace, q: &[Real]) -> bool {
         self.verdict_at(ws, q, true) == Verdict::Valid
     }
+    fn project(&self, q: &[Real]) -> Vec2 {
+        // The end effector (the last link's end).
+        self.with_points(q, |pts| pts[self.links.len()])
+    }
+    fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>> {
+        let mut pts = vec![Vec2::default(); self.point_count()];
+        self.joint_points(q, &mut pts);
+        vec![pts]
+    }
+    fn motion(&self) -> Option<&dyn MotionModel> {
+        Some(self)
+    }
+    fn sensor(&self) -> Option<&dyn Sensor> {
+        Some(self)
+    }
+}
+
+/// Motions are certified by clearances in units of the motion, each link at its own speed.
+impl MotionModel for ArmRobot {
     fn has_motion_clearance(&self) -> bool {
         true
     }
@@ -335,19 +355,13 @@ impl Robot for ArmRobot {
         }
         Some(self.clearance_at(ws, q, cap, &mut rates))
     }
-    fn project(&self, q: &[Real]) -> Vec2 {
-        // The end effector (the last link's end).
-        self.with_points(q, |pts| pts[self.links.len()])
-    }
-    /// The end effector (the last link's end, before any tip), looking along the last link: its
-    /// heading is the sum of the (relative) joint angles, as in the Technion course.
-    fn sensor(&self, q: &[Real]) -> SensorPose {
+}
+
+/// The end effector (the last link's end, before any tip), looking along the last link: its
+/// heading is the sum of the (relative) joint angles, as in the Technion course.
+impl Sensor for ArmRobot {
+    fn pose(&self, q: &[Real]) -> SensorPose {
         let heading = q[..self.links.len()].iter().sum();
         SensorPose { at: self.project(q), heading: Some(heading) }
-    }
-    fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>> {
-        let mut pts = vec![Vec2::default(); self.point_count()];
-        self.joint_points(q, &mut pts);
-        vec![pts]
     }
 }

@@ -1,5 +1,6 @@
+use super::capability::{all_around, MotionModel, Sensor, WorkspaceBody};
 use super::{xy_dims, xy_in_bounds, Robot, Verdict};
-use crate::geometry::Workspace;
+use crate::geometry::{SensorPose, Workspace};
 use crate::math::{Real, Vec2};
 use crate::space::{Metric, StateSpace};
 
@@ -8,9 +9,6 @@ use crate::space::{Metric, StateSpace};
 pub struct PointRobot;
 
 impl Robot for PointRobot {
-    fn body_size(&self) -> Option<(Real, Real)> {
-        Some((0.0, 0.0))
-    }
     fn kind(&self) -> &'static str {
         "point"
     }
@@ -35,10 +33,40 @@ impl Robot for PointRobot {
     fn project(&self, q: &[Real]) -> Vec2 {
         Vec2::new(q[0], q[1])
     }
+    fn outline(&self, _q: &[Real]) -> Vec<Vec<Vec2>> {
+        Vec::new()
+    }
+    fn motion(&self) -> Option<&dyn MotionModel> {
+        Some(self)
+    }
+    fn body(&self) -> Option<&dyn WorkspaceBody> {
+        Some(self)
+    }
+    fn sensor(&self) -> Option<&dyn Sensor> {
+        Some(self)
+    }
+}
+
+/// A motion is a segment, tested exactly.
+impl MotionModel for PointRobot {
     fn sweep_hits(&self, ws: &Workspace, a: &[Real], b: &[Real]) -> Option<bool> {
         Some(ws.segment_hits(Vec2::new(a[0], a[1]), Vec2::new(b[0], b[1])))
     }
-    fn outline(&self, _q: &[Real]) -> Vec<Vec<Vec2>> {
-        Vec::new()
+}
+
+impl WorkspaceBody for PointRobot {
+    fn size(&self) -> (Real, Real) {
+        (0.0, 0.0)
+    }
+    fn obstacle_clearance(&self, ws: &Workspace, q: &[Real], cap: Real) -> Real {
+        let p = self.project(q);
+        ws.segment_clearance(p, p, cap)
+    }
+}
+
+/// At the point, seeing all around.
+impl Sensor for PointRobot {
+    fn pose(&self, q: &[Real]) -> SensorPose {
+        all_around(self.project(q))
     }
 }

@@ -1,3 +1,4 @@
+use super::capability::{MotionModel, Sensor, WorkspaceBody};
 use super::{xy_dims, xy_in_bounds, Robot, Verdict};
 use crate::geometry::{SensorPose, Workspace};
 use crate::math::{self, MinMax, Real, Vec2, PI};
@@ -70,11 +71,6 @@ impl RigidRobot {
 }
 
 impl Robot for RigidRobot {
-    fn body_size(&self) -> Option<(Real, Real)> {
-        let l = self.footprint.iter().map(|p| p.x.abs()).fold(0.0, Real::max);
-        let w = self.footprint.iter().map(|p| p.y.abs()).fold(0.0, Real::max);
-        Some((2.0 * l, 2.0 * w))
-    }
     fn kind(&self) -> &'static str {
         "rigid"
     }
@@ -94,6 +90,27 @@ impl Robot for RigidRobot {
     fn is_valid(&self, ws: &Workspace, q: &[Real]) -> bool {
         self.verdict_at(ws, q, true) == Verdict::Valid
     }
+    fn project(&self, q: &[Real]) -> Vec2 {
+        Vec2::new(q[0], q[1])
+    }
+    fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>> {
+        let mut body = vec![Vec2::default(); self.footprint.len()];
+        self.place(q, &mut body);
+        vec![body]
+    }
+    fn motion(&self) -> Option<&dyn MotionModel> {
+        Some(self)
+    }
+    fn body(&self) -> Option<&dyn WorkspaceBody> {
+        Some(self)
+    }
+    fn sensor(&self) -> Option<&dyn Sensor> {
+        Some(self)
+    }
+}
+
+/// Motions are certified by clearances and a bound on how far a body point moves.
+impl MotionModel for RigidRobot {
     fn clearance(&self, ws: &Workspace, q: &[Real], cap: Real) -> Option<Real> {
         if xy_in_bounds(ws, q).is_some() {
             return Some(0.0);
@@ -125,16 +142,22 @@ impl Robot for RigidRobot {
                 + self.radius * crate::math::angle_diff(a[2], b[2]).abs(),
         )
     }
-    /// At the body origin, looking along the body's x axis (heading θ).
-    fn sensor(&self, q: &[Real]) -> SensorPose {
+}
+
+impl WorkspaceBody for RigidRobot {
+    fn size(&self) -> (Real, Real) {
+        let l = self.footprint.iter().map(|p| p.x.abs()).fold(0.0, Real::max);
+        let w = self.footprint.iter().map(|p| p.y.abs()).fold(0.0, Real::max);
+        (2.0 * l, 2.0 * w)
+    }
+    fn obstacle_clearance(&self, ws: &Workspace, q: &[Real], cap: Real) -> Real {
+        self.outline(q).iter().map(|poly| ws.polygon_clearance(poly, cap)).fold(cap, Real::min)
+    }
+}
+
+/// At the body origin, looking along the body's x axis (heading θ).
+impl Sensor for RigidRobot {
+    fn pose(&self, q: &[Real]) -> SensorPose {
         SensorPose { at: Vec2::new(q[0], q[1]), heading: Some(q[2]) }
-    }
-    fn project(&self, q: &[Real]) -> Vec2 {
-        Vec2::new(q[0], q[1])
-    }
-    fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>> {
-        let mut body = vec![Vec2::default(); self.footprint.len()];
-        self.place(q, &mut body);
-        vec![body]
     }
 }

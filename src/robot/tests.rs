@@ -65,7 +65,7 @@ mod arm {
     use crate::scenario::Scenario;
 
     /// A 3-link arm (0.3, 0.2, 0.1) at (0.5, 0.5) beside a wall; `robot_extra` adds robot keys.
-    fn problem(robot_extra: &str) -> Problem {
+    pub(super) fn problem(robot_extra: &str) -> Problem {
         let text = format!(
             r#"{{"bounds": [0, 0, 1, 1], "obstacles": [{{"rect": [0.85, 0.0, 0.95, 0.4]}}],
                 "robot": {{"kind": "arm", "base": [0.5, 0.5], "links": [0.3, 0.2, 0.1]{robot_extra}}},
@@ -137,5 +137,79 @@ mod arm {
         assert!(p.si.check_motion(&[0.0], &[0.6], &mut s).is_err());
         assert!((s[0] - 0.3).abs() < 0.05, "found near the post: {s:?}");
         assert!(p.si.check_motion(&[0.0], &[0.2], &mut s).is_ok(), "stopping short of it is fine");
+    }
+}
+
+mod capabilities {
+    use super::super::*;
+    use super::{bar, ws};
+    use crate::motion::MotionValidator;
+    use crate::planners::{self, Params, Task};
+    use crate::space_info::SpaceInfo;
+    use crate::validity::RobotInWorkspace;
+    use std::rc::Rc;
+
+    /// A point with only the core: no motion model, sampler, body or sensor.
+    #[derive(Debug)]
+    struct Bare;
+
+    impl Robot for Bare {
+        fn kind(&self) -> &'static str {
+            "bare"
+        }
+        fn space(&self, ws: &Workspace) -> StateSpace {
+            PointRobot.space(ws)
+        }
+        fn external_dims(&self) -> usize {
+            2
+        }
+        fn verdict(&self, ws: &Workspace, q: &[Real]) -> Verdict {
+            PointRobot.verdict(ws, q)
+        }
+        fn project(&self, q: &[Real]) -> Vec2 {
+            Vec2::new(q[0], q[1])
+        }
+        fn outline(&self, _q: &[Real]) -> Vec<Vec<Vec2>> {
+            Vec::new()
+        }
+    }
+
+    fn si(robot: Rc<dyn Robot>) -> SpaceInfo {
+        let workspace = ws();
+        SpaceInfo::new(robot.space(&workspace), RobotInWorkspace { robot, workspace }, 0.01)
+    }
+
+    #[test]
+    fn each_robot_has_what_the_table_says() {
+        let has =
+            |r: &dyn Robot| (r.motion().is_some(), r.sampler().is_some(), r.body().is_some(), r.sensor().is_some());
+        assert_eq!(has(&PointRobot), (true, false, true, true));
+        assert_eq!(has(&bar()), (true, false, true, true));
+        let arm = ArmRobot::from_spec(&super::arm::problem("").scenario.robot).unwrap();
+        assert_eq!(has(&arm), (true, false, false, true));
+        let spec = RobotSpec::Asv { count: 3, broom: 0.05, min_area: 0.0, convex: true, max_step: 0.001 };
+        assert_eq!(has(&AsvRobot::from_spec(&spec).unwrap()), (true, true, false, true));
+        assert_eq!(has(&Bare), (false, false, false, false));
+        assert_eq!(bar().size(), (0.2, 0.03));
+    }
+
+    #[test]
+    fn a_robot_with_only_the_core_plans_with_discrete_checks_and_is_refused_where_it_lacks_a_capability() {
+        let si = si(Rc::new(Bare));
+        assert!(si.body().is_none() && si.sensor().is_none() && si.own_sampler().is_none());
+        let mut s = [0.0; 2];
+        // Discrete checks only: every state at the resolution counted, nothing more.
+        let (a, b) = ([0.1, 0.5], [0.2, 0.5]);
+        assert!(si.check_motion(&a, &b, &mut s).is_ok());
+        assert_eq!(si.checks(), DiscreteOnly.steps(&a, &b, si.distance(&a, &b), 0.01).unwrap() as u64);
+        assert!(si.check_motion(&[0.1, 0.5], &[0.9, 0.2], &mut s).is_err(), "through the wall");
+        let task = Task { start: vec![0.1, 0.5], goal: Some(vec![0.9, 0.5]), goal_tolerance: 0.0, inspection: None };
+        for name in ["potential-field", "hex-potential", "inspection"] {
+            let spec = planners::find(name).unwrap();
+            let err = (spec.make)(&si, &task, &Params::defaults(spec)).err().expect(name);
+            assert!(err.contains("bare") || err.contains("needs a point"), "{name}: {err}");
+        }
+        let rrt = planners::find("rrt").unwrap();
+        assert!((rrt.make)(&si, &task, &Params::defaults(rrt)).is_ok());
     }
 }

@@ -205,12 +205,12 @@ impl Draw<'_> {
     /// reflected back into its bounds.
     ///
     /// A robot whose coordinates are not independent (the vehicle chain, whose turns must keep
-    /// the polygon convex) moves them its own way: see [`SpaceInfo::sample_gaussian`].
+    /// the polygon convex) moves them its own way: see [`SpaceInfo::own_sampler`].
     fn gaussian_near(&mut self, centre: &[Real], sigma: Real, out: &mut [Real]) {
-        if self.si.sample_gaussian(self.rng, centre, sigma, out) {
-            return;
+        match self.si.own_sampler() {
+            Some(own) => own.sample_gaussian(&self.si.space, self.rng, centre, sigma, out),
+            None => gaussian_coordinates(&self.si.space, self.rng, centre, sigma, out),
         }
-        gaussian_coordinates(&self.si.space, self.rng, centre, sigma, out);
     }
 }
 

@@ -211,7 +211,7 @@ pub fn primitive_steps(problem: &Problem, path: &[Vec<Real>]) -> Result<Vec<Vec<
     let robot = &problem.robot;
     let si = &problem.si;
     let check = |q: &[Real]| -> Result<(), String> {
-        match si.validity.verdict(q) {
+        match si.verdict(q) {
             crate::robot::Verdict::Valid => Ok(()),
             v => Err(format!("the path has an invalid state ({v:?}) at {:?}", robot.decode(q))),
         }
@@ -222,8 +222,9 @@ pub fn primitive_steps(problem: &Problem, path: &[Vec<Real>]) -> Result<Vec<Vec<
     for w in path.windows(2) {
         let (a, b) = (&w[0], &w[1]);
         // The same states `SpaceInfo::check_motion` checked: i/n of the way for i in 1..n, then b.
-        let n = robot
-            .motion_steps(a, b, si.distance(a, b), si.resolution)
+        let n = si
+            .motion_model()
+            .steps(a, b, si.distance(a, b), si.resolution)
             .ok_or("a motion of the path has too many primitive steps to write")?;
         if configs.len().saturating_add(n) > crate::limits::MAX_SOLUTION_STEPS {
             return Err(format!("the solution would have more than {} steps", crate::limits::MAX_SOLUTION_STEPS));

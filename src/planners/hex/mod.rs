@@ -125,8 +125,9 @@ pub struct HexPotential {
 impl HexPotential {
     /// The planner for `task`; an error names a robot it cannot plan for.
     pub fn new(si: &SpaceInfo, task: &Task, params: &Params) -> Result<HexPotential, String> {
-        let ws = si.workspace().ok_or("this problem has no workspace to decompose")?.clone();
-        let (l, w) = si.body_size().ok_or("needs a point or a rigid robot (a body that drives along its heading)")?;
+        let body = si.body().ok_or("needs a point or a rigid robot (a body that drives along its heading)")?;
+        let (l, w) = body.size();
+        let ws = si.workspace().clone();
         let t = (l * l + w * w).sqrt();
         let b = ws.bounds;
         let short = (b.max.x - b.min.x).min(b.max.y - b.min.y);

@@ -16,7 +16,8 @@
 //! is allowed (the closing edge is not a broom).
 //!
 //! Motions are checked so that no vehicle moves more than `max_step` between two checked states
-//! ([`AsvRobot::motion_steps`], from a bound on every vehicle's speed proved in [`motion_bound`]),
+//! (its [`MotionModel::steps`](super::MotionModel::steps), from a bound on every vehicle's speed
+//! proved in [`motion_bound`]),
 //! and then **certified** as the rigid body's are (`motion.rs`): each checked state's clearance
 //! says how far every vehicle may move with the state staying valid, and intervals whose end
 //! clearances do not cover the movement between them are bisected. So every state along an
@@ -28,8 +29,9 @@
 mod rules;
 mod sampler;
 
+use super::capability::{all_around, MotionModel, OwnSampler, Sensor};
 use super::{Robot, Verdict};
-use crate::geometry::Workspace;
+use crate::geometry::{SensorPose, Workspace};
 use crate::math::{angle_diff, wrap_angle, MinMax, Real, Vec2, PI};
 use crate::scenario::RobotSpec;
 use crate::space::{Dim, Metric, StateSpace};
@@ -282,6 +284,40 @@ impl Robot for AsvRobot {
     fn verdict(&self, ws: &Workspace, q: &[Real]) -> Verdict {
         self.with_chain(q, |pts| self.verdict_of(ws, &q[3..], pts))
     }
+    fn project(&self, q: &[Real]) -> Vec2 {
+        Vec2::new(q[0], q[1])
+    }
+    fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>> {
+        self.with_chain(q, |pts| vec![pts.to_vec()])
+    }
+    fn motion(&self) -> Option<&dyn MotionModel> {
+        Some(self)
+    }
+    fn sampler(&self) -> Option<&dyn OwnSampler> {
+        Some(self)
+    }
+    fn sensor(&self) -> Option<&dyn Sensor> {
+        Some(self)
+    }
+}
+
+/// No vehicle moves more than `max_step` between checked states; motions are certified by
+/// clearances and a bound on how far a vehicle moves.
+impl MotionModel for AsvRobot {
+    fn steps(&self, a: &[Real], b: &[Real], _d: Real, _resolution: Real) -> Option<usize> {
+        // A hair of slack for rounding in the bound.
+        crate::limits::steps(self.bound(a, b) * (1.0 + 1e-9), self.max_step, crate::limits::MAX_MOTION_STEPS)
+    }
+    fn clearance(&self, ws: &Workspace, q: &[Real], cap: Real) -> Option<Real> {
+        Some(self.with_chain(q, |pts| self.clearance_of(ws, &q[3..], pts, cap)))
+    }
+    fn displacement_bound(&self, a: &[Real], b: &[Real]) -> Option<Real> {
+        Some(self.bound(a, b))
+    }
+}
+
+/// Uniform chains are almost never valid: the chain draws its own (the `sampler` module).
+impl OwnSampler for AsvRobot {
     fn sample(&self, space: &StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) -> u64 {
         sampler::sample(self, space, rng, out)
     }
@@ -292,25 +328,15 @@ impl Robot for AsvRobot {
         centre: &[Real],
         sigma: Real,
         out: &mut [Real],
-    ) -> bool {
+    ) {
         sampler::sample_gaussian(self, space, rng, centre, sigma, out);
-        true
     }
-    fn motion_steps(&self, a: &[Real], b: &[Real], _d: Real, _resolution: Real) -> Option<usize> {
-        // A hair of slack for rounding in the bound.
-        crate::limits::steps(self.bound(a, b) * (1.0 + 1e-9), self.max_step, crate::limits::MAX_MOTION_STEPS)
-    }
-    fn clearance(&self, ws: &Workspace, q: &[Real], cap: Real) -> Option<Real> {
-        Some(self.with_chain(q, |pts| self.clearance_of(ws, &q[3..], pts, cap)))
-    }
-    fn displacement_bound(&self, a: &[Real], b: &[Real]) -> Option<Real> {
-        Some(self.bound(a, b))
-    }
-    fn project(&self, q: &[Real]) -> Vec2 {
-        Vec2::new(q[0], q[1])
-    }
-    fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>> {
-        self.with_chain(q, |pts| vec![pts.to_vec()])
+}
+
+/// At the centroid, seeing all around.
+impl Sensor for AsvRobot {
+    fn pose(&self, q: &[Real]) -> SensorPose {
+        all_around(self.project(q))
     }
 }
 

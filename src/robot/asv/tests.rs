@@ -87,8 +87,8 @@ fn no_vehicle_moves_more_than_max_step_between_checked_states() {
         let mut near = vec![0.0; 8];
         space.interpolate(&a, &b, 0.1, &mut near);
         for (a, b) in [(&a, &b), (&a, &near)] {
-            let n = r.motion_steps(a, b, 0.0, 0.0).expect("a motion in bounds has a step count");
-            assert_eq!(Some(n), r.motion_steps(b, a, 0.0, 0.0), "the same steps both ways");
+            let n = r.steps(a, b, 0.0, 0.0).expect("a motion in bounds has a step count");
+            assert_eq!(Some(n), r.steps(b, a, 0.0, 0.0), "the same steps both ways");
             let bound = r.displacement_bound(a, b).unwrap();
             prev.copy_from_slice(a);
             // Every step, and every point within it (checked 4 times finer), moves no vehicle

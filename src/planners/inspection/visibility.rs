@@ -1,0 +1,64 @@
+//! What the robot's sensor sees: at a state, and along a motion at the motion resolution. Each
+//! is one unit of the batch journal.
+
+use super::bits::{count, has, set, Bits};
+use crate::math::{Real, Vec2};
+use crate::space_info::SpaceInfo;
+
+/// What the robot's sensor must see for one task: the points, the field of view and the range.
+#[derive(Clone, Debug)]
+pub(super) struct Visibility {
+    pub(super) points: Vec<Vec2>,
+    pub(super) fov: Real,
+    pub(super) range: Real,
+}
+
+impl Visibility {
+    /// Set in `out` every point not in `skip` or `out` that the sensor sees at `q`.
+    /// (One unit of the batch journal: a bounded batch replays it without looking again.)
+    pub(super) fn look(&self, si: &SpaceInfo, q: &[Real], skip: &Bits, out: &mut Bits) {
+        si.journalled_bits(0, out, |out| {
+            // A robot without a sensor sees nothing (the planner refuses it).
+            let Some(sensor) = si.sensor() else { return };
+            let pose = sensor.pose(q);
+            for (j, p) in self.points.iter().enumerate() {
+                if !has(skip, j) && !has(out, j) && si.sees(&pose, *p, self.fov, self.range) {
+                    set(out, j);
+                }
+            }
+        })
+    }
+
+    /// Set in `out` (cleared first) every point not in `skip` that the sensor sees along the motion
+    /// `a → b`, at every state at most the motion resolution apart, `b` included and `a` excluded
+    /// (its own are its branch's).
+    /// (One unit of the batch journal, like [`Visibility::look`].)
+    pub(super) fn sweep(&self, si: &SpaceInfo, a: &[Real], b: &[Real], skip: &Bits, out: &mut Bits, buf: &mut [Real]) {
+        si.journalled_bits(1, out, |out| self.sweep_now(si, a, b, skip, out, buf))
+    }
+
+    fn sweep_now(&self, si: &SpaceInfo, a: &[Real], b: &[Real], skip: &Bits, out: &mut Bits, buf: &mut [Real]) {
+        out.fill(0);
+        let n = self.points.len();
+        if count(skip) as usize == n {
+            return;
+        }
+        // At most `MAX_MOTION_STEPS` (the problem's resolution check), each looking at every
+        // point: the run's deadline is looked at as it goes.
+        let Some(steps) = crate::limits::steps(si.distance(a, b), si.resolution, crate::limits::MAX_MOTION_STEPS)
+        else {
+            return;
+        };
+        for i in 1..=steps {
+            if si.tick(n as u64 + 1) {
+                return;
+            }
+            if i == steps {
+                buf.copy_from_slice(b);
+            } else {
+                si.interpolate(a, b, i as Real / steps as Real, buf);
+            }
+            self.look(si, buf, skip, out);
+        }
+    }
+}
