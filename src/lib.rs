@@ -31,6 +31,7 @@ pub mod limits;
 pub mod math;
 pub mod motion;
 pub mod nn;
+pub mod params;
 pub mod planners;
 pub mod problem;
 pub mod rng;

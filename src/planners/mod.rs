@@ -14,7 +14,8 @@ pub mod rrt;
 pub mod smoothing;
 pub mod tree;
 
-pub use params::{ParamKind, ParamSpec, Params};
+pub use crate::params::{ParamGroup, ParamKind, ParamSpec};
+pub use params::Params;
 pub use tree::{PlannerData, Tree};
 
 use crate::events::{EventKind, EventLog};
@@ -207,17 +208,6 @@ pub struct PlannerSpec {
     /// Construct it for a task; an error says why it cannot plan for this problem (a robot it
     /// does not handle).
     pub make: MakePlanner,
-}
-
-/// A named group of parameters shared by several planners.
-#[derive(Clone, Copy, Debug)]
-pub struct ParamGroup {
-    /// Name (JSON).
-    pub name: &'static str,
-    /// Title in the page.
-    pub label: &'static str,
-    /// The parameters.
-    pub params: &'static [ParamSpec],
 }
 
 impl PlannerSpec {
