@@ -235,6 +235,23 @@ pub fn names() -> Vec<&'static str> {
     REGISTRY.iter().map(|p| p.name).collect()
 }
 
+/// The planner a scenario's planner block names (`"planner": {"name": ...}`), or the error for the
+/// block's `name` key. With [`check_block_params`], the planner side of the block's validation: the
+/// scenario parses the block's form and asks here about what only the registry knows.
+pub fn block_planner(name: &str) -> Result<&'static PlannerSpec, String> {
+    find(name)
+        .ok_or_else(|| format!("unknown planner \"{}\" (known: {})", crate::limits::cut(name, 100), names().join(", ")))
+}
+
+/// Check a scenario's planner block's parameters (the block without `name` and `seed`) against
+/// `spec`'s; an error is `(key, message)`, the key relative to the block.
+pub fn check_block_params(
+    spec: &'static PlannerSpec,
+    params: &serde_json::Map<String, serde_json::Value>,
+) -> Result<(), (String, String)> {
+    Params::from_json(spec, &serde_json::Value::Object(params.clone())).map(|_| ())
+}
+
 /// The registry as JSON (for the page's planner picker and parameter panel).
 pub fn registry_json() -> String {
     let list: Vec<serde_json::Value> = REGISTRY
