@@ -118,8 +118,8 @@ pub fn parse_setups(text: &str) -> Result<String, JsError> {
 /// writes the CLI's `bench --csv/--json-file/--ompl-log`. Errors are plain messages.
 #[wasm_bindgen]
 pub fn bench_export(report_json: &str, format: &str) -> Result<String, JsError> {
-    let report = crate::run::export::from_json(report_json).map_err(|e| JsError::new(&e))?;
-    crate::run::export::render(&report, format).map_err(|e| JsError::new(&e))
+    let report = crate::run::report::from_json(report_json).map_err(|e| JsError::new(&e))?;
+    crate::run::report::render(&report, format).map_err(|e| JsError::new(&e))
 }
 
 /// A validated scenario: its normalised JSON and the robot's outlines.

@@ -1,11 +1,11 @@
-//! Benchmark exports: the CSV, JSON and OMPL benchmark log written by `run::export` read back to
+//! Benchmark exports: the CSV, JSON and OMPL benchmark log written by `run::report` read back to
 //! the per-run statistics, through small readers written here (an RFC 4180 CSV reader, and an OMPL
 //! log reader following `readBenchmarkLog` of OMPL's `scripts/ompl_benchmark_statistics.py`), and
 //! the CLI's `bench --csv --json-file --ompl-log` files equal to the library's for the same seeds.
 
 use planarium::planners::{self, Params};
 use planarium::run::bench::{self, PlannerBench};
-use planarium::run::export::{self, BenchReport, RunRow, SetupReport};
+use planarium::run::report::{self, BenchReport, RunRow, SetupReport};
 use planarium::scenario::builtin;
 use std::collections::BTreeMap;
 
@@ -312,7 +312,7 @@ fn the_report_holds_every_run_and_the_benches_summaries() {
 fn csv_reads_back_to_the_per_run_stats() {
     let benches = benches();
     let r = report(&benches);
-    let text = export::to_csv(&r);
+    let text = report::to_csv(&r);
     assert!(text.ends_with("\r\n") && !text.replace("\r\n", "").contains('\n'), "RFC 4180 line breaks");
     let records = read_csv(&text);
     assert_eq!(
@@ -367,7 +367,7 @@ fn csv_quotes_as_rfc_4180_asks() {
             rows: vec![row],
         }],
     };
-    let text = export::to_csv(&r);
+    let text = report::to_csv(&r);
     assert!(text.contains("\"bridge, \"\"tuned\"\"\nσ 0.02\",rrt,3,false,time_limit,1.5,2,3,4,,\r\n"), "{text}");
     let records = read_csv(&text);
     assert_eq!(records.len(), 2);
@@ -379,12 +379,12 @@ fn csv_quotes_as_rfc_4180_asks() {
 fn json_round_trips_and_carries_the_summaries() {
     let benches = benches();
     let r = report(&benches);
-    let text = export::to_json(&r);
-    let back = export::from_json(&text).unwrap();
+    let text = report::to_json(&r);
+    let back = report::from_json(&text).unwrap();
     assert_same_report(&back, &r);
     // Written again, the JSON reads back to the same report (and, with exact float parsing, the
     // same text).
-    assert_same_report(&export::from_json(&export::to_json(&back)).unwrap(), &r);
+    assert_same_report(&report::from_json(&report::to_json(&back)).unwrap(), &r);
     let v: serde_json::Value = serde_json::from_str(&text).unwrap();
     assert_eq!(v["scenario_id"], "narrow");
     assert_eq!(v["date"], DATE);
@@ -411,11 +411,11 @@ fn from_json_takes_the_pages_minimal_report_and_says_what_is_wrong() {
     let minimal = r#"{"scenario": "Narrow passage", "time_limit_s": 5, "setups": [{"label": "a", "planner": "rrt",
         "rows": [{"seed": 1, "solved": true, "status": "solved", "time_ms": 2.5, "iterations": 10, "nodes": 8, "checks": 99, "cost": 1.5, "smoothed_cost": 1.2},
                  {"seed": 2, "solved": false, "status": "time_limit", "time_ms": 5000, "iterations": 10, "nodes": 8, "checks": 99, "cost": null}]}]}"#;
-    let r = export::from_json(minimal).unwrap();
+    let r = report::from_json(minimal).unwrap();
     assert_eq!((r.runs, r.scenario_id.as_str(), r.setups[0].rows[1].smoothed_cost), (2, "", None));
     assert_eq!(r.setups[0].summary().success_rate, 0.5);
-    for format in export::FORMATS {
-        assert!(!export::render(&r, format).unwrap().is_empty());
+    for format in report::FORMATS {
+        assert!(!report::render(&r, format).unwrap().is_empty());
     }
     let bad = [
         (minimal.replace("\"time_limit\"", "\"timeout\""), "setups[0].rows[1].status: unknown status \"timeout\""),
@@ -431,10 +431,10 @@ fn from_json_takes_the_pages_minimal_report_and_says_what_is_wrong() {
         ("[1, 2]".to_string(), "bench report:"),
     ];
     for (text, want) in bad {
-        let e = export::from_json(&text).unwrap_err();
+        let e = report::from_json(&text).unwrap_err();
         assert!(e.starts_with("bench report: ") && e.contains(want), "{e} (wanted: {want})");
     }
-    let e = export::render(&r, "xml").unwrap_err();
+    let e = report::render(&r, "xml").unwrap_err();
     assert_eq!(e, "unknown export format \"xml\" (known: csv, json, ompl, table)");
 }
 
@@ -442,7 +442,7 @@ fn from_json_takes_the_pages_minimal_report_and_says_what_is_wrong() {
 fn the_ompl_log_parses_and_holds_the_stats() {
     let benches = benches();
     let r = report(&benches);
-    let log = read_ompl_log(&export::to_ompl_log(&r));
+    let log = read_ompl_log(&report::to_ompl_log(&r));
     assert_eq!(log.version, format!("Planarium {}", env!("CARGO_PKG_VERSION")));
     assert_eq!((log.experiment.as_str(), log.host.as_str(), log.date.as_str()), ("Narrow_passage", "test_host", DATE));
     assert!(
@@ -498,7 +498,7 @@ fn ompl_names_are_single_words_and_unique() {
     r.setups[1].label = "near-collision tuned (p 3; σ 0.005)".into();
     r.setups[2].label = "near-collision tuned (p 3| σ 0.005)".into();
     r.setups[0].params.insert("sampler".into(), "bridge".into());
-    let text = export::to_ompl_log(&r);
+    let text = report::to_ompl_log(&r);
     let log = read_ompl_log(&text);
     assert_eq!((log.experiment.as_str(), log.host.as_str()), ("My__scene__v2", "lab_machine_3"));
     let names: Vec<&str> = log.planners.iter().map(|p| p.name.as_str()).collect();
@@ -517,7 +517,7 @@ fn ompl_names_are_single_words_and_unique() {
 fn the_course_table_shows_the_summaries() {
     let benches = benches();
     let r = report(&benches);
-    let t = export::course_table(&r);
+    let t = report::course_table(&r);
     let lines: Vec<&str> = t.lines().collect();
     assert_eq!(lines.len(), 2 + 3);
     assert!(lines[0]
@@ -532,7 +532,7 @@ fn the_course_table_shows_the_summaries() {
         let cost = if b.summary.cost.n == 0 { "—".to_string() } else { format!("{:.4}", b.summary.cost.mean) };
         assert_eq!(cells[11], cost);
     }
-    assert_eq!(export::render(&r, "table").unwrap(), t);
+    assert_eq!(report::render(&r, "table").unwrap(), t);
 }
 
 #[test]
@@ -544,7 +544,7 @@ fn utc_timestamps_follow_the_civil_calendar() {
         (4_102_444_799, "2099-12-31T23:59:59Z"),
         (253_402_300_799, "9999-12-31T23:59:59Z"),
     ] {
-        assert_eq!(export::utc_timestamp(secs), want);
+        assert_eq!(report::utc_timestamp(secs), want);
     }
 }
 
@@ -615,7 +615,7 @@ fn the_cli_writes_the_same_three_formats() {
 
     let lib = report(&benches());
     // JSON: the same report, up to what the clock decides.
-    let cli = export::from_json(&json_text).unwrap();
+    let cli = report::from_json(&json_text).unwrap();
     let date = cli.date.as_bytes();
     assert!(cli.date.len() == 20 && date[4] == b'-' && date[10] == b'T' && date[19] == b'Z', "{}", cli.date);
     assert!(!cli.host.is_empty());
@@ -632,10 +632,10 @@ fn the_cli_writes_the_same_three_formats() {
             })
             .collect::<Vec<_>>()
     };
-    assert_eq!(drop_time(&csv_text), drop_time(&export::to_csv(&lib)));
+    assert_eq!(drop_time(&csv_text), drop_time(&report::to_csv(&lib)));
     // OMPL log: the same log but times, date and host.
     assert_eq!(
         ompl_without_times(read_ompl_log(&log_text)),
-        ompl_without_times(read_ompl_log(&export::to_ompl_log(&lib)))
+        ompl_without_times(read_ompl_log(&report::to_ompl_log(&lib)))
     );
 }

@@ -6,7 +6,7 @@
 use clap::{Arg, ArgAction, ArgMatches, Command};
 use planarium::planners::{self, Params, PlannerSpec};
 use planarium::problem::Problem;
-use planarium::run::{bench, export, RunConfig, Session};
+use planarium::run::{bench, report, RunConfig, Session};
 use planarium::scenario::{self, Scenario};
 use std::process::ExitCode;
 
@@ -284,16 +284,16 @@ fn run_bench(m: &ArgMatches) -> Result<(), String> {
     let scenario_id =
         if path.exists() { path.file_stem().and_then(|s| s.to_str()).unwrap_or(scenario_arg) } else { scenario_arg }
             .to_string();
-    let report = export::BenchReport::new(&sc.name, &scenario_id, &now_utc(), &host_name(), &rows);
+    let report = report::BenchReport::new(&sc.name, &scenario_id, &now_utc(), &host_name(), &rows);
     for (flag, format) in [("csv", "csv"), ("json-file", "json"), ("ompl-log", "ompl")] {
         if let Some(file) = m.get_one::<String>(flag) {
-            std::fs::write(file, export::render(&report, format)?).map_err(|e| format!("{file}: {e}"))?;
+            std::fs::write(file, report::render(&report, format)?).map_err(|e| format!("{file}: {e}"))?;
             eprintln!("wrote {file}");
         }
     }
     if m.get_flag("course-table") {
         println!("{} — {} seeded runs per set-up (seeds 1..={runs})\n", sc.name, runs);
-        print!("{}", export::course_table(&report));
+        print!("{}", report::course_table(&report));
     } else if m.get_flag("report") {
         println!("{} — {} seeded runs per set-up (seeds 1..={runs})\n", sc.name, runs);
         print!("{}", bench::report_table(&rows));
@@ -310,7 +310,7 @@ fn run_bench(m: &ArgMatches) -> Result<(), String> {
 /// The current time, UTC, as `YYYY-MM-DDTHH:MM:SSZ` (the benchmark report's date).
 fn now_utc() -> String {
     let secs = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs());
-    export::utc_timestamp(secs)
+    report::utc_timestamp(secs)
 }
 
 /// The machine's name, for the benchmark report: `$HOSTNAME`/`$COMPUTERNAME`, else the kernel's,

@@ -4,9 +4,12 @@
 //! polygon meets any obstacle. Below it, one file per pair of shapes, parry-style:
 //! [`segment`] (segment/segment, point/segment), [`polygon`] (point/polygon, segment/polygon),
 //! [`circle`] (segment/circle). All obstacles are closed sets: touching is a collision.
+//! [`convex`] holds the floating-point constructions on convex polygons (clipping, centroid,
+//! hexagons) that the hexagonal decomposition builds its cells with.
 
 mod aabb;
 pub mod circle;
+pub mod convex;
 pub mod exact;
 pub mod polygon;
 pub mod segment;

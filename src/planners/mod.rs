@@ -14,7 +14,8 @@ pub mod rrt;
 pub mod smoothing;
 pub mod tree;
 
-pub use params::{ParamKind, ParamSpec, Params};
+pub use crate::params::{ParamGroup, ParamKind, ParamSpec};
+pub use params::Params;
 pub use tree::{PlannerData, Tree};
 
 use crate::events::{EventKind, EventLog};
@@ -209,17 +210,6 @@ pub struct PlannerSpec {
     pub make: MakePlanner,
 }
 
-/// A named group of parameters shared by several planners.
-#[derive(Clone, Copy, Debug)]
-pub struct ParamGroup {
-    /// Name (JSON).
-    pub name: &'static str,
-    /// Title in the page.
-    pub label: &'static str,
-    /// The parameters.
-    pub params: &'static [ParamSpec],
-}
-
 impl PlannerSpec {
     /// Every parameter the planner takes, in lookup order: its own, its groups', the run's.
     pub fn all_params(&self) -> impl Iterator<Item = &'static ParamSpec> + '_ {
@@ -243,6 +233,23 @@ pub fn find(name: &str) -> Option<&'static PlannerSpec> {
 /// The names of every planner.
 pub fn names() -> Vec<&'static str> {
     REGISTRY.iter().map(|p| p.name).collect()
+}
+
+/// The planner a scenario's planner block names (`"planner": {"name": ...}`), or the error for the
+/// block's `name` key. With [`check_block_params`], the planner side of the block's validation: the
+/// scenario parses the block's form and asks here about what only the registry knows.
+pub fn block_planner(name: &str) -> Result<&'static PlannerSpec, String> {
+    find(name)
+        .ok_or_else(|| format!("unknown planner \"{}\" (known: {})", crate::limits::cut(name, 100), names().join(", ")))
+}
+
+/// Check a scenario's planner block's parameters (the block without `name` and `seed`) against
+/// `spec`'s; an error is `(key, message)`, the key relative to the block.
+pub fn check_block_params(
+    spec: &'static PlannerSpec,
+    params: &serde_json::Map<String, serde_json::Value>,
+) -> Result<(), (String, String)> {
+    Params::from_json(spec, &serde_json::Value::Object(params.clone())).map(|_| ())
 }
 
 /// The registry as JSON (for the page's planner picker and parameter panel).

@@ -1,44 +1,17 @@
 //! Benchmarks over seeds: run planners on one problem for seeds 1..=N and summarise
-//! (success rate; median, mean and standard deviation of time, nodes, checks and cost), as a table
-//! or JSON. [`export`](super::export) turns the results into a [`BenchReport`](super::export::BenchReport)
-//! and writes it as CSV, JSON, an OMPL benchmark log or the courses' table.
+//! (success rate; median, mean and standard deviation of time, nodes, checks and cost, as
+//! [`summary`](super::summary) computes them), as a table or JSON. [`report`](super::report) turns
+//! the results into a [`BenchReport`](super::report::BenchReport) and writes it as CSV, JSON, an
+//! OMPL benchmark log or the courses' table.
 
-use super::export::{RunRow, SetupSummary};
+pub use super::summary::Summary;
+use super::summary::{RunRow, SetupSummary};
 use super::{RunConfig, Session, Stats};
 use crate::planners::{self, Params, PlannerSpec};
 use crate::problem::Problem;
 use crate::scenario::{Scenario, ScenarioError};
 use crate::status::Status;
 use serde::Serialize;
-
-/// Median, mean and standard deviation of a metric over the runs that have it.
-#[derive(Clone, Debug, Default, Serialize, PartialEq)]
-pub struct Summary {
-    /// Median.
-    pub median: f64,
-    /// Mean.
-    pub mean: f64,
-    /// Standard deviation (sample, n − 1).
-    pub std: f64,
-    /// Number of values.
-    pub n: usize,
-}
-
-impl Summary {
-    /// The summary of `xs` (all zeros when empty).
-    pub fn of(xs: &[f64]) -> Summary {
-        let n = xs.len();
-        if n == 0 {
-            return Summary::default();
-        }
-        let mut v = xs.to_vec();
-        v.sort_by(f64::total_cmp);
-        let median = if n % 2 == 1 { v[n / 2] } else { (v[n / 2 - 1] + v[n / 2]) / 2.0 };
-        let mean = v.iter().sum::<f64>() / n as f64;
-        let std = if n > 1 { (v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1) as f64).sqrt() } else { 0.0 };
-        Summary { median, mean, std, n }
-    }
-}
 
 /// One planner set-up's results over the seeds.
 #[derive(Clone, Debug, Serialize)]

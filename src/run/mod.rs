@@ -1,20 +1,23 @@
 //! Running planners: the stepped [`Session`] (limits, timing, batching, events, smoothing), its
 //! [`PlanResult`] in the contract's JSON form, and [`bench`](mod@bench) over seeds with its
-//! [`export`](mod@export)s (CSV, JSON, OMPL benchmark log, the courses' table).
+//! [`report`](mod@report) (CSV, JSON, OMPL benchmark log, the courses' table). The benchmark's
+//! modules depend one way: [`summary`](mod@summary) (rows and their summaries) ← `bench` ← `report`.
 //!
 //! The generic entry is [`Session::new`] followed by [`Session::step`] (the worker, a page that
 //! single-steps) or [`Session::run_to_end`] (the CLI, tests, benchmarks).
 
 pub mod bench;
-pub mod export;
 mod fingerprint;
+pub mod report;
 mod result;
 mod session;
+pub mod summary;
 
-pub use export::{BenchReport, RunRow, SetupReport, SetupSummary};
 pub use fingerprint::{fingerprint, fingerprint_in_batches, fnv1a, Fingerprint, FNV_OFFSET};
+pub use report::{BenchReport, SetupReport};
 pub use result::{PlanResult, SamplerSummary, Stats};
 pub use session::{RunConfig, Session};
+pub use summary::{RunRow, SetupSummary};
 
 #[cfg(test)]
 mod tests;

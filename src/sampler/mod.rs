@@ -38,7 +38,7 @@ mod obstacle;
 
 use crate::events::{EventKind, EventLog};
 use crate::math::Real;
-use crate::planners::{ParamGroup, ParamSpec, Params};
+use crate::params::{ParamGroup, ParamSpec, ParamValues};
 use crate::rng::Rng;
 use crate::space_info::SpaceInfo;
 use serde::Serialize;
@@ -244,7 +244,7 @@ fn reflect(v: Real, lo: Real, hi: Real) -> Real {
 
 impl Sampler {
     /// The sampler `params` name, for a task with `goal` (used when `goal_bias` > 0).
-    pub fn from_params(si: &SpaceInfo, goal: Option<&[Real]>, params: &Params) -> Sampler {
+    pub fn from_params(si: &SpaceInfo, goal: Option<&[Real]>, params: &dyn ParamValues) -> Sampler {
         let name = NAMES.iter().copied().find(|n| *n == params.choice("sampler")).unwrap_or("uniform");
         let kind = match name {
             "gaussian" => Kind::Gaussian,

@@ -355,12 +355,8 @@ fn planner(v: &Value, path: &str) -> Result<PlannerDefaults> {
         map.get("name").ok_or_else(|| ScenarioError::at(join(path, "name"), "is missing (a required key)"))?,
         &join(path, "name"),
     )?;
-    let spec = crate::planners::find(&name).ok_or_else(|| {
-        ScenarioError::at(
-            join(path, "name"),
-            format!("unknown planner \"{}\" (known: {})", limits::cut(&name, 100), crate::planners::names().join(", ")),
-        )
-    })?;
+    // What only the registry knows (the planner, its parameters) is checked on the planner side.
+    let spec = crate::planners::block_planner(&name).map_err(|msg| ScenarioError::at(join(path, "name"), msg))?;
     let seed = match map.get("seed") {
         Some(s) => {
             Some(s.as_u64().ok_or_else(|| ScenarioError::at(join(path, "seed"), "must be a non-negative integer"))?)
@@ -370,7 +366,7 @@ fn planner(v: &Value, path: &str) -> Result<PlannerDefaults> {
     let mut params = map.clone();
     params.remove("name");
     params.remove("seed");
-    crate::planners::Params::from_json(spec, &Value::Object(params.clone()))
+    crate::planners::check_block_params(spec, &params)
         .map_err(|(key, msg)| ScenarioError::at(join(path, &key), msg))?;
     Ok(PlannerDefaults { name, seed, params })
 }

@@ -9,6 +9,8 @@
 //! parent cover it with no gap and no overlap. The lattice of level `k + 1` contains the one of
 //! level `k`, so neighbouring parents' edge children are the same hexagon cut in two halves.
 
+use crate::geometry::convex::{centroid, clip_convex, convex_contains, convex_strictly_contains, hexagon, share_edge};
+use crate::geometry::polygon::signed_area2;
 use crate::geometry::{Aabb, Shape, Workspace};
 use crate::math::{Real, Vec2};
 
@@ -56,16 +58,6 @@ impl Cell {
     }
 }
 
-/// The corners of the pointy-top hexagon of circumradius `s` at `c`, counter-clockwise.
-pub fn hexagon(c: Vec2, s: Real) -> [Vec2; 6] {
-    let mut out = [Vec2::new(0.0, 0.0); 6];
-    for (i, o) in out.iter_mut().enumerate() {
-        let a = (30.0 + 60.0 * i as Real).to_radians();
-        *o = Vec2::new(c.x + s * libm::cos(a), c.y + s * libm::sin(a));
-    }
-    out
-}
-
 /// The centres of the seven children of a hexagon of circumradius `s` at `c`: its own centre,
 /// then one on each edge's midpoint (at the inradius `√3 s / 2`, perpendicular to the edge).
 pub fn child_centres(c: Vec2, s: Real) -> [Vec2; 7] {
@@ -76,64 +68,6 @@ pub fn child_centres(c: Vec2, s: Real) -> [Vec2; 7] {
         *o = Vec2::new(c.x + d * libm::cos(a), c.y + d * libm::sin(a));
     }
     out
-}
-
-/// Clip the convex polygon `subject` to the convex counter-clockwise polygon `clip`
-/// (Sutherland–Hodgman). The result may be empty.
-pub fn clip_convex(subject: &[Vec2], clip: &[Vec2]) -> Vec<Vec2> {
-    let mut out: Vec<Vec2> = subject.to_vec();
-    let n = clip.len();
-    for i in 0..n {
-        if out.is_empty() {
-            break;
-        }
-        let (a, b) = (clip[i], clip[(i + 1) % n]);
-        let inside = |p: Vec2| (b - a).perp(&(p - a)) >= 0.0;
-        let input = std::mem::take(&mut out);
-        let m = input.len();
-        for j in 0..m {
-            let (p, q) = (input[j], input[(j + 1) % m]);
-            let (pi, qi) = (inside(p), inside(q));
-            if pi {
-                out.push(p);
-            }
-            if pi != qi {
-                // The edge p→q crosses the clip line a→b.
-                let (dp, dq) = ((b - a).perp(&(p - a)), (b - a).perp(&(q - a)));
-                let t = dp / (dp - dq);
-                out.push(p + (q - p).scale(t));
-            }
-        }
-    }
-    dedup_ring(&mut out);
-    out
-}
-
-/// Drop consecutive vertices closer than a tiny tolerance (clipping at a vertex repeats it).
-fn dedup_ring(ring: &mut Vec<Vec2>) {
-    let scale = ring.iter().fold(0.0, |m: Real, p| m.max(p.x.abs()).max(p.y.abs())).max(1.0);
-    let eps = 1e-12 * scale;
-    let mut i = 0;
-    while ring.len() > 1 && i < ring.len() {
-        let j = (i + 1) % ring.len();
-        if (ring[i] - ring[j]).norm() <= eps {
-            ring.remove(j);
-        } else {
-            i += 1;
-        }
-    }
-}
-
-/// Twice the signed area of a ring (positive: counter-clockwise).
-fn area2(ring: &[Vec2]) -> Real {
-    let n = ring.len();
-    (0..n).map(|i| ring[i].perp(&ring[(i + 1) % n])).sum()
-}
-
-/// Whether the convex counter-clockwise polygon `poly` contains `p` (boundary included).
-pub fn convex_contains(poly: &[Vec2], p: Vec2) -> bool {
-    let n = poly.len();
-    (0..n).all(|i| (poly[(i + 1) % n] - poly[i]).perp(&(p - poly[i])) >= -1e-12)
 }
 
 /// The cell label of a convex outline among the workspace's obstacles.
@@ -164,13 +98,8 @@ fn contains_outline(shape: &Shape, outline: &[Vec2]) -> bool {
     match shape {
         Shape::Rect(_) | Shape::Circle(..) => true,
         Shape::Segment(..) => false,
-        Shape::Polygon(poly) => !poly.iter().any(|&v| strictly_inside(outline, v)),
+        Shape::Polygon(poly) => !poly.iter().any(|&v| convex_strictly_contains(outline, v)),
     }
-}
-
-fn strictly_inside(poly: &[Vec2], p: Vec2) -> bool {
-    let n = poly.len();
-    (0..n).all(|i| (poly[(i + 1) % n] - poly[i]).perp(&(p - poly[i])) > 1e-12)
 }
 
 /// How refinement decides which cells to split.
@@ -208,7 +137,7 @@ impl Decomposition {
             for q in -1..=cols {
                 let c = Vec2::new(bounds.min.x + q as Real * dx + shift, y);
                 let outline = clip_convex(&hexagon(c, s), &rect);
-                if outline.len() < 3 || area2(&outline) <= 1e-9 * s * s {
+                if outline.len() < 3 || signed_area2(&outline) <= 1e-9 * s * s {
                     continue;
                 }
                 let bbox = Aabb::of_points(&outline);
@@ -234,7 +163,7 @@ impl Decomposition {
         let (c, s, level) = (self.cells[i].centre, self.cells[i].radius, self.cells[i].level);
         for cc in child_centres(c, s) {
             let outline = clip_convex(&hexagon(cc, s / 2.0), &self.cells[i].outline);
-            if outline.len() < 3 || area2(&outline) <= 1e-9 * s * s {
+            if outline.len() < 3 || signed_area2(&outline) <= 1e-9 * s * s {
                 continue;
             }
             let centre = centroid(&outline);
@@ -313,46 +242,4 @@ impl Decomposition {
         }
         out
     }
-}
-
-/// The centroid of a convex ring.
-fn centroid(ring: &[Vec2]) -> Vec2 {
-    let n = ring.len();
-    let (mut cx, mut cy, mut a) = (0.0, 0.0, 0.0);
-    for i in 0..n {
-        let (p, q) = (ring[i], ring[(i + 1) % n]);
-        let w = p.perp(&q);
-        a += w;
-        cx += (p.x + q.x) * w;
-        cy += (p.y + q.y) * w;
-    }
-    Vec2::new(cx / (3.0 * a), cy / (3.0 * a))
-}
-
-/// Whether two outlines share a piece of boundary of positive length: an edge of each, on one
-/// line, overlapping.
-pub fn share_edge(a: &[Vec2], b: &[Vec2]) -> bool {
-    let (n, m) = (a.len(), b.len());
-    for i in 0..n {
-        let (p, q) = (a[i], a[(i + 1) % n]);
-        let d = q - p;
-        let len = d.norm();
-        if len == 0.0 {
-            continue;
-        }
-        let eps = 1e-9 * len.max(1e-3);
-        for j in 0..m {
-            let (r, s) = (b[j], b[(j + 1) % m]);
-            // Both ends of r s on the line p q?
-            if (d.perp(&(r - p)) / len).abs() > eps || (d.perp(&(s - p)) / len).abs() > eps {
-                continue;
-            }
-            let (t0, t1) = (d.dot(&(r - p)) / len, d.dot(&(s - p)) / len);
-            let (lo, hi) = (t0.min(t1).max(0.0), t0.max(t1).min(len));
-            if hi - lo > 1e3 * eps {
-                return true;
-            }
-        }
-    }
-    false
 }

@@ -1,4 +1,5 @@
 use super::cells::*;
+use crate::geometry::convex::{convex_contains, hexagon, share_edge};
 use crate::geometry::{Aabb, Shape, Workspace};
 use crate::math::{Real, Vec2};
 

@@ -1,0 +1,46 @@
+//! The report as CSV (RFC 4180), one row per run.
+
+use super::BenchReport;
+
+/// The CSV header.
+pub const CSV_HEADER: &str = "setup,planner,seed,solved,status,time_ms,iterations,nodes,checks,cost,smoothed_cost";
+
+/// One CSV field, quoted as RFC 4180 asks when it holds a comma, a quote or a line break.
+fn csv_field(s: &str) -> String {
+    if s.contains([',', '"', '\r', '\n']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_string()
+    }
+}
+
+fn opt(v: Option<f64>) -> String {
+    v.map(|x| x.to_string()).unwrap_or_default()
+}
+
+/// The runs as CSV (RFC 4180: CRLF line breaks, a header line): one row per run, columns
+/// [`CSV_HEADER`]; `solved` is `true`/`false`, costs are empty when unsolved, times in ms.
+pub fn to_csv(r: &BenchReport) -> String {
+    let mut out = String::from(CSV_HEADER);
+    out.push_str("\r\n");
+    for s in &r.setups {
+        for row in &s.rows {
+            let fields = [
+                csv_field(&s.label),
+                csv_field(&s.planner),
+                row.seed.to_string(),
+                row.solved.to_string(),
+                csv_field(&row.status),
+                row.time_ms.to_string(),
+                row.iterations.to_string(),
+                row.nodes.to_string(),
+                row.checks.to_string(),
+                opt(row.cost),
+                opt(row.smoothed_cost),
+            ];
+            out.push_str(&fields.join(","));
+            out.push_str("\r\n");
+        }
+    }
+    out
+}
