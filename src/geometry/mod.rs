@@ -8,6 +8,7 @@
 mod aabb;
 pub mod circle;
 pub mod exact;
+mod grid;
 pub mod polygon;
 pub mod segment;
 mod shape;
