@@ -9,6 +9,7 @@ pub mod bench;
 pub mod export;
 mod fingerprint;
 mod result;
+pub mod scaling;
 mod session;
 
 pub use export::{BenchReport, RunRow, SetupReport, SetupSummary};
