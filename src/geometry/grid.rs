@@ -211,6 +211,12 @@ impl Grid {
         &self.items[self.start[cell] as usize..self.start[cell + 1] as usize]
     }
 
+    /// The obstacles listed in the cell holding `p` (`None` outside every obstacle's box).
+    #[inline]
+    pub(super) fn at(&self, p: Vec2) -> Option<&[u32]> {
+        self.bounds.contains(p).then(|| self.list(self.row(p.y) * self.nx + self.col(p.x)))
+    }
+
     /// Call `f` once with each obstacle whose box (`boxes[i]`) passes `meets` (at least: meets `bb`,
     /// the query's box) and lies in a cell the query's shape may meet, until it returns `true`. `Some(whether it did)`;
     /// `None` when the query is long or reaches a crowded cell (some obstacles may have been

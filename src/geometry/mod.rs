@@ -18,7 +18,7 @@ mod workspace;
 pub use aabb::Aabb;
 pub use shape::Shape;
 pub use sight::SensorPose;
-pub use workspace::{take_tests, Workspace, BVH_FROM};
+pub use workspace::{take_tests, Workspace, BVH_FROM, GRID_FROM};
 
 #[cfg(test)]
 mod tests;

@@ -470,8 +470,9 @@ fn the_hierarchy_finds_what_the_scan_finds() {
     let mut rng = Rng::new(13);
     for n in [32, 200, 2000] {
         for open in [false, true] {
-            let mut grid = random_workspace(&mut rng, n);
+            let mut grid = random_workspace(&mut rng, n).with_grid();
             grid.open = open;
+            assert_eq!(random_workspace(&mut rng, n).has_grid(), n >= GRID_FROM);
             assert!(grid.has_bvh() && grid.has_grid());
             let bvh = grid.without_grid();
             assert!(bvh.has_bvh() && !bvh.has_grid());
@@ -546,7 +547,7 @@ fn the_hierarchy_prunes_nothing_that_touches() {
             }
         }
     }
-    let grid = Workspace::new(Aabb { min: v(0.0, 0.0), max: v(1.0, 1.0) }, shapes);
+    let grid = Workspace::new(Aabb { min: v(0.0, 0.0), max: v(1.0, 1.0) }, shapes).with_grid();
     assert!(grid.has_grid());
     let (bvh, scan) = (grid.without_grid(), grid.scanned());
     let lattice = |rng: &mut Rng| v(rng.below(21) as f64 * 0.05, rng.below(21) as f64 * 0.05);

@@ -26,6 +26,11 @@ fn add_tests(n: u64) {
 /// rather than a scan of every obstacle's box. Below it, the scan is as fast.
 pub const BVH_FROM: usize = 32;
 
+/// From this many obstacles on, a grid of candidate lists stands in front of the hierarchy (see
+/// [`super::grid`]). Below it the hierarchy is shallow, and alone it is as fast or faster for
+/// segments and bodies (`planarium scaling --sizes 100,1000`).
+pub const GRID_FROM: usize = 1000;
+
 /// The world a robot moves in: rectangular bounds and closed obstacles.
 ///
 /// Every query is a broad phase over the obstacles' boxes (a scan, or from [`BVH_FROM`] obstacles
@@ -95,31 +100,41 @@ impl Probe {
         if !(3..=8).contains(&m) {
             return p;
         }
+        // The edges, once (no division by `m` in the loops).
+        let mut e = [Vec2::default(); 8];
+        for (i, e) in e[..m].iter_mut().enumerate() {
+            let (a, b) = (poly[i], poly[if i + 1 == m { 0 } else { i + 1 }]);
+            *e = Vec2::new(b.x - a.x, b.y - a.y);
+        }
         let turn = |i: usize| {
-            let (a, b, c) = (poly[i], poly[(i + 1) % m], poly[(i + 2) % m]);
-            (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x)
+            let (u, w) = (e[i], e[if i + 1 == m { 0 } else { i + 1 }]);
+            u.x * w.y - u.y * w.x
         };
         let first = turn(0);
         if first == 0.0 || (1..m).any(|i| turn(i) * first <= 0.0) {
             return p;
         }
-        for i in 0..m {
-            let (a, b) = (poly[i], poly[(i + 1) % m]);
-            let n = Vec2::new(a.y - b.y, b.x - a.x);
+        for (axis, e) in p.axes[..m].iter_mut().zip(&e[..m]) {
+            // (The same bits as `(a.y - b.y, b.x - a.x)`.)
+            let n = Vec2::new(-e.y, e.x);
             let (mut lo, mut hi) = (Real::INFINITY, Real::NEG_INFINITY);
             for q in poly {
                 let d = n.x * q.x + n.y * q.y;
                 lo = lo.at_most(d);
                 hi = hi.at_least(d);
             }
-            p.axes[i] = (n, lo, hi);
+            *axis = (n, lo, hi);
         }
         p.n = m;
         // Convex, not a star: the edges turn once around (their y components change sign twice).
-        let dy = |i: usize| poly[(i + 1) % m].y - poly[i].y;
-        let signs = (0..m).map(dy).filter(|&d| d != 0.0).map(|d| d > 0.0);
-        let flips = signs.clone().zip(signs.cycle().skip(1)).filter(|(a, b)| a != b).count();
-        p.convex = flips == 2;
+        let mut ups = e[..m].iter().filter(|e| e.y != 0.0).map(|e| e.y > 0.0);
+        let start = ups.next();
+        let (mut last, mut flips) = (start, 0);
+        for up in ups {
+            flips += usize::from(last != Some(up));
+            last = Some(up);
+        }
+        p.convex = flips + usize::from(last != start) == 2;
         p
     }
     /// Whether the box `lo .. hi` lies inside the shape, a convex polygon: never `true` for one that
@@ -174,7 +189,7 @@ impl Workspace {
                 .collect();
             Bvh::from_leaves(BvhBuildStrategy::Binned, &leaves)
         });
-        let grid = bvh.as_ref().and_then(|_| Grid::new(&boxes));
+        let grid = (boxes.len() >= GRID_FROM).then(|| Grid::new(&boxes)).flatten();
         Workspace { bounds, obstacles, boxes, bvh, grid, open: false }
     }
 
@@ -188,6 +203,12 @@ impl Workspace {
     /// benchmarks that compare the two).
     pub fn without_grid(&self) -> Workspace {
         Workspace { grid: None, ..self.clone() }
+    }
+
+    /// The same workspace with a grid in front of its hierarchy whatever its size (for tests that
+    /// compare the broad phases on small maps).
+    pub fn with_grid(&self) -> Workspace {
+        Workspace { grid: self.bvh.as_ref().and_then(|_| Grid::new(&self.boxes)), ..self.clone() }
     }
 
     /// Whether small queries go through the grid of candidate lists first.
@@ -233,6 +254,22 @@ impl Workspace {
                 let sure =
                     |i: usize| matches!(q, Query::Polygon(_)) && probe().holds(self.boxes[i].min, self.boxes[i].max);
                 if let Some(g) = &self.grid {
+                    // A body among many small obstacles often holds some whole: those listed at the
+                    // centre of its box first, where they are likeliest (then the walk, which may
+                    // hand them over again: `f` answers the same).
+                    if let Query::Polygon(_) = q {
+                        let centre = Vec2::new(0.5 * (bb.min.x + bb.max.x), 0.5 * (bb.min.y + bb.max.y));
+                        for &i in g.at(centre).unwrap_or(&[]) {
+                            let bx = &self.boxes[i as usize];
+                            if probe().holds(bx.min, bx.max) {
+                                tests += 1;
+                                if f(i as usize, true) {
+                                    add_tests(tests);
+                                    return true;
+                                }
+                            }
+                        }
+                    }
                     // Obstacles whose boxes the shape misses are not handed to the exact test.
                     let meets = |bx: &Aabb| match q {
                         Query::Point(p) => bx.contains(p),
