@@ -301,7 +301,7 @@ fn dims(w: Real, h: Real, target: usize) -> (usize, usize) {
     if !(s > 0.0 && s.is_finite() && s >= w.at_least(h) / t) {
         s = w.at_least(h) / t;
     }
-    if !(s > 0.0) {
+    if s.is_nan() || s <= 0.0 {
         return (1, 1);
     }
     let n = |len: Real| ((len / s).ceil() as usize).clamp(1, target);

@@ -67,12 +67,14 @@ struct Probe {
     axes: [(Vec2, Real, Real); 8],
     n: usize,
     /// Whether the axes are a convex polygon's edge normals (the polygon is where the shape's
-    /// extents along them all hold).
+    /// extents along them all hold), set by [`Probe::with_holds`].
     convex: bool,
 }
 
 impl Probe {
-    /// The probe of a query's shape, its box `bb`.
+    /// The probe of a query's shape, its box `bb`. (Inlined: built in place, as a segment's
+    /// probe was before the grid; a polygon's is a call, as it was.)
+    #[inline(always)]
     fn of(q: &Query, bb: Aabb) -> Probe {
         match *q {
             Query::Point(_) => Probe::of_box(bb),
@@ -94,48 +96,51 @@ impl Probe {
         p
     }
     /// A polygon: its box, and its edge normals when it is convex with at most 8 edges.
+    #[inline(never)]
     fn of_polygon(poly: &[Vec2]) -> Probe {
         let mut p = Probe::of_box(Aabb::of_points(poly));
         let m = poly.len();
         if !(3..=8).contains(&m) {
             return p;
         }
-        // The edges, once (no division by `m` in the loops).
-        let mut e = [Vec2::default(); 8];
-        for (i, e) in e[..m].iter_mut().enumerate() {
-            let (a, b) = (poly[i], poly[if i + 1 == m { 0 } else { i + 1 }]);
-            *e = Vec2::new(b.x - a.x, b.y - a.y);
-        }
         let turn = |i: usize| {
-            let (u, w) = (e[i], e[if i + 1 == m { 0 } else { i + 1 }]);
-            u.x * w.y - u.y * w.x
+            let (a, b, c) = (poly[i], poly[(i + 1) % m], poly[(i + 2) % m]);
+            (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x)
         };
         let first = turn(0);
         if first == 0.0 || (1..m).any(|i| turn(i) * first <= 0.0) {
             return p;
         }
-        for (axis, e) in p.axes[..m].iter_mut().zip(&e[..m]) {
-            // (The same bits as `(a.y - b.y, b.x - a.x)`.)
-            let n = Vec2::new(-e.y, e.x);
+        for i in 0..m {
+            let (a, b) = (poly[i], poly[(i + 1) % m]);
+            let n = Vec2::new(a.y - b.y, b.x - a.x);
             let (mut lo, mut hi) = (Real::INFINITY, Real::NEG_INFINITY);
             for q in poly {
                 let d = n.x * q.x + n.y * q.y;
                 lo = lo.at_most(d);
                 hi = hi.at_least(d);
             }
-            *axis = (n, lo, hi);
+            p.axes[i] = (n, lo, hi);
         }
         p.n = m;
-        // Convex, not a star: the edges turn once around (their y components change sign twice).
-        let mut ups = e[..m].iter().filter(|e| e.y != 0.0).map(|e| e.y > 0.0);
-        let start = ups.next();
-        let (mut last, mut flips) = (start, 0);
-        for up in ups {
-            flips += usize::from(last != Some(up));
-            last = Some(up);
-        }
-        p.convex = flips + usize::from(last != start) == 2;
         p
+    }
+    /// The probe, told whether it may answer [`Probe::holds`]: its axes are a convex polygon's, and
+    /// the polygon is no star (its edges turn once around: their y components change sign twice).
+    fn with_holds(mut self, q: &Query) -> Probe {
+        if let Query::Polygon(poly) = *q {
+            let m = poly.len();
+            let dy = |i: usize| poly[if i + 1 == m { 0 } else { i + 1 }].y - poly[i].y;
+            let mut ups = (0..m).map(dy).filter(|&d| d != 0.0).map(|d| d > 0.0);
+            let start = ups.next();
+            let (mut last, mut flips) = (start, 0);
+            for up in ups {
+                flips += usize::from(last != Some(up));
+                last = Some(up);
+            }
+            self.convex = self.n == m && flips + usize::from(last != start) == 2;
+        }
+        self
     }
     /// Whether the box `lo .. hi` lies inside the shape, a convex polygon: never `true` for one that
     /// does not (the same margin, the other way). An obstacle has a point in its box (a corner, a
@@ -248,50 +253,20 @@ impl Workspace {
             None => self.boxes.iter().enumerate().any(|(i, bx)| bx.intersects(bb) && f(i, false)),
             Some(t) => {
                 let mut tests = 0;
-                // Made when first needed: a query beside every obstacle needs none.
-                let probe = OnceCell::new();
-                let probe = || probe.get_or_init(|| Probe::of(&q, *bb));
-                let sure =
-                    |i: usize| matches!(q, Query::Polygon(_)) && probe().holds(self.boxes[i].min, self.boxes[i].max);
                 if let Some(g) = &self.grid {
-                    // A body among many small obstacles often holds some whole: those listed at the
-                    // centre of its box first, where they are likeliest (then the walk, which may
-                    // hand them over again: `f` answers the same).
-                    if let Query::Polygon(_) = q {
-                        let centre = Vec2::new(0.5 * (bb.min.x + bb.max.x), 0.5 * (bb.min.y + bb.max.y));
-                        for &i in g.at(centre).unwrap_or(&[]) {
-                            let bx = &self.boxes[i as usize];
-                            if probe().holds(bx.min, bx.max) {
-                                tests += 1;
-                                if f(i as usize, true) {
-                                    add_tests(tests);
-                                    return true;
-                                }
-                            }
-                        }
-                    }
-                    // Obstacles whose boxes the shape misses are not handed to the exact test.
-                    let meets = |bx: &Aabb| match q {
-                        Query::Point(p) => bx.contains(p),
-                        _ => bx.intersects(bb) && probe().may_meet(bx.min, bx.max),
-                    };
-                    let walked = g.walk(&self.boxes, bb, &q, meets, |i| {
-                        tests += 1;
-                        f(i, sure(i))
-                    });
-                    if let Some(found) = walked {
-                        if tests > 0 {
-                            add_tests(tests);
-                        }
+                    if let Some(found) = self.near_in_grid(g, bb, q, &mut f) {
                         return found;
                     }
                 }
-                let probe = probe();
+                // (Built in place: a probe is a few hundred bytes, and small maps query often. The
+                // hierarchy serves maps of 32 to 1,000 obstacles mostly, where a body seldom holds
+                // one whole: the exact test decides, as it always did.)
+                let probe = Probe::of(&q, *bb);
                 let found = t
                     .leaves(|n| probe.may_meet(Vec2::new(n.mins().x, n.mins().y), Vec2::new(n.maxs().x, n.maxs().y)))
                     .any(|i| {
                         tests += 1;
-                        f(i as usize, sure(i as usize))
+                        f(i as usize, false)
                     });
                 if tests > 0 {
                     add_tests(tests);
@@ -299,6 +274,48 @@ impl Workspace {
                 found
             }
         }
+    }
+
+    /// [`Workspace::near_by`] through the grid: `None` when it gives way to the hierarchy. (Apart,
+    /// and not inlined: the hierarchy's path stays as small as it was for the maps below
+    /// [`GRID_FROM`].)
+    #[inline(never)]
+    fn near_in_grid(&self, g: &Grid, bb: &Aabb, q: Query, f: &mut impl FnMut(usize, bool) -> bool) -> Option<bool> {
+        let mut tests = 0;
+        // Made when first needed: a query beside every obstacle needs none.
+        let probe = OnceCell::new();
+        let probe = || probe.get_or_init(|| Probe::of(&q, *bb).with_holds(&q));
+        let polygon = matches!(q, Query::Polygon(_));
+        let sure = |i: usize| polygon && probe().holds(self.boxes[i].min, self.boxes[i].max);
+        // A body among many small obstacles often holds some whole: those listed at the
+        // centre of its box first, where they are likeliest (then the walk, which may
+        // hand them over again: `f` answers the same).
+        if let Query::Polygon(_) = q {
+            let centre = Vec2::new(0.5 * (bb.min.x + bb.max.x), 0.5 * (bb.min.y + bb.max.y));
+            for &i in g.at(centre).unwrap_or(&[]) {
+                let bx = &self.boxes[i as usize];
+                if probe().holds(bx.min, bx.max) {
+                    tests += 1;
+                    if f(i as usize, true) {
+                        add_tests(tests);
+                        return Some(true);
+                    }
+                }
+            }
+        }
+        // Obstacles whose boxes the shape misses are not handed to the exact test.
+        let meets = |bx: &Aabb| match q {
+            Query::Point(p) => bx.contains(p),
+            _ => bx.intersects(bb) && probe().may_meet(bx.min, bx.max),
+        };
+        let walked = g.walk(&self.boxes, bb, &q, meets, |i| {
+            tests += 1;
+            f(i, sure(i))
+        });
+        if tests > 0 {
+            add_tests(tests);
+        }
+        walked
     }
 
     /// The first obstacle (in scenario order) whose box meets `bb` and that passes `hit`.
