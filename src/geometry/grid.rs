@@ -20,7 +20,7 @@ const MAX_CELLS: usize = 1 << 20;
 /// A cell listing more obstacles than this sends the queries that reach it to the hierarchy.
 const MAX_LIST: usize = 48;
 /// A query whose box spans more rows or columns than this goes to the hierarchy.
-const MAX_SPAN: usize = 256;
+const MAX_SPAN: usize = 32;
 /// The grid is given up (the hierarchy alone answers) when the lists would hold more than this
 /// many entries per obstacle, even at a coarser resolution: big obstacles over many cells.
 const ENTRIES_PER_OBSTACLE: usize = 8;
