@@ -11,7 +11,9 @@
 //! - `plan`: seeded RRT-Connect runs to the end (planning and smoothing), as in the suite;
 //! - `scaling`: one state check among 10 to 100 000 obstacles (a grid of small blocks filling the
 //!   right half of a 2 × 1 map), for the point, a small rectangle and a 3-link arm: the broad
-//!   phase (parry's bounding-volume hierarchy from 32 obstacles on) keeps it nearly flat.
+//!   phase (parry's bounding-volume hierarchy from 32 obstacles on, a grid of candidate lists in
+//!   front of it) keeps it nearly flat. The maps are `planarium::run::scaling`'s, which the suite
+//!   times too (`planarium scaling`).
 //!
 //! Every input is drawn from a seeded generator, so each run of the benchmark measures the same work.
 
@@ -22,7 +24,7 @@ use planarium::planners::Params;
 use planarium::problem::Problem;
 use planarium::rng::Rng;
 use planarium::run::bench::parse_setup;
-use planarium::run::{RunConfig, Session};
+use planarium::run::{scaling, RunConfig, Session};
 use planarium::scenario;
 use std::time::Duration;
 
@@ -146,49 +148,11 @@ fn plan(c: &mut Criterion) {
     g.finish();
 }
 
-/// A 2 × 1 map whose right half holds `n` small blocks in a grid, with `robot` (JSON) starting at
-/// `start` in the free left half.
-pub fn blocks(n: usize, robot: serde_json::Value, start: serde_json::Value) -> Problem {
-    let side = (n as f64).sqrt().ceil() as usize;
-    let cell = 1.0 / side as f64;
-    let mut obstacles = Vec::with_capacity(n);
-    'grid: for i in 0..side {
-        for j in 0..side {
-            if obstacles.len() == n {
-                break 'grid;
-            }
-            let (x, y) = (1.0 + i as f64 * cell, j as f64 * cell);
-            obstacles
-                .push(serde_json::json!({ "rect": [x + 0.3 * cell, y + 0.3 * cell, x + 0.7 * cell, y + 0.7 * cell] }));
-        }
-    }
-    let v = serde_json::json!({ "bounds": [0, 0, 2, 1], "obstacles": obstacles, "robot": robot, "start": start, "goal": start, "resolution": 0.002 });
-    Problem::from_scenario(&scenario::Scenario::from_value(&v).expect("a valid scenario")).expect("a valid problem")
-}
-
-/// The robots of the `scaling` group, each with a start in the free half.
-pub fn scaling_robots() -> [(&'static str, serde_json::Value, serde_json::Value); 3] {
-    let pi = std::f64::consts::PI;
-    [
-        ("point", serde_json::json!({ "kind": "point" }), serde_json::json!([0.5, 0.5])),
-        (
-            "rectangle",
-            serde_json::json!({ "kind": "rigid", "footprint": [[-0.05, -0.01], [0.05, -0.01], [0.05, 0.01], [-0.05, 0.01]] }),
-            serde_json::json!([0.5, 0.5, 0.0]),
-        ),
-        (
-            "arm",
-            serde_json::json!({ "kind": "arm", "base": [1.0, 0.5], "links": [0.25, 0.2, 0.15], "limits": [[-pi, pi], [-pi, pi], [-pi, pi]] }),
-            serde_json::json!([pi, 0.0, 0.0]),
-        ),
-    ]
-}
-
 fn scaling(c: &mut Criterion) {
     let mut g = c.benchmark_group("scaling");
-    for (robot, spec, start) in scaling_robots() {
-        for n in [10, 100, 1000, 10_000, 100_000] {
-            let p = blocks(n, spec.clone(), start.clone());
+    for (robot, spec, start) in scaling::robots() {
+        for n in scaling::SIZES {
+            let p = scaling::blocks(n, spec.clone(), start.clone());
             let states = uniform_states(&p, 1024, 5);
             let mut k = 0;
             g.bench_function(BenchmarkId::new(robot, n), |b| {

@@ -1,10 +1,13 @@
 // The benchmark suite (`npm run bench`): issue 7's problems beside OMPL 1.5.2's figures, run
 // natively (the CLI's `bench`, seeds 1..N) and, for the problems OMPL was timed on, with the wasm
 // build in Node (the same set-ups and seeds; the counts must equal the native ones, bit for bit).
+// Then the scaling benchmark (issue 15): one state check among 10 to 100,000 obstacles for the
+// point, a rectangle and an arm (the CLI's `scaling`, and `scaling_json` in wasm).
 // Writes bench/results/suite-<UTC stamp>.json (everything) and .md (the tables).
 //
 //   node scripts/bench.mjs [--runs N] [--rounds K] [--only id,id] [--quick]
 //
+// --only scaling: the scaling benchmark alone.
 // --quick: 5 runs and no horn-20 (a smoke run). Times are wall-clock medians of planning only.
 // The problems compared between native and wasm are run in K rounds (default 3) on each side, and
 // each seed's time is its best round: the machine's noise (±15% between identical runs here) is
@@ -57,11 +60,11 @@ const tmp = mkdtempSync(join(tmpdir(), 'planarium-suite-'));
 // The wasm build in Node: the same set-ups and seeds, events off, as the page's benchmark workers.
 const wasmFile = join(root, 'www', 'pkg', 'planarium_bg.wasm');
 let wasm = null;
-if (SUITE.some((p) => p.wasm && (!only || only.includes(p.id)))) {
+if (SUITE.some((p) => p.wasm && (!only || only.includes(p.id))) || !only || only.includes('scaling')) {
   if (existsSync(wasmFile)) {
-    const { initSync, Run, builtins } = await import(join(root, 'www', 'pkg', 'planarium.js'));
+    const { initSync, Run, builtins, scaling_json: scalingJson } = await import(join(root, 'www', 'pkg', 'planarium.js'));
     initSync({ module: readFileSync(wasmFile) });
-    wasm = { Run, texts: Object.fromEntries(JSON.parse(builtins()).map((b) => [b.id, JSON.stringify(b.scenario)])) };
+    wasm = { Run, scalingJson, texts: Object.fromEntries(JSON.parse(builtins()).map((b) => [b.id, JSON.stringify(b.scenario)])) };
   } else {
     console.log('[bench] www/pkg is not built (node scripts/build.mjs): wasm skipped');
   }
@@ -117,6 +120,21 @@ for (const p of SUITE) {
   results.push({ problem: name, what: p.what, runs, ompl: p.ompl ?? null, omplMs: p.omplMs ?? null, native: report, wasm: wasmResult, wasmScenario: withWasm ? p.id : null });
 }
 
+// The scaling benchmark: natively, then in wasm (the same states: the valid counts must agree).
+let scaling = null;
+if (!only || only.includes('scaling')) {
+  const started = Date.now();
+  const checks = quick ? 20000 : 200000;
+  const file = join(tmp, 'scaling.json');
+  execFileSync(cli, ['scaling', '--checks', String(checks), '--rounds', String(roundsArg), '--json-file', file], { cwd: root, stdio: ['ignore', 'ignore', 'inherit'] });
+  const native = JSON.parse(readFileSync(file, 'utf8'));
+  const inWasm = wasm?.scalingJson ? JSON.parse(wasm.scalingJson(checks, roundsArg)) : null;
+  const sameValid = inWasm ? inWasm.every((w, i) => w.valid === native[i].valid) : null;
+  console.log(`[bench] scaling: ${native.length} rows, ${checks} checks each, ${inWasm ? 'natively and in wasm' : 'natively'} in ${((Date.now() - started) / 1000).toFixed(1)} s`);
+  if (inWasm) console.log(`[bench] scaling: wasm in Node ${sameValid ? 'finds the native valid counts' : 'DIFFERS from the native valid counts'}`);
+  scaling = { checks, native, wasm: inWasm, same_valid: sameValid };
+}
+
 const median = (xs) => { const v = xs.filter(Number.isFinite).sort((a, b) => a - b); const n = v.length; return n ? (n % 2 ? v[(n - 1) / 2] : (v[n / 2 - 1] + v[n / 2]) / 2) : NaN; };
 const mean = (xs) => xs.reduce((a, b) => a + b, 0) / xs.length;
 // The sample standard deviation, as the CLI's summaries give it.
@@ -147,10 +165,21 @@ for (const r of results) {
 }
 lines.push('', 'Problems:', '');
 for (const r of results) lines.push(`- **${r.problem}**: ${r.what}.`);
+if (scaling) {
+  lines.push('', '## Scaling: one state check among n obstacles', '',
+    `A 2 × 1 map whose right half holds n small blocks in a grid; ${scaling.checks} checks of uniform states per row, best of ${roundsArg} round(s). `
+    + '× 10: the time over the 10-obstacle time (issue 15 asks at most 3 at 100,000). Build: the broad phase (boxes, BVH, grid) from the obstacles.', '',
+    '| robot | obstacles | ns / check (native) | × 10 | ns / check (wasm, Node) | × 10 (wasm) | valid | build ms | broad phase kB |',
+    '|---|---|---|---|---|---|---|---|---|');
+  scaling.native.forEach((r, i) => {
+    const w = scaling.wasm?.[i];
+    lines.push(`| ${r.robot} | ${r.obstacles} | ${f(r.ns_per_check, 1)} | ${f(r.ratio_to_10)} | ${w ? f(w.ns_per_check, 1) : '—'} | ${w ? f(w.ratio_to_10) : '—'} | ${r.valid}${w && w.valid !== r.valid ? ' (wasm differs!)' : ''} | ${f(r.build_ms)} | ${f(r.broad_phase_bytes / 1024, 0)} |`);
+  });
+}
 const outDir = join(root, 'bench', 'results');
 mkdirSync(outDir, { recursive: true });
 const base = join(outDir, `suite-${stamp}`);
-writeFileSync(`${base}.json`, `${JSON.stringify({ date: new Date().toISOString(), host, node: process.version, runs: runsArg, results }, null, 1)}\n`);
+writeFileSync(`${base}.json`, `${JSON.stringify({ date: new Date().toISOString(), host, node: process.version, runs: runsArg, results, scaling }, null, 1)}\n`);
 writeFileSync(`${base}.md`, `${lines.join('\n')}\n`);
 console.log(lines.join('\n'));
 console.log(`[bench] wrote ${base}.json and ${base}.md`);

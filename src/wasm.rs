@@ -73,6 +73,15 @@ pub fn planners() -> String {
     format!("{{\"planners\": {}, \"run_params\": {}}}", planners::registry_json(), serde_json::to_string(&run).unwrap())
 }
 
+/// The suite's scaling benchmark (`planarium scaling`, [`crate::run::scaling`]): `checks` state
+/// checks per robot and obstacle count, best of `rounds`, as JSON rows.
+#[wasm_bindgen]
+pub fn scaling_json(checks: u32, rounds: u32) -> String {
+    let rows =
+        crate::run::scaling::measure(&[], &crate::run::scaling::SIZES, u64::from(checks.max(1)), rounds.clamp(1, 10));
+    serde_json::to_string(&rows).unwrap()
+}
+
 /// The input limits as JSON (`docs/limits.md`), for the page's checks before it sends anything.
 #[wasm_bindgen]
 pub fn limits() -> String {

@@ -1,4 +1,4 @@
-//! The native command line: `plan`, `bench`, `validate` and `list`.
+//! The native command line: `plan`, `bench`, `scaling`, `validate` and `list`.
 //!
 //! Every planner parameter is a flag (`--goal-bias 0.2`, `--extend connect`), generated from the
 //! planner registry, so a new parameter needs no CLI code.
@@ -6,7 +6,7 @@
 use clap::{Arg, ArgAction, ArgMatches, Command};
 use planarium::planners::{self, Params, PlannerSpec};
 use planarium::problem::Problem;
-use planarium::run::{bench, report, RunConfig, Session};
+use planarium::run::{bench, report, scaling, RunConfig, Session};
 use planarium::scenario::{self, Scenario};
 use std::process::ExitCode;
 
@@ -96,6 +96,15 @@ fn cli() -> Command {
                         .help("Also write an OMPL benchmark log (ompl_benchmark_statistics.py FILE -d bench.db, then upload bench.db to plannerarena.org)"),
                 ),
         ))
+        .subcommand(
+            Command::new("scaling")
+                .about("Time one state check among 10 to 100,000 obstacles, for the point, a rectangle and an arm (issue 15)")
+                .arg(Arg::new("robots").long("robots").default_value("").help("Comma-separated robots (point, rectangle, arm; default: all)"))
+                .arg(Arg::new("sizes").long("sizes").default_value("10,100,1000,10000,100000").help("Comma-separated obstacle counts"))
+                .arg(Arg::new("checks").long("checks").default_value("200000").value_parser(clap::value_parser!(u64)).help("State checks per robot and size"))
+                .arg(Arg::new("rounds").long("rounds").default_value("3").value_parser(clap::value_parser!(u32)).help("Rounds (the best is kept)"))
+                .arg(Arg::new("json-file").long("json-file").value_name("FILE").help("Also write the rows as JSON")),
+        )
         .subcommand(Command::new("validate").about("Check a scenario and print it normalised").arg(scenario_arg))
         .subcommand(Command::new("list").about("List built-in scenarios and planners"))
 }
@@ -307,6 +316,24 @@ fn run_bench(m: &ArgMatches) -> Result<(), String> {
     Ok(())
 }
 
+fn run_scaling(m: &ArgMatches) -> Result<(), String> {
+    let list = |name: &str| m.get_one::<String>(name).unwrap().split(',').map(str::trim).filter(|s| !s.is_empty());
+    let robots: Vec<String> = list("robots").map(String::from).collect();
+    let sizes: Vec<usize> =
+        list("sizes").map(|s| s.parse().map_err(|e| format!("--sizes {s}: {e}"))).collect::<Result<_, _>>()?;
+    if sizes.iter().any(|&n| n == 0 || n > 1_000_000) {
+        return Err("--sizes: each between 1 and 1,000,000".into());
+    }
+    let rows =
+        scaling::measure(&robots, &sizes, *m.get_one::<u64>("checks").unwrap(), *m.get_one::<u32>("rounds").unwrap());
+    if let Some(file) = m.get_one::<String>("json-file") {
+        std::fs::write(file, serde_json::to_string_pretty(&rows).unwrap()).map_err(|e| format!("{file}: {e}"))?;
+        eprintln!("wrote {file}");
+    }
+    print!("{}", scaling::table(&rows));
+    Ok(())
+}
+
 /// The current time, UTC, as `YYYY-MM-DDTHH:MM:SSZ` (the benchmark report's date).
 fn now_utc() -> String {
     let secs = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs());
@@ -331,6 +358,7 @@ fn main() -> ExitCode {
     let r = match m.subcommand() {
         Some(("plan", m)) => plan(m),
         Some(("bench", m)) => run_bench(m),
+        Some(("scaling", m)) => run_scaling(m),
         Some(("validate", m)) => load(m.get_one::<String>("scenario").unwrap()).and_then(|sc| {
             Problem::from_scenario(&sc).map_err(|e| e.to_string())?;
             println!("{}", sc.to_json());

@@ -11,6 +11,7 @@ mod aabb;
 pub mod circle;
 pub mod convex;
 pub mod exact;
+mod grid;
 pub mod polygon;
 pub mod segment;
 mod shape;
@@ -20,7 +21,7 @@ mod workspace;
 pub use aabb::Aabb;
 pub use shape::Shape;
 pub use sight::SensorPose;
-pub use workspace::{take_tests, Workspace, BVH_FROM};
+pub use workspace::{take_tests, Workspace, BVH_FROM, GRID_FROM};
 
 #[cfg(test)]
 mod tests;

@@ -446,18 +446,38 @@ fn random_workspace(rng: &mut Rng, n: usize) -> Workspace {
     Workspace::new(Aabb { min: v(0.0, 0.0), max: v(1.0, 1.0) }, shapes)
 }
 
+/// Every query on `a` and on `b` (the same obstacles, other broad phases): the same answers, bit
+/// for bit (the same first obstacle, the same clearance).
+fn same_answers(a: &Workspace, b: &Workspace, poly: &[Vec2], cap: f64) {
+    let (p, q) = (poly[0], poly[1]);
+    assert_eq!(a.point_hit(p), b.point_hit(p));
+    assert_eq!(a.point_hits(p), b.point_hits(p));
+    assert_eq!(a.segment_hits(p, q), b.segment_hits(p, q));
+    assert_eq!(a.segment_hit(p, q), b.segment_hit(p, q));
+    assert_eq!(a.sight_clear(p, q), b.sight_clear(p, q));
+    assert_eq!(a.polygon_hit(poly), b.polygon_hit(poly));
+    assert_eq!(a.polygon_hit_any(poly).is_some(), b.polygon_hit(poly).is_some());
+    assert_eq!(a.segment_hit_any(p, q).is_some(), b.segment_hit(p, q).is_some());
+    assert_eq!(b.segment_hit_any(p, q).is_some(), b.segment_hit(p, q).is_some());
+    assert_eq!(a.segment_clearance(p, q, cap).to_bits(), b.segment_clearance(p, q, cap).to_bits());
+    assert_eq!(a.polygon_clearance(poly, cap).to_bits(), b.polygon_clearance(poly, cap).to_bits());
+}
+
 #[test]
 fn the_hierarchy_finds_what_the_scan_finds() {
-    // Every query, through parry's BVH and through the scan of every box, on workspaces of 32 to
-    // 2,000 shapes: the same answers, bit for bit (the same first obstacle, the same clearance).
+    // Every query, through the grid in front of parry's BVH, through the BVH alone and through the
+    // scan of every box, on workspaces of 32 to 2,000 shapes: the same answers, bit for bit.
     let mut rng = Rng::new(13);
     for n in [32, 200, 2000] {
         for open in [false, true] {
-            let mut bvh = random_workspace(&mut rng, n);
-            bvh.open = open;
-            assert!(bvh.has_bvh());
-            let scan = bvh.scanned();
-            assert!(!scan.has_bvh());
+            let mut grid = random_workspace(&mut rng, n).with_grid();
+            grid.open = open;
+            assert_eq!(random_workspace(&mut rng, n).has_grid(), n >= GRID_FROM);
+            assert!(grid.has_bvh() && grid.has_grid());
+            let bvh = grid.without_grid();
+            assert!(bvh.has_bvh() && !bvh.has_grid());
+            let scan = grid.scanned();
+            assert!(!scan.has_bvh() && !scan.has_grid());
             let mut hits = 0;
             for _ in 0..2000 {
                 let p = v(rng.uniform(-0.05, 1.05), rng.uniform(-0.05, 1.05));
@@ -465,17 +485,8 @@ fn the_hierarchy_finds_what_the_scan_finds() {
                 let r = v(p.x + rng.uniform(-0.05, 0.05), q.y);
                 let poly = [p, q, r];
                 let cap = rng.uniform(0.0, 0.3);
-                assert_eq!(bvh.point_hit(p), scan.point_hit(p));
-                assert_eq!(bvh.point_hits(p), scan.point_hits(p));
-                assert_eq!(bvh.segment_hits(p, q), scan.segment_hits(p, q));
-                assert_eq!(bvh.segment_hit(p, q), scan.segment_hit(p, q));
-                assert_eq!(bvh.sight_clear(p, q), scan.sight_clear(p, q));
-                assert_eq!(bvh.polygon_hit(&poly), scan.polygon_hit(&poly));
-                assert_eq!(bvh.polygon_hit_any(&poly).is_some(), scan.polygon_hit(&poly).is_some());
-                assert_eq!(bvh.segment_hit_any(p, q).is_some(), scan.segment_hit(p, q).is_some());
-                assert_eq!(scan.segment_hit_any(p, q).is_some(), scan.segment_hit(p, q).is_some());
-                assert_eq!(bvh.segment_clearance(p, q, cap).to_bits(), scan.segment_clearance(p, q, cap).to_bits());
-                assert_eq!(bvh.polygon_clearance(&poly, cap).to_bits(), scan.polygon_clearance(&poly, cap).to_bits());
+                same_answers(&bvh, &scan, &poly, cap);
+                same_answers(&grid, &scan, &poly, cap);
                 hits += usize::from(scan.segment_hit(p, q).is_some());
             }
             assert!(
@@ -488,8 +499,40 @@ fn the_hierarchy_finds_what_the_scan_finds() {
 }
 
 #[test]
+fn the_grid_finds_what_the_scan_finds() {
+    // Many obstacles (small cells), queries of every size (long ones go to the hierarchy), big
+    // obstacles over many cells, crowded cells, queries outside every box and polygons of every
+    // shape (non-convex, both windings): the grid answers as the scan.
+    let mut rng = Rng::new(17);
+    let mut ws = random_workspace(&mut rng, 10_000);
+    let mut shapes = ws.obstacles.clone();
+    // A crowd of tiny shapes in one spot, and a few big ones.
+    for i in 0..200 {
+        let c = v(0.5 + 1e-4 * (i % 10) as f64, 0.5 + 1e-4 * (i / 10) as f64);
+        shapes.push(Shape::Circle(c, 2e-4));
+    }
+    shapes.push(Shape::Rect(Aabb { min: v(0.1, 0.6), max: v(0.9, 0.65) }));
+    shapes.push(Shape::Polygon(vec![v(0.2, 0.2), v(0.8, 0.25), v(0.3, 0.9), v(0.4, 0.3)]));
+    for (k, obstacles) in [ws.obstacles.clone(), shapes].into_iter().enumerate() {
+        ws = Workspace::new(ws.bounds, obstacles);
+        // The second map has a crowded cell, whose queries go to the hierarchy.
+        let (cells, entries, crowded) = ws.grid_stats().expect("a grid");
+        assert!(cells > 1000 && entries < 8 * ws.obstacles.len() && (crowded > 0) == (k == 1), "map {k}");
+        let scan = ws.scanned();
+        for i in 0..3000 {
+            let size = [0.002, 0.02, 0.2, 1.0][i % 4];
+            let p = v(rng.uniform(-0.05, 1.05), rng.uniform(-0.05, 1.05));
+            let mut poly: Vec<Vec2> =
+                (0..3 + i % 5).map(|_| v(p.x + rng.uniform(-size, size), p.y + rng.uniform(-size, size))).collect();
+            poly[0] = p;
+            same_answers(&ws, &scan, &poly, rng.uniform(0.0, 0.05));
+        }
+    }
+}
+
+#[test]
 fn the_hierarchy_prunes_nothing_that_touches() {
-    // Blocks on a lattice, and segments and convex polygons whose vertices are lattice points:
+    // (Nor the grid.) Blocks on a lattice, and segments and convex polygons whose vertices are lattice points:
     // they graze corners and run along edges exactly, where a careless pruning test would drop
     // an obstacle the exact test counts.
     let mut rng = Rng::new(29);
@@ -504,18 +547,23 @@ fn the_hierarchy_prunes_nothing_that_touches() {
             }
         }
     }
-    let bvh = Workspace::new(Aabb { min: v(0.0, 0.0), max: v(1.0, 1.0) }, shapes);
-    let scan = bvh.scanned();
+    let grid = Workspace::new(Aabb { min: v(0.0, 0.0), max: v(1.0, 1.0) }, shapes).with_grid();
+    assert!(grid.has_grid());
+    let (bvh, scan) = (grid.without_grid(), grid.scanned());
     let lattice = |rng: &mut Rng| v(rng.below(21) as f64 * 0.05, rng.below(21) as f64 * 0.05);
     let mut touching = 0;
     for _ in 0..5000 {
         let (p, q) = (lattice(&mut rng), lattice(&mut rng));
         let r = v(q.x, p.y);
-        assert_eq!(bvh.segment_hit(p, q), scan.segment_hit(p, q), "{p:?} {q:?}");
-        assert_eq!(bvh.segment_hits(p, q), scan.segment_hits(p, q), "{p:?} {q:?}");
-        assert_eq!(bvh.sight_clear(p, q), scan.sight_clear(p, q), "{p:?} {q:?}");
         let poly = [p, r, q];
-        assert_eq!(bvh.polygon_hit(&poly), scan.polygon_hit(&poly), "{poly:?}");
+        for ws in [&grid, &bvh] {
+            assert_eq!(ws.segment_hit(p, q), scan.segment_hit(p, q), "{p:?} {q:?}");
+            assert_eq!(ws.segment_hits(p, q), scan.segment_hits(p, q), "{p:?} {q:?}");
+            assert_eq!(ws.sight_clear(p, q), scan.sight_clear(p, q), "{p:?} {q:?}");
+            assert_eq!(ws.point_hit(p), scan.point_hit(p), "{p:?}");
+            assert_eq!(ws.polygon_hit(&poly), scan.polygon_hit(&poly), "{poly:?}");
+            assert_eq!(ws.polygon_hit_any(&poly).is_some(), scan.polygon_hit(&poly).is_some(), "{poly:?}");
+        }
         touching += usize::from(scan.segment_hit(p, q).is_some() && scan.sight_clear(p, q));
     }
     assert!(touching > 50, "only {touching} segments touched without crossing: the test does not probe touching");

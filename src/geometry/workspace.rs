@@ -1,9 +1,10 @@
+use super::grid::{Grid, Query};
 use super::{Aabb, Shape};
 use crate::math::{MinMax, Real, Vec2};
 use parry2d_f64::bounding_volume::Aabb as ParryAabb;
 use parry2d_f64::math::Vector;
 use parry2d_f64::partitioning::{Bvh, BvhBuildStrategy, BvhNode};
-use std::cell::Cell;
+use std::cell::{Cell, OnceCell};
 
 thread_local! {
     /// Exact tests done by workspace queries since [`take_tests`] was last called: how long a
@@ -25,6 +26,11 @@ fn add_tests(n: u64) {
 /// rather than a scan of every obstacle's box. Below it, the scan is as fast.
 pub const BVH_FROM: usize = 32;
 
+/// From this many obstacles on, a grid of candidate lists stands in front of the hierarchy (see
+/// [`super::grid`]). Below it the hierarchy is shallow, and alone it is as fast or faster for
+/// segments and bodies (`planarium scaling --sizes 100,1000`).
+pub const GRID_FROM: usize = 1000;
+
 /// The world a robot moves in: rectangular bounds and closed obstacles.
 ///
 /// Every query is a broad phase over the obstacles' boxes (a scan, or from [`BVH_FROM`] obstacles
@@ -42,6 +48,8 @@ pub struct Workspace {
     pub obstacles: Vec<Shape>,
     boxes: Vec<Aabb>,
     bvh: Option<Bvh>,
+    /// With the hierarchy, a grid of candidate lists in front of it (see [`super::grid`]).
+    grid: Option<Grid>,
 }
 
 /// Whether a hierarchy node's box meets `bb` (closed boxes: touching counts, as [`Aabb::intersects`]).
@@ -58,12 +66,25 @@ struct Probe {
     bb: Aabb,
     axes: [(Vec2, Real, Real); 8],
     n: usize,
+    /// Whether the axes are a convex polygon's edge normals (the polygon is where the shape's
+    /// extents along them all hold), set by [`Probe::with_holds`].
+    convex: bool,
 }
 
 impl Probe {
+    /// The probe of a query's shape, its box `bb`. (Inlined: built in place, as a segment's
+    /// probe was before the grid; a polygon's is a call, as it was.)
+    #[inline(always)]
+    fn of(q: &Query, bb: Aabb) -> Probe {
+        match *q {
+            Query::Point(_) => Probe::of_box(bb),
+            Query::Segment(a, b) => Probe::of_segment(a, b),
+            Query::Polygon(poly) => Probe::of_polygon(poly),
+        }
+    }
     /// Only the box.
     fn of_box(bb: Aabb) -> Probe {
-        Probe { bb, axes: [(Vec2::default(), 0.0, 0.0); 8], n: 0 }
+        Probe { bb, axes: [(Vec2::default(), 0.0, 0.0); 8], n: 0, convex: false }
     }
     /// A segment: its box and its normal.
     fn of_segment(a: Vec2, b: Vec2) -> Probe {
@@ -75,6 +96,7 @@ impl Probe {
         p
     }
     /// A polygon: its box, and its edge normals when it is convex with at most 8 edges.
+    #[inline(never)]
     fn of_polygon(poly: &[Vec2]) -> Probe {
         let mut p = Probe::of_box(Aabb::of_points(poly));
         let m = poly.len();
@@ -103,6 +125,42 @@ impl Probe {
         p.n = m;
         p
     }
+    /// The probe, told whether it may answer [`Probe::holds`]: its axes are a convex polygon's, and
+    /// the polygon is no star (its edges turn once around: their y components change sign twice).
+    fn with_holds(mut self, q: &Query) -> Probe {
+        if let Query::Polygon(poly) = *q {
+            let m = poly.len();
+            let dy = |i: usize| poly[if i + 1 == m { 0 } else { i + 1 }].y - poly[i].y;
+            let mut ups = (0..m).map(dy).filter(|&d| d != 0.0).map(|d| d > 0.0);
+            let start = ups.next();
+            let (mut last, mut flips) = (start, 0);
+            for up in ups {
+                flips += usize::from(last != Some(up));
+                last = Some(up);
+            }
+            self.convex = self.n == m && flips + usize::from(last != start) == 2;
+        }
+        self
+    }
+    /// Whether the box `lo .. hi` lies inside the shape, a convex polygon: never `true` for one that
+    /// does not (the same margin, the other way). An obstacle has a point in its box (a corner, a
+    /// vertex, an end, the centre), so one whose box the polygon holds meets the polygon: what the
+    /// exact test would answer, without its cost (issue 15: among many small obstacles, a body
+    /// often covers some whole).
+    #[inline]
+    fn holds(&self, lo: Vec2, hi: Vec2) -> bool {
+        if !self.convex {
+            return false;
+        }
+        let scale = 1.0 + lo.x.abs().at_least(lo.y.abs()).at_least(hi.x.abs()).at_least(hi.y.abs());
+        self.axes[..self.n].iter().all(|&(n, dlo, dhi)| {
+            let c = Vec2::new((lo.x + hi.x) * 0.5, (lo.y + hi.y) * 0.5);
+            let r = 0.5 * ((hi.x - lo.x) * n.x.abs() + (hi.y - lo.y) * n.y.abs());
+            let d = n.x * c.x + n.y * c.y;
+            let margin = 1e-9 * (n.x.abs() + n.y.abs()) * scale;
+            d - r >= dlo + margin && d + r <= dhi - margin
+        })
+    }
     /// Whether the box `lo .. hi` may meet the shape: never `false` for one that does (a margin
     /// far above rounding keeps the test conservative; the exact test decides).
     #[inline]
@@ -110,6 +168,9 @@ impl Probe {
         let bb = &self.bb;
         if !(lo.x <= bb.max.x && bb.min.x <= hi.x && lo.y <= bb.max.y && bb.min.y <= hi.y) {
             return false;
+        }
+        if self.n == 0 {
+            return true;
         }
         let scale = 1.0 + lo.x.abs().at_least(lo.y.abs()).at_least(hi.x.abs()).at_least(hi.y.abs());
         self.axes[..self.n].iter().all(|&(n, dlo, dhi)| {
@@ -133,13 +194,44 @@ impl Workspace {
                 .collect();
             Bvh::from_leaves(BvhBuildStrategy::Binned, &leaves)
         });
-        Workspace { bounds, obstacles, boxes, bvh, open: false }
+        let grid = (boxes.len() >= GRID_FROM).then(|| Grid::new(&boxes)).flatten();
+        Workspace { bounds, obstacles, boxes, bvh, grid, open: false }
     }
 
     /// The same workspace with the broad phase a scan of every box (for tests and benchmarks
     /// that compare the two).
     pub fn scanned(&self) -> Workspace {
-        Workspace { bvh: None, ..self.clone() }
+        Workspace { bvh: None, grid: None, ..self.clone() }
+    }
+
+    /// The same workspace with the hierarchy alone, no grid in front of it (for tests and
+    /// benchmarks that compare the two).
+    pub fn without_grid(&self) -> Workspace {
+        Workspace { grid: None, ..self.clone() }
+    }
+
+    /// The same workspace with a grid in front of its hierarchy whatever its size (for tests that
+    /// compare the broad phases on small maps).
+    pub fn with_grid(&self) -> Workspace {
+        Workspace { grid: self.bvh.as_ref().and_then(|_| Grid::new(&self.boxes)), ..self.clone() }
+    }
+
+    /// Whether small queries go through the grid of candidate lists first.
+    pub fn has_grid(&self) -> bool {
+        self.grid.is_some()
+    }
+
+    /// The grid's cells, list entries and crowded cells.
+    #[cfg(test)]
+    pub(super) fn grid_stats(&self) -> Option<(usize, usize, usize)> {
+        self.grid.as_ref().map(Grid::stats)
+    }
+
+    /// The bytes the broad phase uses beyond the obstacles: their boxes, the hierarchy and the grid.
+    pub fn broad_phase_bytes(&self) -> usize {
+        std::mem::size_of_val(&self.boxes[..])
+            + self.bvh.as_ref().map_or(0, Bvh::heap_memory_size)
+            + self.grid.as_ref().map_or(0, Grid::heap_bytes)
     }
 
     /// Whether queries use the bounding-volume hierarchy.
@@ -147,28 +239,34 @@ impl Workspace {
         self.bvh.is_some()
     }
 
-    /// Call `f` with each obstacle whose box meets `bb` (in no particular order) until it returns
-    /// `true`; returns whether it did.
+    /// Call `f` with each obstacle whose box meets `bb`, the box of the query `q` (in no particular
+    /// order), until it returns `true`; returns whether it did. The grid and the hierarchy skip
+    /// obstacles by the query's shape too (only when there is a hierarchy: a scan of a few boxes
+    /// tests `bb` alone).
     #[inline]
-    fn near(&self, bb: &Aabb, f: impl FnMut(usize) -> bool) -> bool {
-        self.near_by(bb, || Probe::of_box(*bb), f)
-    }
-
-    /// Like [`Workspace::near`]; the hierarchy is pruned by the query's shape, which `probe` makes
-    /// (only when there is a hierarchy: a scan of a few boxes tests `bb` alone).
-    #[inline]
-    fn near_by(&self, bb: &Aabb, probe: impl FnOnce() -> Probe, mut f: impl FnMut(usize) -> bool) -> bool {
+    ///
+    /// `f` is told too whether the obstacle surely meets the query, its box inside the query's
+    /// convex polygon (see `Probe::holds`; never for other queries, nor by the scan).
+    fn near_by(&self, bb: &Aabb, q: Query, mut f: impl FnMut(usize, bool) -> bool) -> bool {
         // (Exact tests are counted only through the hierarchy: a scan has fewer than BVH_FROM.)
         match &self.bvh {
-            None => self.boxes.iter().enumerate().any(|(i, bx)| bx.intersects(bb) && f(i)),
+            None => self.boxes.iter().enumerate().any(|(i, bx)| bx.intersects(bb) && f(i, false)),
             Some(t) => {
-                let probe = probe();
                 let mut tests = 0;
+                if let Some(g) = &self.grid {
+                    if let Some(found) = self.near_in_grid(g, bb, q, &mut f) {
+                        return found;
+                    }
+                }
+                // (Built in place: a probe is a few hundred bytes, and small maps query often. The
+                // hierarchy serves maps of 32 to 1,000 obstacles mostly, where a body seldom holds
+                // one whole: the exact test decides, as it always did.)
+                let probe = Probe::of(&q, *bb);
                 let found = t
                     .leaves(|n| probe.may_meet(Vec2::new(n.mins().x, n.mins().y), Vec2::new(n.maxs().x, n.maxs().y)))
                     .any(|i| {
                         tests += 1;
-                        f(i as usize)
+                        f(i as usize, false)
                     });
                 if tests > 0 {
                     add_tests(tests);
@@ -178,15 +276,57 @@ impl Workspace {
         }
     }
 
+    /// [`Workspace::near_by`] through the grid: `None` when it gives way to the hierarchy. (Apart,
+    /// and not inlined: the hierarchy's path stays as small as it was for the maps below
+    /// [`GRID_FROM`].)
+    #[inline(never)]
+    fn near_in_grid(&self, g: &Grid, bb: &Aabb, q: Query, f: &mut impl FnMut(usize, bool) -> bool) -> Option<bool> {
+        let mut tests = 0;
+        // Made when first needed: a query beside every obstacle needs none.
+        let probe = OnceCell::new();
+        let probe = || probe.get_or_init(|| Probe::of(&q, *bb).with_holds(&q));
+        let polygon = matches!(q, Query::Polygon(_));
+        let sure = |i: usize| polygon && probe().holds(self.boxes[i].min, self.boxes[i].max);
+        // A body among many small obstacles often holds some whole: those listed at the
+        // centre of its box first, where they are likeliest (then the walk, which may
+        // hand them over again: `f` answers the same).
+        if let Query::Polygon(_) = q {
+            let centre = Vec2::new(0.5 * (bb.min.x + bb.max.x), 0.5 * (bb.min.y + bb.max.y));
+            for &i in g.at(centre).unwrap_or(&[]) {
+                let bx = &self.boxes[i as usize];
+                if probe().holds(bx.min, bx.max) {
+                    tests += 1;
+                    if f(i as usize, true) {
+                        add_tests(tests);
+                        return Some(true);
+                    }
+                }
+            }
+        }
+        // Obstacles whose boxes the shape misses are not handed to the exact test.
+        let meets = |bx: &Aabb| match q {
+            Query::Point(p) => bx.contains(p),
+            _ => bx.intersects(bb) && probe().may_meet(bx.min, bx.max),
+        };
+        let walked = g.walk(&self.boxes, bb, &q, meets, |i| {
+            tests += 1;
+            f(i, sure(i))
+        });
+        if tests > 0 {
+            add_tests(tests);
+        }
+        walked
+    }
+
     /// The first obstacle (in scenario order) whose box meets `bb` and that passes `hit`.
     #[inline]
-    fn first(&self, bb: &Aabb, probe: impl FnOnce() -> Probe, hit: impl Fn(usize) -> bool) -> Option<usize> {
+    fn first(&self, bb: &Aabb, q: Query, hit: impl Fn(usize) -> bool) -> Option<usize> {
         match &self.bvh {
             None => (0..self.obstacles.len()).find(|&i| self.boxes[i].intersects(bb) && hit(i)),
             Some(_) => {
                 let mut first: Option<usize> = None;
-                self.near_by(bb, probe, |i| {
-                    if first.is_none_or(|f| i < f) && hit(i) {
+                self.near_by(bb, q, |i, sure| {
+                    if first.is_none_or(|f| i < f) && (sure || hit(i)) {
                         first = Some(i);
                     }
                     false
@@ -234,21 +374,17 @@ impl Workspace {
     /// The index of the first obstacle that contains `p`, if any.
     pub fn point_hit(&self, p: Vec2) -> Option<usize> {
         let bb = Aabb { min: p, max: p };
-        self.first(&bb, || Probe::of_box(bb), |i| self.obstacles[i].contains_point(p))
+        self.first(&bb, Query::Point(p), |i| self.obstacles[i].contains_point(p))
     }
 
     /// Whether the point `p` lies in (or on) an obstacle.
     pub fn point_hits(&self, p: Vec2) -> bool {
-        self.near(&Aabb { min: p, max: p }, |i| self.obstacles[i].contains_point(p))
+        self.near_by(&Aabb { min: p, max: p }, Query::Point(p), |i, _| self.obstacles[i].contains_point(p))
     }
 
     /// Whether the closed segment `a b` meets an obstacle.
     pub fn segment_hits(&self, a: Vec2, b: Vec2) -> bool {
-        self.near_by(
-            &Aabb::of_points(&[a, b]),
-            || Probe::of_segment(a, b),
-            |i| self.obstacles[i].intersects_segment(a, b),
-        )
+        self.near_by(&Aabb::of_points(&[a, b]), Query::Segment(a, b), |i, _| self.obstacles[i].intersects_segment(a, b))
     }
 
     /// The distance from the closed polygon `poly` to the nearest obstacle, capped at `cap`
@@ -261,17 +397,13 @@ impl Workspace {
     /// The index of the first obstacle that the segment `a b` meets (its interior only when the
     /// workspace is [`open`](Workspace::open)), if any.
     pub fn segment_hit(&self, a: Vec2, b: Vec2) -> Option<usize> {
-        self.first(
-            &Aabb::of_points(&[a, b]),
-            || Probe::of_segment(a, b),
-            |i| {
-                if self.open {
-                    self.obstacles[i].interior_meets_segment(a, b)
-                } else {
-                    self.obstacles[i].intersects_segment(a, b)
-                }
-            },
-        )
+        self.first(&Aabb::of_points(&[a, b]), Query::Segment(a, b), |i| {
+            if self.open {
+                self.obstacles[i].interior_meets_segment(a, b)
+            } else {
+                self.obstacles[i].intersects_segment(a, b)
+            }
+        })
     }
 
     /// The distance from the segment `a b` to the nearest obstacle, capped at `cap` (0 when it
@@ -284,47 +416,41 @@ impl Workspace {
     /// obstacle's interior. Touching (grazing a vertex, running along an edge, ending on the
     /// boundary) does not block, whatever [`open`](Workspace::open) says (see [`super::sight`]).
     pub fn sight_clear(&self, a: Vec2, b: Vec2) -> bool {
-        !self.near_by(
-            &Aabb::of_points(&[a, b]),
-            || Probe::of_segment(a, b),
-            |i| self.obstacles[i].interior_meets_segment(a, b),
-        )
+        !self.near_by(&Aabb::of_points(&[a, b]), Query::Segment(a, b), |i, _| {
+            self.obstacles[i].interior_meets_segment(a, b)
+        })
     }
 
     /// The index of the first obstacle that the closed polygon `poly` meets, if any.
     pub fn polygon_hit(&self, poly: &[Vec2]) -> Option<usize> {
         let bb = Aabb::of_points(poly);
-        self.first(&bb, || Probe::of_polygon(poly), |i| self.obstacles[i].intersects_polygon(poly, &bb))
+        self.first(&bb, Query::Polygon(poly), |i| self.obstacles[i].intersects_polygon(poly, &bb))
     }
 
     /// An obstacle (the first found, not necessarily the first in scenario order) that the closed
     /// polygon `poly` meets, if any: for validity, where any will do and the search stops at it.
     pub fn polygon_hit_any(&self, poly: &[Vec2]) -> Option<usize> {
         let bb = Aabb::of_points(poly);
-        self.any(&bb, || Probe::of_polygon(poly), |i| self.obstacles[i].intersects_polygon(poly, &bb))
+        self.any(&bb, Query::Polygon(poly), |i| self.obstacles[i].intersects_polygon(poly, &bb))
     }
 
     /// Like [`Workspace::segment_hit`], but any obstacle met (see [`Workspace::polygon_hit_any`]).
     pub fn segment_hit_any(&self, a: Vec2, b: Vec2) -> Option<usize> {
-        self.any(
-            &Aabb::of_points(&[a, b]),
-            || Probe::of_segment(a, b),
-            |i| {
-                if self.open {
-                    self.obstacles[i].interior_meets_segment(a, b)
-                } else {
-                    self.obstacles[i].intersects_segment(a, b)
-                }
-            },
-        )
+        self.any(&Aabb::of_points(&[a, b]), Query::Segment(a, b), |i| {
+            if self.open {
+                self.obstacles[i].interior_meets_segment(a, b)
+            } else {
+                self.obstacles[i].intersects_segment(a, b)
+            }
+        })
     }
 
     /// An obstacle whose box meets `bb` and that passes `hit`, the first the broad phase finds.
     #[inline]
-    fn any(&self, bb: &Aabb, probe: impl FnOnce() -> Probe, hit: impl Fn(usize) -> bool) -> Option<usize> {
+    fn any(&self, bb: &Aabb, q: Query, hit: impl Fn(usize) -> bool) -> Option<usize> {
         let mut found = None;
-        self.near_by(bb, probe, |i| {
-            let h = hit(i);
+        self.near_by(bb, q, |i, sure| {
+            let h = sure || hit(i);
             if h {
                 found = Some(i);
             }

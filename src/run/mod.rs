@@ -10,6 +10,7 @@ pub mod bench;
 mod fingerprint;
 pub mod report;
 mod result;
+pub mod scaling;
 mod session;
 pub mod summary;
 
