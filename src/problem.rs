@@ -87,7 +87,7 @@ impl Problem {
             Aabb { min: Vec2::new(b[0], b[1]), max: Vec2::new(b[2], b[3]) },
             sc.obstacles.iter().map(shape_of).collect(),
         );
-        workspace.open = sc.touching_allowed;
+        workspace.touching_allowed = sc.touching_allowed;
         let robot: Rc<dyn Robot> =
             robot::from_spec(&sc.robot, sc.body_in_bounds).map_err(|e| ScenarioError::at("robot.kind", e))?.into();
         let space = robot.space(&workspace);

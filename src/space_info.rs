@@ -423,7 +423,10 @@ impl SpaceInfo {
             Verdict::OutOfBounds(_) => -2,
             Verdict::Invalid(_) => -3,
             Verdict::Valid => match self.motion_model().sweep_hits(self.workspace(), a, b) {
-                Some(true) => self.workspace().segment_hit(self.project(a), self.project(b)).map_or(-1, |i| i as i64),
+                Some(true) => self
+                    .workspace()
+                    .first_obstacle_on_segment(self.project(a), self.project(b))
+                    .map_or(-1, |i| i as i64),
                 _ => -1,
             },
         }

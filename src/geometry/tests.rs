@@ -450,15 +450,15 @@ fn random_workspace(rng: &mut Rng, n: usize) -> Workspace {
 /// for bit (the same first obstacle, the same clearance).
 fn same_answers(a: &Workspace, b: &Workspace, poly: &[Vec2], cap: f64) {
     let (p, q) = (poly[0], poly[1]);
-    assert_eq!(a.point_hit(p), b.point_hit(p));
-    assert_eq!(a.point_hits(p), b.point_hits(p));
-    assert_eq!(a.segment_hits(p, q), b.segment_hits(p, q));
-    assert_eq!(a.segment_hit(p, q), b.segment_hit(p, q));
+    assert_eq!(a.first_obstacle_at(p), b.first_obstacle_at(p));
+    assert_eq!(a.point_blocked(p), b.point_blocked(p));
+    assert_eq!(a.segment_blocked(p, q), b.segment_blocked(p, q));
+    assert_eq!(a.first_obstacle_on_segment(p, q), b.first_obstacle_on_segment(p, q));
     assert_eq!(a.sight_clear(p, q), b.sight_clear(p, q));
-    assert_eq!(a.polygon_hit(poly), b.polygon_hit(poly));
-    assert_eq!(a.polygon_hit_any(poly).is_some(), b.polygon_hit(poly).is_some());
-    assert_eq!(a.segment_hit_any(p, q).is_some(), b.segment_hit(p, q).is_some());
-    assert_eq!(b.segment_hit_any(p, q).is_some(), b.segment_hit(p, q).is_some());
+    assert_eq!(a.first_obstacle_in_polygon(poly), b.first_obstacle_in_polygon(poly));
+    assert_eq!(a.any_obstacle_in_polygon(poly).is_some(), b.first_obstacle_in_polygon(poly).is_some());
+    assert_eq!(a.any_obstacle_on_segment(p, q).is_some(), b.first_obstacle_on_segment(p, q).is_some());
+    assert_eq!(b.any_obstacle_on_segment(p, q).is_some(), b.first_obstacle_on_segment(p, q).is_some());
     assert_eq!(a.segment_clearance(p, q, cap).to_bits(), b.segment_clearance(p, q, cap).to_bits());
     assert_eq!(a.polygon_clearance(poly, cap).to_bits(), b.polygon_clearance(poly, cap).to_bits());
 }
@@ -471,7 +471,7 @@ fn the_hierarchy_finds_what_the_scan_finds() {
     for n in [32, 200, 2000] {
         for open in [false, true] {
             let mut grid = random_workspace(&mut rng, n).with_grid();
-            grid.open = open;
+            grid.touching_allowed = open;
             assert_eq!(random_workspace(&mut rng, n).has_grid(), n >= GRID_FROM);
             assert!(grid.has_bvh() && grid.has_grid());
             let bvh = grid.without_grid();
@@ -487,7 +487,7 @@ fn the_hierarchy_finds_what_the_scan_finds() {
                 let cap = rng.uniform(0.0, 0.3);
                 same_answers(&bvh, &scan, &poly, cap);
                 same_answers(&grid, &scan, &poly, cap);
-                hits += usize::from(scan.segment_hit(p, q).is_some());
+                hits += usize::from(scan.first_obstacle_on_segment(p, q).is_some());
             }
             assert!(
                 hits > 100 && hits < 1900,
@@ -557,14 +557,18 @@ fn the_hierarchy_prunes_nothing_that_touches() {
         let r = v(q.x, p.y);
         let poly = [p, r, q];
         for ws in [&grid, &bvh] {
-            assert_eq!(ws.segment_hit(p, q), scan.segment_hit(p, q), "{p:?} {q:?}");
-            assert_eq!(ws.segment_hits(p, q), scan.segment_hits(p, q), "{p:?} {q:?}");
+            assert_eq!(ws.first_obstacle_on_segment(p, q), scan.first_obstacle_on_segment(p, q), "{p:?} {q:?}");
+            assert_eq!(ws.segment_blocked(p, q), scan.segment_blocked(p, q), "{p:?} {q:?}");
             assert_eq!(ws.sight_clear(p, q), scan.sight_clear(p, q), "{p:?} {q:?}");
-            assert_eq!(ws.point_hit(p), scan.point_hit(p), "{p:?}");
-            assert_eq!(ws.polygon_hit(&poly), scan.polygon_hit(&poly), "{poly:?}");
-            assert_eq!(ws.polygon_hit_any(&poly).is_some(), scan.polygon_hit(&poly).is_some(), "{poly:?}");
+            assert_eq!(ws.first_obstacle_at(p), scan.first_obstacle_at(p), "{p:?}");
+            assert_eq!(ws.first_obstacle_in_polygon(&poly), scan.first_obstacle_in_polygon(&poly), "{poly:?}");
+            assert_eq!(
+                ws.any_obstacle_in_polygon(&poly).is_some(),
+                scan.first_obstacle_in_polygon(&poly).is_some(),
+                "{poly:?}"
+            );
         }
-        touching += usize::from(scan.segment_hit(p, q).is_some() && scan.sight_clear(p, q));
+        touching += usize::from(scan.first_obstacle_on_segment(p, q).is_some() && scan.sight_clear(p, q));
     }
     assert!(touching > 50, "only {touching} segments touched without crossing: the test does not probe touching");
 }

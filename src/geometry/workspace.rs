@@ -27,7 +27,7 @@ fn add_tests(n: u64) {
 pub const BVH_FROM: usize = 32;
 
 /// From this many obstacles on, a grid of candidate lists stands in front of the hierarchy (see
-/// [`super::grid`]). Below it the hierarchy is shallow, and alone it is as fast or faster for
+/// `geometry/grid.rs`). Below it the hierarchy is shallow, and alone it is as fast or faster for
 /// segments and bodies (`planarium scaling --sizes 100,1000`).
 pub const GRID_FROM: usize = 1000;
 
@@ -41,14 +41,15 @@ pub const GRID_FROM: usize = 1000;
 pub struct Workspace {
     /// The bounds `[xmin, ymin] .. [xmax, ymax]`.
     pub bounds: Aabb,
-    /// Obstacles are open sets: touching their boundary is allowed (`touching_allowed`). Only
-    /// [`Workspace::segment_hit`] reads it; robots made of segments (arms) use that.
-    pub open: bool,
+    /// The scenario's `touching_allowed`: obstacles are open sets, so touching their boundary is
+    /// allowed. Only [`Workspace::first_obstacle_on_segment`] reads it; robots made of segments
+    /// (arms) use that.
+    pub touching_allowed: bool,
     /// The obstacles, in scenario order.
     pub obstacles: Vec<Shape>,
     boxes: Vec<Aabb>,
     bvh: Option<Bvh>,
-    /// With the hierarchy, a grid of candidate lists in front of it (see [`super::grid`]).
+    /// With the hierarchy, a grid of candidate lists in front of it (see `geometry/grid.rs`).
     grid: Option<Grid>,
 }
 
@@ -195,7 +196,7 @@ impl Workspace {
             Bvh::from_leaves(BvhBuildStrategy::Binned, &leaves)
         });
         let grid = (boxes.len() >= GRID_FROM).then(|| Grid::new(&boxes)).flatten();
-        Workspace { bounds, obstacles, boxes, bvh, grid, open: false }
+        Workspace { bounds, obstacles, boxes, bvh, grid, touching_allowed: false }
     }
 
     /// The same workspace with the broad phase a scan of every box (for tests and benchmarks
@@ -372,18 +373,18 @@ impl Workspace {
     }
 
     /// The index of the first obstacle that contains `p`, if any.
-    pub fn point_hit(&self, p: Vec2) -> Option<usize> {
+    pub fn first_obstacle_at(&self, p: Vec2) -> Option<usize> {
         let bb = Aabb { min: p, max: p };
         self.first(&bb, Query::Point(p), |i| self.obstacles[i].contains_point(p))
     }
 
     /// Whether the point `p` lies in (or on) an obstacle.
-    pub fn point_hits(&self, p: Vec2) -> bool {
+    pub fn point_blocked(&self, p: Vec2) -> bool {
         self.near_by(&Aabb { min: p, max: p }, Query::Point(p), |i, _| self.obstacles[i].contains_point(p))
     }
 
     /// Whether the closed segment `a b` meets an obstacle.
-    pub fn segment_hits(&self, a: Vec2, b: Vec2) -> bool {
+    pub fn segment_blocked(&self, a: Vec2, b: Vec2) -> bool {
         self.near_by(&Aabb::of_points(&[a, b]), Query::Segment(a, b), |i, _| self.obstacles[i].intersects_segment(a, b))
     }
 
@@ -395,10 +396,10 @@ impl Workspace {
     }
 
     /// The index of the first obstacle that the segment `a b` meets (its interior only when the
-    /// workspace is [`open`](Workspace::open)), if any.
-    pub fn segment_hit(&self, a: Vec2, b: Vec2) -> Option<usize> {
+    /// workspace is [`touching_allowed`](Workspace::touching_allowed)), if any.
+    pub fn first_obstacle_on_segment(&self, a: Vec2, b: Vec2) -> Option<usize> {
         self.first(&Aabb::of_points(&[a, b]), Query::Segment(a, b), |i| {
-            if self.open {
+            if self.touching_allowed {
                 self.obstacles[i].interior_meets_segment(a, b)
             } else {
                 self.obstacles[i].intersects_segment(a, b)
@@ -414,7 +415,7 @@ impl Workspace {
 
     /// Whether a sensor at `a` has a clear sight line to `b`: the segment `a b` passes through no
     /// obstacle's interior. Touching (grazing a vertex, running along an edge, ending on the
-    /// boundary) does not block, whatever [`open`](Workspace::open) says (see [`super::sight`]).
+    /// boundary) does not block, whatever [`touching_allowed`](Workspace::touching_allowed) says (see [`super::sight`]).
     pub fn sight_clear(&self, a: Vec2, b: Vec2) -> bool {
         !self.near_by(&Aabb::of_points(&[a, b]), Query::Segment(a, b), |i, _| {
             self.obstacles[i].interior_meets_segment(a, b)
@@ -422,22 +423,22 @@ impl Workspace {
     }
 
     /// The index of the first obstacle that the closed polygon `poly` meets, if any.
-    pub fn polygon_hit(&self, poly: &[Vec2]) -> Option<usize> {
+    pub fn first_obstacle_in_polygon(&self, poly: &[Vec2]) -> Option<usize> {
         let bb = Aabb::of_points(poly);
         self.first(&bb, Query::Polygon(poly), |i| self.obstacles[i].intersects_polygon(poly, &bb))
     }
 
     /// An obstacle (the first found, not necessarily the first in scenario order) that the closed
     /// polygon `poly` meets, if any: for validity, where any will do and the search stops at it.
-    pub fn polygon_hit_any(&self, poly: &[Vec2]) -> Option<usize> {
+    pub fn any_obstacle_in_polygon(&self, poly: &[Vec2]) -> Option<usize> {
         let bb = Aabb::of_points(poly);
         self.any(&bb, Query::Polygon(poly), |i| self.obstacles[i].intersects_polygon(poly, &bb))
     }
 
-    /// Like [`Workspace::segment_hit`], but any obstacle met (see [`Workspace::polygon_hit_any`]).
-    pub fn segment_hit_any(&self, a: Vec2, b: Vec2) -> Option<usize> {
+    /// Like [`Workspace::first_obstacle_on_segment`], but any obstacle met (see [`Workspace::any_obstacle_in_polygon`]).
+    pub fn any_obstacle_on_segment(&self, a: Vec2, b: Vec2) -> Option<usize> {
         self.any(&Aabb::of_points(&[a, b]), Query::Segment(a, b), |i| {
-            if self.open {
+            if self.touching_allowed {
                 self.obstacles[i].interior_meets_segment(a, b)
             } else {
                 self.obstacles[i].intersects_segment(a, b)

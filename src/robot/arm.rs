@@ -121,7 +121,9 @@ impl ArmRobot {
                 return Verdict::OutOfBounds(if p.x < ws.bounds.min.x || p.x > ws.bounds.max.x { 0 } else { 1 });
             }
             for w in pts.windows(2) {
-                if let Some(i) = if any { ws.segment_hit_any(w[0], w[1]) } else { ws.segment_hit(w[0], w[1]) } {
+                if let Some(i) =
+                    if any { ws.any_obstacle_on_segment(w[0], w[1]) } else { ws.first_obstacle_on_segment(w[0], w[1]) }
+                {
                     return Verdict::Collision(i);
                 }
             }

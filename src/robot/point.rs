@@ -22,13 +22,13 @@ impl Robot for PointRobot {
         if let Some(v) = xy_in_bounds(ws, q) {
             return v;
         }
-        match ws.point_hit(Vec2::new(q[0], q[1])) {
+        match ws.first_obstacle_at(Vec2::new(q[0], q[1])) {
             Some(i) => Verdict::Collision(i),
             None => Verdict::Valid,
         }
     }
     fn is_valid(&self, ws: &Workspace, q: &[Real]) -> bool {
-        xy_in_bounds(ws, q).is_none() && !ws.point_hits(Vec2::new(q[0], q[1]))
+        xy_in_bounds(ws, q).is_none() && !ws.point_blocked(Vec2::new(q[0], q[1]))
     }
     fn project(&self, q: &[Real]) -> Vec2 {
         Vec2::new(q[0], q[1])
@@ -50,7 +50,7 @@ impl Robot for PointRobot {
 /// A motion is a segment, tested exactly.
 impl MotionModel for PointRobot {
     fn sweep_hits(&self, ws: &Workspace, a: &[Real], b: &[Real]) -> Option<bool> {
-        Some(ws.segment_hits(Vec2::new(a[0], a[1]), Vec2::new(b[0], b[1])))
+        Some(ws.segment_blocked(Vec2::new(a[0], a[1]), Vec2::new(b[0], b[1])))
     }
 }
 

@@ -63,7 +63,7 @@ impl RigidRobot {
                 return Verdict::OutOfBounds(if p.x < ws.bounds.min.x || p.x > ws.bounds.max.x { 0 } else { 1 });
             }
         }
-        match if any { ws.polygon_hit_any(body) } else { ws.polygon_hit(body) } {
+        match if any { ws.any_obstacle_in_polygon(body) } else { ws.first_obstacle_in_polygon(body) } {
             Some(i) => Verdict::Collision(i),
             None => Verdict::Valid,
         }

@@ -186,14 +186,14 @@ impl Session {
     /// does not count.
     ///
     /// A finite `max_ms` makes the batch *bounded*: however long one iteration would take, the
-    /// batch ends within about [`SUSPEND_AFTER`] × `max_ms` (plus one state check). An iteration
+    /// batch ends within about `SUSPEND_AFTER` × `max_ms` (plus one state check). An iteration
     /// still running then is thrown away and done again by the next batch, which replays the
     /// answers already computed ([`crate::journal`]), so the run is the same as in one go, bit
     /// for bit, only its iteration count lags until the iteration completes.
     ///
-    /// The exception: a batch whose snapshot would cost more than [`MAX_SNAPSHOT_SHARE`] of its
+    /// The exception: a batch whose snapshot would cost more than `MAX_SNAPSHOT_SHARE` of its
     /// budget (a tree of some 20,000 nodes for 12 ms) is run without one while the run's batches
-    /// keep to their budget; one that overruns makes the next [`RISKY_BATCHES`] take snapshots.
+    /// keep to their budget; one that overruns makes the next `RISKY_BATCHES` take snapshots.
     pub fn step(&mut self, max_iterations: u64, max_ms: f64) -> Status {
         if self.status.is_finished() {
             return self.status;

@@ -73,7 +73,7 @@ pub fn obstacle_polygon(o: &ObstacleSpec) -> Option<Vec<P>> {
     }
 }
 
-fn point_hits(o: &ObstacleSpec, p: P) -> bool {
+fn point_blocked(o: &ObstacleSpec, p: P) -> bool {
     match o {
         ObstacleSpec::Circle(c) => ((p.0 - c[0]).powi(2) + (p.1 - c[1]).powi(2)).sqrt() <= c[2],
         ObstacleSpec::Segment(s) => on_segment((s[0], s[1]), (s[2], s[3]), p),
@@ -91,7 +91,7 @@ fn clip_box(a: P, b: P, x0: f64, y0: f64, x1: f64, y1: f64) -> bool {
     !(sides.iter().all(|&v| v > 0.0) || sides.iter().all(|&v| v < 0.0))
 }
 
-fn segment_hits(o: &ObstacleSpec, a: P, b: P) -> bool {
+fn segment_blocked(o: &ObstacleSpec, a: P, b: P) -> bool {
     match o {
         ObstacleSpec::Rect(r) => clip_box(a, b, r[0].min(r[2]), r[1].min(r[3]), r[0].max(r[2]), r[1].max(r[3])),
         ObstacleSpec::Circle(c) => dist_point_segment((c[0], c[1]), a, b) <= c[2],
@@ -106,7 +106,7 @@ fn segment_hits(o: &ObstacleSpec, a: P, b: P) -> bool {
 /// Whether a body polygon meets an obstacle.
 fn body_hits(o: &ObstacleSpec, body: &[P]) -> bool {
     let n = body.len();
-    (0..n).any(|i| segment_hits(o, body[i], body[(i + 1) % n]))
+    (0..n).any(|i| segment_blocked(o, body[i], body[(i + 1) % n]))
         || match o {
             ObstacleSpec::Circle(c) => in_polygon(body, (c[0], c[1])),
             ObstacleSpec::Segment(s) => in_polygon(body, (s[0], s[1])),
@@ -158,7 +158,7 @@ fn arm_problem(sc: &Scenario, q: &[f64]) -> Option<String> {
     }
     for w in pts.windows(2) {
         for (i, o) in sc.obstacles.iter().enumerate() {
-            if segment_hits(o, w[0], w[1]) {
+            if segment_blocked(o, w[0], w[1]) {
                 return Some(format!("{q:?}: link {:?}-{:?} meets obstacles[{i}]", w[0], w[1]));
             }
         }
@@ -186,7 +186,7 @@ pub fn state_problem(sc: &Scenario, q: &[f64]) -> Option<String> {
     }
     for (i, o) in sc.obstacles.iter().enumerate() {
         let hit = match body(sc, q) {
-            None => point_hits(o, (q[0], q[1])),
+            None => point_blocked(o, (q[0], q[1])),
             Some(poly) => body_hits(o, &poly),
         };
         if hit {
@@ -277,7 +277,7 @@ pub fn motion_problem(sc: &Scenario, a: &[f64], b: &[f64]) -> Option<String> {
     }
     if matches!(sc.robot, RobotSpec::Point) {
         for (i, o) in sc.obstacles.iter().enumerate() {
-            if segment_hits(o, (a[0], a[1]), (b[0], b[1])) {
+            if segment_blocked(o, (a[0], a[1]), (b[0], b[1])) {
                 return Some(format!("segment {a:?} → {b:?} meets obstacles[{i}]"));
             }
         }

@@ -39,7 +39,7 @@ fn segments_meet(a: Vec2, b: Vec2, c: Vec2, d: Vec2) -> bool {
 /// allowed (the course's rule), any other shape as a closed set.
 #[inline]
 pub(super) fn broom_hit(ws: &Workspace, a: Vec2, b: Vec2) -> Option<usize> {
-    let shrink = if ws.open { MARGIN } else { 0.0 };
+    let shrink = if ws.touching_allowed { MARGIN } else { 0.0 };
     for (i, o) in ws.obstacles.iter().enumerate() {
         let hit = match o {
             Shape::Rect(r) => {
@@ -59,7 +59,7 @@ pub(super) fn broom_hit(ws: &Workspace, a: Vec2, b: Vec2) -> Option<usize> {
 /// The distance from broom `a b` to the nearest obstacle (rectangles shrunk as in [`broom_hit`]),
 /// or `cap` if that is smaller; 0 when it meets one.
 fn broom_distance(ws: &Workspace, a: Vec2, b: Vec2, cap: Real) -> Real {
-    let shrink = if ws.open { MARGIN } else { 0.0 };
+    let shrink = if ws.touching_allowed { MARGIN } else { 0.0 };
     let bb = Aabb::of_points(&[a, b]);
     let mut best = cap;
     for o in &ws.obstacles {

@@ -19,7 +19,7 @@ fn slot() -> Workspace {
             Shape::Rect(Aabb { min: Vec2::new(0.25, 0.33), max: Vec2::new(0.35, 1.0) }),
         ],
     );
-    ws.open = true;
+    ws.touching_allowed = true;
     ws
 }
 
