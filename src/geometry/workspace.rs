@@ -380,6 +380,10 @@ impl Workspace {
 
     /// Whether the point `p` lies in (or on) an obstacle.
     pub fn point_blocked(&self, p: Vec2) -> bool {
+        // The common small map (no hierarchy) first, as a plain scan: the hottest query of all.
+        if self.bvh.is_none() {
+            return self.boxes.iter().zip(&self.obstacles).any(|(bx, o)| bx.contains(p) && o.contains_point(p));
+        }
         self.near_by(&Aabb { min: p, max: p }, Query::Point(p), |i, _| self.obstacles[i].contains_point(p))
     }
 
