@@ -88,7 +88,7 @@ for (const [width, height, tag] of [[1280, 800, 'laptop'], [390, 844, 'phone']])
       const c = document.getElementById('canvas');
       const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
       let n = 0;
-      for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - 0xd5) < 12 && Math.abs(d[i + 1] - 0x5e) < 12 && d[i + 2] < 20) n++;
+      for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - 0x7b) < 12 && Math.abs(d[i + 1] - 0x32) < 12 && Math.abs(d[i + 2] - 0x94) < 12) n++;
       return n;
     });
     assert.ok(ring > 20, `the step's actors are drawn (${ring} px)`);

@@ -10,7 +10,9 @@ import { Explainer, optionsOf, pseudocode } from '../run/explain.js';
 import { PALETTE } from '../draw/palette.js';
 
 /** The actors' colours (also in the legend): apart from the tree blue and the obstacle brown. */
-export const ACTOR = Object.freeze({ near: '#d55e00', range: 'rgba(213, 94, 0, 0.55)', edge: '#d55e00', blocked: '#b2182b', sample: PALETTE.sample });
+// (Purple: apart from the trees' blue and pink and from the best path's vermillion, which a paused
+// RRT* shows beside the step.)
+export const ACTOR = Object.freeze({ near: '#7b3294', range: 'rgba(123, 50, 148, 0.55)', edge: '#7b3294', blocked: '#b2182b', sample: PALETTE.sample });
 
 export class ExplainPanel {
   /**
