@@ -16,7 +16,8 @@ pub const STRIDE: usize = 12;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum EventKind {
     /// A sample was drawn (`x, y`: where it is drawn); `id` 1 when it is the goal itself (the goal
-    /// bias), 0 when the sampler drew it.
+    /// bias), 2 a plain uniform draw of the sampler's uniform share, 0 when the sampler's own rule
+    /// drew it.
     Sample = 0,
     /// A sample was rejected before growing (invalid state).
     SampleRejected = 1,

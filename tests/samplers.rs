@@ -5,6 +5,8 @@
 //! not all given up, and the same for the same seed. (The Gaussian neighbour itself, its wrapping
 //! and its reflection at the bounds, is tested in `src/sampler/tests.rs`.)
 
+mod common;
+
 use planarium::events::{EventKind, EventLog, STRIDE};
 use planarium::math::{angle_diff, Real, PI};
 use planarium::planners::{self, Params};
@@ -30,8 +32,11 @@ struct Bench {
 }
 
 impl Bench {
-    fn new(scenario: &str, params: Value, seed: u64) -> Bench {
+    /// A sampler on `scenario` with `params`; in its pure form (no uniform share) unless `params`
+    /// names `uniform_share`, since most tests here check one rule's own samples.
+    fn new(scenario: &str, mut params: Value, seed: u64) -> Bench {
         let p = Problem::from_scenario(&builtin(scenario).unwrap()).unwrap();
+        params.as_object_mut().unwrap().entry("uniform_share").or_insert(json!(0.0));
         let params = Params::from_json(planners::find("rrt-connect").unwrap(), &params).unwrap();
         let s = Sampler::from_params(&p.si, p.goal.as_deref(), &params);
         let out = vec![0.0; p.si.dims()];
@@ -741,4 +746,63 @@ fn the_vehicle_chain_draws_gaussian_neighbours_that_stay_chains() {
         own_valid > 2 * generic_valid && own_valid > 40,
         "own {own_valid}/300 valid, per-coordinate {generic_valid}/300"
     );
+}
+
+/// The hybrid form (issue 16): with `uniform_share` s, a fraction s of the samples (goal aside)
+/// are plain uniform draws, told apart by `drew_uniform_share`, with no witnesses and no checked
+/// tries of their own; the rest follow the rule. Catches a share ignored, applied to the
+/// uniform sampler, or mixing its draws with the rule's.
+#[test]
+fn the_uniform_share_mixes_plain_uniform_samples_into_every_narrow_passage_sampler() {
+    for sampler in ["gaussian", "bridge", "obstacle", "near-collision"] {
+        let mut b = Bench::new("narrow", json!({"sampler": sampler, "uniform_share": 0.3}), 17);
+        let (mut n, mut plain) = (0, 0);
+        for _ in 0..2000 {
+            let (ok, events) = b.sample();
+            if !ok {
+                continue; // the rule gave up after its tries (a plain draw never does)
+            }
+            n += 1;
+            if b.s.drew_uniform_share() {
+                plain += 1;
+                assert!(b.s.witnesses().is_none() && tries(&events).is_empty(), "{sampler}: a plain draw was checked");
+                assert_eq!(b.s.origin(), 2);
+            } else {
+                assert_eq!(b.s.origin(), 0);
+            }
+        }
+        // 2000 draws at p = 0.3: the standard deviation is about 20, so ±100 is five of them.
+        // 2000 draws at p = 0.3: the standard deviation is about 20, so ±100 is five of them.
+        // The share is of the 2000 draws: a draw the rule gave up on was not a plain one.
+        assert!((500..=700).contains(&plain), "{sampler}: {plain} plain draws of 2000 at 0.3 ({n} accepted)");
+    }
+    let mut b = Bench::new("narrow", json!({"sampler": "uniform", "uniform_share": 0.5}), 17);
+    for _ in 0..200 {
+        b.sample();
+        assert!(!b.s.drew_uniform_share(), "the uniform sampler has no share to draw");
+    }
+}
+
+/// What the share is for: on `zigzag` (corridors 0.15 wide, nothing narrow) the pure bridge test
+/// almost never finds a bridge, so RRT-Connect finds no path in 40,000 iterations (each up to 100 tries); with the default
+/// share it solves every seed tried. Paths pass the independent checker.
+#[test]
+fn the_default_uniform_share_lets_the_bridge_test_solve_open_corridors() {
+    let sc = builtin("zigzag").unwrap();
+    let run = |seed: u64, extra: Value| {
+        let mut params = json!({"sampler": "bridge", "max_iterations": 40000});
+        params.as_object_mut().unwrap().extend(extra.as_object().unwrap().clone());
+        let params = Params::from_json(planners::find("rrt-connect").unwrap(), &params).unwrap();
+        let config = RunConfig { planner: "rrt-connect".into(), params, seed, record_events: false };
+        let mut s = Session::new(Problem::from_scenario(&sc).unwrap(), config).unwrap();
+        s.run_to_end();
+        s.result()
+    };
+    for seed in 1..=5 {
+        let pure = run(seed, json!({"uniform_share": 0.0}));
+        assert!(!pure.solved, "seed {seed}: the pure bridge test solved the zigzag");
+        let hybrid = run(seed, json!({}));
+        assert!(hybrid.solved, "seed {seed}: the hybrid bridge test did not solve it");
+        assert_eq!(common::path_problem(&sc, &hybrid.path), None, "seed {seed}");
+    }
 }

@@ -90,7 +90,7 @@ impl Context<'_> {
         let ok = self.sampler.sample(&mut d, out);
         if ok {
             let p = self.si.project(out);
-            self.events.push(EventKind::Sample, tree, self.sampler.drew_goal() as i64, -1, p, p, out, out);
+            self.events.push(EventKind::Sample, tree, self.sampler.origin(), -1, p, p, out, out);
         }
         ok
     }

@@ -7,6 +7,7 @@ use super::{Scenario, ScenarioError};
 pub const BUILTINS: &[(&str, &str)] = &[
     ("open-field", include_str!("../../scenarios/open-field.json")),
     ("narrow", include_str!("../../scenarios/narrow.json")),
+    ("zigzag", include_str!("../../scenarios/zigzag.json")),
     ("slot", include_str!("../../scenarios/slot.json")),
     ("arm-2", include_str!("../../scenarios/arm-2.json")),
     ("arm-3", include_str!("../../scenarios/arm-3.json")),

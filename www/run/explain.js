@@ -220,7 +220,7 @@ export class Explainer {
       case K.SAMPLE: {
         const tries = this.line === 'try' ? A.tries : undefined;
         this.connecting = false;
-        this.begin(id === 1 ? `sample q_goal ${pt(x, y)} (goal bias)` : `sample ${pt(x, y)}`);
+        this.begin(id === 1 ? `sample q_goal ${pt(x, y)} (goal bias)` : id === 2 ? `sample ${pt(x, y)} (uniform share)` : `sample ${pt(x, y)}`);
         if (tries) this.actors.tries = tries;
         this.actors.sample = [x, y];
         this.line = id === 1 ? 'goal' : 'sample';

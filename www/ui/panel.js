@@ -29,6 +29,7 @@ export const APPLIES = Object.freeze({
   random_sigma: (v) => v('sampler') === 'near-collision',
   perseverance: (v) => v('sampler') === 'near-collision',
   sampler_tries: (v) => ['gaussian', 'bridge', 'obstacle'].includes(v('sampler')),
+  uniform_share: (v) => ['gaussian', 'bridge', 'obstacle', 'near-collision'].includes(v('sampler')),
   dd_adaptive: (v) => Number(v('dd_radius')) > 0,
   dd_min_radius: (v) => Number(v('dd_radius')) > 0,
   exhausted_policy: (v) => Number(v('exhausted')) > 0,
