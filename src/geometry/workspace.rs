@@ -153,14 +153,7 @@ impl Probe {
         if !self.convex {
             return false;
         }
-        let scale = 1.0 + lo.x.abs().at_least(lo.y.abs()).at_least(hi.x.abs()).at_least(hi.y.abs());
-        self.axes[..self.n].iter().all(|&(n, dlo, dhi)| {
-            let c = Vec2::new((lo.x + hi.x) * 0.5, (lo.y + hi.y) * 0.5);
-            let r = 0.5 * ((hi.x - lo.x) * n.x.abs() + (hi.y - lo.y) * n.y.abs());
-            let d = n.x * c.x + n.y * c.y;
-            let margin = 1e-9 * (n.x.abs() + n.y.abs()) * scale;
-            d - r >= dlo + margin && d + r <= dhi - margin
-        })
+        self.box_on_axes(lo, hi).all(|(d, r, dlo, dhi, margin)| d - r >= dlo + margin && d + r <= dhi - margin)
     }
     /// Whether the box `lo .. hi` may meet the shape: never `false` for one that does (a margin
     /// far above rounding keeps the test conservative; the exact test decides).
@@ -173,13 +166,19 @@ impl Probe {
         if self.n == 0 {
             return true;
         }
+        self.box_on_axes(lo, hi).all(|(d, r, dlo, dhi, margin)| d + r >= dlo - margin && d - r <= dhi + margin)
+    }
+    /// The box `lo .. hi` on each of the shape's axes: `(d, r, dlo, dhi, margin)`, the box's centre
+    /// `d` and half-width `r` along the axis, the shape's extent `dlo .. dhi` on it, and a margin far
+    /// above the rounding of `d ± r` (what [`Probe::holds`] and [`Probe::may_meet`] compare).
+    #[inline]
+    fn box_on_axes(&self, lo: Vec2, hi: Vec2) -> impl Iterator<Item = (Real, Real, Real, Real, Real)> + '_ {
         let scale = 1.0 + lo.x.abs().at_least(lo.y.abs()).at_least(hi.x.abs()).at_least(hi.y.abs());
-        self.axes[..self.n].iter().all(|&(n, dlo, dhi)| {
-            let c = Vec2::new((lo.x + hi.x) * 0.5, (lo.y + hi.y) * 0.5);
+        let c = Vec2::new((lo.x + hi.x) * 0.5, (lo.y + hi.y) * 0.5);
+        self.axes[..self.n].iter().map(move |&(n, dlo, dhi)| {
             let r = 0.5 * ((hi.x - lo.x) * n.x.abs() + (hi.y - lo.y) * n.y.abs());
             let d = n.x * c.x + n.y * c.y;
-            let margin = 1e-9 * (n.x.abs() + n.y.abs()) * scale;
-            d + r >= dlo - margin && d - r <= dhi + margin
+            (d, r, dlo, dhi, 1e-9 * (n.x.abs() + n.y.abs()) * scale)
         })
     }
 }

@@ -7,7 +7,7 @@
 // the playground's share grammar plus `a` and `b`, a set-up line each), so a reload, or a
 // playground link's `#…` opened here, restores them; bad values are named and defaults used.
 // "Run 20 seeds" runs both set-ups to the end on seeds seed … seed+19 over a pool of benchmark
-// workers (bench-worker.js) and shows success and medians, the better set-up marked per row.
+// workers (ui/seed-pool.js, as the playground's) and shows success and medians, the better set-up marked per row.
 // On a phone the two lanes are tabs.
 // Read-only state for tests is exposed as window.planarium (lane-aware: stats('a'), result('b')).
 
@@ -26,6 +26,7 @@ import init, { parse_setups as parseSetups } from '../pkg/planarium.js';
 import { setupFor } from '../ui/links.js';
 import { quartiles } from '../draw/plots.js';
 import { el } from '../ui/dom.js';
+import { runPool } from '../ui/seed-pool.js';
 import { setupLine, readPageState, checkSetups, pageHash, playgroundLink, readChosenFile, differingParams } from '../ui/setups.js';
 
 /**
@@ -268,7 +269,7 @@ async function writeHash() {
 
 // Run 20 seeds: both set-ups to the end on seeds seed … seed+19, over benchmark workers
 
-let seedJob = null;  // {setups, lines, first, text, queue, rows: [[row], [row]], done, total, workers}
+let seedJob = null;  // {lines, first, rows: [[row], [row]], done, total, pool}
 let seedSummary = null;
 
 function showSeedRange() {
@@ -280,50 +281,31 @@ function runSeeds() {
   clearError();
   if (seed > Number.MAX_SAFE_INTEGER - SEEDS) { showError(`The seed is too large to run ${SEEDS} seeds from it.`); return; }
   const setups = sides.map((s) => s.panel.config());
-  const queue = [];
-  for (let k = 0; k < SEEDS; k++) setups.forEach((st, i) => queue.push({ id: queue.length, i, seed: seed + k }));
-  seedJob = { setups, lines: sides.map(lineOf), first: seed, text: scenarioText, queue, rows: [[], []], done: 0, total: queue.length, workers: [] };
-  const n = Math.max(1, Math.min(2, navigator.hardwareConcurrency || 2));
-  for (let w = 0; w < n; w++) {
-    /** @type {Worker & {busy: any}} */
-    const worker = Object.assign(new Worker(new URL('../worker/bench-worker.js', import.meta.url), { type: 'module' }), { busy: null });
-    worker.onmessage = (e) => onSeedMessage(worker, e.data);
-    worker.onerror = (e) => { e.preventDefault(); onSeedMessage(worker, { type: 'crashed', message: e.message || 'worker error' }); };
-    seedJob.workers.push(worker);
-  }
+  const jobs = [];
+  for (let k = 0; k < SEEDS; k++) setups.forEach((st, i) => jobs.push({ i, text: scenarioText, planner: st.planner, params: st.params, seed: seed + k }));
+  seedJob = { lines: sides.map(lineOf), first: seed, rows: [[], []], done: 0, total: jobs.length, pool: null };
+  const job = seedJob;
+  seedJob.pool = runPool(jobs, {
+    onResult(j, msg) {
+      if (msg.type !== 'done') {
+        stopSeeds(`Stopped: set-up ${'AB'[j.i]}, seed ${j.seed}: ${msg.type === 'crashed' ? 'the core crashed' : 'the run was refused'}: ${msg.message}`);
+        return;
+      }
+      const s = msg.result.stats;
+      job.rows[j.i].push({ seed: j.seed, solved: msg.result.solved, time_ms: s.time_ms, nodes: s.nodes, checks: s.checks, cost: s.cost });
+      job.done++;
+      seedProgress();
+    },
+    onEnd(why) {
+      if (why === 'done') finishSeeds();
+      else stopSeeds('Stopped: the seed workers stopped.');
+    },
+  });
   seedSummary = null;
   ui.seedsTable.hidden = true;
   ui.seedsProgress.hidden = false;
   syncSeedButtons();
   seedProgress();
-  dispatchSeeds();
-}
-
-function dispatchSeeds() {
-  for (const w of seedJob.workers) {
-    if (w.busy || !seedJob.queue.length) continue;
-    const j = seedJob.queue.shift();
-    w.busy = j;
-    const st = seedJob.setups[j.i];
-    w.postMessage({ id: j.id, text: seedJob.text, planner: st.planner, params: st.params, seed: j.seed });
-  }
-}
-
-function onSeedMessage(w, msg) {
-  if (!seedJob || msg.type === 'ready') return;
-  const j = w.busy;
-  w.busy = null;
-  if (!j) return;
-  if (msg.type !== 'done') {
-    stopSeeds(`Stopped: set-up ${'AB'[j.i]}, seed ${j.seed}: ${msg.type === 'crashed' ? 'the core crashed' : 'the run was refused'}: ${msg.message}`);
-    return;
-  }
-  const s = msg.result.stats;
-  seedJob.rows[j.i].push({ seed: j.seed, solved: msg.result.solved, time_ms: s.time_ms, nodes: s.nodes, checks: s.checks, cost: s.cost });
-  seedJob.done++;
-  seedProgress();
-  if (seedJob.done === seedJob.total) finishSeeds();
-  else dispatchSeeds();
 }
 
 function seedProgress() {
@@ -339,7 +321,7 @@ function syncSeedButtons() {
 
 function stopSeeds(why) {
   if (!seedJob) return;
-  for (const w of seedJob.workers) w.terminate();
+  seedJob.pool?.stop();
   seedJob = null;
   ui.seedsProgress.hidden = true;
   ui.seedsStatus.textContent = why;
@@ -360,7 +342,7 @@ function num(v) {
 
 function finishSeeds() {
   const j = seedJob;
-  for (const w of j.workers) w.terminate();
+  j.pool?.stop();
   seedJob = null;
   ui.seedsProgress.hidden = true;
   syncSeedButtons();

@@ -1,10 +1,11 @@
 // "Run 20 seeds": the playground's set-up run on 20 consecutive seeds in background benchmark
-// workers (worker/bench-worker.js, one per core, at most two), so a student sees how much one seed
+// workers (ui/seed-pool.js), so a student sees how much one seed
 // says: the share solved and the medians (time, iterations, nodes, checks, path cost), and one dot
 // per seed, coloured by outcome, that opens that seed in the playground when clicked. The page's own
 // run is not touched. Built with DOM calls and textContent.
 
 import { el } from './dom.js';
+import { runPool } from './seed-pool.js';
 
 export const SEEDS = 20;
 
@@ -41,12 +42,11 @@ const fmt = (v, d = 0) => (v === null || v === undefined ? '–' : Number(v).toL
  * `open(seed)` opens a seed in the playground.
  */
 export function createTrials({ button, cancel, status, table, dots, setup, open }) {
-  let workers = [];
-  let gen = 0;
+  let pool = null;
 
   function stop() {
-    for (const w of workers) w.terminate();
-    workers = [];
+    pool?.stop();
+    pool = null;
     button.disabled = false;
     cancel.hidden = true;
   }
@@ -79,44 +79,27 @@ export function createTrials({ button, cancel, status, table, dots, setup, open 
     const s = setup();
     if (!s) { status.textContent = 'Load a valid scenario first.'; return; }
     stop();
-    const mine = ++gen;
     const first = s.seed;
     const results = new Array(SEEDS).fill(null);
-    let next = 0, done = 0;
+    let done = 0;
     button.disabled = true;
     cancel.hidden = false;
     status.textContent = `Running ${s.planner} on seeds ${first}–${first + SEEDS - 1}…`;
-    const pool = Math.max(1, Math.min(2, navigator.hardwareConcurrency || 1));
-    const finish = () => {
-      stop();
-      const sum = summarise(results.filter(Boolean));
-      status.textContent = `${s.planner}, seeds ${first}–${first + SEEDS - 1}: solved ${sum.solved} of ${sum.runs}. Click a seed to open it.`;
-      show(sum, results, first);
-    };
-    const give = (w) => {
-      if (next >= SEEDS) return;
-      const i = next++;
-      w.postMessage({ id: i, text: s.text, planner: s.planner, params: s.params, seed: first + i });
-    };
-    for (let k = 0; k < pool; k++) {
-      const w = new Worker(new URL('../worker/bench-worker.js', import.meta.url), { type: 'module' });
-      workers.push(w);
-      w.onmessage = (e) => {
-        if (mine !== gen) return;
-        const m = e.data;
-        if (m.type === 'ready') { give(w); return; }
-        results[m.id] = m.type === 'done' ? m.result : { solved: false, status: m.type === 'failed' ? `failed: ${m.message}` : 'crashed', stats: {} };
+    const jobs = Array.from({ length: SEEDS }, (_, i) => ({ text: s.text, planner: s.planner, params: s.params, seed: first + i }));
+    pool = runPool(jobs, {
+      onResult(j, m) {
+        results[j.id] = m.type === 'done' ? m.result : { solved: false, status: m.type === 'failed' ? `failed: ${m.message}` : 'crashed', stats: {} };
         done++;
         status.textContent = `Running seeds: ${done} of ${SEEDS} done…`;
         show(summarise(results.filter(Boolean)), results, first);
-        if (m.type === 'crashed') { // a poisoned module: this worker takes no more seeds
-          w.terminate();
-          workers = workers.filter((x) => x !== w);
-        }
-        if (done === SEEDS || !workers.length) finish(); else if (m.type !== 'crashed') give(w);
-      };
-      w.onerror = () => { if (mine === gen) { status.textContent = 'A seed worker stopped; the runs were halted.'; stop(); } };
-    }
+      },
+      onEnd() {
+        stop();
+        const sum = summarise(results.filter(Boolean));
+        status.textContent = `${s.planner}, seeds ${first}–${first + SEEDS - 1}: solved ${sum.solved} of ${sum.runs}. Click a seed to open it.`;
+        show(sum, results, first);
+      },
+    });
   });
-  cancel.addEventListener('click', () => { gen++; stop(); status.textContent = 'Stopped.'; });
+  cancel.addEventListener('click', () => { stop(); status.textContent = 'Stopped.'; });
 }
