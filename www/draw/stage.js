@@ -52,3 +52,10 @@ export function downloadBlob(blob, name) {
   a.click();
   setTimeout(() => URL.revokeObjectURL(url), 1000);
 }
+
+/** On a narrow screen (a phone) the stage may be scrolled away: bring it back into view. */
+export function keepInView(stage) {
+  if (!matchMedia('(max-width: 760px)').matches) return;
+  const r = stage.getBoundingClientRect();
+  if (r.top < 0 || r.bottom > innerHeight) stage.scrollIntoView({ block: 'start', behavior: 'smooth' });
+}

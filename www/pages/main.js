@@ -17,7 +17,7 @@ import { CSpaceView } from '../draw/cspace.js';
 import { Editor } from '../ui/editor.js';
 import { ObstacleEditor } from '../ui/obstacle-editor.js';
 import { wireExports } from '../ui/exports.js';
-import { fitViews, downloadText } from '../draw/stage.js';
+import { fitViews, downloadText, keepInView } from '../draw/stage.js';
 import { createPanel, taskOf } from '../ui/panel.js';
 import { Playback } from '../run/playback.js';
 import { Chart } from '../draw/chart.js';
@@ -28,8 +28,10 @@ import { cellLegend, cellSummary } from '../draw/cells.js';
 import { linkViews } from '../draw/linked.js';
 import { ExplainPanel } from '../ui/explain-panel.js';
 import { createTrials } from '../ui/trials.js';
-import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend, removeCustomScenarios, markCustomScenario } from '../ui/controls.js';
-import { readShare, setupFor, writeShare, checkLink, boundedProblems, cut, VIEW_DEFAULTS, MAX_HASH_CHARS, MAX_LINK_CHARS, MAX_SCENARIO_BYTES } from '../ui/links.js';
+import { wireKeys, wireCellTip } from '../ui/keys.js';
+import { runStatusText } from '../ui/run-status.js';
+import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend, removeCustomScenarios, markCustomScenario, invalidText } from '../ui/controls.js';
+import { readShare, setupFor, writeShare, wireCopyLink, boundedProblems, cut, VIEW_DEFAULTS, MAX_HASH_CHARS, MAX_LINK_CHARS, MAX_SCENARIO_BYTES } from '../ui/links.js';
 import { OVERLAYS } from '../draw/palette.js';
 import { applyPageLimits } from '../run/limits.js';
 
@@ -213,19 +215,12 @@ function configure() {
   scheduleShare();
 }
 
-/** On a narrow screen the canvas may be scrolled away: bring it back when a run starts. */
-function keepRunInView() {
-  if (!matchMedia('(max-width: 760px)').matches) return;
-  const r = ui.stage.getBoundingClientRect();
-  if (r.top < 0 || r.bottom > innerHeight) ui.stage.scrollIntoView({ block: 'start', behavior: 'smooth' });
-}
-
 const stepSize = () => Math.max(1, Math.floor(Number(ui.stepSize.value)) || 1);
 
 const actions = {
   run() {
     if (controller.can('run')) clearError();
-    if (player.run()) keepRunInView();
+    if (player.run()) keepInView(ui.stage); // on a phone the canvas may be scrolled away
   },
   pause() { player.pause(); },
   step() { player.step(stepSize()); },
@@ -336,27 +331,9 @@ function showLinkProblems(notes) {
     + (link ? `\nThe link you opened (${link.length.toLocaleString('en')} characters; it stays in the address bar until you change something):\n${cut(link, 300)}` : ''));
 }
 
-ui.copyLink.addEventListener('click', async () => {
-  ui.copyStatus.textContent = '';
-  ui.saveJson.hidden = true;
-  const link = await writeHash({ force: true });
-  // the link must read back as it is (the reader's limits) and survive pasting (its length)
-  const why = await checkLink(link, source?.id ? null : scenarioText);
-  if (why) {
-    ui.shareUrl.value = '';
-    ui.copyStatus.textContent = `No link copied: ${why}. Save the scenario as a JSON file instead and share the file `
-      + '(Open file… opens it).';
-    ui.saveJson.hidden = false;
-    return;
-  }
-  ui.shareUrl.value = link;
-  try {
-    await navigator.clipboard.writeText(link);
-    ui.copyStatus.textContent = 'Copied.';
-  } catch {
-    ui.shareUrl.select();
-    ui.copyStatus.textContent = 'Copy the selected link (the clipboard is not available here).';
-  }
+wireCopyLink({
+  button: ui.copyLink, url: ui.shareUrl, status: ui.copyStatus, saveJson: ui.saveJson,
+  link: () => writeHash({ force: true }), scenarioText: () => (source?.id ? null : scenarioText),
 });
 
 // a scenario too large for a link: offered as a file (the scenario as the worker normalised it)
@@ -393,15 +370,7 @@ function showScenario({ scenario, start, goal, space, cspace: grid }) {
 }
 
 function showInvalid(error, edit) {
-  const where = [error.path, error.line != null ? `line ${error.line}` : null,
-    error.column != null ? `column ${error.column}` : null].filter(Boolean).join(', ');
-  if (edit) {
-    const which = /^(start|goal)\b/.exec(error.path || '')?.[1] || 'start or goal';
-    showError(`After this edit the ${which} is not valid${/^(start|goal)$/.test(error.path) ? '' : ` at ${where}`}: ` +
-      `${error.message || error.text}\nUndo it (ctrl+Z), move it to a free place, or pick another scenario.`);
-  } else {
-    showError(`This scenario has an error${where ? ` at ${where}` : ''}: ${error.message || error.text}`);
-  }
+  showError(invalidText(error, edit));
   lane.clearRun();
   if (!edit) { // an edit keeps the scene on screen, so the start or goal can be dragged back
     loaded = null;
@@ -421,36 +390,15 @@ function showInvalid(error, edit) {
 
 function currentStats() { return player.stats(); }
 
-/** The strip above the canvas: what the replay shows against what the planner did. */
-function runStatusText() {
-  const state = controller.state;
-  const config = panel?.config();
-  const label = config ? registry.planners.find((p) => p.name === config.planner)?.label || config.planner : '';
-  const planner = lane.result?.stats || lane.stats;
-  const total = planner?.iterations ?? 0;
-  const replay = player.replayIteration();
-  const shown = replay.iteration;
-  const ms = planner && Number.isFinite(planner.time_ms) ? `${planner.time_ms.toFixed(1)} ms` : '';
-  const plannerPart = lane.done ? `planner finished in ${ms}` : planner ? `planner at ${total.toLocaleString('en')} iterations` : '';
-  const n = (v) => v.toLocaleString('en');
-  switch (state) {
-    case 'loading': return 'Loading…';
-    case 'invalid': return 'No valid scenario: pick a built-in or open a file.';
-    case 'idle': return config ? `Ready: Run starts ${label}, seed ${config.seed}.` : 'Ready.';
-    case 'finished': {
-      const word = lane.finalStatus || (lane.result?.solved ? 'solved' : 'finished');
-      return `${word.replace('_', ' ')} · ${n(total)} iterations · ${n(playback.nodeCount)} nodes · ${plannerPart}`;
-    }
-    default: {
-      const verb = state === 'paused' ? 'paused at' : 'replaying';
-      return `${verb} ${replay.exact ? '' : '≈'}${n(shown)} of ${n(total)} iterations${plannerPart ? ` · ${plannerPart}` : ''}`;
-    }
-  }
-}
 let lastRunStatus = '';
 let statsShown = -1; // the records revealed when the stats were last filled
 function updateRunStatus() {
-  const text = registry ? runStatusText() : 'Loading the planning core…';
+  const config = panel?.config();
+  const text = registry ? runStatusText({
+    state: controller.state, config, label: config ? registry.planners.find((p) => p.name === config.planner)?.label : '',
+    planner: lane.result?.stats || lane.stats, done: lane.done, finalStatus: lane.finalStatus, solved: !!lane.result?.solved,
+    replay: player.replayIteration(), nodes: playback.nodeCount,
+  }) : 'Loading the planning core…';
   if (text === lastRunStatus) return;
   lastRunStatus = text;
   $('run-status').textContent = text;
@@ -590,53 +538,11 @@ const syncOptions = () => {
 };
 ui.animRaw.addEventListener('change', () => { syncOptions(); scheduleShare(); });
 
-document.addEventListener('keydown', (e) => {
-  if (e.ctrlKey || e.metaKey || e.altKey || e.repeat && e.key !== 'ArrowRight') return;
-  const t = e.target;
-  if (t instanceof Element && t.closest('input, select, textarea, [contenteditable]')) return;
-  if (e.key === ' ') {
-    e.preventDefault(); // also keeps a focused button from being clicked by the same key
-    if (controller.state === 'running') actions.pause(); else actions.run();
-  } else if (e.key === 'ArrowRight') {
-    e.preventDefault();
-    actions.step();
-  } else if (e.key === 'ArrowLeft') {
-    e.preventDefault();
-    actions.back();
-  } else if (e.key === 'r' || e.key === 'R') {
-    actions.reset();
-  } else if (e.key === '.') {
-    actions.stepEvent();
-  } else if (e.key === '?') {
-    e.preventDefault();
-    toggleHelp();
-  }
-});
+// Keys (Space, arrows, R, '.', ?) and the keyboard help (ui/keys.js).
+wireKeys({ actions, running: () => controller.state === 'running', help: $('help'), open: $('help-button'), close: $('help-close') });
 
-// The keyboard help (a modal dialog: Escape or the button closes it, focus returns).
-const help = $('help');
-function toggleHelp() {
-  if (help.open) help.close(); else help.showModal();
-}
-$('help-button').addEventListener('click', toggleHelp);
-$('help-close').addEventListener('click', () => help.close());
-
-// Hover: the cell or field tile under the pointer, described in a small box (text only).
-function hideTip() { ui.tip.hidden = true; }
-ui.canvas.addEventListener('pointermove', (e) => {
-  const L = view.layout;
-  const lines = L && !e.buttons ? view.cells.describe(L.wx(e.offsetX * L.dpr), L.wy(e.offsetY * L.dpr), view.options) : null;
-  if (!lines) { hideTip(); return; }
-  ui.tip.textContent = lines.join('\n');
-  ui.tip.hidden = false;
-  const stage = ui.stage.getBoundingClientRect();
-  const x = e.clientX - stage.left + 14, y = e.clientY - stage.top + 14;
-  const w = ui.tip.offsetWidth, h = ui.tip.offsetHeight;
-  ui.tip.style.left = `${Math.max(0, x + w > stage.width ? x - w - 28 : x)}px`;
-  ui.tip.style.top = `${Math.max(0, y + h > stage.height ? y - h - 28 : y)}px`;
-});
-ui.canvas.addEventListener('pointerleave', hideTip);
-ui.canvas.addEventListener('pointerdown', hideTip);
+// Hover: the cell or field tile under the pointer, described in a small box (ui/keys.js).
+wireCellTip({ canvas: ui.canvas, stage: ui.stage, tip: ui.tip, view });
 
 // Run 20 seeds (trials.js): this set-up on seeds s … s+19, in background workers; a dot opens its seed.
 createTrials({

@@ -112,3 +112,18 @@ export function markCustomScenario(select, label) {
   select.value = '';
   opt.selected = true;
 }
+
+/**
+ * What the playground says about a scenario the core refused: `error` {path, line, column,
+ * message}; `edit`: it came from an edit of the start or goal (which can be undone or dragged back).
+ */
+export function invalidText(error, edit) {
+  const where = [error.path, error.line != null ? `line ${error.line}` : null,
+    error.column != null ? `column ${error.column}` : null].filter(Boolean).join(', ');
+  if (edit) {
+    const which = /^(start|goal)\b/.exec(error.path || '')?.[1] || 'start or goal';
+    return `After this edit the ${which} is not valid${/^(start|goal)$/.test(error.path) ? '' : ` at ${where}`}: `
+      + `${error.message || error.text}\nUndo it (ctrl+Z), move it to a free place, or pick another scenario.`;
+  }
+  return `This scenario has an error${where ? ` at ${where}` : ''}: ${error.message || error.text}`;
+}

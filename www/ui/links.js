@@ -527,3 +527,33 @@ export async function checkLink(url, scenarioText = null) {
   if (scenarioText !== null && back.scenario?.text !== scenarioText) return 'the link does not read back the same scenario';
   return null;
 }
+
+/**
+ * The playground's Copy link button: `link()` writes the state's link (a promise); it is copied
+ * only when it reads back as it is (the reader's limits, `scenarioText()` for a scenario carried
+ * in it) and survives pasting (its length). Otherwise `status` says why and `saveJson` (the
+ * scenario as a file) is offered instead; without a clipboard the link is selected in `url`.
+ */
+export function wireCopyLink({ button, url, status, saveJson, link, scenarioText }) {
+  button.addEventListener('click', async () => {
+    status.textContent = '';
+    saveJson.hidden = true;
+    const href = await link();
+    const why = await checkLink(href, scenarioText());
+    if (why) {
+      url.value = '';
+      status.textContent = `No link copied: ${why}. Save the scenario as a JSON file instead and share the file `
+        + '(Open file… opens it).';
+      saveJson.hidden = false;
+      return;
+    }
+    url.value = href;
+    try {
+      await navigator.clipboard.writeText(href);
+      status.textContent = 'Copied.';
+    } catch {
+      url.select();
+      status.textContent = 'Copy the selected link (the clipboard is not available here).';
+    }
+  });
+}
