@@ -3,7 +3,8 @@
 // screen; Step one event walks a growth step with the explain panel's highlighted line and caption
 // checked against the events the core emitted; Normal playback is watchable (the status strip and
 // the stats follow the replay, not the planner); Slow / Normal / Instant; Run 20 seeds; Compare with
-// 20 seeds from the playground's link. Screenshots go to target/learn-*.png.
+// 20 seeds from the playground's link; the bridge test's plain uniform draws on the zigzag (issue 16).
+// Screenshots go to target/learn-*.png.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { startBrowser, SHOTS } from './browser.mjs';
@@ -169,9 +170,11 @@ test('only the overlays and parameters that apply are shown', async () => {
   await page.click('#more-params > summary');
   assert.ok(await page.isVisible('#param-sampler'));
   assert.ok(!(await page.isVisible('#param-sigma')) && !(await page.isVisible('#param-perseverance')), 'uniform: no sigma, no perseverance');
+  assert.ok(!(await page.isVisible('#param-uniform_share')), 'uniform: no uniform share');
   await page.selectOption('#param-sampler', 'gaussian');
   await page.waitForFunction(() => window.planarium.state() === 'idle');
   assert.ok(await page.isVisible('#param-sigma') && !(await page.isVisible('#param-perseverance')), 'gaussian: sigma');
+  assert.ok(await page.isVisible('#param-uniform_share'), 'gaussian: its uniform share');
   assert.ok(!(await page.isVisible('#param-dd_adaptive')), 'no domain radius: no adaptation');
   await page.fill('#param-dd_radius', '0.1');
   await page.press('#param-dd_radius', 'Enter');
@@ -179,6 +182,29 @@ test('only the overlays and parameters that apply are shown', async () => {
   await page.waitForFunction(() => window.planarium.state() === 'idle');
   assert.ok(await page.isVisible('#param-dd_adaptive'), 'a domain radius: its adaptation shows');
   assert.ok((await visible()).includes('showDomains') && (await visible()).includes('showTries'), 'and the overlays of domains and raw tries');
+  await page.close();
+});
+
+test('the bridge test on the zigzag: its tries and its plain uniform draws are told apart step by step, and it solves', async () => {
+  // issue 16's hybrid form: a share of plain uniform samples (Sample id 2), captioned as such
+  const { page } = await open({ width: 1280, height: 800 }, '#scenario=zigzag&planner=rrt-connect&sampler=bridge&seed=2');
+  assert.equal(await page.textContent('#scenario-name'), 'Zigzag of walls');
+  // A step may reveal several records (a sample and its growth): read the caption a person reads.
+  let plain = null, tries = null;
+  for (let i = 0; i < 2000 && !(plain && tries); i++) {
+    await page.click('#step-event');
+    const caption = await page.textContent('#explain-caption');
+    if (/^sample \(/.test(caption) && (await lastRecord(page))?.[0] !== K.SAMPLE_TRY) plain ??= caption;
+    if (/^sampler tries \(/.test(caption)) tries ??= caption;
+  }
+  // the bridge test's own attempts are tries (two occupied ends wanted), its rare successes samples;
+  // every sample drawn here in the first steps is a plain one, and says so
+  assert.match(tries ?? '', /^sampler tries \(.*\): (free|occupied)/, 'the bridge test\'s tries are shown');
+  assert.match(plain ?? '', /^sample \(.*\) \(uniform share\)/, `a plain uniform draw is captioned: ${plain}`);
+  await page.click('#speed-instant');
+  await page.click('#run');
+  await page.waitForFunction(() => window.planarium.state() === 'finished', null, { timeout: 60000 });
+  assert.equal((await page.evaluate(() => window.planarium.result())).solved, true);
   await page.close();
 });
 
