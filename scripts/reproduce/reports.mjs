@@ -186,6 +186,13 @@ const R004_THEIRS = [
   [[485.85, 70.46], [480, 20.88], [526.85, 70.01], [446.59, 70.06]],
   [[486.14, 51.27], [500.19, 37.38], [594.45, 41.01], [575.07, 69.75]],
 ];
+/** Report 004's table 2: per run (sorted by cost), [cost, time s] at coverage 0.5 and 0.75. */
+const R004_INSPECTION = [
+  [[281.28, 25.39], [360.8, 79.3]], [[317.71, 22.65], [368.62, 36.55]], [[333.05, 56.67], [379.31, 86.18]],
+  [[343.06, 12.39], [387.52, 204.02]], [[350.73, 66.92], [405.44, 156.79]], [[370.97, 34.67], [435.05, 45.49]],
+  [[397.7, 20.96], [469.53, 43.3]], [[399.01, 62.04], [488.06, 80.82]], [[420.79, 12.15], [610.92, 232.54]],
+  [[426.49, 28], [655.6, 100.53]],
+];
 /** E2's one step η, in radians of joint space (the handout gives none; see the text). */
 const ETA = 0.5;
 
@@ -205,7 +212,20 @@ const R004 = {
     });
     const sorted = runs.map((rs) => solvedOf(rs).map((r) => env.fkCost(r.path)).sort((a, b) => a - b));
     const perRun = R004_THEIRS.map((r, i) => [String(i + 1), ...r.flatMap((t, k) => [f(t[0]), f(sorted[k][i])])]);
+    const inspection = [0.5, 0.75].map((c) => seeds.map((s) => env.plan('technion-ip', ['--planner', 'inspection', '--coverage', String(c), '--time-limit', String(limit)], s)));
+    const inspectionRows = [0.5, 0.75].map((c, k) => {
+      const ok = solvedOf(inspection[k]);
+      const theirs = R004_INSPECTION.map((r) => r[k]);
+      return [String(c), `${ok.length}/${inspection[k].length}`, f(env.mean(ok.map((r) => env.fkCost(r.path)))), f(env.mean(ok.map((r) => r.stats.cost)), 3),
+        f(env.mean(inspection[k].map((r) => r.stats.time_ms / 1000)), 3), f(env.mean(ok.map((r) => r.stats.course_coverage)), 3),
+        f(Math.min(...ok.map((r) => r.stats.course_coverage)), 3), f(env.mean(ok.map((r) => r.stats.continuous_coverage)), 3),
+        f(env.mean(theirs.map((t) => t[0])), 3), f(env.mean(theirs.map((t) => t[1])), 3)];
+    });
+    const inspectionSorted = inspection.map((rs) => solvedOf(rs).map((r) => env.fkCost(r.path)).sort((a, b) => a - b));
+    const inspectionPerRun = R004_INSPECTION.map((r, i) => [String(i + 1), ...r.flatMap((t, k) => [f(t[0]), f(inspectionSorted[k][i])])]);
     return `## Report 004: the Technion arm (HW3), E1/E2 × goal bias, and inspection
+
+### Motion planning: E1/E2 × goal bias 0.05 and 0.2
 
 The map is the course's \`map_mp.json\` (built-in \`technion-mp\`: the 4-link arm of 80, 70, 40, 40
 from (0, 0), links may touch but not cross, no self-crossing, edges checked every 0.05 rad). The
@@ -229,6 +249,27 @@ ${table(['column', 'solved', 'mean cost (report\'s unit)', 'mean cost (joint rad
 Each run's cost in the report's unit, sorted as the report printed them (report | Planarium):
 
 ${table(['run', 'E1-0.05 report', 'here', 'E1-0.2 report', 'here', 'E2-0.05 report', 'here', 'E2-0.2 report', 'here'], perRun)}
+
+### Inspection at coverage 0.5 and 0.75
+
+The map is the course's \`map_ip.json\` (built-in \`technion-ip\`). Coverage is the course's: the
+points seen at the vertices of the branch (I_i = I_{i−1} ∪ S(v_i)), a sight line that touches an
+obstacle hides the point, ±π/6 about the end effector's heading, 60 far; the run stops when one
+vertex reaches the target. Planarium's inspection tree rewires over the 5 nearest nodes, as the
+report did (its other rule, rewiring when 1.8 × the best vertex's count is below the tree's union,
+is not reproduced). Both coverages of each raw path are given: the course's count, and Planarium's
+continuous one (everything seen along the edges too, only interiors hiding), which is higher.
+Cost in the report's unit and in joint radians, as above; seeds 1–${seeds.length}, ${limit} s limit.
+
+\`\`\`sh
+planarium plan technion-ip --planner inspection --coverage 0.75 --seed S --json
+\`\`\`
+
+${table(['target', 'solved', 'mean cost (report\'s unit)', 'mean cost (joint rad)', 'mean time (s)', 'mean course coverage', 'least course coverage', 'mean continuous coverage', 'report mean cost', 'report mean time (s)'], inspectionRows)}
+
+Each run's cost in the report's unit, sorted (report | Planarium):
+
+${table(['run', '0.5 report', 'here', '0.75 report', 'here'], inspectionPerRun)}
 `;
   },
 };
