@@ -41,7 +41,7 @@ mod coverage;
 mod grow;
 mod visibility;
 
-pub use coverage::{path_coverage, seen_along, shortcut};
+pub use coverage::{continuous_coverage, course_coverage, path_coverage, seen_along, shortcut};
 
 use super::rrt::{resolve_range, RANGE};
 use crate::math::Real;
@@ -128,6 +128,8 @@ impl Inspection {
             fov: 0.0,
             range: 0.0,
             coverage: 0.0,
+            at_vertices: false,
+            touch_hides: false,
         });
         let own = params.real("coverage");
         let n = si.dims();
@@ -135,7 +137,7 @@ impl Inspection {
             start: task.start.clone(),
             words: insp.points.len().div_ceil(64).max(1),
             target: if own > 0.0 { own } else { insp.coverage },
-            view: Visibility { points: insp.points, fov: insp.fov, range: insp.range },
+            view: Visibility::of(insp),
             range: resolve_range(si, params.real("range")),
             k: params.real("k") as usize,
             focus: params.real("focus"),
