@@ -50,7 +50,10 @@ pub fn continuous_coverage(si: &SpaceInfo, task: &InspectionTask, path: &[Vec<Re
 /// Random shortcut smoothing that keeps what the path sees: each attempt of
 /// [`smoothing::shortcut`](crate::planners::smoothing::shortcut) is kept only if the shortened path still
 /// sees every point the original saw (plain shortcutting cuts the detours an inspection path takes
-/// to look at things).
+/// to look at things). Counted at the vertices (`at_vertices`), an attempt is one shortcut alone
+/// ([`smoothing::shortcut_only`](crate::planners::smoothing::shortcut_only)): the vertex reduction
+/// that ends each plain attempt drops the vertices that saw the points, so every attempt would be
+/// refused; it is tried once at the end instead.
 pub fn shortcut(
     si: &SpaceInfo,
     task: &InspectionTask,
@@ -64,7 +67,17 @@ pub fn shortcut(
         if path.len() < 3 || si.out_of_time() {
             break;
         }
-        let next = crate::planners::smoothing::shortcut(si, &path, 1, rng);
+        let next = if task.at_vertices {
+            crate::planners::smoothing::shortcut_only(si, &path, 1, rng)
+        } else {
+            crate::planners::smoothing::shortcut(si, &path, 1, rng)
+        };
+        if next != path && covers(&seen_along(si, task, &next), &must) {
+            path = next;
+        }
+    }
+    if task.at_vertices && !si.out_of_time() {
+        let next = crate::planners::smoothing::reduce_vertices(si, &path, &mut vec![0.0; si.dims()]);
         if next != path && covers(&seen_along(si, task, &next), &must) {
             path = next;
         }
