@@ -241,3 +241,43 @@ fn the_fk_metric_is_report_004s_distance() {
     let e = Scenario::from_value(&v).unwrap_err();
     assert_eq!(e.to_string(), "robot.metric: must be joint, chain, max or fk");
 }
+
+/// `bench --course-table` gives the cost in both units for an arm: its fk columns are the means of
+/// report 004's distance over the same seeded runs, recomputed here from their paths; a point
+/// robot's table has no such columns.
+#[test]
+fn the_course_table_gives_cost_in_both_units() {
+    use planarium::run::{bench, report};
+    let sc = planarium::io::import(include_str!("../fuzz/corpus/technion/map_mp.json"), "map_mp").unwrap();
+    let spec = planarium::planners::find("rrt").unwrap();
+    let params = Params::from_json(spec, &Value::Object(sc.planner.as_ref().unwrap().params.clone())).unwrap();
+    let runs = 3;
+    let b = bench::bench_planner(&sc, "rrt", &params, runs).unwrap();
+    let table = report::course_table(&report::BenchReport::new(&sc.name, "map_mp", "", "", &[b]));
+    let (mut raw, mut smooth) = (Vec::new(), Vec::new());
+    for seed in 1..=runs {
+        let problem = Problem::from_scenario(&sc).unwrap();
+        let mut s = Session::new(
+            problem,
+            RunConfig { planner: "rrt".into(), params: params.clone(), seed, record_events: false },
+        )
+        .unwrap();
+        s.run_to_end();
+        let r = s.result();
+        assert!(r.solved, "seed {seed}");
+        raw.push(fk_cost(&r.path));
+        smooth.push(fk_cost(&r.smoothed));
+    }
+    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    let header = table.lines().next().unwrap();
+    assert!(header.ends_with("| mean cost (fk) | mean smoothed cost (fk) |"), "{table}");
+    let row: Vec<&str> = table.lines().nth(2).unwrap().split('|').map(str::trim).collect();
+    let n = row.len();
+    assert_eq!(row[n - 3], format!("{:.2}", mean(&raw)), "{table}");
+    assert_eq!(row[n - 2], format!("{:.2}", mean(&smooth)), "{table}");
+    let narrow = planarium::scenario::builtin("narrow").unwrap();
+    let spec = planarium::planners::find("rrt").unwrap();
+    let b = bench::bench_planner(&narrow, "rrt", &Params::defaults(spec), 2).unwrap();
+    let t = report::course_table(&report::BenchReport::new(&narrow.name, "narrow", "", "", &[b]));
+    assert!(!t.contains("(fk)"), "{t}");
+}
