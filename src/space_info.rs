@@ -442,12 +442,26 @@ impl SpaceInfo {
     /// Not counted as a state check.
     #[inline]
     pub fn sees(&self, pose: &SensorPose, p: Vec2, fov: Real, range: Real) -> bool {
+        self.sees_by(pose, p, fov, range, false)
+    }
+    /// [`SpaceInfo::sees`] with the sight rule chosen: `touch_hides` (the Technion course's test),
+    /// a sight line that meets an obstacle at all, its boundary included, hides the point; else
+    /// only one through an obstacle's interior does.
+    #[inline]
+    pub fn sees_by(&self, pose: &SensorPose, p: Vec2, fov: Real, range: Real, touch_hides: bool) -> bool {
         pose.in_view(p, fov, range)
             && self.journalled(
                 |e| if let Entry::Sight(v) = e { Some(*v) } else { None },
                 Entry::Sight,
                 false,
-                || self.validity.workspace.sight_clear(pose.at, p),
+                || {
+                    let ws = &self.validity.workspace;
+                    if touch_hides {
+                        ws.sight_untouched(pose.at, p)
+                    } else {
+                        ws.sight_clear(pose.at, p)
+                    }
+                },
             )
     }
 }

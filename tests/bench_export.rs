@@ -117,6 +117,8 @@ fn csv_quotes_as_rfc_4180_asks() {
         cost: None,
         smoothed_cost: None,
         smoothing_ms: 0.0,
+        cost_fk: None,
+        smoothed_cost_fk: None,
     };
     let label = "bridge, \"tuned\"\nσ 0.02";
     let r = BenchReport {

@@ -169,6 +169,8 @@ fn task(sc: &Scenario) -> InspectionTask {
         fov: i.fov,
         range: i.range,
         coverage: i.coverage,
+        at_vertices: i.at_vertices(),
+        touch_hides: i.touch_hides,
     }
 }
 
@@ -410,7 +412,9 @@ fn smoothing_keeps_what_the_path_sees() {
     for (sc, seed) in [(builtin("technion-ip").unwrap(), 2), (point_scenario(), 1)] {
         let (r, _) = run(&sc, json!({"shortcut_attempts": 0}), seed);
         let problem = Problem::from_scenario(&sc).unwrap();
-        let t = task(&sc);
+        // Smoothing that keeps what the path sees continuously (technion-ip counts at vertices
+        // as the course does; tests/technion_course.rs checks that count's smoothing).
+        let t = task(&sc).counted(false, false);
         let mut rng = planarium::rng::Rng::new(99);
         let smooth = inspection::shortcut(&problem.si, &t, &r.path, 200, &mut rng);
         if let Some(e) = path_problem(&sc, &smooth) {

@@ -53,6 +53,9 @@ fn cli() -> Command {
                 .arg(Arg::new("planner").long("planner").help("Planner name (default: the scenario's planner block's, else rrt-connect)"))
                 .arg(Arg::new("seed").long("seed").value_parser(seed_arg).help("Seed, or \"random\" for a fresh one (printed, so the run can be replayed); default: the scenario's planner block's, else 1"))
                 .arg(Arg::new("json").long("json").action(ArgAction::SetTrue).help("Print the result JSON of the contract"))
+                .arg(Arg::new("robot").long("robot").value_name("ROBOT").help("For a Technion map: arm (the course's manipulator) or dot (the point robot); default: arm when the map has a START, else dot"))
+                .arg(Arg::new("start").long("start").value_name("X,Y|Q1,...").allow_hyphen_values(true).help("The start state, comma-separated (x,y for a point robot, 4 joint angles for the Technion arm); replaces the scenario's or map's"))
+                .arg(Arg::new("goal").long("goal").value_name("X,Y|Q1,...").allow_hyphen_values(true).help("The goal state, comma-separated; replaces the scenario's or map's"))
                 .arg(
                     Arg::new("events")
                         .long("events")
@@ -178,8 +181,72 @@ fn seed_arg(text: &str) -> Result<SeedArg, String> {
         .map_err(|_| format!("\"{text}\" is not a seed: a whole number from 0 to {}, or \"random\"", u64::MAX))
 }
 
+/// Most numbers in a `--start` or `--goal` state.
+const MAX_STATE_NUMBERS: usize = 256;
+
+/// A `--start`/`--goal` value: finite numbers separated by commas.
+fn state_arg(flag: &str, text: &str) -> Result<Vec<f64>, String> {
+    let parts: Vec<&str> = text.split(',').map(str::trim).collect();
+    if parts.len() > MAX_STATE_NUMBERS {
+        return Err(format!("--{flag}: {} numbers; the limit is {MAX_STATE_NUMBERS}", parts.len()));
+    }
+    parts
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            p.parse::<f64>().ok().filter(|x| x.is_finite()).ok_or_else(|| {
+                let p = planarium::limits::cut(p, 40);
+                format!(
+                    "--{flag} {}: number {} (\"{p}\") is not a finite number",
+                    planarium::limits::cut(text, 80),
+                    i + 1
+                )
+            })
+        })
+        .collect()
+}
+
+/// The scenario `plan` runs: [`load`]'s, with `--robot` (Technion maps only), `--start` and
+/// `--goal` applied; errors about those states name the flag.
+fn load_for_plan(m: &ArgMatches) -> Result<Scenario, String> {
+    let arg = m.get_one::<String>("scenario").unwrap();
+    let start = m.get_one::<String>("start").map(|t| state_arg("start", t)).transpose()?;
+    let goal = m.get_one::<String>("goal").map(|t| state_arg("goal", t)).transpose()?;
+    let robot = m.get_one::<String>("robot").cloned();
+    if robot.is_none() && start.is_none() && goal.is_none() {
+        return load(arg);
+    }
+    // Name the flag in errors about the states it gave.
+    let flagged = |e: planarium::scenario::ScenarioError| {
+        let flag =
+            ["start", "goal", "robot"].into_iter().find(|k| e.path.starts_with(k) && m.get_one::<String>(k).is_some());
+        match flag {
+            Some(k) => format!("{arg}: --{k}{}: {}", &e.path[k.len()..], e.message),
+            None => format!("{arg}: {e}"),
+        }
+    };
+    let text = std::path::Path::new(arg).exists().then(|| read_limited(arg)).transpose()?;
+    if let Some(text) = text.as_ref().filter(|t| planarium::io::detect(t) == planarium::io::Format::TechnionMap) {
+        let stem = std::path::Path::new(arg).file_stem().and_then(|s| s.to_str()).unwrap_or(arg);
+        let opts = planarium::io::technion::MapOptions { robot, start, goal };
+        return planarium::io::technion::import_map_with(text, stem, &opts).map_err(flagged);
+    }
+    if robot.is_some() {
+        return Err(format!("{arg}: --robot applies to Technion maps only (a scenario names its own robot)"));
+    }
+    let mut sc = load(arg)?;
+    if let Some(s) = start {
+        sc.start = s;
+    }
+    if goal.is_some() {
+        sc.goal = goal;
+    }
+    Problem::from_scenario(&sc).map_err(flagged)?;
+    Ok(sc)
+}
+
 fn plan(m: &ArgMatches) -> Result<(), String> {
-    let sc = load(m.get_one::<String>("scenario").unwrap())?;
+    let sc = load_for_plan(m)?;
     // As the page does: the scenario's planner block chooses the planner and seed unless told.
     let block = sc.planner.as_ref();
     let name = m
@@ -247,12 +314,22 @@ fn plan(m: &ArgMatches) -> Result<(), String> {
                 st.smoothed_coverage.unwrap_or(0.0) * 100.0
             );
         }
+        if let (Some(a), Some(b)) = (st.course_coverage, st.continuous_coverage) {
+            println!(
+                "  course coverage (at vertices) {:.1}%, continuous coverage (along edges) {:.1}%",
+                a * 100.0,
+                b * 100.0
+            );
+        }
         if let Some(why) = &r.reason {
             println!("  {why}");
         }
         if r.solved {
             println!("  path: {} states, cost {:.4}", r.path.len(), st.cost.unwrap_or(0.0));
             println!("  smoothed: {} states, cost {:.4}", r.smoothed.len(), st.smoothed_cost.unwrap_or(0.0));
+            if let (Some(a), Some(b)) = (st.cost_fk, st.smoothed_cost_fk) {
+                println!("  cost in report 004's unit (fk): {a:.2}, smoothed {b:.2}");
+            }
         }
     }
     Ok(())

@@ -7,7 +7,11 @@
 //! - the sight line `at → p` passes through no obstacle's **interior**
 //!   ([`Workspace::sight_clear`](super::Workspace::sight_clear)).
 //!
-//! A sight line that only touches an obstacle (grazes a vertex, runs along an edge, ends on the
+//! With the inspection block's `touch_hides` (the Technion course's rule, whose checker asks
+//! whether the sight line `intersects` an obstacle edge), any contact hides the point instead:
+//! [`Workspace::sight_untouched`](super::Workspace::sight_untouched).
+//!
+//! By default, a sight line that only touches an obstacle (grazes a vertex, runs along an edge, ends on the
 //! boundary) is not blocked, in every workspace, whether or not the robot's body may touch
 //! obstacles: light passes a corner. Crossing an interior blocks, and so does a point strictly
 //! inside an obstacle. Every test is exact `f64` arithmetic on the segment, with no sampling along

@@ -425,6 +425,14 @@ impl Workspace {
         })
     }
 
+    /// Whether the closed segment `a → b` meets no obstacle at all, boundaries included (the
+    /// Technion course's sight rule, where a sight line that touches an obstacle edge hides the
+    /// point; see [`crate::geometry::sight`]). Exact, whatever `touching_allowed` says.
+    pub fn sight_untouched(&self, a: Vec2, b: Vec2) -> bool {
+        !self
+            .near_by(&Aabb::of_points(&[a, b]), Query::Segment(a, b), |i, _| self.obstacles[i].intersects_segment(a, b))
+    }
+
     /// The index of the first obstacle that the closed polygon `poly` meets, if any.
     pub fn first_obstacle_in_polygon(&self, poly: &[Vec2]) -> Option<usize> {
         let bb = Aabb::of_points(poly);

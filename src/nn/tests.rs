@@ -109,6 +109,7 @@ fn matches_linear_scan_for_chain_metrics_over_embeddings() {
     check_space(chain_space(10, |links| Metric::ChainSum { links }), 3);
     check_space(chain_space(10, |links| Metric::ChainMax { links }), 4);
     check_space(chain_space(3, |links| Metric::ChainSum { links }), 5);
+    check_space(chain_space(4, |links| Metric::ChainNorm { links }), 6);
 }
 
 #[test]
@@ -119,7 +120,11 @@ fn chain_k_nearest_and_within_match_a_sorted_scan() {
 
 #[test]
 fn embedded_box_bound_never_exceeds_the_distance_to_a_point_inside() {
-    for s in [chain_space(8, |links| Metric::ChainSum { links }), chain_space(8, |links| Metric::ChainMax { links })] {
+    for s in [
+        chain_space(8, |links| Metric::ChainSum { links }),
+        chain_space(8, |links| Metric::ChainMax { links }),
+        chain_space(8, |links| Metric::ChainNorm { links }),
+    ] {
         let mut rng = Rng::new(7);
         let (mut ea, mut eb, mut eq) = (vec![0.0; 16], vec![0.0; 16], vec![0.0; 16]);
         for _ in 0..2000 {

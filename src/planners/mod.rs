@@ -55,6 +55,18 @@ pub struct InspectionTask {
     pub range: Real,
     /// The scenario's coverage target (fraction of points), the default of the planner's own.
     pub coverage: Real,
+    /// Count what a branch sees at its vertices only (the Technion handout's `I_i = I_{i−1} ∪
+    /// S(v_i)`), not along its edges too.
+    pub at_vertices: bool,
+    /// A sight line touching an obstacle's boundary hides the point (the course's test).
+    pub touch_hides: bool,
+}
+
+impl InspectionTask {
+    /// The same task counted another way: `at_vertices` and `touch_hides` as given.
+    pub fn counted(&self, at_vertices: bool, touch_hides: bool) -> InspectionTask {
+        InspectionTask { at_vertices, touch_hides, ..self.clone() }
+    }
 }
 
 /// What kind of task a planner solves.

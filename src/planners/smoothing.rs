@@ -29,6 +29,14 @@ fn point_at(si: &SpaceInfo, path: &[Vec<Real>], cum: &[Real], s: Real) -> (usize
 /// motion in it has been checked. Past the run's deadline ([`SpaceInfo::out_of_time`]) it stops
 /// and returns what it has.
 pub fn shortcut(si: &SpaceInfo, path: &[Vec<Real>], attempts: usize, rng: &mut Rng) -> Vec<Vec<Real>> {
+    let mut scratch = vec![0.0; si.dims()];
+    let path = shortcut_only(si, path, attempts, rng);
+    reduce_vertices(si, &path, &mut scratch)
+}
+
+/// [`shortcut`] without its final [`reduce_vertices`] (for a path whose vertices matter in
+/// themselves: an inspection path counted at its vertices).
+pub fn shortcut_only(si: &SpaceInfo, path: &[Vec<Real>], attempts: usize, rng: &mut Rng) -> Vec<Vec<Real>> {
     let mut path = path.to_vec();
     let mut scratch = vec![0.0; si.dims()];
     for _ in 0..attempts {
@@ -68,7 +76,7 @@ pub fn shortcut(si: &SpaceInfo, path: &[Vec<Real>], attempts: usize, rng: &mut R
         next.extend_from_slice(&path[j + 1..]);
         path = next;
     }
-    reduce_vertices(si, &path, &mut scratch)
+    path
 }
 
 /// Drop the vertices that a straight valid motion can skip: from each kept vertex, jump to the

@@ -74,6 +74,7 @@ impl ArmRobot {
         let metric = match metric.as_str() {
             "joint" => Metric::Euclidean,
             "max" => Metric::ChainMax { links: links.clone() },
+            "fk" => Metric::ChainNorm { links: links.clone() },
             _ => Metric::ChainSum { links: links.clone() },
         };
         Ok(ArmRobot {
@@ -357,6 +358,13 @@ impl MotionModel for ArmRobot {
         }
         Some(self.clearance_at(ws, q, cap, &mut rates))
     }
+}
+
+/// The cost of `path` in report 004's unit: the sum over its motions of the Euclidean norm of the
+/// difference of the stacked link-end points (the `fk` metric), for an arm of `links`.
+pub fn fk_path_cost(links: &[Real], path: &[Vec<Real>]) -> Real {
+    let space = StateSpace { dims: Vec::new(), metric: Metric::ChainNorm { links: links.to_vec() } };
+    path.windows(2).map(|w| space.distance(&w[0], &w[1])).sum()
 }
 
 /// The end effector (the last link's end, before any tip), looking along the last link: its

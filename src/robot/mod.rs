@@ -21,7 +21,7 @@ pub mod capability;
 mod point;
 mod rigid;
 
-pub use arm::ArmRobot;
+pub use arm::{fk_path_cost, ArmRobot};
 pub use asv::AsvRobot;
 pub use capability::{DiscreteOnly, MotionModel, OwnSampler, Sensor, WorkspaceBody};
 pub use point::PointRobot;

@@ -23,6 +23,21 @@ pub struct Stats {
     pub coverage: Option<Real>,
     /// Inspection: the fraction of points the smoothed path sees.
     pub smoothed_coverage: Option<Real>,
+    /// Inspection, once solved: the raw path's coverage by the Technion course's definition
+    /// (vertices only, touching hides), whatever the scenario counts; absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub course_coverage: Option<Real>,
+    /// Inspection, once solved: the raw path's coverage by Planarium's continuous definition
+    /// (along the edges, only interiors hide); absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub continuous_coverage: Option<Real>,
+    /// Arm robots, once solved: the raw path's cost in report 004's unit (the sum of the norms of
+    /// the stacked link-end differences, the `fk` metric); absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cost_fk: Option<Real>,
+    /// The smoothed path's cost in the same unit.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub smoothed_cost_fk: Option<Real>,
     /// What the sampler spent.
     pub sampler: SamplerSummary,
 }

@@ -103,6 +103,8 @@ impl Session {
             fov: i.fov,
             range: i.range,
             coverage: i.coverage,
+            at_vertices: i.at_vertices(),
+            touch_hides: i.touch_hides,
         });
         match spec.task {
             TaskKind::Goal if problem.goal.is_none() => {
@@ -411,6 +413,10 @@ impl Session {
             smoothing_ms: self.smoothing_ms,
             coverage: self.coverage(&self.path).or_else(|| self.planner.coverage()),
             smoothed_coverage: self.coverage(&self.smoothed),
+            course_coverage: self.coverage_by(&self.path, planners::inspection::course_coverage),
+            continuous_coverage: self.coverage_by(&self.path, planners::inspection::continuous_coverage),
+            cost_fk: self.cost_fk(&self.path),
+            smoothed_cost_fk: self.cost_fk(&self.smoothed),
             sampler: SamplerSummary::of(self.sampler.name(), self.sampler.stats()),
         }
     }
@@ -421,6 +427,28 @@ impl Session {
         match (&self.task.inspection, self.spec.task) {
             (Some(i), TaskKind::Inspection) if !path.is_empty() => {
                 Some(planners::inspection::path_coverage(&self.problem.si, i, path))
+            }
+            _ => None,
+        }
+    }
+
+    /// A path's coverage by a given definition (inspection planners only; `None` before a path).
+    fn coverage_by(
+        &self,
+        path: &[Vec<Real>],
+        by: fn(&crate::space_info::SpaceInfo, &InspectionTask, &[Vec<Real>]) -> Real,
+    ) -> Option<Real> {
+        match (&self.task.inspection, self.spec.task) {
+            (Some(i), TaskKind::Inspection) if !path.is_empty() => Some(by(&self.problem.si, i, path)),
+            _ => None,
+        }
+    }
+
+    /// A solved arm path's cost in report 004's unit (`None` for other robots or before a path).
+    fn cost_fk(&self, path: &[Vec<Real>]) -> Option<Real> {
+        match &self.problem.scenario.robot {
+            crate::scenario::RobotSpec::Arm { links, .. } if !path.is_empty() => {
+                Some(crate::robot::fk_path_cost(links, path))
             }
             _ => None,
         }

@@ -20,6 +20,11 @@ pub struct Summary {
 }
 
 impl Summary {
+    /// Whether it summarises no values (such a summary is left out of the JSON).
+    pub fn is_empty(&self) -> bool {
+        self.n == 0
+    }
+
     /// The summary of `xs` (all zeros when empty).
     pub fn of(xs: &[f64]) -> Summary {
         let n = xs.len();
@@ -62,6 +67,12 @@ pub struct RunRow {
     /// Smoothing time, milliseconds (optional, 0 when absent).
     #[serde(default)]
     pub smoothing_ms: f64,
+    /// Arm robots: the raw path's cost in report 004's unit (`stats.cost_fk`); absent otherwise.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cost_fk: Option<f64>,
+    /// Arm robots: the smoothed path's cost in report 004's unit.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub smoothed_cost_fk: Option<f64>,
 }
 
 impl RunRow {
@@ -78,6 +89,8 @@ impl RunRow {
             cost: st.cost,
             smoothed_cost: st.smoothed_cost,
             smoothing_ms: st.smoothing_ms,
+            cost_fk: st.cost_fk,
+            smoothed_cost_fk: st.smoothed_cost_fk,
         }
     }
 }
@@ -101,6 +114,12 @@ pub struct SetupSummary {
     pub cost: Summary,
     /// Smoothed path cost (solved runs).
     pub smoothed_cost: Summary,
+    /// Raw path cost in report 004's unit (solved arm runs; absent when none).
+    #[serde(skip_serializing_if = "Summary::is_empty")]
+    pub cost_fk: Summary,
+    /// Smoothed path cost in report 004's unit (solved arm runs; absent when none).
+    #[serde(skip_serializing_if = "Summary::is_empty")]
+    pub smoothed_cost_fk: Summary,
 }
 
 impl SetupSummary {
@@ -120,6 +139,8 @@ impl SetupSummary {
             checks: all(|r| r.checks as f64),
             cost: solved_only(|r| r.cost),
             smoothed_cost: solved_only(|r| r.smoothed_cost),
+            cost_fk: solved_only(|r| r.cost_fk),
+            smoothed_cost_fk: solved_only(|r| r.smoothed_cost_fk),
         }
     }
 }

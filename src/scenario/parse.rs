@@ -281,8 +281,8 @@ fn arm(o: &mut Obj) -> Result<RobotSpec> {
     let metric = match o.get("metric") {
         Some((v, p)) => {
             let m = string(v, &p)?;
-            if !["joint", "chain", "max"].contains(&m.as_str()) {
-                return Err(ScenarioError::at(p, "must be joint, chain or max"));
+            if !["joint", "chain", "max", "fk"].contains(&m.as_str()) {
+                return Err(ScenarioError::at(p, "must be joint, chain, max or fk"));
             }
             m
         }
@@ -344,8 +344,22 @@ fn inspection(v: &Value, path: &str) -> Result<Inspection> {
     if !(0.0..=1.0).contains(&coverage) {
         return Err(ScenarioError::at(join(path, "coverage"), "must be between 0 and 1"));
     }
+    let coverage_mode = match o.get("coverage_mode") {
+        Some((v, p)) => {
+            let m = string(v, &p)?;
+            if !["continuous", "vertices"].contains(&m.as_str()) {
+                return Err(ScenarioError::at(p, "must be continuous or vertices"));
+            }
+            m
+        }
+        None => "continuous".to_string(),
+    };
+    let touch_hides = match o.get("touch_hides") {
+        Some((v, p)) => boolean(v, &p)?,
+        None => false,
+    };
     o.finish()?;
-    Ok(Inspection { points, fov, range, coverage })
+    Ok(Inspection { points, fov, range, coverage, coverage_mode, touch_hides })
 }
 
 fn planner(v: &Value, path: &str) -> Result<PlannerDefaults> {

@@ -83,7 +83,8 @@ pub enum RobotSpec {
         /// Whether links may not cross each other (default true).
         self_collision: bool,
         /// The metric: `joint` (Euclidean in joint space), `chain` (sum of link-end moves, OMPL's
-        /// kinematic chain) or `max` (the largest joint-point move); default `chain`.
+        /// kinematic chain), `max` (the largest joint-point move) or `fk` (the Euclidean norm of
+        /// the stacked link-end differences, report 004's distance); default `chain`.
         metric: String,
         /// A short extra segment continuing the last link, checked for collisions (OMPL's chain
         /// benchmark uses 0.001); default 0.
@@ -132,6 +133,26 @@ pub struct Inspection {
     pub range: Real,
     /// Fraction of points to see.
     pub coverage: Real,
+    /// How a branch's coverage is counted: `continuous` (the default: every state along its
+    /// edges, at the motion resolution) or `vertices` (only at the tree's vertices, as the
+    /// Technion course's handout defines it).
+    #[serde(skip_serializing_if = "is_continuous")]
+    pub coverage_mode: String,
+    /// A sight line that touches an obstacle's boundary hides the point (the Technion course's
+    /// test); default false: only crossing an interior hides it.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub touch_hides: bool,
+}
+
+fn is_continuous(m: &str) -> bool {
+    m == "continuous"
+}
+
+impl Inspection {
+    /// Whether coverage is counted at the vertices only.
+    pub fn at_vertices(&self) -> bool {
+        self.coverage_mode == "vertices"
+    }
 }
 
 /// The optional planner block: a name, a seed, and parameters by name.

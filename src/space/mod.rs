@@ -39,6 +39,13 @@ pub enum Metric {
         /// Link lengths.
         links: Vec<Real>,
     },
+    /// For a planar chain: the Euclidean norm of the difference of the stacked link-end points,
+    /// `sqrt(Σ |Δpₖ|²)` (report 004's distance: the norm of the difference of the two n×2
+    /// forward-kinematics arrays).
+    ChainNorm {
+        /// Link lengths.
+        links: Vec<Real>,
+    },
     /// `|Δ(x, y)| + weight · |Δθ|` for states `[x, y, θ]` (rigid bodies).
     TranslationRotation {
         /// Weight of the rotation, usually the body's radius.
@@ -99,6 +106,7 @@ impl StateSpace {
             }
             Metric::ChainSum { links } => chain_moves(links, a, b).sum(),
             Metric::ChainMax { links } => chain_moves(links, a, b).fold(0.0, Real::max),
+            Metric::ChainNorm { links } => chain_moves(links, a, b).map(|m| m * m).sum::<Real>().sqrt(),
         }
     }
 
@@ -106,7 +114,7 @@ impl StateSpace {
     /// points; 0 for metrics computed from the states directly.
     pub fn embedding_len(&self) -> usize {
         match &self.metric {
-            Metric::ChainSum { links } | Metric::ChainMax { links } => 2 * links.len(),
+            Metric::ChainSum { links } | Metric::ChainMax { links } | Metric::ChainNorm { links } => 2 * links.len(),
             _ => 0,
         }
     }
@@ -117,7 +125,7 @@ impl StateSpace {
     /// [`distance`](Self::distance) of the states bit for bit. Nearest-neighbour search embeds each
     /// stored state once instead of redoing its forward kinematics at every comparison.
     pub fn embed(&self, q: &[Real], out: &mut [Real]) {
-        if let Metric::ChainSum { links } | Metric::ChainMax { links } = &self.metric {
+        if let Metric::ChainSum { links } | Metric::ChainMax { links } | Metric::ChainNorm { links } = &self.metric {
             let (mut t, mut p) = (0.0, (0.0, 0.0));
             for (i, l) in links.iter().enumerate() {
                 t += q[i];
@@ -136,6 +144,7 @@ impl StateSpace {
             .map(|k| ((ea[2 * k] - eb[2 * k]).powi(2) + (ea[2 * k + 1] - eb[2 * k + 1]).powi(2)).sqrt());
         match &self.metric {
             Metric::ChainMax { .. } => moves.fold(0.0, Real::max),
+            Metric::ChainNorm { .. } => moves.map(|m| m * m).sum::<Real>().sqrt(),
             _ => moves.sum(),
         }
     }
@@ -162,6 +171,7 @@ impl StateSpace {
             .map(|((e, l), h)| (gap(e[0], l[0], h[0]).powi(2) + gap(e[1], l[1], h[1]).powi(2)).sqrt());
         match &self.metric {
             Metric::ChainMax { .. } => moves.fold(0.0, Real::max),
+            Metric::ChainNorm { .. } => moves.map(|m| m * m).sum::<Real>().sqrt(),
             _ => moves.sum(),
         }
     }
@@ -203,6 +213,9 @@ impl StateSpace {
             }
             Metric::ChainSum { links } => (0..links.len()).map(|k| 2.0 * reach(links, k)).sum(),
             Metric::ChainMax { links } => 2.0 * links.iter().sum::<Real>(),
+            Metric::ChainNorm { links } => {
+                (0..links.len()).map(|k| (2.0 * reach(links, k)).powi(2)).sum::<Real>().sqrt()
+            }
             Metric::TranslationRotation { weight } => {
                 (ext(&self.dims[0]).powi(2) + ext(&self.dims[1]).powi(2)).sqrt() + weight * ext(&self.dims[2])
             }
@@ -239,7 +252,7 @@ impl StateSpace {
             Metric::TranslationRotation { weight } => (gap(0).powi(2) + gap(1).powi(2)).sqrt() + weight * gap(2),
             // A box of joint angles bounds a chain's moves poorly: the tree bounds the chain metrics
             // over link-end boxes instead (`embedded_box_lower_bound`).
-            Metric::ChainSum { .. } | Metric::ChainMax { .. } => 0.0,
+            Metric::ChainSum { .. } | Metric::ChainMax { .. } | Metric::ChainNorm { .. } => 0.0,
         }
     }
 }

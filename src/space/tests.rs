@@ -57,7 +57,11 @@ fn max_extent_matches_ompl_ranges() {
 #[test]
 fn chain_embeddings_give_the_distance_bit_for_bit() {
     let links = vec![0.1, 0.25, 0.05, 0.3, 0.1];
-    for metric in [Metric::ChainSum { links: links.clone() }, Metric::ChainMax { links: links.clone() }] {
+    for metric in [
+        Metric::ChainSum { links: links.clone() },
+        Metric::ChainMax { links: links.clone() },
+        Metric::ChainNorm { links: links.clone() },
+    ] {
         let space = StateSpace { dims: vec![Dim { lo: -PI, hi: PI, wraps: true }; 5], metric };
         assert_eq!(space.embedding_len(), 10);
         let mut rng = crate::rng::Rng::new(3);

@@ -160,6 +160,13 @@ test('technion-ip: inspection points drawn; only the inspection planner is offer
   await waitState('finished', 120000);
   assert.equal(await page.isVisible('#error'), false);
   assert.equal(await page.isDisabled('#scenario'), false);
+  // the finished result's two coverages (the course's count at vertices / the continuous one) and
+  // the fk cost are shown beside the others
+  const { stats } = await page.evaluate(() => window.planarium.result());
+  const pct = (x) => `${(100 * x).toFixed(1)}%`;
+  assert.equal(await page.textContent('#stat-coverage-both'), `${pct(stats.course_coverage)} / ${pct(stats.continuous_coverage)}`);
+  assert.ok(stats.course_coverage >= 0.5 && stats.continuous_coverage >= stats.course_coverage, JSON.stringify(stats));
+  assert.match(await page.textContent('#stat-cost-fk'), /^\d+\.\d \(smoothed \d+\.\d\)$/);
   await page.screenshot({ path: join(shots, 'page-technion-ip.png') });
 
   await pickScenario('narrow', 'Narrow passage');
@@ -178,6 +185,31 @@ test('open file: a Technion map is imported', async () => {
   assert.deepEqual(sc.robot.links, [80, 70, 40, 40]);
   assert.equal(await page.isVisible('#error'), false);
   assert.match(await page.$eval('#scenario', (s) => s.selectedOptions[0].textContent), /map_mp\.json/);
+});
+
+test('open file: a Technion map without START/GOAL opens with the point robot at free corners, and the editor moves the start', async () => {
+  // tests/data/technion-dot-400x300.json: a made-up 400×300 map of 16 rectangles (the later
+  // offerings' form: WIDTH, HEIGHT, OBSTACLES only)
+  const text = readFileSync(new URL('../data/technion-dot-400x300.json', import.meta.url));
+  await page.setInputFiles('#file', { name: 'technion-dot-400x300.json', mimeType: 'application/json', buffer: text });
+  await page.waitForFunction(() => /technion-dot-400x300/.test(document.getElementById('scenario-name').textContent));
+  await waitState('idle');
+  assert.equal(await page.isVisible('#error'), false);
+  const sc = await page.evaluate(() => window.planarium.scenario());
+  assert.equal(sc.robot.kind, 'point');
+  assert.deepEqual(sc.bounds, [0, 0, 399, 299]);
+  assert.ok(sc.start[0] < 60 && sc.start[1] < 60 && sc.goal[0] > 340 && sc.goal[1] > 240, `${sc.start} → ${sc.goal}`);
+  // the free lane x 100..130 between the first two columns of rectangles
+  await drag(await toPage(...sc.start), await toPage(115, 150));
+  await page.waitForFunction(() => window.planarium.state() === 'idle' && window.planarium.scenario().start[0] > 100);
+  const start = (await page.evaluate(() => window.planarium.scenario())).start;
+  assert.ok(Math.abs(start[0] - 115) < 3 && Math.abs(start[1] - 150) < 3, `start moved to ${start}`);
+  await fastPlayback();
+  await page.click('#run');
+  await waitStatus('solved');
+  const { path } = await page.evaluate(() => window.planarium.result());
+  assert.deepEqual(path[0], start);
+  assert.deepEqual(path.at(-1), sc.goal);
 });
 
 test('narrow: drag the goal to a free place and the path ends there; into the wall names the goal', async () => {

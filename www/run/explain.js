@@ -92,7 +92,7 @@ export const PSEUDOCODE = {
       { id: 'steer', text: 'q_new ← STEER(q_src, q_rand, range)', indent: 1 },
       { id: 'check', text: 'if not MOTION_FREE(q_src, q_new): reject', indent: 1 },
       { id: 'add', text: 'parent ← the near node through which q_new sees most', indent: 1 },
-      { id: 'seen', text: 'seen(q_new) ← seen(parent) ∪ points seen on the way', indent: 1 },
+      { id: 'seen', text: 'seen(q_new) ← seen(parent) ∪ points seen on the way (at q_new only, counted at vertices)', indent: 1 },
       { id: 'rewire', text: 'rewire near nodes that see more (or as much, cheaper) through q_new', indent: 1 },
       { id: 'cost', text: 'if |seen(q_new)| beats the best branch: best ← q_new', indent: 1 },
       { id: 'goal-check', text: 'when coverage ≥ target: return PATH(best)', indent: 1 },

@@ -1,7 +1,8 @@
 // The stats panel: a <dl> built from one field table, filled from Lane.statsFor(). The playground
 // and each lane of the compare page use it, with an id prefix. Rows marked `optional` are hidden
 // while they have no value (the best cost only exists for planners that keep improving, the
-// coverage only for inspection, raw tries only for validity-checking samplers).
+// coverage only for inspection, raw tries only for validity-checking samplers, the course's and the
+// continuous coverage and the fk cost only in a finished result that has them).
 
 import { el } from './dom.js';
 
@@ -30,6 +31,14 @@ export const STAT_FIELDS = Object.freeze([
     value: (s) => (s.coverage == null ? undefined
       : `${(100 * s.coverage).toFixed(1)}%${s.points_seen != null ? ` (${s.points_seen} seen)` : ''}`),
     title: "The best branch's share of inspection points seen, in the events shown" },
+  { key: 'coverage-both', label: 'Course / continuous', optional: true,
+    value: (s) => (s.course_coverage == null || s.continuous_coverage == null ? undefined
+      : `${(100 * s.course_coverage).toFixed(1)}% / ${(100 * s.continuous_coverage).toFixed(1)}%`),
+    title: "The path's coverage counted at its vertices with touching hiding (the Technion course's) / along its edges (Planarium's continuous count)" },
+  { key: 'cost-fk', label: 'Cost (fk)', optional: true,
+    value: (s) => (s.cost_fk == null ? undefined
+      : `${fixed(s.cost_fk, 1)} (smoothed ${fixed(s.smoothed_cost_fk, 1) ?? '–'})`),
+    title: "An arm's path cost in report 004's unit: the norm of the stacked link-end differences, summed" },
   { key: 'sampler', label: 'Sampler', value: (s) => s.sampler?.name },
   { key: 'draws', label: 'Draws / sample', value: (s) => fixed(s.sampler?.draws_per_sample, 2),
     title: "The sampler's raw draws per sample it handed to the planner" },

@@ -7,7 +7,11 @@
 //! set and what the sensor sees at every state of the edge into it, checked at the motion
 //! resolution (the course checks edges every 0.05 rad). The coverage of a node is the fraction of
 //! the points in its set; the run ends when a node's coverage reaches the target (the `coverage`
-//! parameter, by default the scenario's), and the path is its branch.
+//! parameter, by default the scenario's), and the path is its branch. With the task's
+//! `at_vertices` (the scenario's `"coverage_mode": "vertices"`, set for the Technion maps) a node's
+//! set is its parent's and what the sensor sees at the node itself, the handout's
+//! `I_i = I_{i−1} ∪ S(v_i)`; with `touch_hides`, a sight line that touches an obstacle hides the
+//! point (the course's test).
 //!
 //! Each iteration:
 //! 1. chooses where to grow: with probability `focus`, from a node of the branch that sees most (a
@@ -27,7 +31,8 @@
 //! What the sensor sees is the robot's business (its [`Sensor`](crate::robot::Sensor) capability,
 //! through [`SpaceInfo::sensor`], and [`SpaceInfo::sees`]): an arm's end effector looking along its
 //! last link, a rigid body's origin looking along its x axis, a point seeing all around; sight
-//! lines are blocked by obstacle interiors only. Robots without a sensor are refused.
+//! lines are blocked by obstacle interiors only, unless `touch_hides`. Robots without a sensor are
+//! refused.
 //!
 //! The parts: `visibility` (what the sensor sees at a state and along a motion), `coverage`
 //! (what a path sees, and smoothing that keeps it), `grow` (one iteration: steps 1–4) and `bits`
@@ -41,7 +46,7 @@ mod coverage;
 mod grow;
 mod visibility;
 
-pub use coverage::{path_coverage, seen_along, shortcut};
+pub use coverage::{continuous_coverage, course_coverage, path_coverage, seen_along, shortcut};
 
 use super::rrt::{resolve_range, RANGE};
 use crate::math::Real;
@@ -128,6 +133,8 @@ impl Inspection {
             fov: 0.0,
             range: 0.0,
             coverage: 0.0,
+            at_vertices: false,
+            touch_hides: false,
         });
         let own = params.real("coverage");
         let n = si.dims();
@@ -135,7 +142,7 @@ impl Inspection {
             start: task.start.clone(),
             words: insp.points.len().div_ceil(64).max(1),
             target: if own > 0.0 { own } else { insp.coverage },
-            view: Visibility { points: insp.points, fov: insp.fov, range: insp.range },
+            view: Visibility::of(insp),
             range: resolve_range(si, params.real("range")),
             k: params.real("k") as usize,
             focus: params.real("focus"),

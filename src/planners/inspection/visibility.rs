@@ -3,6 +3,7 @@
 
 use super::bits::{count, has, set, Bits};
 use crate::math::{Real, Vec2};
+use crate::planners::InspectionTask;
 use crate::space_info::SpaceInfo;
 
 /// What the robot's sensor must see for one task: the points, the field of view and the range.
@@ -11,9 +12,23 @@ pub(super) struct Visibility {
     pub(super) points: Vec<Vec2>,
     pub(super) fov: Real,
     pub(super) range: Real,
+    /// Look at the end of a motion only (the course's vertex-only coverage), not along it.
+    pub(super) at_vertices: bool,
+    /// Any contact with an obstacle hides a point (the course's sight test).
+    pub(super) touch_hides: bool,
 }
 
 impl Visibility {
+    pub(super) fn of(t: InspectionTask) -> Visibility {
+        Visibility {
+            points: t.points,
+            fov: t.fov,
+            range: t.range,
+            at_vertices: t.at_vertices,
+            touch_hides: t.touch_hides,
+        }
+    }
+
     /// Set in `out` every point not in `skip` or `out` that the sensor sees at `q`.
     /// (One unit of the batch journal: a bounded batch replays it without looking again.)
     pub(super) fn look(&self, si: &SpaceInfo, q: &[Real], skip: &Bits, out: &mut Bits) {
@@ -22,7 +37,7 @@ impl Visibility {
             let Some(sensor) = si.sensor() else { return };
             let pose = sensor.pose(q);
             for (j, p) in self.points.iter().enumerate() {
-                if !has(skip, j) && !has(out, j) && si.sees(&pose, *p, self.fov, self.range) {
+                if !has(skip, j) && !has(out, j) && si.sees_by(&pose, *p, self.fov, self.range, self.touch_hides) {
                     set(out, j);
                 }
             }
@@ -31,7 +46,7 @@ impl Visibility {
 
     /// Set in `out` (cleared first) every point not in `skip` that the sensor sees along the motion
     /// `a → b`, at every state at most the motion resolution apart, `b` included and `a` excluded
-    /// (its own are its branch's).
+    /// (its own are its branch's); with `at_vertices`, at `b` only.
     /// (One unit of the batch journal, like [`Visibility::look`].)
     pub(super) fn sweep(&self, si: &SpaceInfo, a: &[Real], b: &[Real], skip: &Bits, out: &mut Bits, buf: &mut [Real]) {
         si.journalled_bits(1, out, |out| self.sweep_now(si, a, b, skip, out, buf))
@@ -41,6 +56,12 @@ impl Visibility {
         out.fill(0);
         let n = self.points.len();
         if count(skip) as usize == n {
+            return;
+        }
+        if self.at_vertices {
+            if !si.tick(n as u64 + 1) {
+                self.look(si, b, skip, out);
+            }
             return;
         }
         // At most `MAX_MOTION_STEPS` (the problem's resolution check), each looking at every
