@@ -1,6 +1,7 @@
 // `npm run reproduce` (scripts/reproduce.mjs, issue 16): in quick mode it writes the four reports'
 // tables, and the figures it writes are the CLI's own, read back here from the Markdown and
-// recomputed from independent runs; report 004's cost unit is checked against a closed form.
+// recomputed from independent runs; report 004's cost unit is checked against a closed form and
+// against the core's own `stats.cost_fk`.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
@@ -70,6 +71,17 @@ test('npm run reproduce --quick writes the four reports\' tables with the CLI\'s
     assert.equal(e1[2], (ok.reduce((a, x) => a + fkCost(x.path), 0) / ok.length).toFixed(2));
     assert.equal(e1[3], (ok.reduce((a, x) => a + x.stats.cost, 0) / ok.length).toFixed(3));
     assert.equal(e1[6], '344.694');
+    // the core's own fk cost (stats.cost_fk) agrees with the script's recomputation
+    for (const x of ok) assert.ok(Math.abs(x.stats.cost_fk - fkCost(x.path)) <= 1e-9 * x.stats.cost_fk, `${x.stats.cost_fk} vs ${fkCost(x.path)}`);
+
+    // Report 004's inspection: every solved run meets its target by the course's count
+    const ti = tableAfter(md, '### Inspection at coverage');
+    for (const target of ['0.5', '0.75']) {
+      const r = ti.find((c) => c[0] === target);
+      assert.ok(r, `no row for ${target}`);
+      assert.ok(Number(r[7]) >= Number(target) - 1e-12, `least course coverage ${r[7]} below ${target}`);
+      assert.ok(Number(r[8]) >= Number(r[6]), 'the continuous count is never below the course\'s');
+    }
   } finally {
     rmSync(dir, { recursive: true, force: true });
   }
