@@ -81,7 +81,10 @@ pub fn import_map_with(text: &str, name: &str, opts: &MapOptions) -> Result<Scen
     let map = v.as_object().ok_or_else(|| ScenarioError::document("a Technion map is a JSON object"))?;
     for k in map.keys() {
         if !["WIDTH", "HEIGHT", "OBSTACLES", "START", "GOAL", "INSPECTION_POINTS"].contains(&k.as_str()) {
-            return Err(ScenarioError::at(crate::limits::cut(k, 100), "unknown key in a Technion map"));
+            return Err(ScenarioError::at(
+                crate::scenario::key_name(&crate::limits::cut(k, 100)),
+                "unknown key in a Technion map",
+            ));
         }
     }
     let dim = |k: &str| -> Result<f64, ScenarioError> {
@@ -261,6 +264,9 @@ mod tests {
         assert!(e.path.starts_with("OBSTACLES[0]"), "{e}");
         let e = import_map(&MP.replace("\"HEIGHT\"", "\"HIGHT\""), "m").unwrap_err();
         assert_eq!(e.path, "HIGHT");
+        // fuzz finding: an empty key is named too (an empty path would mean the whole document)
+        let e = import_map(&MP.replace("\"HEIGHT\": 300,", "\"HEIGHT\": 300, \"\": 1,"), "m").unwrap_err();
+        assert_eq!(e.to_string(), "\"\": unknown key in a Technion map");
     }
 
     #[test]

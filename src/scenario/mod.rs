@@ -8,6 +8,7 @@
 mod builtin;
 mod error;
 mod parse;
+pub(crate) use parse::key_name;
 mod types;
 
 pub use builtin::{builtin, builtin_names, course_of, BUILTINS};

@@ -17,10 +17,21 @@ struct Obj<'a> {
 }
 
 fn join(path: &str, key: &str) -> String {
+    let key = key_name(key);
     if path.is_empty() {
-        key.to_string()
+        key
     } else {
         format!("{path}.{key}")
+    }
+}
+
+/// A key as an error's path names it: itself, or `""` for the empty key (so the path is never
+/// empty: an empty path means the whole document).
+pub(crate) fn key_name(key: &str) -> String {
+    if key.is_empty() {
+        "\"\"".to_string()
+    } else {
+        key.to_string()
     }
 }
 

@@ -52,6 +52,7 @@ fn errors_name_their_json_path() {
     assert!(err(&with(r#", "obstacles": [{"polygon": [[0,0],[1,1],[1,0],[0,1]]}]"#))
         .starts_with("obstacles[0].polygon: must be a simple polygon"));
     assert!(err(&with(r#", "robot2": 1"#)).starts_with("robot2: unknown key"));
+    assert!(err(&with(r#", "": 1"#)).starts_with("\"\": unknown key"), "an empty key is named");
     assert_eq!(
         err(r#"{"bounds": [0,0,1,1], "robot": {"kind": "point", "size": 2}, "start": [0.1,0.1], "goal": [0.2,0.2]}"#)
             .split(':')
