@@ -339,3 +339,14 @@ fn every_planner_solves_every_asv_builtin_in_valid_primitive_steps() {
         }
     }
 }
+
+/// Issue 16's hard built-ins: their start and goal pass the course's rules, checked independently.
+#[test]
+fn hard_builtins_start_and_goal_pass_the_course_rules() {
+    for id in ["asv-15", "asv-7-long-gap"] {
+        let sc = planarium::scenario::builtin(id).unwrap();
+        check_configuration(&sc, &sc.start).unwrap_or_else(|e| panic!("{id}: start: {e}"));
+        check_configuration(&sc, sc.goal.as_ref().unwrap()).unwrap_or_else(|e| panic!("{id}: goal: {e}"));
+        assert!(Problem::from_scenario(&sc).is_ok(), "{id}: the robot refuses its start or goal");
+    }
+}
