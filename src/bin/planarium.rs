@@ -92,6 +92,15 @@ fn cli() -> Command {
                 )
                 .arg(Arg::new("csv").long("csv").value_name("FILE").help("Also write every run as CSV (one row per run; see docs/benchmarks.md)"))
                 .arg(Arg::new("json-file").long("json-file").value_name("FILE").help("Also write the report (runs and summaries) as JSON"))
+                .arg(Arg::new("more").num_args(0..).value_name("SCENARIO").help("More scenarios to grade (with --course-grade)"))
+                .arg(
+                    Arg::new("course-grade")
+                        .long("course-grade")
+                        .action(ArgAction::SetTrue)
+                        .help("Grade ASV problems as the course did: 10 runs (seeds 1..10), solved when 5 pass the course's rules within 60 s (open map) or 300 s (cluttered: 3 obstacles or more); a verdict per file; exit code 1 when one fails. SCENARIO may be a directory (its .txt files)"),
+                )
+                .arg(Arg::new("course-runs").long("course-runs").hide(true).value_parser(clap::value_parser!(u64).range(1..=1000)))
+                .arg(Arg::new("course-time-limit").long("course-time-limit").hide(true).value_parser(clap::value_parser!(f64)))
                 .arg(
                     Arg::new("ompl-log")
                         .long("ompl-log")
@@ -336,6 +345,12 @@ fn plan(m: &ArgMatches) -> Result<(), String> {
 }
 
 fn run_bench(m: &ArgMatches) -> Result<(), String> {
+    if m.get_flag("course-grade") {
+        return run_course_grade(m);
+    }
+    if m.get_many::<String>("more").is_some() {
+        return Err("several scenarios are graded with --course-grade only; bench one at a time otherwise".into());
+    }
     let sc = load(m.get_one::<String>("scenario").unwrap())?;
     Problem::from_scenario(&sc).map_err(|e| e.to_string())?;
     let runs = *m.get_one::<u64>("runs").unwrap();
@@ -389,6 +404,63 @@ fn run_bench(m: &ArgMatches) -> Result<(), String> {
     } else {
         println!("{} — {} seeded runs per planner (seeds 1..={runs})\n", sc.name, runs);
         print!("{}", bench::table(&rows));
+    }
+    Ok(())
+}
+
+/// `bench --course-grade`: the ASV course's verdict per file (`planarium::run::course_grade`).
+fn run_course_grade(m: &ArgMatches) -> Result<(), String> {
+    use planarium::run::course_grade;
+    let mut args: Vec<String> = vec![m.get_one::<String>("scenario").unwrap().clone()];
+    args.extend(m.get_many::<String>("more").into_iter().flatten().cloned());
+    let mut files = Vec::new();
+    for a in args {
+        let path = std::path::Path::new(&a);
+        if path.is_dir() {
+            let mut inside: Vec<String> = std::fs::read_dir(path)
+                .map_err(|e| format!("{a}: {e}"))?
+                .filter_map(|e| e.ok().map(|e| e.path()))
+                .filter(|p| p.extension().is_some_and(|x| x == "txt"))
+                .map(|p| p.to_string_lossy().into_owned())
+                .collect();
+            inside.sort();
+            if inside.is_empty() {
+                return Err(format!("{a}: no .txt problem file in this directory"));
+            }
+            files.extend(inside);
+        } else {
+            files.push(a);
+        }
+    }
+    if files.len() > 100 {
+        return Err(format!("{} problems: grade at most 100 at a time", files.len()));
+    }
+    let runs = m.get_one::<u64>("course-runs").copied().unwrap_or(course_grade::COURSE_RUNS);
+    let needed = if runs == course_grade::COURSE_RUNS { course_grade::COURSE_NEEDED } else { runs.div_ceil(2) };
+    let limit = m.get_one::<f64>("course-time-limit").copied();
+    let mut failed = 0;
+    for f in &files {
+        let sc = load(f)?;
+        let spec = match &sc.planner {
+            Some(d) => planners::find(&d.name).ok_or_else(|| format!("{f}: unknown planner \"{}\"", d.name))?,
+            None => planners::find("rrt-connect").expect("rrt-connect is registered"),
+        };
+        let params = params_for(spec, &sc, m)?;
+        let path = std::path::Path::new(f);
+        let name = if path.exists() { path.file_stem().and_then(|s| s.to_str()).unwrap_or(f) } else { f };
+        let g = course_grade::grade(&sc, name, spec.name, &params, runs, needed, limit)?;
+        println!("{}", g.line());
+        if !g.pass() {
+            failed += 1;
+        }
+    }
+    println!(
+        "{} of {} problems pass ({runs} runs each, {needed} must pass the course's rules within the limit)",
+        files.len() - failed,
+        files.len()
+    );
+    if failed > 0 {
+        return Err(format!("{failed} of {} problems fail the course's grading", files.len()));
     }
     Ok(())
 }

@@ -20,6 +20,8 @@ pub const BUILTINS: &[(&str, &str)] = &[
     ("asv-3", include_str!("../../scenarios/asv-3.json")),
     ("asv-7-easy", include_str!("../../scenarios/asv-7-easy.json")),
     ("asv-7", include_str!("../../scenarios/asv-7.json")),
+    ("asv-15", include_str!("../../scenarios/asv-15.json")),
+    ("asv-7-long-gap", include_str!("../../scenarios/asv-7-long-gap.json")),
     ("hex-open", include_str!("../../scenarios/hex-open.json")),
     ("hex-corridor", include_str!("../../scenarios/hex-corridor.json")),
     ("hex-trap", include_str!("../../scenarios/hex-trap.json")),

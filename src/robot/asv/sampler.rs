@@ -15,7 +15,7 @@
 
 use super::{AsvRobot, STACK};
 use crate::geometry::Workspace;
-use crate::math::{wrap_angle, Real, Vec2, PI};
+use crate::math::{wrap_angle, MinMax, Real, Vec2, PI};
 use crate::rng::Rng;
 use crate::robot::{Robot, Verdict};
 use crate::space::StateSpace;
@@ -30,6 +30,12 @@ const FLAT: Real = 0.3;
 const FLAT_REACH: usize = 2;
 /// How far (radians) the broom along a gap may deviate from the gap's direction.
 const ALONG_SPREAD: Real = 0.15;
+/// Fraction of the gap candidates drawn thin (see [`thin`]).
+const THIN_FRACTION: Real = 0.5;
+/// A thin chain's two bends, radians (each)…
+const THIN_BEND: (Real, Real) = (0.2, 1.0);
+/// …and the most its other turns bend.
+const THIN_STRAIGHT: Real = 0.03;
 
 /// Points in narrow gaps of a workspace, with each gap's direction.
 ///
@@ -42,6 +48,8 @@ const ALONG_SPREAD: Real = 0.15;
 #[derive(Clone, Debug, Default)]
 pub(super) struct Gaps {
     points: Vec<(Vec2, Real)>,
+    /// For each point, the middle of the gap across it (where a thin chain is centred).
+    centres: Vec<Vec2>,
 }
 
 /// Bridge tests tried when building the gap list, and the most points kept.
@@ -58,9 +66,9 @@ impl Gaps {
         let mut rng = Rng::new(0xA5_6A95);
         let b = ws.bounds;
         let reach = GAP_REACH * (b.max.x - b.min.x).max(b.max.y - b.min.y);
-        let mut points = Vec::new();
+        let (mut points, mut centres) = (Vec::new(), Vec::new());
         if ws.obstacles.is_empty() {
-            return Gaps { points };
+            return Gaps { points, centres };
         }
         for _ in 0..BRIDGE_TRIES {
             let m = Vec2::new(rng.uniform(b.min.x, b.max.x), rng.uniform(b.min.y, b.max.y));
@@ -70,12 +78,16 @@ impl Gaps {
             if blocked(ws, m + d) && blocked(ws, m - d) && !blocked(ws, m) {
                 let Some(beta) = across(ws, m, reach) else { continue };
                 points.push((m, beta + 0.5 * PI));
+                let (s, c) = libm::sincos(beta);
+                let u = Vec2::new(c, s);
+                let (a, b) = (edge(ws, m, u, 2.0 * reach), edge(ws, m, u.scale(-1.0), 2.0 * reach));
+                centres.push(m + u.scale(0.5 * (a - b)));
                 if points.len() == BRIDGE_KEEP {
                     break;
                 }
             }
         }
-        Gaps { points }
+        Gaps { points, centres }
     }
 
     /// The gap points and directions found.
@@ -84,14 +96,41 @@ impl Gaps {
         &self.points
     }
 
-    /// A random gap point and direction, if there are any.
-    fn pick(&self, rng: &mut Rng) -> Option<(Vec2, Real)> {
+    /// The middle of the gap across each point.
+    #[cfg(test)]
+    pub(super) fn centres(&self) -> &[Vec2] {
+        &self.centres
+    }
+
+    /// A random gap point, its direction and the middle of the gap across it, if there are any.
+    fn pick(&self, rng: &mut Rng) -> Option<(Vec2, Real, Vec2)> {
         if self.points.is_empty() {
             None
         } else {
-            Some(self.points[rng.below(self.points.len())])
+            let i = rng.below(self.points.len());
+            Some((self.points[i].0, self.points[i].1, self.centres[i]))
         }
     }
+}
+
+/// How far from free point `m` along unit `u` the first blocked point is (up to `reach`), to a
+/// 1/1024 of `reach` (bisection after a coarse march).
+fn edge(ws: &Workspace, m: Vec2, u: Vec2, reach: Real) -> Real {
+    let step = reach / 64.0;
+    let mut lo = 0.0;
+    while lo + step <= reach && !blocked(ws, m + u.scale(lo + step)) {
+        lo += step;
+    }
+    let mut hi = (lo + step).at_most(reach);
+    for _ in 0..4 {
+        let mid = 0.5 * (lo + hi);
+        if blocked(ws, m + u.scale(mid)) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    lo
 }
 
 /// Whether `p` is blocked: outside the bounds or inside an obstacle.
@@ -149,8 +188,26 @@ pub(super) fn sample(robot: &AsvRobot, space: &StateSpace, rng: &mut Rng, out: &
         shape(robot, rng, winding, &mut out[2..]);
         let k = rng.below(n);
         let gap = if rng.uniform01() < GAP_FRACTION { gaps.pick(rng) } else { None };
-        let target = match gap {
-            Some((p, along)) => {
+        let (target, k) = match gap {
+            Some((p, along, centre)) if n >= 4 && rng.uniform01() < THIN_FRACTION => {
+                // The whole chain thin, its straight run exactly along the gap, centred across it.
+                let broom = thin(rng, winding, &mut out[3..3 + n - 2]);
+                let before: Real = out[3..3 + broom].iter().sum();
+                let dir = along + if rng.uniform01() < 0.5 { 0.0 } else { PI };
+                out[2] = wrap_angle(dir - before);
+                super::offsets(robot.broom, &out[2..], rel);
+                let (s, c) = libm::sincos(along);
+                let (u, across) = (Vec2::new(c, s), Vec2::new(-s, c));
+                let (lo, hi) = rel.iter().fold((Real::INFINITY, Real::NEG_INFINITY), |(lo, hi), r| {
+                    let d = r.dot(&across);
+                    (lo.at_most(d), hi.at_least(d))
+                });
+                let mid = 0.5 * (lo + hi);
+                // Along the gap at p, across it at the middle.
+                let at = centre + u.scale((p - centre).dot(&u)) + across.scale(rel[broom].dot(&across) - mid);
+                (at, broom)
+            }
+            Some((p, along, _)) => {
                 // Broom k (k−1 for the last vehicle) along the gap, the turns near it small.
                 let broom = k.min(n - 2);
                 for j in broom.saturating_sub(FLAT_REACH)..(broom + FLAT_REACH + 1).min(n - 2) {
@@ -160,9 +217,9 @@ pub(super) fn sample(robot: &AsvRobot, space: &StateSpace, rng: &mut Rng, out: &
                 let dir =
                     along + rng.uniform(-ALONG_SPREAD, ALONG_SPREAD) + if rng.uniform01() < 0.5 { 0.0 } else { PI };
                 out[2] = wrap_angle(dir - before);
-                p
+                (p, k)
             }
-            None => Vec2::new(rng.uniform(xd.lo, xd.hi), rng.uniform(yd.lo, yd.hi)),
+            None => (Vec2::new(rng.uniform(xd.lo, xd.hi), rng.uniform(yd.lo, yd.hi)), k),
         };
         super::offsets(robot.broom, &out[2..], rel);
         let mean = rel.iter().fold(Vec2::default(), |s, p| s + *p).scale(1.0 / n as Real);
@@ -245,4 +302,28 @@ fn shape(robot: &AsvRobot, rng: &mut Rng, winding: Real, angles: &mut [Real]) {
         let t = 2.0 * PI * shares[k] / total;
         angles[1 + k] = winding * t.min(PI - 1e-6);
     }
+}
+
+/// Draw a thin chain into `turns` (the `n − 2` turns, `n ≥ 4`): every turn almost straight (below
+/// [`THIN_STRAIGHT`]) but two, at random places, bent by [`THIN_BEND`] each, all of the chain's
+/// winding: a long flat trapezoid (with the closing edge as its base), the only kind of convex chain
+/// that keeps its area inside a gap narrower than a broom and longer than the chain. Returns a
+/// broom between the two bends (the straight run, which the caller turns along the gap).
+fn thin(rng: &mut Rng, winding: Real, turns: &mut [Real]) -> usize {
+    let m = turns.len();
+    for t in turns.iter_mut() {
+        *t = winding * rng.uniform(0.0, THIN_STRAIGHT);
+    }
+    // The bends near the ends (a long straight run between them), anywhere now and then.
+    let (i, j) = if rng.uniform01() < 0.75 {
+        let i = rng.below(2.min(m - 1));
+        (i, (m - 1 - rng.below(2)).max(i + 1))
+    } else {
+        let i = rng.below(m - 1);
+        (i, i + 1 + rng.below(m - 1 - i))
+    };
+    turns[i] = winding * rng.uniform(THIN_BEND.0, THIN_BEND.1);
+    turns[j] = winding * rng.uniform(THIN_BEND.0, THIN_BEND.1);
+    // Turn t joins broom t and broom t + 1: brooms i + 1 ..= j lie between the bends.
+    i + 1 + rng.below(j - i)
 }

@@ -170,3 +170,25 @@ fn the_bridge_test_finds_the_slot() {
         assert!(libm::sin(*along).abs() < 0.45, "the slot runs along x, found {along} at {p:?}");
     }
 }
+
+/// The middle of a gap, found for a thin chain: in a wall 0.33 thick with a gap 0.03 wide at
+/// y 0.485 to 0.515, the centres of the gap points well inside it lie on y = 0.5.
+#[test]
+fn gap_centres_lie_in_the_middle_of_a_long_gap() {
+    let mut ws = Workspace::new(
+        Aabb { min: Vec2::new(0.0, 0.0), max: Vec2::new(1.0, 1.0) },
+        vec![
+            Shape::Rect(Aabb { min: Vec2::new(0.335, 0.0), max: Vec2::new(0.665, 0.485) }),
+            Shape::Rect(Aabb { min: Vec2::new(0.335, 0.515), max: Vec2::new(0.665, 1.0) }),
+        ],
+    );
+    ws.touching_allowed = true;
+    let gaps = sampler::Gaps::find(&ws);
+    let inside: Vec<usize> =
+        (0..gaps.points().len()).filter(|&i| gaps.points()[i].0.x > 0.36 && gaps.points()[i].0.x < 0.64).collect();
+    assert!(inside.len() >= 20, "{} gap points inside the gap", inside.len());
+    for i in inside {
+        let c = gaps.centres()[i];
+        assert!((c.y - 0.5).abs() < 0.002, "centre {c:?} of gap point {:?}", gaps.points()[i]);
+    }
+}
