@@ -58,7 +58,14 @@ function bench(scenario, setups, runs, flags) {
   return JSON.parse(readFileSync(file, 'utf8')).setups;
 }
 
-const env = { quick, plan, bench, fkCost, mean, median, std, seeds: (n) => Array.from({ length: quick ? 2 : n }, (_, i) => i + 1) };
+/** `bench --course-grade` on `problems`: its printed verdicts (it exits 2 when a problem fails; that is a result too). */
+function courseGrade(problems) {
+  const r = spawnSync(bin, ['bench', '--course-grade', ...problems], { encoding: 'utf8' });
+  if (r.status !== 0 && r.status !== 2) throw new Error(`planarium bench --course-grade failed (${r.status}): ${r.stderr}`);
+  return r.stdout.trim();
+}
+
+const env = { quick, plan, bench, courseGrade, fkCost, mean, median, std, seeds: (n) => Array.from({ length: quick ? 2 : n }, (_, i) => i + 1) };
 
 const started = Date.now();
 const parts = [];

@@ -30,6 +30,7 @@ const R000 = {
         f(env.median(s.rows.map((r) => r.nodes)), 0), f(env.median(s.rows.map((r) => r.checks)), 0),
         f(env.median(solved.map((r) => r.cost)), 3), f(env.median(solved.map((r) => r.smoothed_cost)), 3)];
     });
+    const grade = env.courseGrade(files.map(([id]) => id));
     return `## Report 000: vehicles joined by brooms (UQ COMP3702), time per official file
 
 The report's Java RRT-Connect printed one run's total time per problem file. Its files "3ASV-x4"
@@ -45,6 +46,16 @@ planarium bench asv-7 --setup "rrt-connect: rrt-connect" --runs ${runs} --time-l
 \`\`\`
 
 ${table(['file', 'built-in', 'report (ms, one run)', 'solved', 'median time (ms)', 'max time (ms)', 'median nodes', 'median checks', 'median cost', 'median smoothed cost'], rows)}
+
+The course's grading (\`planarium bench --course-grade\`, \`docs/benchmarks.md\`): seeds 1–10 per
+problem, a run counts when its path, cut into the course's primitive steps, passes the course's
+checker within the limit (60 s in an open map, 300 s in a cluttered one: 3 obstacles or more, a
+rule chosen here, since the course did not define it), and a problem passes with 5 of 10:
+
+\`\`\`
+$ planarium bench --course-grade ${files.map(([id]) => id).join(' ')}
+${grade}
+\`\`\`
 `;
   },
 };

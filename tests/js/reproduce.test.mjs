@@ -56,6 +56,7 @@ test('npm run reproduce --quick writes the four reports\' tables with the CLI\'s
     assert.equal(row[6], median(plans.map((p) => p.stats.nodes)).toFixed(0));
     assert.equal(row[8], median(plans.map((p) => p.stats.cost)).toFixed(3));
     assert.equal(row[2], '1795');
+    assert.match(md, /4 of 4 problems pass/, 'the course grade of the four official files');
 
     // Report 001: seven set-ups per scene, the default's ratio 1, the report's columns as printed.
     const t1 = tableAfter(md, '### Narrow passage');
