@@ -34,7 +34,7 @@ function records(scenario, planner, params, seed) {
 function expected(planner, r) {
   const [kind, , id, parent, x, y, px, , c0] = r;
   switch (kind) {
-    case K.SAMPLE: return id === 1 ? `sample q_goal (${num(x)}, ${num(y)}) (goal bias)` : `sample (${num(x)}, ${num(y)})`;
+    case K.SAMPLE: return id === 1 ? `sample q_goal (${num(x)}, ${num(y)}) (goal bias)` : id === 2 ? `sample (${num(x)}, ${num(y)}) (uniform share)` : `sample (${num(x)}, ${num(y)})`;
     case K.NEAREST: return `nearest #${id} at ${num(c0)}`;
     case K.STEER: return `step ${num(c0)}`;
     case K.COLLISION: return `${blockerText(id)} at (${num(x)}, ${num(y)})`;
@@ -61,6 +61,7 @@ const RUNS = [
   ['hex-trap', 'hex-potential', {}, 1],
   ['apf-minimum', 'potential-field', {}, 1],
   ['open-field', 'rrt', { sampler: 'bridge', goal_bias: 0.2 }, 2],
+  ['zigzag', 'rrt-connect', { sampler: 'bridge', max_iterations: 3000 }, 2],
 ];
 
 for (const [scenario, planner, params, seed] of RUNS) {
@@ -116,6 +117,14 @@ test('explain: the pseudocode shows the lines of the options chosen', () => {
   const all = pseudocode('rrt', optionsOf({ planner: 'rrt', params: { goal_bias: 0.1, dd_radius: 0.1, exhausted: 3, extend: 'connect', sampler: 'bridge' } })).lines.map((l) => l.id);
   for (const id of ['goal', 'domain', 'exhausted', 'connect', 'try']) assert.ok(all.includes(id), id);
   assert.equal(pseudocode('no-such-planner'), null);
+  // the uniform share's line shows for the narrow-passage samplers unless the share is 0
+  const ids = (params) => pseudocode('rrt-connect', optionsOf({ planner: 'rrt-connect', params })).lines.map((l) => l.id);
+  assert.ok(ids({ sampler: 'bridge' }).includes('share') && ids({ sampler: 'near-collision', uniform_share: 0.3 }).includes('share'));
+  assert.ok(!ids({ sampler: 'bridge', uniform_share: 0 }).includes('share') && !ids({ sampler: 'uniform' }).includes('share'));
+  // inspection: what a new node sees, as the scenario counts it
+  const seen = (o) => pseudocode('inspection', o).lines.filter((l) => l.id === 'seen').map((l) => l.text);
+  assert.deepEqual(seen({}), ['seen(q_new) ← seen(parent) ∪ points seen on the way']);
+  assert.deepEqual(seen({ vertices: true }), ['seen(q_new) ← seen(parent) ∪ points seen at q_new (the course counts vertices only)']);
 });
 
 test('explain: a long reveal read at once says what reading every record one by one says', () => {

@@ -155,6 +155,8 @@ test('technion-ip: inspection points drawn; only the inspection planner is offer
   // no goal: the goal planners are not offered, and the panel says why
   assert.deepEqual(await page.$$eval('#planner option', (os) => os.map((o) => o.value)), ['inspection']);
   assert.match(await page.textContent('#planner-note'), /goal/);
+  // the pseudocode says what the scenario counts: the course's vertices, not the way between them
+  assert.match(await page.textContent('#explain-code li[data-line="seen"]'), /points seen at q_new \(the course counts vertices only\)/);
   await fastPlayback();
   await page.click('#run');
   await waitState('finished', 120000);

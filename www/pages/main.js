@@ -208,7 +208,7 @@ function load(text, defaults, { course: c = course, edit = false, file = null, s
 function configure() {
   if (!panel || !lane.session.alive) return;
   player.configure(panel.config());
-  explain.setPlanner(panel.config(), loaded?.robot?.kind);
+  explain.setPlanner(panel.config(), loaded?.robot?.kind, { vertices: loaded?.inspection?.coverage_mode === 'vertices' });
   syncChart();
   syncOptions();
   buildLegend();

@@ -10,14 +10,15 @@ import { EventKind as K, STRIDE } from './events.js';
 
 /**
  * @typedef {{id: string, text: string, indent?: number, when?: (o: Options) => boolean}} Line
- * @typedef {{sampler?: string, goalBias?: number, connect?: boolean, domain?: boolean, exhausted?: boolean,
- *   weighted?: boolean, escape?: string}} Options
+ * @typedef {{sampler?: string, goalBias?: number, share?: boolean, connect?: boolean, domain?: boolean, exhausted?: boolean,
+ *   weighted?: boolean, escape?: string, vertices?: boolean}} Options
  * @typedef {{title: string, lines: Line[]}} Pseudocode
  */
 
 const sampled = (o) => o.goalBias === undefined || o.goalBias > 0; // unset: the planner's default, which may bias
 const SAMPLER_LINES = /** @type {Line[]} */ ([
   { id: 'goal', text: 'with probability goal_bias: q_rand ← q_goal', indent: 2, when: sampled },
+  { id: 'share', text: 'else with probability uniform_share: q_rand ← a plain uniform draw', indent: 2, when: (o) => !!o.share },
   { id: 'try', text: 'SAMPLE(): uniform draws, checked', indent: 2, when: (o) => !!o.sampler && o.sampler !== 'uniform' && o.sampler !== 'goal-biased' },
 ]);
 
@@ -92,7 +93,8 @@ export const PSEUDOCODE = {
       { id: 'steer', text: 'q_new ← STEER(q_src, q_rand, range)', indent: 1 },
       { id: 'check', text: 'if not MOTION_FREE(q_src, q_new): reject', indent: 1 },
       { id: 'add', text: 'parent ← the near node through which q_new sees most', indent: 1 },
-      { id: 'seen', text: 'seen(q_new) ← seen(parent) ∪ points seen on the way (at q_new only, counted at vertices)', indent: 1 },
+      { id: 'seen', text: 'seen(q_new) ← seen(parent) ∪ points seen on the way', indent: 1, when: (o) => !o.vertices },
+      { id: 'seen', text: 'seen(q_new) ← seen(parent) ∪ points seen at q_new (the course counts vertices only)', indent: 1, when: (o) => !!o.vertices },
       { id: 'rewire', text: 'rewire near nodes that see more (or as much, cheaper) through q_new', indent: 1 },
       { id: 'cost', text: 'if |seen(q_new)| beats the best branch: best ← q_new', indent: 1 },
       { id: 'goal-check', text: 'when coverage ≥ target: return PATH(best)', indent: 1 },
@@ -132,11 +134,15 @@ export function pseudocode(planner, options = {}) {
   return { title: p.title, lines: p.lines.filter((l) => !l.when || l.when(options)) };
 }
 
+const NARROW_SAMPLERS = ['gaussian', 'bridge', 'obstacle', 'near-collision'];
+
 /** The options the pseudocode shows, from a planner set-up {planner, params}. */
 export function optionsOf(config) {
   const p = config?.params || {};
   return {
     sampler: p.sampler,
+    // the narrow-passage samplers draw a share of plain uniform samples unless it is 0 (default 0.1)
+    share: NARROW_SAMPLERS.includes(p.sampler) && (p.uniform_share === undefined || Number(p.uniform_share) > 0),
     goalBias: p.goal_bias === undefined ? undefined : Number(p.goal_bias),
     connect: p.extend === 'connect',
     domain: Number(p.dd_radius) > 0,
@@ -223,7 +229,7 @@ export class Explainer {
         this.begin(id === 1 ? `sample q_goal ${pt(x, y)} (goal bias)` : id === 2 ? `sample ${pt(x, y)} (uniform share)` : `sample ${pt(x, y)}`);
         if (tries) this.actors.tries = tries;
         this.actors.sample = [x, y];
-        this.line = id === 1 ? 'goal' : 'sample';
+        this.line = id === 1 ? 'goal' : id === 2 ? 'share' : 'sample';
         if (this.planner === 'rrt-connect') this.parts[0] += ` for the ${TREE_NAME(this.planner, tree)}`;
         break;
       }

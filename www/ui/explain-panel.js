@@ -37,10 +37,13 @@ export class ExplainPanel {
     view.topHooks.push((ctx, L) => this.drawActors(ctx, L));
   }
 
-  /** Show `planner`'s pseudocode for the set-up `config` ({planner, params}) and robot kind. */
-  setPlanner(config, robotKind) {
+  /**
+   * Show `planner`'s pseudocode for the set-up `config` ({planner, params}) and robot kind;
+   * `scene`: what the scenario decides ({vertices}: inspection counted at the tree's vertices).
+   */
+  setPlanner(config, robotKind, scene = {}) {
     const planner = config?.planner || 'rrt';
-    const code = pseudocode(planner, optionsOf(config));
+    const code = pseudocode(planner, { ...optionsOf(config), ...scene });
     this.explainer = new Explainer(planner, robotKind || 'point');
     this.items.clear();
     this.title.textContent = code ? code.title : `${planner}: no pseudocode yet`;
