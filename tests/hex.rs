@@ -266,3 +266,79 @@ fn a_point_robot_works_and_other_robots_are_refused() {
     .unwrap();
     assert!(err.contains("trap_obstacle 9"), "{err}");
 }
+
+/// The complete search's closed cells (`CellState` verdict 2) in an event stream.
+fn closed(ev: &[f64]) -> usize {
+    records(ev, EventKind::CellState).filter(|r| r[6] == 2.0).count()
+}
+
+#[test]
+fn the_complete_search_finds_the_zigzag_path_the_descent_cannot() {
+    let sc = builtin("zigzag").unwrap();
+    let (descent, _) = run(&sc, json!({}));
+    assert_eq!(descent.status, "no_path", "the report's descent gets stuck in the zigzag");
+    for search in ["astar", "dijkstra"] {
+        let (r, ev) = run(&sc, json!({"search": search}));
+        check_valid(&sc, &r, &format!("zigzag, {search}"));
+        // Every wall is passed: the path crosses the zigzag's corridors, so it is far longer
+        // than the straight start–goal line.
+        let (s, g) = (&sc.start, sc.goal.as_ref().unwrap());
+        let straight = ((g[0] - s[0]).powi(2) + (g[1] - s[1]).powi(2)).sqrt();
+        assert!(r.stats.cost.unwrap() > 1.5 * straight, "{search}: cost {:?} vs {straight}", r.stats.cost);
+        assert!(closed(&ev) > 0, "{search}: closed cells are evented");
+    }
+}
+
+#[test]
+fn astar_closes_no_more_cells_than_dijkstra_for_the_same_cost() {
+    let mut fewer = 0;
+    for (id, over) in [
+        ("zigzag", json!({})),
+        ("hex-trap", json!({})),
+        ("apf-minimum", json!({})),
+        ("narrow", json!({"levels": 5})),
+        ("open-field", json!({})),
+    ] {
+        let sc = builtin(id).unwrap();
+        let with = |search: &str| {
+            let mut o = over.clone();
+            o["search"] = json!(search);
+            let (r, ev) = run(&sc, o);
+            check_valid(&sc, &r, &format!("{id}, {search}"));
+            (r.stats.cost.unwrap(), closed(&ev))
+        };
+        let (a_cost, a_closed) = with("astar");
+        let (d_cost, d_closed) = with("dijkstra");
+        assert!((a_cost - d_cost).abs() < 1e-9, "{id}: A* {a_cost} vs Dijkstra {d_cost}");
+        assert!(a_closed <= d_closed, "{id}: A* closed {a_closed} cells, Dijkstra {d_closed}");
+        fewer += usize::from(a_closed < d_closed);
+    }
+    // The heuristic does something: on the open field A* goes straight at the goal.
+    assert!(fewer >= 1, "A* closed as many cells as Dijkstra everywhere");
+}
+
+#[test]
+fn the_complete_search_is_never_longer_than_the_descent() {
+    // The descent's steps are edges of the same graph, so a shortest way is at most as long.
+    for id in ["hex-open", "hex-corridor", "hex-trap-modified", "open-field"] {
+        let sc = builtin(id).unwrap();
+        let (descent, _) = run(&sc, json!({}));
+        let (astar, _) = run(&sc, json!({"search": "astar"}));
+        check_valid(&sc, &astar, id);
+        let (d, a) = (descent.stats.cost.unwrap(), astar.stats.cost.unwrap());
+        assert!(a <= d + 1e-9, "{id}: A* {a} longer than the descent's {d}");
+    }
+    // Where the descent needs the modified potential to escape the trap, the complete search
+    // finds a way with the plain one, shorter than the escape.
+    let (escape, _) = run(&builtin("hex-trap-modified").unwrap(), json!({}));
+    let (astar, _) = run(&builtin("hex-trap").unwrap(), json!({"search": "astar"}));
+    assert!(astar.solved && astar.stats.cost.unwrap() < escape.stats.cost.unwrap());
+}
+
+#[test]
+fn a_complete_search_without_a_way_says_so() {
+    let (r, _) = run(&builtin("slot").unwrap(), json!({"search": "astar"}));
+    assert_eq!(r.status, "no_path");
+    let why = r.reason.unwrap_or_default();
+    assert!(why.contains("complete search") && why.contains("resolution"), "{why}");
+}

@@ -62,6 +62,8 @@ const RUNS = [
   ['apf-minimum', 'potential-field', {}, 1],
   ['open-field', 'rrt', { sampler: 'bridge', goal_bias: 0.2 }, 2],
   ['zigzag', 'rrt-connect', { sampler: 'bridge', max_iterations: 3000 }, 2],
+  ['zigzag', 'hex-potential', { search: 'astar' }, 1],
+  ['hex-trap', 'hex-potential', { search: 'dijkstra' }, 1],
 ];
 
 for (const [scenario, planner, params, seed] of RUNS) {
@@ -69,7 +71,7 @@ for (const [scenario, planner, params, seed] of RUNS) {
     const code = pseudocode(planner, optionsOf({ planner, params }));
     assert.ok(code, `pseudocode for ${planner}`);
     const ids = new Set(code.lines.map((l) => l.id));
-    const x = new Explainer(planner, scenarios[scenario].robot.kind);
+    const x = new Explainer(planner, scenarios[scenario].robot.kind, optionsOf({ planner, params }));
     const recs = records(scenario, planner, params, seed);
     assert.ok(recs.length > 50, `${recs.length} records`);
     const linesSeen = new Set();
@@ -125,6 +127,23 @@ test('explain: the pseudocode shows the lines of the options chosen', () => {
   const seen = (o) => pseudocode('inspection', o).lines.filter((l) => l.id === 'seen').map((l) => l.text);
   assert.deepEqual(seen({}), ['seen(q_new) ← seen(parent) ∪ points seen on the way']);
   assert.deepEqual(seen({ vertices: true }), ['seen(q_new) ← seen(parent) ∪ points seen at q_new (the course counts vertices only)']);
+  // hexagonal cells: the report's descent, or a complete search with its own lines
+  const hex = (search) => pseudocode('hex-potential', optionsOf({ planner: 'hex-potential', params: { search } })).lines.map((l) => l.id);
+  assert.ok(hex(undefined).includes('potential') && hex('descent').includes('grow') && !hex('descent').includes('close'));
+  assert.ok(hex('astar').includes('close') && hex('dijkstra').includes('open') && !hex('astar').includes('potential'));
+});
+
+test('explain: A* over the hexagonal cells closes cells, opens shorter ways and steps along the shortest', () => {
+  const params = { search: 'astar' };
+  const x = new Explainer('hex-potential', 'point', optionsOf({ planner: 'hex-potential', params }));
+  const said = { close: 0, opened: 0, along: 0 };
+  for (const r of records('zigzag', 'hex-potential', params, 1)) {
+    x.read(r);
+    if (r[0] === K.CELL_STATE && r[6] === 2) { assert.equal(x.line, 'close'); assert.match(x.caption, /^close cell #\d+/); said.close++; }
+    if (r[0] === K.CELL_STATE && r[6] === 0) { assert.match(x.caption, /opened \(a shorter way\)/); said.opened++; }
+    if (r[0] === K.NODE_ADDED && r[3] >= 0) { assert.match(x.caption, /^along the shortest way: step to/); said.along++; }
+  }
+  assert.ok(said.close > 100 && said.opened > 100 && said.along > 5, JSON.stringify(said));
 });
 
 test('explain: a long reveal read at once says what reading every record one by one says', () => {

@@ -60,6 +60,32 @@ test('hex-trap-modified: the cells are drawn free, mixed and visited, and the ru
   await page.screenshot({ path: '/tmp/page-hex-modified.png' });
 });
 
+test('hex-trap with A*: the complete search over the same cells solves where the descent is trapped; open and closed cells drawn', async () => {
+  await pickScenario('hex-trap', SCENARIOS['hex-trap']);
+  if (await page.$eval('#planner', (s) => s.value) !== 'hex-potential') {
+    await page.selectOption('#planner', 'hex-potential');
+    await waitState('idle');
+  }
+  assert.ok(await page.isVisible('#param-search'), 'the search is a choice in the panel');
+  await page.selectOption('#param-search', 'astar');
+  await fastPlayback();
+  await page.click('#run');
+  await waitState('finished', 60000);
+  await nextFrames();
+  await waitStatus('solved');
+  const cells = await page.evaluate(() => window.planarium.cells());
+  console.log(`A*: closed ${cells.visited.length}, open ${cells.open}, blocked ${cells.blocked}, regions ${cells.regions.length}`);
+  assert.ok(cells.visited.length > 20 && cells.open > 5, `closed ${cells.visited.length}, open ${cells.open}`);
+  assert.equal(cells.regions.length, 0, 'no region of influence: the search may use every cell');
+  const [open, closed] = await countColours('canvas', [PALETTE.cellOpen, PALETTE.cellVisited], 3);
+  console.log(`pixels: open ${open}, closed ${closed}`);
+  assert.ok(open > 200 && closed > 1000, `open ${open}, closed ${closed} pixels`);
+  const note = await page.textContent('#explain-code');
+  assert.match(note, /close the open cell of least g \+ h/);
+  await page.screenshot({ path: '/tmp/page-hex-astar.png' });
+  await page.selectOption('#param-search', 'descent');
+});
+
 test('hex-trap: no path, the status and the note say why; the heat map switches on and off', async () => {
   await runToEnd('hex-trap', 'hex-potential');
   await waitStatus('no path');

@@ -43,6 +43,9 @@ const PAIRS = [
   ['cellVisited', 'cellBlocked', 'visited and step-blocked cells'],
   ['cellMixed', 'cellFull', 'mixed and full cells'],
   ['cellVisited', 'cellMixed', 'visited and mixed cells'],
+  ['cellOpen', 'cellVisited', 'open and closed cells (A*, Dijkstra)'],
+  ['cellOpen', 'cellBlocked', 'open and step-blocked cells'],
+  ['cellOpen', 'cellFree', 'open and free cells'],
 ];
 const MIN_DELTA_E = 12;
 

@@ -6,8 +6,9 @@
 //   CELL + CELL_SHAPE  a cell of the hexagonal decomposition, complete once all its outline
 //                      vertices have come (NaN pads the last CELL_SHAPE); drawn in arrival order,
 //                      so a refined cell is covered by its children (they partition it exactly);
-//   CELL_STATE         the search's verdict on a cell: visited (blue), step-blocked (pink, ×, the
-//                      reason on hover), outside the region (kept for the hover text only);
+//   CELL_STATE         the search's verdict on a cell: visited or, for A*/Dijkstra, closed (blue),
+//                      opened by A*/Dijkstra (green), step-blocked (pink, ×, the reason on hover;
+//                      an open or closed cell stays so), outside the region (hover text only);
 //   POTENTIAL          a candidate's terms, the latest per cell, for the hover text;
 //   REGION             the region of influence (an attempt): a new one resets the verdicts and
 //                      replaces the field; `t` (the robot's diagonal) is remembered;
@@ -25,7 +26,7 @@ const BIG_MS = 250;    // …this many ms
 const ARROW_GAP = 14;  // css px: at most one arrow per square of this size
 
 const LABELS = ['free', 'mixed', 'full'];
-const STATES = ['passable', 'step blocked', 'visited', 'outside the region of influence', 'obstacle cell'];
+const STATES = ['passable (open)', 'step blocked', 'visited (closed)', 'outside the region of influence', 'obstacle cell'];
 const WHY = {
   1: 'an obstacle vertex within t/2',
   2: 'an obstacle vertex in the swept rectangle',
@@ -87,6 +88,9 @@ export class CellMirror {
       case EventKind.CELL_STATE: {
         const c = this.cells.get(id);
         if (!c) return;
+        // A* and Dijkstra may find a step into an open or closed cell blocked from another cell:
+        // the cell stays open (closed); the blocked step is in the explain panel's caption.
+        if (d[o + 6] === 1 && (c.state === 0 || c.state === 2)) return;
         c.state = d[o + 6];
         c.why = d[o + 7];
         c.from = d[o + 3];
@@ -265,6 +269,7 @@ export class CellsDrawing {
       if (!c || !c.done) continue;
       const level = Math.min(3, Math.max(0, c.level | 0));
       let fill = c.label === 1 ? PALETTE.cellMixed : c.label === 2 || c.state === 4 ? PALETTE.cellFull : PALETTE.cellFree[level];
+      if (!o.showHeat && c.state === 0) fill = PALETTE.cellOpen;
       if (!o.showHeat && c.state === 2) fill = PALETTE.cellVisited;
       if (!o.showHeat && c.state === 1) fill = PALETTE.cellBlocked;
       trace(ctx, L, c.pts);
@@ -516,7 +521,8 @@ function trace(ctx, L, p) {
 export function cellLegend(name) {
   if (name === 'hex-potential') {
     return [
-      { label: 'visited cell', color: PALETTE.cellVisited, shape: 'box' },
+      { label: 'visited (closed) cell', color: PALETTE.cellVisited, shape: 'box' },
+      { label: 'open cell (A*, Dijkstra)', color: PALETTE.cellOpen, shape: 'box' },
       { label: 'step-blocked cell (×)', color: PALETTE.cellBlocked, shape: 'box' },
       { label: 'later attempts: earlier trees faint', color: PALETTE.tree0, shape: 'line' },
     ];
@@ -532,7 +538,7 @@ export function cellSummary(m) {
   const pick = (state) => m.changed.map((id) => m.cells.get(id)).filter((c) => c && c.state === state)
     .map((c) => { const [x, y] = centreOf(c); return { id: c.id, x, y, level: c.level, radius: c.radius }; });
   return {
-    cells: m.order.length, labels, visited: pick(2), blocked: pick(1).length, field: m.field.length,
+    cells: m.order.length, labels, visited: pick(2), open: pick(0).length, blocked: pick(1).length, field: m.field.length,
     regions: m.regions.map((r) => ({ ...r })), minima: m.minima.map((p) => ({ ...p })), t: m.t,
   };
 }

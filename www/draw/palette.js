@@ -42,12 +42,14 @@ export const PALETTE = Object.freeze({
   chartTarget: '#009e73',
   chartAxis: '#5d6470',
   // cells and potential fields (cells.js): free cells light, darker by level; mixed amber; full grey;
-  // visited blue and step-blocked pink (with a × mark), told apart by lightness too
+  // visited (closed) blue, step-blocked pink (with a × mark) and, for A*/Dijkstra, open green, told
+  // apart by lightness too
   cellFree: Object.freeze(['#f7f4ea', '#efe9d8', '#e6dec6', '#ddd3b4']),
   cellEdge: 'rgba(70, 60, 40, 0.32)',
   cellMixed: '#f6c86e',
   cellFull: '#8e949c',
   cellVisited: '#9cc2ea',
+  cellOpen: '#b5e3a1',
   cellBlocked: '#f4b6d2',
   cellBlockedMark: '#a6165f',
   // the heat map: ColorBrewer YlGnBu (sequential, colour-blind safe), low potential light, high dark
@@ -76,7 +78,7 @@ export const STYLE = Object.freeze({
   [EventKind.POINT_SEEN]: { layer: 'marker', shape: 'diamond', color: PALETTE.seen, toggle: 'showSeen', label: 'inspection point seen' },
   // cells and fields (cells.js): the 'cells' layer, between the scene and the samples
   [EventKind.CELL]: { layer: 'cells', shape: 'polygon', colors: [PALETTE.cellFree, PALETTE.cellMixed, PALETTE.cellFull], widths: [1.6, 1.2, 0.9, 0.7], toggle: 'showCells', label: 'decomposition cell' },
-  [EventKind.CELL_STATE]: { layer: 'cells', shape: 'polygon', colors: { 1: PALETTE.cellBlocked, 2: PALETTE.cellVisited }, mark: PALETTE.cellBlockedMark, toggle: 'showCells', label: 'cell judged by the search' },
+  [EventKind.CELL_STATE]: { layer: 'cells', shape: 'polygon', colors: { 0: PALETTE.cellOpen, 1: PALETTE.cellBlocked, 2: PALETTE.cellVisited }, mark: PALETTE.cellBlockedMark, toggle: 'showCells', label: 'cell judged by the search' },
   [EventKind.FIELD]: { layer: 'cells', shape: 'tile', colors: PALETTE.heat, toggle: 'showHeat', label: 'potential heat map' },
   [EventKind.REGION]: { layer: 'marker', shape: 'circle', color: PALETTE.region, width: 2, toggle: 'showRegion', label: 'region of influence' },
   [EventKind.MINIMUM]: { layer: 'marker', shape: 'ring', color: PALETTE.minimum, size: 11, width: 3, label: 'local minimum' },

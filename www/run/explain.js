@@ -11,10 +11,12 @@ import { EventKind as K, STRIDE } from './events.js';
 /**
  * @typedef {{id: string, text: string, indent?: number, when?: (o: Options) => boolean}} Line
  * @typedef {{sampler?: string, goalBias?: number, share?: boolean, connect?: boolean, domain?: boolean, exhausted?: boolean,
- *   weighted?: boolean, escape?: string, vertices?: boolean}} Options
+ *   weighted?: boolean, escape?: string, vertices?: boolean, search?: string}} Options
  * @typedef {{title: string, lines: Line[]}} Pseudocode
  */
 
+const descent = (o) => !o.search || o.search === 'descent'; // hex-potential: the report's search
+const complete = (o) => !descent(o); // hex-potential: A* or Dijkstra over the same cells
 const sampled = (o) => o.goalBias === undefined || o.goalBias > 0; // unset: the planner's default, which may bias
 const SAMPLER_LINES = /** @type {Line[]} */ ([
   { id: 'goal', text: 'with probability goal_bias: q_rand ← q_goal', indent: 2, when: sampled },
@@ -104,14 +106,19 @@ export const PSEUDOCODE = {
     title: 'Hexagonal decomposition + potential fields (report 002)',
     lines: [
       { id: 'cells', text: 'tile the map with hexagons; split mixed cells, level by level' },
-      { id: 'region', text: 'region ← a disc of influence around the start' },
-      { id: 'field', text: 'potential of each free cell in the region (heat map)', indent: 1 },
-      { id: 'loop', text: 'repeat from the robot\'s cell' },
-      { id: 'judge', text: 'test the step to each neighbouring free cell', indent: 1 },
-      { id: 'potential', text: 'U = repulsion + trap term − C(1 − k2·α) for each passable one', indent: 1 },
-      { id: 'add', text: 'step to the lowest U; mark the cell left visited', indent: 1 },
-      { id: 'grow', text: 'stuck: double the region and start again', indent: 1 },
-      { id: 'goal-check', text: 'goal cell in reach and its step is free: done', indent: 1 },
+      { id: 'region', text: 'region ← a disc of influence around the start', when: descent },
+      { id: 'field', text: 'potential of each free cell in the region (heat map)', indent: 1, when: descent },
+      { id: 'loop', text: 'repeat from the robot\'s cell', when: descent },
+      { id: 'judge', text: 'test the step to each neighbouring free cell', indent: 1, when: descent },
+      { id: 'potential', text: 'U = repulsion + trap term − C(1 − k2·α) for each passable one', indent: 1, when: descent },
+      { id: 'add', text: 'step to the lowest U; mark the cell left visited', indent: 1, when: descent },
+      { id: 'grow', text: 'stuck: double the region and start again', indent: 1, when: descent },
+      { id: 'goal-check', text: 'goal cell in reach and its step is free: done', indent: 1, when: descent },
+      { id: 'open', text: 'open ← {start}, g(start) = 0 (the region plays no part)', when: complete },
+      { id: 'close', text: 'close the open cell of least g + h (A*: h = distance to the goal; Dijkstra: h = 0)', when: complete },
+      { id: 'judge', text: 'test the step to each neighbouring free cell; open it if the way through here is shorter', indent: 1, when: complete },
+      { id: 'goal-check', text: 'goal cell in reach and its step is free: open the goal', indent: 1, when: complete },
+      { id: 'add', text: 'goal closed: step along its shortest way (none open: no path at this resolution)', when: complete },
     ],
   },
   'potential-field': {
@@ -149,6 +156,7 @@ export function optionsOf(config) {
     exhausted: Number(p.exhausted) > 0,
     weighted: p.exhausted_policy === 'weighted',
     escape: p.escape,
+    search: p.search,
   };
 }
 
@@ -179,10 +187,14 @@ const TREE_NAME = (planner, tree) => (planner === 'rrt-connect' ? (tree === 0 ? 
  * target, range, new edge, collision).
  */
 export class Explainer {
-  /** `planner`: the registry name; `robot`: the scenario's robot kind ('point' draws the range). */
-  constructor(planner = 'rrt', robot = 'point') {
+  /**
+   * `planner`: the registry name; `robot`: the scenario's robot kind ('point' draws the range);
+   * `options`: what `optionsOf` reads from the set-up (hex-potential's search).
+   */
+  constructor(planner = 'rrt', robot = 'point', options = /** @type {Options} */ ({})) {
     this.planner = planner;
     this.robot = robot;
+    this.complete = planner === 'hex-potential' && complete(options);
     this.reset();
   }
 
@@ -272,7 +284,7 @@ export class Explainer {
       case K.NODE_ADDED:
         if (parent < 0) { this.begin(`the ${TREE_NAME(this.planner, tree)} starts at ${pt(x, y)}`); this.line = 'init'; break; }
         if (this.planner === 'hex-potential') {
-          this.begin(`step to cell centre ${pt(x, y)} (node #${id})`);
+          this.begin(`${this.complete ? 'along the shortest way: step to' : 'step to cell centre'} ${pt(x, y)} (node #${id})`);
           A.edge = [px, py, x, y];
           this.line = 'add';
           break;
@@ -352,7 +364,13 @@ export class Explainer {
         this.line = 'field';
         break;
       case K.CELL_STATE: {
-        const verdict = ['passable', `blocked: ${HEX_WHY[py] || 'the step test failed'}`, 'visited already', 'outside the region', 'an obstacle cell'][px] || 'judged';
+        if (this.complete && px === 2) {
+          this.begin(`close cell #${id} (the open cell of least g + h)`);
+          A.cell = [x, y];
+          this.line = 'close';
+          break;
+        }
+        const verdict = [this.complete ? 'opened (a shorter way)' : 'passable', `blocked: ${HEX_WHY[py] || 'the step test failed'}`, 'visited already', 'outside the region', 'an obstacle cell'][px] || 'judged';
         if (this.line !== 'judge') this.begin(`from cell #${parent}: cell #${id} ${verdict}`);
         else this.then(`#${id} ${verdict}`);
         A.cell = [x, y];

@@ -43,8 +43,9 @@ export class ExplainPanel {
    */
   setPlanner(config, robotKind, scene = {}) {
     const planner = config?.planner || 'rrt';
-    const code = pseudocode(planner, { ...optionsOf(config), ...scene });
-    this.explainer = new Explainer(planner, robotKind || 'point');
+    const options = { ...optionsOf(config), ...scene };
+    const code = pseudocode(planner, options);
+    this.explainer = new Explainer(planner, robotKind || 'point', options);
     this.items.clear();
     this.title.textContent = code ? code.title : `${planner}: no pseudocode yet`;
     this.code.replaceChildren(...(code ? code.lines : []).map((l) => {

@@ -30,12 +30,14 @@
 
 pub mod cells;
 pub mod potential;
+pub mod search;
 pub mod step;
 
 pub use cells::CellLabel;
 
 use self::cells::{Decomposition, Refine};
 use self::potential::{obstacle_terms, potential, Region, Side, Terms, Weights};
+use self::search::{Frontier, Search};
 use self::step::{disc_blocked, step_test};
 use crate::events::EventKind;
 use crate::geometry::Workspace;
@@ -74,6 +76,13 @@ pub const PARAMS: &[ParamSpec] = &[
     ParamSpec::int("trap_obstacle", "Trapping obstacle", -1.0, 1e6, -1.0, "Index (from 0, in the scenario's order) of the obstacle j that gets k3 (-1: none)."),
     ParamSpec::choice("trap_side", "Trap side", &["below", "above", "left", "right"], 0, "Where k3 replaces k1: below obstacle j's lower edge (the report's case), above, left or right of it."),
     ParamSpec::real("influence", "Region of influence", 0.0, 1e6, 0.0, "Initial radius of the region of influence about the start (0: the start–goal distance plus t)."),
+    ParamSpec::choice(
+        "search",
+        "Search",
+        &["descent", "astar", "dijkstra"],
+        0,
+        "descent: the report's steps to the passable neighbour of lowest potential (it can get stuck); astar or dijkstra: a complete search of the same cells for the shortest way through their centres (it finds a way whenever the cells join start and goal).",
+    ),
 ];
 
 /// Where the planner is.
@@ -120,6 +129,10 @@ pub struct HexPotential {
     failure: Option<String>,
     /// A split would have passed `max_nodes` (the run ends at its node limit).
     out_of_nodes: bool,
+    /// The complete search chosen instead of the descent, if any…
+    complete: Option<Search>,
+    /// …and its open and closed sets, once the cells are made.
+    frontier: Option<Frontier>,
 }
 
 impl HexPotential {
@@ -210,6 +223,12 @@ impl HexPotential {
             steps: 0,
             failure: None,
             out_of_nodes: false,
+            complete: match params.choice("search") {
+                "astar" => Some(Search::AStar),
+                "dijkstra" => Some(Search::Dijkstra),
+                _ => None,
+            },
+            frontier: None,
             ws,
         })
     }
@@ -272,7 +291,10 @@ impl HexPotential {
         self.start_node = self.node_of[sl].expect("the start's leaf is a node");
         self.goal_node = self.node_of[gl].expect("the goal's leaf is a node");
         self.phase = Phase::Search;
-        self.begin_attempt(cx);
+        match self.complete {
+            Some(kind) => self.begin_complete(cx, kind),
+            None => self.begin_attempt(cx),
+        }
     }
 
     /// Start (or restart) the search from the start in the current region.
@@ -523,6 +545,7 @@ impl Planner for HexPotential {
                 self.decompose_one(cx);
                 None
             }
+            Phase::Search if self.complete.is_some() => self.complete_one(cx),
             Phase::Search => self.search_one(cx),
         }
     }
