@@ -84,11 +84,15 @@ pub enum EventKind {
     /// state's point; `c0` the step's length; `c1` the range; `pc0` 1 when the step reaches the
     /// target. The motion is checked next: a `Collision` or a `NodeAdded` follows.
     Steer = 21,
+    /// EST picked node `id` of `tree` to grow by density: `x, y` its point; `px` the nodes in its
+    /// grid cell; `py` the cell's probability (its 1/count over the sum for all cells); `c0` the
+    /// cells in use; `c1, pc0` the cell's column and row; `pc1` the grid's cells a side.
+    Select = 22,
 }
 
 impl EventKind {
     /// Every kind with its name, for the JS constant check.
-    pub const ALL: [(EventKind, &'static str); 22] = [
+    pub const ALL: [(EventKind, &'static str); 23] = [
         (EventKind::Sample, "SAMPLE"),
         (EventKind::SampleRejected, "SAMPLE_REJECTED"),
         (EventKind::NodeAdded, "NODE_ADDED"),
@@ -111,6 +115,7 @@ impl EventKind {
         (EventKind::Minimum, "MINIMUM"),
         (EventKind::Nearest, "NEAREST"),
         (EventKind::Steer, "STEER"),
+        (EventKind::Select, "SELECT"),
     ];
 }
 

@@ -7,6 +7,7 @@
 //! from that list.
 
 pub mod apf;
+pub mod est;
 pub mod hex;
 pub mod inspection;
 mod params;
@@ -234,8 +235,16 @@ impl PlannerSpec {
 }
 
 /// Every planner.
-pub static REGISTRY: &[PlannerSpec] =
-    &[rrt::rrt::SPEC, rrt::rrt_connect::SPEC, rrt::rrt_star::SPEC, inspection::SPEC, hex::SPEC, apf::SPEC];
+pub static REGISTRY: &[PlannerSpec] = &[
+    rrt::rrt::SPEC,
+    rrt::rrt_connect::SPEC,
+    rrt::rrt_star::SPEC,
+    est::SPEC,
+    est::BI_SPEC,
+    inspection::SPEC,
+    hex::SPEC,
+    apf::SPEC,
+];
 
 /// A planner by name.
 pub fn find(name: &str) -> Option<&'static PlannerSpec> {

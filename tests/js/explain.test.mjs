@@ -48,6 +48,7 @@ function expected(planner, r) {
     case K.MINIMUM: return `local minimum at (${num(x)}, ${num(y)})`;
     case K.CELL_STATE: return `#${id}`;
     case K.REGION: return `radius ${num(px)}`;
+    case K.SELECT: return `picks #${id}: its cell holds ${px} node`;
     default: return null;
   }
 }
@@ -64,6 +65,8 @@ const RUNS = [
   ['zigzag', 'rrt-connect', { sampler: 'bridge', max_iterations: 3000 }, 2],
   ['zigzag', 'hex-potential', { search: 'astar' }, 1],
   ['hex-trap', 'hex-potential', { search: 'dijkstra' }, 1],
+  ['narrow', 'est', {}, 3],
+  ['zigzag', 'bi-est', {}, 2],
 ];
 
 for (const [scenario, planner, params, seed] of RUNS) {

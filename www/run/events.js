@@ -27,4 +27,5 @@ export const EventKind = Object.freeze({
   // One growth step, for the explain panel: the node chosen, then the step steered from it.
   NEAREST: 20, // id: node, x y: its point, px py: the target, c0: distance, c1: domain radius, pc0: 1 target is a sample
   STEER: 21, // id: node, x y: the new state, px py: the node, c0: step, c1: range, pc0: 1 reaches the target
+  SELECT: 22, // EST: id: node picked, x y: its point, px: nodes in its cell, py: the cell's probability, c0: cells, c1 pc0: column, row, pc1: grid
 });

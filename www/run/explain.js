@@ -121,6 +121,31 @@ export const PSEUDOCODE = {
       { id: 'add', text: 'goal closed: step along its shortest way (none open: no path at this resolution)', when: complete },
     ],
   },
+  est: {
+    title: 'EST: expansive-space tree (Hsu, Latombe & Motwani 1997; the grid form of OMPL)',
+    lines: [
+      { id: 'init', text: 'T ← {q_start}; each node filed in a cell of a grid over the map' },
+      { id: 'loop', text: 'repeat' },
+      { id: 'select', text: 'pick a cell with probability ∝ 1 / (its nodes), then a node q of it', indent: 1 },
+      { id: 'goal', text: 'with probability goal_bias: q_new ← q_goal', indent: 1, when: sampled },
+      { id: 'sample', text: 'q_new ← a random state within range of q (each coordinate)', indent: 1 },
+      { id: 'check', text: 'the motion q → q_new blocked: next iteration', indent: 1 },
+      { id: 'add', text: 'add q_new under q; file it in its cell', indent: 1 },
+      { id: 'goal-check', text: 'q_goal within range and the motion to it is free: done', indent: 1 },
+    ],
+  },
+  'bi-est': {
+    title: 'Bidirectional EST (two ESTs taking turns, as OMPL\'s BiEST)',
+    lines: [
+      { id: 'init', text: 'T_a ← {q_start}, T_b ← {q_goal}; nodes filed in grid cells' },
+      { id: 'loop', text: 'repeat, T_a and T_b taking turns' },
+      { id: 'select', text: 'pick a cell of T_a with probability ∝ 1 / (its nodes), then a node q of it', indent: 1 },
+      { id: 'sample', text: 'q_new ← a random state within range of q (each coordinate)', indent: 1 },
+      { id: 'check', text: 'a motion blocked: next iteration', indent: 1 },
+      { id: 'add', text: 'add q_new under q; file it in its cell', indent: 1 },
+      { id: 'met', text: 'T_b\'s nearest node within range and the motion free: the trees meet, done', indent: 1 },
+    ],
+  },
   'potential-field': {
     title: 'Artificial potential field (Khatib 1986; escapes: Barraquand & Latombe 1991)',
     lines: [
@@ -179,7 +204,9 @@ export function blockerText(id) {
 }
 
 const HEX_WHY = ['', 'an obstacle vertex in the t/2 circle', 'a vertex in the swept rectangle', 'an obstacle edge crossing the region', 'the map\'s edge'];
-const TREE_NAME = (planner, tree) => (planner === 'rrt-connect' ? (tree === 0 ? 'start tree' : 'goal tree') : 'tree');
+const TWO_TREES = new Set(['rrt-connect', 'bi-est']);
+const TREE_NAME = (planner, tree) => (TWO_TREES.has(planner) ? (tree === 0 ? 'start tree' : 'goal tree') : 'tree');
+const EST = new Set(['est', 'bi-est']);
 
 /**
  * Reads records one at a time and keeps what the current step has said: the line, the caption
@@ -235,7 +262,19 @@ export class Explainer {
         this.line = 'try';
         (A.tries ||= []).push([x, y, id === 1]);
         break;
+      case K.SELECT:
+        this.begin(`the ${TREE_NAME(this.planner, tree)} picks #${id}: its cell holds ${px} node${px === 1 ? '' : 's'} (probability ${num(py)} of ${c0} cells)`);
+        A.near = [x, y];
+        A.nearId = id;
+        this.line = 'select';
+        break;
       case K.SAMPLE: {
+        if (EST.has(this.planner)) {
+          this.then(id === 1 ? `sample q_goal ${pt(x, y)} (goal bias)` : `sample ${pt(x, y)} within range of it`);
+          A.sample = [x, y];
+          this.line = id === 1 ? 'goal' : 'sample';
+          break;
+        }
         const tries = this.line === 'try' ? A.tries : undefined;
         this.connecting = false;
         this.begin(id === 1 ? `sample q_goal ${pt(x, y)} (goal bias)` : id === 2 ? `sample ${pt(x, y)} (uniform share)` : `sample ${pt(x, y)}`);
@@ -280,6 +319,7 @@ export class Explainer {
         A.collision = [x, y];
         A.blocked = true;
         this.line = this.connecting ? 'c-check' : 'check';
+        if (this.planner === 'bi-est' && this.line === 'check' && A.added) this.line = 'met'; // the join was blocked
         break;
       case K.NODE_ADDED:
         if (parent < 0) { this.begin(`the ${TREE_NAME(this.planner, tree)} starts at ${pt(x, y)}`); this.line = 'init'; break; }
@@ -328,7 +368,7 @@ export class Explainer {
         break;
       case K.SOLVED:
         this.then('solved: the path is returned');
-        this.line = this.planner === 'rrt-connect' ? 'met' : 'goal-check';
+        this.line = TWO_TREES.has(this.planner) ? 'met' : 'goal-check';
         break;
       case K.REWIRE:
         this.begin(`rewire #${id}: its parent is now #${parent}, cheaper`);
@@ -399,16 +439,18 @@ export class Explainer {
   /**
    * Read records [from, to) of `store` (a RecordStore). A long reveal (Instant, a step of many
    * iterations) is read from the start of its last step only: the caption and line depend on the
-   * current step, which begins at a SAMPLE for the sampling planners (CONNECT included); it counts
+   * current step, which begins at a SAMPLE for the sampling planners (CONNECT included) and at a
+   * SELECT for EST; it counts
    * the records skipped. Returns whether records were skipped.
    */
   readStore(store, from, to) {
     let start = from;
     if (to - from > LONG_REVEAL) {
       start = Math.max(from, to - LONG_REVEAL);
-      if (SAMPLING.has(this.planner)) {
+      if (SAMPLING.has(this.planner) || EST.has(this.planner)) {
+        const first = EST.has(this.planner) ? K.SELECT : K.SAMPLE;
         for (let i = to - 1, n = 0; i >= from && n < MAX_LOOK_BACK; i--, n++) {
-          if (store.record(i)[0] === K.SAMPLE) { start = i; break; }
+          if (store.record(i)[0] === first) { start = i; break; }
         }
       }
       this.reset();
