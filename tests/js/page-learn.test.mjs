@@ -274,3 +274,27 @@ test('New seed: a fresh seed from the core\'s entropy, shown, in the share link,
   assert.deepEqual(errors, []);
   await page.close();
 });
+
+test('EST on the narrow passage: each step reads pick (with the cell\'s count and probability) → sample → added or blocked, and it solves', async () => {
+  // issue 17: the density-based selection is what the panel explains, from the Select events
+  const { page, errors } = await open({ width: 1280, height: 800 }, '#scenario=narrow&planner=est&seed=3');
+  let picks = 0, added = 0, blocked = 0;
+  for (let i = 0; i < 120; i++) {
+    await page.click('#step-event');
+    const { line, caption } = await panelShown(page);
+    if (/^the tree picks #\d+: its cell holds \d+ nodes? \(probability [\d.]+ of \d+ cells\)/.test(caption)) {
+      picks++;
+      if (/→ add #\d+ under #\d+$/.test(caption)) { added++; assert.equal(line, 'add'); }
+      if (/→ (blocked by obstacle \d+|blocked by the map's edge) at /.test(caption)) { blocked++; assert.equal(line, 'check'); }
+    }
+  }
+  console.log(`EST steps: ${picks} captions with a pick, ${added} added, ${blocked} blocked`);
+  assert.ok(picks > 20 && added > 5 && blocked > 0, `${picks} picks, ${added} added, ${blocked} blocked`);
+  await page.screenshot({ path: `${SHOTS}/learn-est.png` });
+  await page.click('#speed-instant');
+  await page.click('#run');
+  await page.waitForFunction(() => window.planarium.state() === 'finished', null, { timeout: 60000 });
+  assert.equal((await page.evaluate(() => window.planarium.result())).solved, true);
+  assert.deepEqual(errors, []);
+  await page.close();
+});
