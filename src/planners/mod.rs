@@ -8,6 +8,7 @@
 
 pub mod apf;
 pub mod est;
+pub mod grid;
 pub mod hex;
 pub mod inspection;
 mod params;
@@ -243,6 +244,7 @@ pub static REGISTRY: &[PlannerSpec] = &[
     est::BI_SPEC,
     inspection::SPEC,
     hex::SPEC,
+    grid::SPEC,
     apf::SPEC,
 ];
 

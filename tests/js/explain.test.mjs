@@ -39,7 +39,7 @@ function expected(planner, r) {
     case K.STEER: return `step ${num(c0)}`;
     case K.COLLISION: return `${blockerText(id)} at (${num(x)}, ${num(y)})`;
     case K.NODE_ADDED:
-      if (parent < 0 || planner === 'hex-potential' || planner === 'potential-field') return `(${num(x)}, ${num(y)})`;
+      if (parent < 0 || planner === 'hex-potential' || planner === 'grid-search' || planner === 'potential-field') return `(${num(x)}, ${num(y)})`;
       return `add #${id} under #${parent}`;
     case K.REWIRE: return `rewire #${id}: its parent is now #${parent}`;
     case K.COST: return `best cost now ${num(px)}`;
@@ -66,6 +66,8 @@ const RUNS = [
   ['zigzag', 'hex-potential', { search: 'astar' }, 1],
   ['hex-trap', 'hex-potential', { search: 'dijkstra' }, 1],
   ['narrow', 'est', {}, 3],
+  ['zigzag', 'grid-search', {}, 1],
+  ['apf-minimum', 'grid-search', { search: 'wavefront', diagonal: 'cross-corners' }, 1],
   ['zigzag', 'bi-est', {}, 2],
 ];
 

@@ -86,6 +86,27 @@ test('hex-trap with A*: the complete search over the same cells solves where the
   await page.selectOption('#param-search', 'descent');
 });
 
+test('zigzag with grid search: the grid drawn blocked and free, A*\'s open and closed cells, and it solves', async () => {
+  await pickScenario('zigzag', 'Zigzag of walls');
+  await page.selectOption('#planner', 'grid-search');
+  await waitState('idle');
+  assert.ok(await page.isVisible('#param-diagonal') && await page.isVisible('#param-weight'), 'PathFinding.js\'s choices in the panel');
+  await fastPlayback();
+  await page.click('#run');
+  await waitState('finished', 60000);
+  await nextFrames();
+  await waitStatus('solved');
+  const cells = await page.evaluate(() => window.planarium.cells());
+  console.log(`grid: ${cells.cells} cells (free, -, blocked: ${cells.labels}), closed ${cells.visited.length}, open ${cells.open}`);
+  assert.equal(cells.cells, 1600, 'a 40 × 40 grid');
+  assert.ok(cells.labels[2] > 100 && cells.visited.length > 100 && cells.open > 10, JSON.stringify({ labels: cells.labels, open: cells.open }));
+  const [open, closed, blocked] = await countColours('canvas', [PALETTE.cellOpen, PALETTE.cellVisited, PALETTE.cellFull], 3);
+  console.log(`pixels: open ${open}, closed ${closed}, blocked ${blocked}`);
+  assert.ok(open > 200 && closed > 5000 && blocked > 2000, `open ${open}, closed ${closed}, blocked ${blocked}`);
+  assert.match(await page.textContent('#explain-code'), /a cell an obstacle touches is blocked/);
+  await page.screenshot({ path: '/tmp/page-grid-astar.png' });
+});
+
 test('hex-trap: no path, the status and the note say why; the heat map switches on and off', async () => {
   await runToEnd('hex-trap', 'hex-potential');
   await waitStatus('no path');

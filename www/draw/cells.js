@@ -519,6 +519,13 @@ function trace(ctx, L, p) {
 
 /** Legend items for the planner `name` (marks the overlay box does not show). */
 export function cellLegend(name) {
+  if (name === 'grid-search') {
+    return [
+      { label: 'closed cell', color: PALETTE.cellVisited, shape: 'box' },
+      { label: 'open cell', color: PALETTE.cellOpen, shape: 'box' },
+      { label: 'blocked cell', color: PALETTE.cellFull, shape: 'box' },
+    ];
+  }
   if (name === 'hex-potential') {
     return [
       { label: 'visited (closed) cell', color: PALETTE.cellVisited, shape: 'box' },
@@ -535,7 +542,7 @@ export function cellLegend(name) {
 export function cellSummary(m) {
   const labels = [0, 0, 0];
   for (const id of m.order) { const l = m.cells.get(id).label; if (l >= 0 && l < 3) labels[l]++; }
-  const pick = (state) => m.changed.map((id) => m.cells.get(id)).filter((c) => c && c.state === state)
+  const pick = (state) => [...new Set(m.changed)].map((id) => m.cells.get(id)).filter((c) => c && c.state === state)
     .map((c) => { const [x, y] = centreOf(c); return { id: c.id, x, y, level: c.level, radius: c.radius }; });
   return {
     cells: m.order.length, labels, visited: pick(2), open: pick(0).length, blocked: pick(1).length, field: m.field.length,

@@ -61,7 +61,8 @@ export function overlayApplies(option, { config, inspection = false } = {}) {
     case 'showExhausted': return sampling && Number(p.exhausted) > 0;
     case 'showRewires': case 'showBest': return planner === 'rrt-star' || planner === 'inspection';
     case 'showSeen': case 'showFov': return inspection || planner === 'inspection';
-    case 'showCells': case 'showRegion': return planner === 'hex-potential';
+    case 'showCells': return planner === 'hex-potential' || planner === 'grid-search';
+    case 'showRegion': return planner === 'hex-potential';
     case 'showHeat': case 'showArrows': return planner === 'hex-potential' || planner === 'potential-field';
     default: return true;
   }

@@ -121,6 +121,18 @@ export const PSEUDOCODE = {
       { id: 'add', text: 'goal closed: step along its shortest way (none open: no path at this resolution)', when: complete },
     ],
   },
+  'grid-search': {
+    title: 'Grid search: A*, Dijkstra, breadth-first, wavefront (PathFinding.js\'s choices)',
+    lines: [
+      { id: 'cells', text: 'cut the map into square cells; a cell an obstacle touches is blocked' },
+      { id: 'open', text: 'open ← {start}, g(start) = 0', when: (o) => o.search !== 'wavefront' },
+      { id: 'open', text: 'wave ← {goal}: number the cells by moves from the goal', when: (o) => o.search === 'wavefront' },
+      { id: 'close', text: 'close the open cell of least key (A*: g + weight·h; Dijkstra: g; BFS and wave: moves)' },
+      { id: 'judge', text: 'each neighbour (8 without crossing corners, or 4): open it if the way through here is shorter', indent: 1 },
+      { id: 'goal-check', text: 'the far end in reach and the motion to it free: open it', indent: 1 },
+      { id: 'add', text: 'far end closed: walk its way (the wave: down the numbers from the start)' },
+    ],
+  },
   est: {
     title: 'EST: expansive-space tree (Hsu, Latombe & Motwani 1997; the grid form of OMPL)',
     lines: [
@@ -221,7 +233,7 @@ export class Explainer {
   constructor(planner = 'rrt', robot = 'point', options = /** @type {Options} */ ({})) {
     this.planner = planner;
     this.robot = robot;
-    this.complete = planner === 'hex-potential' && complete(options);
+    this.complete = (planner === 'hex-potential' && complete(options)) || planner === 'grid-search';
     this.reset();
   }
 
@@ -323,7 +335,7 @@ export class Explainer {
         break;
       case K.NODE_ADDED:
         if (parent < 0) { this.begin(`the ${TREE_NAME(this.planner, tree)} starts at ${pt(x, y)}`); this.line = 'init'; break; }
-        if (this.planner === 'hex-potential') {
+        if (this.planner === 'hex-potential' || this.planner === 'grid-search') {
           this.begin(`${this.complete ? 'along the shortest way: step to' : 'step to cell centre'} ${pt(x, y)} (node #${id})`);
           A.edge = [px, py, x, y];
           this.line = 'add';
@@ -388,7 +400,8 @@ export class Explainer {
         this.line = 'seen';
         break;
       case K.CELL:
-        this.begin(`cell #${id} at level ${tree}: ${['free', 'mixed', 'full'][px] || 'cell'}`);
+        if (this.planner === 'grid-search') this.begin(`cell #${id} at ${pt(x, y)}: ${px === 0 ? 'free' : 'blocked (an obstacle touches it)'}`);
+        else this.begin(`cell #${id} at level ${tree}: ${['free', 'mixed', 'full'][px] || 'cell'}`);
         A.cell = [x, y];
         this.line = 'cells';
         break;
@@ -410,7 +423,7 @@ export class Explainer {
           this.line = 'close';
           break;
         }
-        const verdict = [this.complete ? 'opened (a shorter way)' : 'passable', `blocked: ${HEX_WHY[py] || 'the step test failed'}`, 'visited already', 'outside the region', 'an obstacle cell'][px] || 'judged';
+        const verdict = [this.complete ? 'opened (a shorter way)' : 'passable', `blocked: ${this.planner === 'grid-search' ? 'the motion collides' : HEX_WHY[py] || 'the step test failed'}`, 'visited already', 'outside the region', 'an obstacle cell'][px] || 'judged';
         if (this.line !== 'judge') this.begin(`from cell #${parent}: cell #${id} ${verdict}`);
         else this.then(`#${id} ${verdict}`);
         A.cell = [x, y];

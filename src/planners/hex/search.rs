@@ -66,6 +66,8 @@ pub struct Frontier {
     parent: Vec<Option<usize>>,
     closed: Vec<bool>,
     open: BinaryHeap<Open>,
+    /// A*'s weight on the heuristic (1: a shortest path).
+    weight: Real,
     /// Nodes closed so far (popped and expanded).
     pub expanded: usize,
 }
@@ -80,11 +82,19 @@ impl Frontier {
             parent: vec![None; n + 1],
             closed: vec![false; n + 1],
             open: BinaryHeap::new(),
+            weight: 1.0,
             expanded: 0,
         };
         f.g[start] = 0.0;
         f.open.push(Open { f: f.h(start_point), node: start });
         f
+    }
+
+    /// The same search with A*'s heuristic weighted by `w` (the grid search's choice; the start's
+    /// entry keeps its key, which orders nothing while it is alone).
+    pub fn weighted(mut self, w: Real) -> Frontier {
+        self.weight = w;
+        self
     }
 
     /// The goal point's node.
@@ -94,7 +104,7 @@ impl Frontier {
 
     fn h(&self, p: Vec2) -> Real {
         match self.kind {
-            Search::AStar => (self.goal - p).norm(),
+            Search::AStar => self.weight * (self.goal - p).norm(),
             Search::Dijkstra => 0.0,
         }
     }

@@ -1,0 +1,352 @@
+//! Grid search for a point robot (issue 17): A*, Dijkstra, breadth-first search and the wavefront
+//! planner on an occupancy grid made from the scenario, with PathFinding.js's choices.
+//!
+//! **The grid.** Square cells of side `cell` over the map (0: a fortieth of its shorter side); a
+//! cell is blocked when an obstacle touches it (the hexagons' exact cell test,
+//! [`label_of`](super::hex::cells::label_of)), so a move between the centres of free cells never
+//! meets an obstacle. The cells are labelled a row per iteration, each evented as a `Cell` with
+//! its square outline (label 0 free, 2 blocked), so the page draws the grid as it is made.
+//!
+//! **The search.** Nodes are the cells (the start's cell stands at the start itself) and the goal
+//! point, reached from its own cell or a neighbour by a checked motion. Moves go to the 4 side
+//! neighbours, or to the 8 with `diagonal`: `yes` takes a diagonal only when both cells beside it
+//! are free (PathFinding.js's "don't cross corners"), `cross-corners` takes it whenever the motion
+//! itself is free. `astar` orders the open set by g + weight·h (h the straight distance to the
+//! goal; weight 1 keeps it a shortest path), `dijkstra` by g, `bfs` counts moves (every move costs
+//! 1), and `wavefront` numbers the cells by moves from the goal outward (a breadth-first wave) and
+//! then walks from the start down the numbers. One iteration closes one cell; each verdict is a
+//! `CellState` (0 opened, 1 the motion is blocked, 2 closed), as for the hexagonal search.
+
+use super::hex::cells::label_of;
+use super::hex::search::{Frontier, Search};
+use super::hex::CellLabel;
+use crate::events::EventKind;
+use crate::geometry::{Aabb, Workspace};
+use crate::math::{Real, Vec2};
+use crate::motion::MotionValidator;
+use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
+use crate::space_info::SpaceInfo;
+
+/// The registry entry.
+pub const SPEC: PlannerSpec = PlannerSpec {
+    name: "grid-search",
+    label: "Grid search (A*, Dijkstra, BFS, wavefront)",
+    summary: "A point robot on an occupancy grid made from the map: cells touching an obstacle blocked, searched cell by cell.",
+    params: PARAMS,
+    groups: &[],
+    task: TaskKind::Goal,
+    make: |si, task, params| Ok(Box::new(GridSearch::new(si, task, params)?)),
+};
+
+/// The planner's parameters.
+pub const PARAMS: &[ParamSpec] = &[
+    ParamSpec::real("cell", "Cell size", 0.0, 1e6, 0.0, "Side of the grid's square cells (0: a fortieth of the map's shorter side). A cell an obstacle touches is blocked."),
+    ParamSpec::choice(
+        "search",
+        "Search",
+        &["astar", "dijkstra", "bfs", "wavefront"],
+        0,
+        "astar: by g + weight·h (h the distance to the goal); dijkstra: by g; bfs: by moves; wavefront: number the cells by moves from the goal, then walk down the numbers from the start.",
+    ),
+    ParamSpec::choice(
+        "diagonal",
+        "Diagonal moves",
+        &["yes", "no", "cross-corners"],
+        0,
+        "yes: 8 neighbours, a diagonal only when both cells beside it are free (don't cross corners); no: 4 neighbours; cross-corners: a diagonal whenever the motion itself is free.",
+    ),
+    ParamSpec::real("weight", "Heuristic weight", 0.0, 100.0, 1.0, "A*: the weight of h (1: a shortest path; more: faster, possibly longer)."),
+];
+
+/// The most cells a grid may have.
+pub const MAX_GRID_CELLS: usize = 4_000_000;
+
+/// The grid search.
+#[derive(Clone)]
+pub struct GridSearch {
+    ws: Workspace,
+    start: Vec<Real>,
+    goal: Vec<Real>,
+    origin: Vec2,
+    side: Real,
+    nx: usize,
+    ny: usize,
+    free: Vec<bool>,
+    /// Rows labelled so far.
+    rows: usize,
+    search: Search,
+    unit: bool,
+    wave: bool,
+    diagonal: u8,
+    weight: Real,
+    frontier: Option<Frontier>,
+    tree: Option<Tree>,
+    failure: Option<String>,
+}
+
+impl GridSearch {
+    /// The planner for `task`; an error names a robot or a grid it cannot plan on.
+    pub fn new(si: &SpaceInfo, task: &Task, params: &Params) -> Result<GridSearch, String> {
+        match si.body() {
+            Some(b) if b.size() == (0.0, 0.0) && si.dims() == 2 => {}
+            _ => return Err("needs a point robot (x, y): the grid's cells are the robot's states".into()),
+        }
+        let ws = si.workspace().clone();
+        let b = ws.bounds;
+        let (w, h) = (b.max.x - b.min.x, b.max.y - b.min.y);
+        let side = match params.real("cell") {
+            s if s > 0.0 => s,
+            _ => w.min(h) / 40.0,
+        };
+        let (fx, fy) = ((w / side).ceil(), (h / side).ceil());
+        let cells = fx * fy;
+        if !cells.is_finite() || cells > MAX_GRID_CELLS as Real {
+            return Err(format!(
+                "cell {side:e} is too small for this map: the grid would have {cells:.3e} cells; the limit is {MAX_GRID_CELLS}"
+            ));
+        }
+        let (nx, ny) = ((fx as usize).max(1), (fy as usize).max(1));
+        let max_nodes = params.real("max_nodes");
+        if (nx * ny) as Real > max_nodes {
+            return Err(format!(
+                "the grid has {} cells, more than max_nodes ({max_nodes}): raise max_nodes or cell",
+                nx * ny
+            ));
+        }
+        let choice = params.choice("search");
+        Ok(GridSearch {
+            start: task.start.clone(),
+            goal: task.goal().to_vec(),
+            origin: b.min,
+            side,
+            nx,
+            ny,
+            free: vec![false; nx * ny],
+            rows: 0,
+            search: if choice == "astar" { Search::AStar } else { Search::Dijkstra },
+            unit: choice == "bfs" || choice == "wavefront",
+            wave: choice == "wavefront",
+            diagonal: match params.choice("diagonal") {
+                "no" => 0,
+                "cross-corners" => 2,
+                _ => 1,
+            },
+            weight: params.real("weight"),
+            frontier: None,
+            tree: None,
+            failure: None,
+            ws,
+        })
+    }
+
+    fn cell_of(&self, p: Vec2) -> usize {
+        let c = |v: Real, n: usize| ((v / self.side).floor().max(0.0) as usize).min(n - 1);
+        c(p.y - self.origin.y, self.ny) * self.nx + c(p.x - self.origin.x, self.nx)
+    }
+
+    fn centre(&self, k: usize) -> Vec2 {
+        let (i, j) = (k % self.nx, k / self.nx);
+        self.origin + Vec2::new((i as Real + 0.5) * self.side, (j as Real + 0.5) * self.side)
+    }
+
+    /// The search runs from `from` to `to`: start to goal, or goal to start for the wavefront.
+    fn ends(&self) -> (Vec2, Vec2) {
+        let (s, g) = (Vec2::new(self.start[0], self.start[1]), Vec2::new(self.goal[0], self.goal[1]));
+        if self.wave {
+            (g, s)
+        } else {
+            (s, g)
+        }
+    }
+
+    /// Where node `k` stands: the search's first point for its own cell, else the cell's centre.
+    fn point(&self, k: usize) -> Vec2 {
+        let from = self.ends().0;
+        if k == self.cell_of(from) {
+            from
+        } else {
+            self.centre(k)
+        }
+    }
+
+    /// Label row `self.rows` and event its cells.
+    fn label_row(&mut self, cx: &mut Context) {
+        let j = self.rows;
+        for i in 0..self.nx {
+            let k = j * self.nx + i;
+            let c = self.centre(k);
+            let h = 0.5 * self.side;
+            let outline = [c + Vec2::new(-h, -h), c + Vec2::new(h, -h), c + Vec2::new(h, h), c + Vec2::new(-h, h)];
+            let bbox = Aabb { min: outline[0], max: outline[2] };
+            cx.si.count_checks(1);
+            self.free[k] = label_of(&self.ws, &outline, &bbox) == CellLabel::Free && self.ws.bounds.contains(c);
+            if cx.events.enabled {
+                let label = if self.free[k] { 0.0 } else { 2.0 };
+                cx.events.values(
+                    EventKind::Cell,
+                    0,
+                    k as i64,
+                    -1,
+                    [c.x, c.y, label, h * 2f64.sqrt(), 4.0, 0.0, 0.0, 0.0],
+                );
+                let mut v = [0.0; 8];
+                for (n, p) in outline.iter().enumerate() {
+                    v[2 * n] = p.x;
+                    v[2 * n + 1] = p.y;
+                }
+                cx.events.values(EventKind::CellShape, 0, k as i64, -1, v);
+            }
+        }
+        self.rows += 1;
+    }
+
+    /// The neighbours of cell `k` a move may go to: (cell, whether the move must be checked).
+    fn neighbours(&self, k: usize) -> Vec<(usize, bool)> {
+        let (i, j) = ((k % self.nx) as i64, (k / self.nx) as i64);
+        let at = |di: i64, dj: i64| {
+            let (a, b) = (i + di, j + dj);
+            (a >= 0 && b >= 0 && a < self.nx as i64 && b < self.ny as i64).then(|| b as usize * self.nx + a as usize)
+        };
+        let mut out = Vec::with_capacity(8);
+        for (di, dj) in [(1, 0), (-1, 0), (0, 1), (0, -1)] {
+            if let Some(m) = at(di, dj) {
+                out.push((m, false));
+            }
+        }
+        if self.diagonal > 0 {
+            for (di, dj) in [(1, 1), (-1, 1), (1, -1), (-1, -1)] {
+                let Some(m) = at(di, dj) else { continue };
+                let beside = [at(di, 0), at(0, dj)];
+                let clear = beside.iter().all(|c| c.is_some_and(|c| self.free[c]));
+                if clear {
+                    out.push((m, false));
+                } else if self.diagonal == 2 {
+                    out.push((m, true));
+                }
+            }
+        }
+        out
+    }
+
+    /// Whether the straight motion between two points is valid (a check counted).
+    fn motion(&self, cx: &mut Context, a: Vec2, b: Vec2) -> bool {
+        let mut scratch = [0.0; 2];
+        cx.si.check_motion(&[a.x, a.y], &[b.x, b.y], &mut scratch).is_ok()
+    }
+
+    fn state(&self, cx: &mut Context, k: usize, from: i64, verdict: Real, p: Vec2) {
+        cx.events.values(EventKind::CellState, 0, k as i64, from, [p.x, p.y, verdict, 0.0, 0.0, 0.0, 0.0, 0.0]);
+    }
+
+    /// Close the best open node, judge its neighbours; the path once the far end is closed.
+    fn step(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
+        let (from_pt, to_pt) = self.ends();
+        let mut f = match self.frontier.take() {
+            Some(f) => f,
+            None => {
+                let s = self.cell_of(from_pt);
+                let f = Frontier::new(self.search, self.nx * self.ny, s, from_pt, to_pt).weighted(self.weight);
+                self.tree = Some(Tree::new(cx, &self.start, 0));
+                f
+            }
+        };
+        let end = f.goal_node();
+        let Some(k) = f.pop() else {
+            self.failure = Some(format!(
+                "no path: the search closed all {} cells it could reach and none reaches the {} at this cell size",
+                f.expanded,
+                if self.wave { "start" } else { "goal" }
+            ));
+            return None;
+        };
+        if k == end {
+            let mut chain: Vec<Vec2> =
+                f.chain(end).iter().map(|&m| if m == end { to_pt } else { self.point(m) }).collect();
+            if self.wave {
+                chain.reverse();
+            }
+            return Some(self.walk(cx, &chain));
+        }
+        let p = self.point(k);
+        let parent = f.parent(k).map_or(-1, |m| m as i64);
+        self.state(cx, k, parent, 2.0, p);
+        let len = |a: Vec2, b: Vec2, unit: bool| if unit { 1.0 } else { (b - a).norm() };
+        let to_cell = self.cell_of(to_pt);
+        if k == to_cell || self.neighbours(k).iter().any(|&(m, _)| m == to_cell) {
+            cx.si.count_checks(1);
+            if self.motion(cx, p, to_pt) {
+                if f.relax(k, end, to_pt, len(p, to_pt, self.unit)) {
+                    self.state(cx, to_cell, k as i64, 0.0, to_pt);
+                }
+            } else {
+                self.state(cx, to_cell, k as i64, 1.0, to_pt);
+            }
+        }
+        let own = k == self.cell_of(from_pt);
+        for (m, check) in self.neighbours(k) {
+            if f.is_closed(m) || !self.free[m] {
+                continue;
+            }
+            let c = self.centre(m);
+            // A move between free cells' centres is free by construction; the start's own point
+            // and a corner-crossing diagonal are checked.
+            if check || own {
+                cx.si.count_checks(1);
+                if !self.motion(cx, p, c) {
+                    self.state(cx, m, k as i64, 1.0, c);
+                    continue;
+                }
+            }
+            if f.relax(k, m, c, len(p, c, self.unit)) {
+                self.state(cx, m, k as i64, 0.0, c);
+            }
+        }
+        self.frontier = Some(f);
+        None
+    }
+
+    /// The robot's path through `points` (start first), evented as steps of the tree.
+    fn walk(&mut self, cx: &mut Context, points: &[Vec2]) -> Vec<Vec<Real>> {
+        let tree = self.tree.as_mut().expect("the search has begun");
+        let mut path = vec![self.start.clone()];
+        for p in &points[1..] {
+            let q = vec![p.x, p.y];
+            if path.last() == Some(&q) {
+                continue;
+            }
+            let parent = tree.len() as u32 - 1;
+            let id = tree.add(cx, &q, parent);
+            let pp = cx.si.project(tree.state(parent));
+            cx.events.push(EventKind::NodeAdded, 0, id as i64, parent as i64, *p, pp, &q, tree.state(parent));
+            path.push(q);
+        }
+        let g = &self.goal;
+        cx.events.at(EventKind::Solved, 0, Vec2::new(g[0], g[1]), g);
+        path
+    }
+}
+
+impl Planner for GridSearch {
+    fn snapshot(&self) -> Box<dyn Planner> {
+        Box::new(self.clone())
+    }
+    fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
+        if self.failure.is_some() {
+            return None;
+        }
+        if self.rows < self.ny {
+            self.label_row(cx);
+            return None;
+        }
+        self.step(cx)
+    }
+    fn node_count(&self) -> usize {
+        self.nx * self.ny
+    }
+    fn data(&self) -> PlannerData {
+        PlannerData { trees: self.tree.iter().cloned().collect() }
+    }
+    fn gave_up(&self) -> Option<String> {
+        self.failure.clone()
+    }
+}
