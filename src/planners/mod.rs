@@ -10,6 +10,7 @@ pub mod apf;
 pub mod hex;
 pub mod inspection;
 mod params;
+pub mod roadmap;
 pub mod rrt;
 pub mod smoothing;
 pub mod tree;
@@ -234,8 +235,17 @@ impl PlannerSpec {
 }
 
 /// Every planner.
-pub static REGISTRY: &[PlannerSpec] =
-    &[rrt::rrt::SPEC, rrt::rrt_connect::SPEC, rrt::rrt_star::SPEC, inspection::SPEC, hex::SPEC, apf::SPEC];
+pub static REGISTRY: &[PlannerSpec] = &[
+    rrt::rrt::SPEC,
+    rrt::rrt_connect::SPEC,
+    rrt::rrt_star::SPEC,
+    roadmap::prm::SPEC,
+    roadmap::prm_star::SPEC,
+    roadmap::lazy_prm::SPEC,
+    inspection::SPEC,
+    hex::SPEC,
+    apf::SPEC,
+];
 
 /// A planner by name.
 pub fn find(name: &str) -> Option<&'static PlannerSpec> {
