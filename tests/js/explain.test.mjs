@@ -48,6 +48,9 @@ function expected(planner, r) {
     case K.MINIMUM: return `local minimum at (${num(x)}, ${num(y)})`;
     case K.CELL_STATE: return `#${id}`;
     case K.REGION: return `radius ${num(px)}`;
+    case K.ROADMAP_EDGE: return `edge #${parent}–#${id}`;
+    case K.EDGE_CHECKED: return `edge #${id}–#${parent} ${r[1] === 1 ? 'blocked' : 'checked: free'}`;
+    case K.QUERY_PATH: return 'A* over the roadmap';
     default: return null;
   }
 }
@@ -62,6 +65,9 @@ const RUNS = [
   ['apf-minimum', 'potential-field', {}, 1],
   ['open-field', 'rrt', { sampler: 'bridge', goal_bias: 0.2 }, 2],
   ['zigzag', 'rrt-connect', { sampler: 'bridge', max_iterations: 3000 }, 2],
+  ['zigzag', 'prm', {}, 1],
+  ['narrow', 'prm-star', { connect: 'radius' }, 2],
+  ['zigzag', 'lazy-prm', {}, 1],
 ];
 
 for (const [scenario, planner, params, seed] of RUNS) {
