@@ -59,7 +59,7 @@ export const PALETTE = Object.freeze({
   // roadmaps (prm, prm-star, lazy-prm): checked edges take tree0; Lazy PRM's unchecked edges are
   // dashed grey, an edge its check found blocked vermilion; the query's latest path dashed black
   roadmapUnchecked: '#9aa3ad',
-  roadmapInvalid: '#d55e00',
+  roadmapInvalid: 'rgba(213, 94, 0, 0.35)', // faint: on the zigzag most of Lazy PRM's checks find a wall
   queryPath: '#111111',
 });
 
@@ -87,7 +87,7 @@ export const STYLE = Object.freeze({
   [EventKind.MINIMUM]: { layer: 'marker', shape: 'ring', color: PALETTE.minimum, size: 11, width: 3, label: 'local minimum' },
   // roadmaps: edges on the tree layer (checked solid, unchecked dashed); the query's path on top
   [EventKind.ROADMAP_EDGE]: { layer: 'tree', shape: 'edge', colors: [PALETTE.tree0, PALETTE.roadmapUnchecked], width: 1, dash: [3, 3], label: 'roadmap edge: checked / unchecked' },
-  [EventKind.EDGE_CHECKED]: { layer: 'tree', shape: 'edge', colors: [PALETTE.tree0, PALETTE.roadmapInvalid], width: 1.6, label: 'edge checked by a query: valid / blocked' },
+  [EventKind.EDGE_CHECKED]: { layer: 'tree', shape: 'edge', colors: [PALETTE.tree0, PALETTE.roadmapInvalid], width: 1.3, label: 'edge checked by a query: valid / blocked' },
   [EventKind.QUERY_PATH]: { layer: 'marker', shape: 'path', color: PALETTE.queryPath, width: 2, dash: [6, 4], label: "the graph search's latest path" },
 });
 

@@ -241,8 +241,8 @@ export class View {
 
   /**
    * Roadmap edges of records [from, to) on the tree layer: checked edges solid, Lazy PRM's
-   * unchecked ones dashed, then what its checks found (valid: solid; blocked: vermilion over the
-   * dashes). With `nodes`, milestones too (NODE_ADDED records without a parent, which the model's
+   * unchecked ones dashed, then what its checks found (blocked: faint vermilion over the dashes;
+   * valid: solid, on top). With `nodes`, milestones too (NODE_ADDED records without a parent, which the model's
    * tree mirror does not draw).
    */
   drawRoadmapRecords(from, to, nodes) {
@@ -265,9 +265,9 @@ export class View {
       ctx.setLineDash([]);
     };
     pass(EventKind.ROADMAP_EDGE, 1, added, added.dash.map((v) => L.px(v)));
+    pass(EventKind.EDGE_CHECKED, 1, checked, []);
     pass(EventKind.ROADMAP_EDGE, 0, added, []);
     pass(EventKind.EDGE_CHECKED, 0, checked, []);
-    pass(EventKind.EDGE_CHECKED, 1, checked, []);
     if (!nodes) return;
     ctx.fillStyle = STYLE[EventKind.NODE_ADDED].colors[0];
     for (const [d, o0, o1] of this.store.spans(from, to)) for (let o = o0; o < o1; o += STRIDE) {
