@@ -161,8 +161,10 @@ fn one_roadmap_answers_two_more_queries_without_new_milestones() {
     }
 }
 
-/// Every vertex's bits and every edge (ends, length's bits, state), in order.
-fn fingerprint(rig: &Rig) -> (Vec<u64>, Vec<(u32, u32, u64, EdgeState)>) {
+/// Every vertex's bits, and every edge (ends, length's bits, state), in order.
+type Bits = (Vec<u64>, Vec<(u32, u32, u64, EdgeState)>);
+
+fn fingerprint(rig: &Rig) -> Bits {
     let g = rig.planner.roadmap();
     (
         g.states().iter().map(|x| x.to_bits()).collect(),
