@@ -84,15 +84,26 @@ pub enum EventKind {
     /// state's point; `c0` the step's length; `c1` the range; `pc0` 1 when the step reaches the
     /// target. The motion is checked next: a `Collision` or a `NodeAdded` follows.
     Steer = 21,
+    /// A roadmap edge was added between vertices `id` (at `x, y`) and `parent` (at `px, py`):
+    /// `tree` 0 when its motion was checked valid (PRM, PRM*), 1 when it is unchecked (Lazy PRM).
+    RoadmapEdge = 22,
+    /// Lazy PRM checked the edge between vertices `id` (at `x, y`) and `parent` (at `px, py`)
+    /// because a query's path used it: `tree` 0 valid, 1 invalid (removed from the roadmap; a
+    /// `Collision` follows).
+    EdgeChecked = 23,
+    /// One edge of the path a roadmap's graph search found, from vertex `id` (at `x, y`) to
+    /// `parent` (at `px, py`), in order from the start; `tree` 0 on a path's first edge (a new
+    /// search's path), 1 on the others. Lazy PRM checks it next (`EdgeChecked`).
+    QueryPath = 24,
     /// EST picked node `id` of `tree` to grow by density: `x, y` its point; `px` the nodes in its
     /// grid cell; `py` the cell's probability (its 1/count over the sum for all cells); `c0` the
     /// cells in use; `c1, pc0` the cell's column and row; `pc1` the grid's cells a side.
-    Select = 22,
+    Select = 25,
 }
 
 impl EventKind {
     /// Every kind with its name, for the JS constant check.
-    pub const ALL: [(EventKind, &'static str); 23] = [
+    pub const ALL: [(EventKind, &'static str); 26] = [
         (EventKind::Sample, "SAMPLE"),
         (EventKind::SampleRejected, "SAMPLE_REJECTED"),
         (EventKind::NodeAdded, "NODE_ADDED"),
@@ -115,6 +126,9 @@ impl EventKind {
         (EventKind::Minimum, "MINIMUM"),
         (EventKind::Nearest, "NEAREST"),
         (EventKind::Steer, "STEER"),
+        (EventKind::RoadmapEdge, "ROADMAP_EDGE"),
+        (EventKind::EdgeChecked, "EDGE_CHECKED"),
+        (EventKind::QueryPath, "QUERY_PATH"),
         (EventKind::Select, "SELECT"),
     ];
 }

@@ -86,6 +86,9 @@ fn every_robot_and_planner_gives_the_same_run_in_suspended_batches() {
         ("hex-trap", "hex-potential", serde_json::json!({})),
         ("narrow", "est", serde_json::json!({})),
         ("zigzag", "bi-est", serde_json::json!({})),
+        ("zigzag", "prm", serde_json::json!({})),
+        ("slot", "lazy-prm", serde_json::json!({ "max_iterations": 1500 })),
+        ("arm-2", "prm-star", serde_json::json!({ "connect": "radius" })),
     ];
     let mut suspended = 0;
     for (name, planner, params) in &cases {

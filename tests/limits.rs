@@ -411,6 +411,9 @@ fn at_the_limits_every_planners_batches_return_within_50_ms() {
         (&point, "rrt-connect", json!({"range": 3})),
         (&point, "hex-potential", json!({})),
         (&point, "potential-field", json!({})),
+        (&arm, "prm", json!({})),
+        (&point, "lazy-prm", json!({})),
+        (&point, "prm-star", json!({"connect": "radius"})),
     ] {
         let mut s = session(v, planner, params, 1).unwrap();
         s.set_record_events(true); // as the worker does (the potential field draws its heat map)

@@ -12,6 +12,7 @@ pub mod grid;
 pub mod hex;
 pub mod inspection;
 mod params;
+pub mod roadmap;
 pub mod rrt;
 pub mod smoothing;
 pub mod tree;
@@ -240,6 +241,9 @@ pub static REGISTRY: &[PlannerSpec] = &[
     rrt::rrt::SPEC,
     rrt::rrt_connect::SPEC,
     rrt::rrt_star::SPEC,
+    roadmap::prm::SPEC,
+    roadmap::prm_star::SPEC,
+    roadmap::lazy_prm::SPEC,
     est::SPEC,
     est::BI_SPEC,
     inspection::SPEC,

@@ -76,7 +76,8 @@ fn errors_name_their_json_path() {
         err(&with(r#", "planner": {"name": "rrt", "goal_bias": 2}"#)),
         "planner.goal_bias: must be between 0 and 1"
     );
-    assert!(err(&with(r#", "planner": {"name": "prm"}"#)).starts_with("planner.name: unknown planner \"prm\""));
+    assert!(err(&with(r#", "planner": {"name": "no-such-planner"}"#))
+        .starts_with("planner.name: unknown planner \"no-such-planner\""));
 }
 
 #[test]

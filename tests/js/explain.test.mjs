@@ -49,6 +49,9 @@ function expected(planner, r) {
     case K.CELL_STATE: return `#${id}`;
     case K.REGION: return `radius ${num(px)}`;
     case K.SELECT: return `picks #${id}: its cell holds ${px} node`;
+    case K.ROADMAP_EDGE: return `edge #${parent}–#${id}`;
+    case K.EDGE_CHECKED: return `edge #${id}–#${parent} ${r[1] === 1 ? 'blocked' : 'checked: free'}`;
+    case K.QUERY_PATH: return 'A* over the roadmap';
     default: return null;
   }
 }
@@ -69,6 +72,9 @@ const RUNS = [
   ['zigzag', 'grid-search', {}, 1],
   ['apf-minimum', 'grid-search', { search: 'wavefront', diagonal: 'cross-corners' }, 1],
   ['zigzag', 'bi-est', {}, 2],
+  ['zigzag', 'prm', {}, 1],
+  ['narrow', 'prm-star', { connect: 'radius' }, 2],
+  ['zigzag', 'lazy-prm', {}, 1],
 ];
 
 for (const [scenario, planner, params, seed] of RUNS) {

@@ -63,6 +63,39 @@ test('RRT* on the open field: the best-cost chart has a line and the stats show 
   assert.ok(bestOff < bestPath / 10, `best path gone: ${bestOff} of ${bestPath}`);
 });
 
+test('Lazy PRM on the zigzag: unchecked edges drawn dashed grey, checked ones in the tree colour; PRM draws only checked edges', async () => {
+  await pickScenario('zigzag', 'Zigzag of walls');
+  await page.selectOption('#planner', 'lazy-prm');
+  await waitState('idle');
+  await setField('seed', 1);
+  await fastPlayback();
+  await page.click('#run');
+  await waitState('finished', 90000);
+  assert.equal(await page.textContent('#status'), 'solved');
+  await nextFrames();
+  const lazy = (await page.evaluate(() => window.planarium.model())).roadmap;
+  const [grey, checked] = await countColours('canvas', [PALETTE.roadmapUnchecked, PALETTE.tree0], 6);
+  console.log(`lazy-prm: ${lazy.edges} edges, ${lazy.checked} checked, ${lazy.pathEdges} path edges; ${grey} grey px, ${checked} tree px`);
+  assert.ok(lazy.edges > 50 && lazy.checked > 0 && lazy.checked < lazy.edges, JSON.stringify(lazy));
+  assert.ok(lazy.pathEdges > 0, 'the searches\' paths are streamed');
+  assert.ok(grey > 200, `unchecked edge pixels: ${grey}`);
+  assert.ok(checked > 50, `checked edge pixels: ${checked}`);
+  await page.screenshot({ path: join(shots, 'page-lazy-prm.png') });
+
+  await page.selectOption('#planner', 'prm');
+  await waitState('idle');
+  await page.click('#run');
+  await waitState('finished', 90000);
+  assert.equal(await page.textContent('#status'), 'solved');
+  await nextFrames();
+  const eager = (await page.evaluate(() => window.planarium.model())).roadmap;
+  const [grey2, checked2] = await countColours('canvas', [PALETTE.roadmapUnchecked, PALETTE.tree0], 6);
+  console.log(`prm: ${eager.edges} edges; ${grey2} grey px, ${checked2} tree px`);
+  assert.equal(eager.checked, 0, 'PRM checks edges as it adds them');
+  assert.ok(eager.edges > 50 && checked2 > 200, `${eager.edges} edges, ${checked2} px`);
+  assert.ok(grey2 < grey / 10, `no unchecked edges drawn: ${grey2} px`);
+});
+
 test('technion-ip: only inspection planners are offered, with the reason; narrow offers no inspection', async () => {
   await pickScenario('technion-ip', 'Technion HW3: inspect the room');
   const offered = await page.$$eval('#planner option', (os) => os.map((o) => o.value));

@@ -97,7 +97,7 @@ test('bad input is an error naming what and where, never a crash', () => {
     (e) => JSON.parse(e.message).path === 'obstacles[0].polygon');
   assert.throws(() => new Scene('{\n"bounds": [0,0,1,1],\n}'), (e) => JSON.parse(e.message).line === 3);
   assert.throws(() => new Run(builtinText.narrow, 'rrt', '{"goal_bias": 7}', 1), /goal_bias: must be between 0 and 1/);
-  assert.throws(() => new Run(builtinText.narrow, 'prm', '{}', 1), /unknown planner/);
+  assert.throws(() => new Run(builtinText.narrow, 'no-such-planner', '{}', 1), /unknown planner/);
   assert.throws(() => new Run(builtinText.narrow, 'rrt', '{}', -1), /seed/);
   const s = new Scene(builtinText.slot);
   const outline = s.outline(new Float64Array([0.5, 0.5, 0]));

@@ -40,7 +40,7 @@ export function createOverlays(root, onChange, { prefix = '' } = {}) {
   return options;
 }
 
-const SAMPLING = new Set(['rrt', 'rrt-connect', 'rrt-star', 'inspection']);
+const SAMPLING = new Set(['rrt', 'rrt-connect', 'rrt-star', 'inspection', 'prm', 'prm-star', 'lazy-prm']);
 const CHECKING_SAMPLERS = new Set(['gaussian', 'bridge', 'obstacle']);
 
 /**

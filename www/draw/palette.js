@@ -58,6 +58,11 @@ export const PALETTE = Object.freeze({
   region: '#7b3294',
   robotT: '#30343b',
   minimum: '#d01c8b',
+  // roadmaps (prm, prm-star, lazy-prm): checked edges take tree0; Lazy PRM's unchecked edges are
+  // dashed grey, an edge its check found blocked vermilion; the query's latest path dashed black
+  roadmapUnchecked: '#9aa3ad',
+  roadmapInvalid: 'rgba(213, 94, 0, 0.35)', // faint: on the zigzag most of Lazy PRM's checks find a wall
+  queryPath: '#111111',
 });
 
 // How each event kind is drawn. `layer`: 'under', 'tree', 'over' (persistent, incremental),
@@ -82,6 +87,10 @@ export const STYLE = Object.freeze({
   [EventKind.FIELD]: { layer: 'cells', shape: 'tile', colors: PALETTE.heat, toggle: 'showHeat', label: 'potential heat map' },
   [EventKind.REGION]: { layer: 'marker', shape: 'circle', color: PALETTE.region, width: 2, toggle: 'showRegion', label: 'region of influence' },
   [EventKind.MINIMUM]: { layer: 'marker', shape: 'ring', color: PALETTE.minimum, size: 11, width: 3, label: 'local minimum' },
+  // roadmaps: edges on the tree layer (checked solid, unchecked dashed); the query's path on top
+  [EventKind.ROADMAP_EDGE]: { layer: 'tree', shape: 'edge', colors: [PALETTE.tree0, PALETTE.roadmapUnchecked], width: 1, dash: [3, 3], label: 'roadmap edge: checked / unchecked' },
+  [EventKind.EDGE_CHECKED]: { layer: 'tree', shape: 'edge', colors: [PALETTE.tree0, PALETTE.roadmapInvalid], width: 1.3, label: 'edge checked by a query: valid / blocked' },
+  [EventKind.QUERY_PATH]: { layer: 'marker', shape: 'path', color: PALETTE.queryPath, width: 2, dash: [6, 4], label: "the graph search's latest path" },
 });
 
 // The switchable overlays, in the order of the overlay box: `option` is the view option, `swatches`
@@ -142,4 +151,8 @@ export const TREE_LEGEND = Object.freeze({
   rrt: [['tree', PALETTE.tree0]],
   'rrt-star': [['tree', PALETTE.tree0]],
   inspection: [['tree', PALETTE.tree0]],
+  prm: [['roadmap: milestones, checked edges', PALETTE.tree0], ["search's latest path", PALETTE.queryPath]],
+  'prm-star': [['roadmap: milestones, checked edges', PALETTE.tree0], ["search's latest path", PALETTE.queryPath]],
+  'lazy-prm': [['milestones, edges checked valid', PALETTE.tree0], ['unchecked edge', PALETTE.roadmapUnchecked],
+    ['edge checked: blocked', PALETTE.roadmapInvalid], ["search's latest path", PALETTE.queryPath]],
 });

@@ -70,6 +70,7 @@ export class View {
     /** @type {number[] | null} */
     this.pendingSample = null; // the latest SAMPLE, until a rejection or the next sample says what it was
     this.flashes = [];
+    this.queryPath = null; // roadmaps: the latest graph search's path, [[x, y], ...]
     this.path = null;
     this.smoothed = null;
     this.frames = [];
@@ -193,6 +194,7 @@ export class View {
       if (kind === EventKind.SAMPLE || kind === EventKind.SAMPLE_REJECTED) this.lastSample = [d[o + 4], d[o + 5]];
       else if (kind === EventKind.TREES_CONNECTED || kind === EventKind.SOLVED) this.markers.push([kind, d[o + 4], d[o + 5]]);
       else if (kind === EventKind.REWIRE && flash) this.flashes.push([now, d[o + 4], d[o + 5], d[o + 6], d[o + 7]]);
+      else if (kind === EventKind.QUERY_PATH) this.addQueryEdge(d, o);
     }
     if (this.flashes.length > MAX_FLASHES) this.flashes.splice(0, this.flashes.length - MAX_FLASHES);
     this.dirty = true;
@@ -228,6 +230,56 @@ export class View {
       }
       drawExhausted(ctx, L, pts);
     }
+    if (this.roadmap) this.drawRoadmapRecords(from, to, false);
+  }
+
+  /** A QUERY_PATH record: its first edge (tree 0) starts a new path. */
+  addQueryEdge(d, o) {
+    if (d[o + 1] === 0 || !this.queryPath) this.queryPath = [[d[o + 4], d[o + 5]]];
+    this.queryPath.push([d[o + 6], d[o + 7]]);
+  }
+
+  /**
+   * Roadmap edges of records [from, to) on the tree layer: checked edges solid, Lazy PRM's
+   * unchecked ones dashed, then what its checks found (blocked: faint vermilion over the dashes;
+   * valid: solid, on top). With `nodes`, milestones too (NODE_ADDED records without a parent, which the model's
+   * tree mirror does not draw).
+   */
+  drawRoadmapRecords(from, to, nodes) {
+    const { ctx } = this.treeLayer;
+    const L = this.layout;
+    const added = STYLE[EventKind.ROADMAP_EDGE];
+    const checked = STYLE[EventKind.EDGE_CHECKED];
+    const node = Math.max(1, Math.round(L.px(STYLE[EventKind.NODE_ADDED].size)));
+    const pass = (kind, group, style, dash) => {
+      ctx.beginPath();
+      for (const [d, o0, o1] of this.store.spans(from, to)) for (let o = o0; o < o1; o += STRIDE) {
+        if (d[o] !== kind || (d[o + 1] > 0 ? 1 : 0) !== group) continue;
+        ctx.moveTo(L.sx(d[o + 4]), L.sy(d[o + 5]));
+        ctx.lineTo(L.sx(d[o + 6]), L.sy(d[o + 7]));
+      }
+      ctx.strokeStyle = style.colors[group];
+      ctx.lineWidth = L.px(style.width);
+      ctx.setLineDash(dash);
+      ctx.stroke();
+      ctx.setLineDash([]);
+    };
+    pass(EventKind.ROADMAP_EDGE, 1, added, added.dash.map((v) => L.px(v)));
+    pass(EventKind.EDGE_CHECKED, 1, checked, []);
+    pass(EventKind.ROADMAP_EDGE, 0, added, []);
+    pass(EventKind.EDGE_CHECKED, 0, checked, []);
+    if (!nodes) return;
+    ctx.fillStyle = STYLE[EventKind.NODE_ADDED].colors[0];
+    for (const [d, o0, o1] of this.store.spans(from, to)) for (let o = o0; o < o1; o += STRIDE) {
+      if (d[o] !== EventKind.NODE_ADDED || d[o + 3] >= 0) continue;
+      ctx.fillRect(Math.round(L.sx(d[o + 4]) - node / 2), Math.round(L.sy(d[o + 5]) - node / 2), node, node);
+    }
+  }
+
+  /** Whether the run drew a roadmap (its layer is then redrawn from the records). */
+  get roadmap() {
+    const c = this.model?.counts;
+    return !!c && (c[EventKind.ROADMAP_EDGE] > 0 || c[EventKind.QUERY_PATH] > 0);
   }
 
   /** The whole tree layer from the model's mirror (after a rewire, a toggle or a resize). */
@@ -265,6 +317,7 @@ export class View {
       }
     });
     ctx.globalAlpha = 1;
+    if (this.roadmap) this.drawRoadmapRecords(0, this.store.length, true);
     this.treeSeen = this.model ? this.model.treeVersion : 0;
     this.treeDrawnAt = performance.now();
     this.dirty = true;
@@ -386,6 +439,7 @@ export class View {
     if (!this.layout) return;
     this.markers = [];
     this.flashes = [];
+    this.queryPath = null;
     this.redrawTreeLayer();
     this.redrawUnder();
     this.redrawOver();
@@ -393,6 +447,7 @@ export class View {
     this.cells.redraw(this.layout, this.options);
     for (const [d, o0, o1] of this.store.spans(0, this.store.length)) for (let o = o0; o < o1; o += STRIDE) {
       if (d[o] === EventKind.TREES_CONNECTED || d[o] === EventKind.SOLVED) this.markers.push([d[o], d[o + 4], d[o + 5]]);
+      else if (d[o] === EventKind.QUERY_PATH) this.addQueryEdge(d, o);
     }
     this.dirty = true;
   }
@@ -447,6 +502,10 @@ export class View {
     if (best.length >= 2) {
       drawPolyline(ctx, L, best, PALETTE.bestCasing, L.px(6));
       drawPolyline(ctx, L, best, PALETTE.best, L.px(3.5));
+    }
+    if (!this.showResult && this.queryPath) {
+      const q = STYLE[EventKind.QUERY_PATH];
+      drawPolyline(ctx, L, this.queryPath, q.color, L.px(q.width), q.dash.map((v) => L.px(v)));
     }
     if (!this.showResult && this.lastSample) drawMarker(ctx, L, STYLE[EventKind.SAMPLE], ...this.lastSample);
     this.cells.drawTop(ctx, L, o, this.scenario.bounds);

@@ -27,5 +27,9 @@ export const EventKind = Object.freeze({
   // One growth step, for the explain panel: the node chosen, then the step steered from it.
   NEAREST: 20, // id: node, x y: its point, px py: the target, c0: distance, c1: domain radius, pc0: 1 target is a sample
   STEER: 21, // id: node, x y: the new state, px py: the node, c0: step, c1: range, pc0: 1 reaches the target
-  SELECT: 22, // EST: id: node picked, x y: its point, px: nodes in its cell, py: the cell's probability, c0: cells, c1 pc0: column, row, pc1: grid
+  // Roadmaps (prm, prm-star, lazy-prm): milestones are NODE_ADDED records with parent -1.
+  ROADMAP_EDGE: 22, // id, parent: the two vertices (x y, px py); tree: 0 checked valid, 1 unchecked (lazy)
+  EDGE_CHECKED: 23, // id, parent: the two vertices; tree: 0 valid, 1 invalid (removed)
+  QUERY_PATH: 24, // id -> parent: one edge of a search's path; tree: 0 the path's first edge, 1 the others
+  SELECT: 25, // EST: id: node picked, x y: its point, px: nodes in its cell, py: the cell's probability, c0: cells, c1 pc0: column, row, pc1: grid
 });

@@ -171,6 +171,40 @@ export const PSEUDOCODE = {
   },
 };
 
+// The roadmaps (src/planners/roadmap/): one milestone per iteration, then a query when it changed.
+const ROADMAP_HEAD = /** @type {Line[]} */ ([
+  { id: 'init', text: 'V ← {q_start, q_goal}, E ← ∅' },
+  { id: 'loop', text: 'repeat' },
+  { id: 'sample', text: 'q ← SAMPLE()', indent: 1 },
+  ...SAMPLER_LINES,
+  { id: 'valid', text: 'if not VALID(q): reject', indent: 1 },
+  { id: 'add', text: 'V ← V ∪ {q} (a milestone)', indent: 1 },
+]);
+const EAGER_TAIL = /** @type {Line[]} */ ([
+  { id: 'check', text: "if MOTION_FREE(q, q'): E ← E ∪ {(q, q')}", indent: 2 },
+  { id: 'query', text: 'if q_start and q_goal share a component: return A*(q_start, q_goal) over (V, E)', indent: 1 },
+]);
+PSEUDOCODE.prm = {
+  title: 'PRM (Kavraki, Švestka, Latombe & Overmars 1996)',
+  lines: [...ROADMAP_HEAD, { id: 'near', text: "for q' in the k nearest of q (or those within the radius):", indent: 1 }, ...EAGER_TAIL],
+};
+PSEUDOCODE['prm-star'] = {
+  title: 'PRM* (Karaman & Frazzoli 2011)',
+  lines: [...ROADMAP_HEAD, { id: 'near', text: "for q' in the k(n) = ⌈e(1 + 1/d)·ln n⌉ nearest of q (or within r(n)):", indent: 1 }, ...EAGER_TAIL],
+};
+PSEUDOCODE['lazy-prm'] = {
+  title: 'Lazy PRM (Bohlin & Kavraki 2000)',
+  lines: [
+    ...ROADMAP_HEAD,
+    { id: 'edge', text: "for q' in the k nearest of q: E ← E ∪ {(q, q')}, unchecked", indent: 1 },
+    { id: 'query', text: 'while q_start and q_goal share a component:', indent: 1 },
+    { id: 'search', text: 'path ← A*(q_start, q_goal) over (V, E)', indent: 2 },
+    { id: 'lazy-check', text: 'check its unchecked edges in order; a blocked one leaves E: search again', indent: 2 },
+    { id: 'goal-check', text: 'every edge free: return path', indent: 2 },
+  ],
+};
+const ROADMAPS = new Set(['prm', 'prm-star', 'lazy-prm']);
+
 /** The pseudocode of `planner` with only the lines `options` apply (null for an unknown planner). */
 export function pseudocode(planner, options = {}) {
   const p = PSEUDOCODE[planner];
@@ -243,6 +277,7 @@ export class Explainer {
     this.actors = {};
     this.events = 0;
     this.connecting = false; // RRT-Connect: in CONNECT (growing the other tree toward q_new)
+    this.pathEdges = 0;      // roadmaps: edges of the search's path read so far
   }
 
   /** Start a new step's caption. */
@@ -330,10 +365,21 @@ export class Explainer {
         this.then(`${blockerText(id)} at ${pt(x, y)}`);
         A.collision = [x, y];
         A.blocked = true;
-        this.line = this.connecting ? 'c-check' : 'check';
+        this.line = this.planner === 'lazy-prm' ? 'lazy-check' : this.connecting ? 'c-check' : 'check';
         if (this.planner === 'bi-est' && this.line === 'check' && A.added) this.line = 'met'; // the join was blocked
         break;
       case K.NODE_ADDED:
+        if (parent < 0 && ROADMAPS.has(this.planner)) {
+          if (this.line === 'init' && id <= 1) {
+            this.begin(`${id === 0 ? 'q_start' : 'q_goal'} ${pt(x, y)} is vertex #${id}`);
+            this.line = 'init';
+          } else {
+            this.then(`milestone #${id} at ${pt(x, y)}`);
+            A.milestone = [x, y];
+            this.line = 'add';
+          }
+          break;
+        }
         if (parent < 0) { this.begin(`the ${TREE_NAME(this.planner, tree)} starts at ${pt(x, y)}`); this.line = 'init'; break; }
         if (this.planner === 'hex-potential' || this.planner === 'grid-search') {
           this.begin(`${this.complete ? 'along the shortest way: step to' : 'step to cell centre'} ${pt(x, y)} (node #${id})`);
@@ -360,10 +406,33 @@ export class Explainer {
         if (this.line === 'nearest' && A.domain !== null && A.domain !== undefined) {
           this.then(`outside its domain r = ${num(A.domain)}: rejected unchecked`);
           this.line = 'domain';
+        } else if (ROADMAPS.has(this.planner)) {
+          this.then('invalid: rejected');
+          this.line = 'valid';
         } else {
           this.then('sample dropped');
           if (this.line !== 'check') this.line = 'sample';
         }
+        break;
+      case K.ROADMAP_EDGE:
+        this.then(`edge #${parent}–#${id} ${tree === 1 ? 'added unchecked' : 'free: added'}`);
+        A.edge = [px, py, x, y];
+        this.line = tree === 1 ? 'edge' : 'check';
+        break;
+      case K.QUERY_PATH:
+        if (tree === 0 || this.line !== (this.planner === 'lazy-prm' ? 'search' : 'query')) {
+          this.begin('A* over the roadmap: a path of 1 edge');
+          this.pathEdges = 0;
+        }
+        this.pathEdges++;
+        this.parts[0] = `A* over the roadmap: a path of ${this.pathEdges} edge${this.pathEdges > 1 ? 's' : ''}`;
+        A.edge = [x, y, px, py];
+        this.line = this.planner === 'lazy-prm' ? 'search' : 'query';
+        break;
+      case K.EDGE_CHECKED:
+        this.then(`edge #${id}–#${parent} ${tree === 1 ? 'blocked: removed' : 'checked: free'}`);
+        A.edge = [x, y, px, py];
+        this.line = 'lazy-check';
         break;
       case K.DOMAIN:
         this.then(`#${id}'s domain ${Number.isFinite(px) ? `r = ${num(px)}` : 'removed'}`);
@@ -380,7 +449,7 @@ export class Explainer {
         break;
       case K.SOLVED:
         this.then('solved: the path is returned');
-        this.line = TWO_TREES.has(this.planner) ? 'met' : 'goal-check';
+        this.line = TWO_TREES.has(this.planner) ? 'met' : ROADMAPS.has(this.planner) && this.planner !== 'lazy-prm' ? 'query' : 'goal-check';
         break;
       case K.REWIRE:
         this.begin(`rewire #${id}: its parent is now #${parent}, cheaper`);
@@ -480,4 +549,4 @@ export class Explainer {
 const LONG_REVEAL = 256;
 /** How far back readStore looks for the last step's SAMPLE. */
 const MAX_LOOK_BACK = 1 << 17;
-const SAMPLING = new Set(['rrt', 'rrt-connect', 'rrt-star', 'inspection']);
+const SAMPLING = new Set(['rrt', 'rrt-connect', 'rrt-star', 'inspection', 'prm', 'prm-star', 'lazy-prm']);

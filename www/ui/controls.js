@@ -42,6 +42,7 @@ export function modelSummary(model, chart = null) {
     trees: model.trees.map((t) => ({ nodes: t.n, domains: t.domains, exhausted: t.exhausted })),
     tries: count(EventKind.SAMPLE_TRY),
     rewires: count(EventKind.REWIRE),
+    roadmap: { edges: count(EventKind.ROADMAP_EDGE), checked: count(EventKind.EDGE_CHECKED), pathEdges: count(EventKind.QUERY_PATH) },
     costs: model.costs.map((c) => c.slice()),
     coverage: model.coverage.map((c) => c.slice()),
     seen: [...model.seen],

@@ -1,0 +1,28 @@
+//! Lazy PRM: a roadmap whose edges are checked only when a query's path uses them.
+//!
+//! R. Bohlin, L. E. Kavraki, "Path planning using Lazy PRM", ICRA 2000; stepped as OMPL's
+//! `LazyPRM` (growth and queries alternate). Milestones are checked when sampled (one state
+//! check each) but edges are added unchecked. When start and goal share a component, A* finds the
+//! shortest path; its unchecked edges are checked from the start on, the first invalid one is
+//! removed and the search runs again, until a path of valid edges is found or start and goal come
+//! apart (then the roadmap grows). Seeded by the run's [`Rng`] only. See [`super::common`].
+//!
+//! [`Rng`]: crate::rng::Rng
+
+use super::{fixed_rule, RoadmapPlanner, CONNECT, K, RADIUS};
+use crate::planners::{ParamSpec, PlannerSpec, TaskKind};
+use crate::sampler::SAMPLER_GROUP;
+
+/// The registry entry.
+pub const SPEC: PlannerSpec = PlannerSpec {
+    name: "lazy-prm",
+    label: "Lazy PRM",
+    summary: "A roadmap whose edges are checked only when the shortest path uses them.",
+    params: PARAMS,
+    groups: &[SAMPLER_GROUP],
+    task: TaskKind::Goal,
+    make: |si, task, params| Ok(Box::new(RoadmapPlanner::new(si.dims(), task, fixed_rule(si, params), true))),
+};
+
+/// Lazy PRM's parameters.
+pub const PARAMS: &[ParamSpec] = &[CONNECT, K, RADIUS];
