@@ -84,11 +84,14 @@ pub enum EventKind {
     /// state's point; `c0` the step's length; `c1` the range; `pc0` 1 when the step reaches the
     /// target. The motion is checked next: a `Collision` or a `NodeAdded` follows.
     Steer = 21,
+    /// A graph edge was found (visibility graph): between vertices `id` (at `x, y`) and `parent`
+    /// (at `px, py`); `c0` its length; `c1` 1 when the segment is clear (kept), 0 when blocked.
+    GraphEdge = 22,
 }
 
 impl EventKind {
     /// Every kind with its name, for the JS constant check.
-    pub const ALL: [(EventKind, &'static str); 22] = [
+    pub const ALL: [(EventKind, &'static str); 23] = [
         (EventKind::Sample, "SAMPLE"),
         (EventKind::SampleRejected, "SAMPLE_REJECTED"),
         (EventKind::NodeAdded, "NODE_ADDED"),
@@ -111,6 +114,7 @@ impl EventKind {
         (EventKind::Minimum, "MINIMUM"),
         (EventKind::Nearest, "NEAREST"),
         (EventKind::Steer, "STEER"),
+        (EventKind::GraphEdge, "GRAPH_EDGE"),
     ];
 }
 

@@ -13,6 +13,7 @@ mod params;
 pub mod rrt;
 pub mod smoothing;
 pub mod tree;
+pub mod visibility;
 
 pub use crate::params::{ParamGroup, ParamKind, ParamSpec};
 pub use params::Params;
@@ -234,8 +235,15 @@ impl PlannerSpec {
 }
 
 /// Every planner.
-pub static REGISTRY: &[PlannerSpec] =
-    &[rrt::rrt::SPEC, rrt::rrt_connect::SPEC, rrt::rrt_star::SPEC, inspection::SPEC, hex::SPEC, apf::SPEC];
+pub static REGISTRY: &[PlannerSpec] = &[
+    rrt::rrt::SPEC,
+    rrt::rrt_connect::SPEC,
+    rrt::rrt_star::SPEC,
+    inspection::SPEC,
+    hex::SPEC,
+    apf::SPEC,
+    visibility::SPEC,
+];
 
 /// A planner by name.
 pub fn find(name: &str) -> Option<&'static PlannerSpec> {

@@ -27,4 +27,6 @@ export const EventKind = Object.freeze({
   // One growth step, for the explain panel: the node chosen, then the step steered from it.
   NEAREST: 20, // id: node, x y: its point, px py: the target, c0: distance, c1: domain radius, pc0: 1 target is a sample
   STEER: 21, // id: node, x y: the new state, px py: the node, c0: step, c1: range, pc0: 1 reaches the target
+  // Roadmaps (visibility-graph): an edge between two graph vertices.
+  GRAPH_EDGE: 22, // id, parent: the vertices, x y / px py: their points, c0: length, c1: 1 clear (kept), 0 blocked
 });

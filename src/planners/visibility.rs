@@ -1,0 +1,575 @@
+//! Visibility graph: the exact shortest path of a point (or a disc) among polygons.
+//!
+//! T. Lozano-Pérez and M. A. Wesley, "An algorithm for planning collision-free paths among
+//! polyhedral obstacles", CACM 22(10), 1979; M. de Berg et al., *Computational Geometry*, ch. 15.
+//! Issue 17: the reference line on RRT*'s cost chart.
+//!
+//! # The method
+//!
+//! A shortest path among polygonal obstacles is a polyline that bends only at convex obstacle
+//! vertices. So the planner
+//!
+//! 1. **grows the obstacles** into polygons (see below) and takes as graph vertices the start, the
+//!    goal and every convex vertex of the grown polygons that lies in bounds and strictly inside
+//!    no grown polygon;
+//! 2. **builds the graph**: every pair of vertices whose segment is tangent at both ends (a
+//!    vertex's two polygon neighbours on one side of the line; other pairs can never be on a
+//!    shortest path) is tested *exactly* ([`Workspace::sight_clear`]: the segment may touch a
+//!    grown polygon's boundary, slide along an edge, pass a vertex, but never cross an interior),
+//!    a batch of pairs per iteration; each visible pair is a
+//!    [`GraphEdge`](EventKind::GraphEdge) event;
+//! 3. **searches** it by A* (Euclidean heuristic, exact since edges are straight), a batch of
+//!    settled vertices per iteration, each a `NodeAdded` of tree 0 (the search tree);
+//! 4. **checks** the path found with the run's motion validator (the scenario's resolution and the
+//!    robot's exact sweep), as every planner's motions are, and returns it.
+//!
+//! # Growing the obstacles
+//!
+//! With `g` the growth, every obstacle is replaced by polygons containing the set of points within
+//! `g` of it: a convex obstacle (rect, convex polygon, segment, circle) by the convex hull of its
+//! vertices plus the vertices of a regular `sides`-gon of *apothem* `g` (so the polygon contains the
+//! disc of radius `g`, and the grown polygon contains the true Minkowski sum: conservative); a
+//! circle of radius `r` by the regular `sides`-gon of apothem `r + g` about its centre; a
+//! non-convex polygon by itself plus, for each edge, the hull of the edge plus the `sides`-gon.
+//! The growth is
+//!
+//! - for a **point robot** on a map whose obstacles may be touched (`touching_allowed`): 0, and
+//!   polygons are used as they are (only circles are replaced by circumscribed polygons), so the
+//!   path is the exact optimum among polygons;
+//! - for a **point robot** on a map with closed obstacles (the default: touching is a collision):
+//!   a margin `ε = 1e-7 ×` the map's larger side, so the path stays off every boundary; the cost
+//!   is above the infimum (which no valid path attains) by a few `ε`;
+//! - for a **rigid robot**: treated as its bounding disc (radius `R` = its footprint's farthest
+//!   vertex from the rotation point) plus the margin `ε`; the heading turns from the start's to the
+//!   goal's in proportion to the distance travelled (a disc may turn anywhere). For a footprint
+//!   that is itself (nearly) a disc, a regular polygon centred on the rotation point, this is the
+//!   optimum in the robot's metric (translation plus `weight·|Δθ|`) up to the approximations; for
+//!   other footprints it is a valid path but not the optimum (see [`optimum`]).
+//!
+//! Circles are approximated by `sides`-gons, so on maps with circles the path is the optimum among
+//! the approximating polygons: longer than the true optimum by at most a factor
+//! `1 / cos(π / sides)` on the arcs it wraps (0.5% with 32 sides).
+
+use crate::events::EventKind;
+use crate::geometry::segment::orient_sign;
+use crate::geometry::{polygon, Shape, Workspace};
+use crate::math::{angle_diff, wrap_angle, Real, Vec2};
+use crate::motion::MotionValidator;
+use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
+use crate::space_info::SpaceInfo;
+use std::cmp::Ordering;
+use std::collections::BinaryHeap;
+use std::rc::Rc;
+
+/// The registry entry.
+pub const SPEC: PlannerSpec = PlannerSpec {
+    name: "visibility-graph",
+    label: "Visibility graph (shortest path)",
+    summary: "The exact shortest path of a point (or a disc, by growing the obstacles) among polygons: tangent visibility graph, then A*.",
+    params: PARAMS,
+    groups: &[],
+    task: TaskKind::Goal,
+    make: |si, task, params| Ok(Box::new(VisibilityGraph::new(si, task, params)?)),
+};
+
+/// The visibility graph's parameters.
+pub const PARAMS: &[ParamSpec] = &[
+    ParamSpec::int(
+        "sides",
+        "Disc sides",
+        4.0,
+        1024.0,
+        32.0,
+        "Circles (circle obstacles, and the disc a robot's obstacles are grown by) are approximated by regular polygons of this many sides that contain them.",
+    ),
+    ParamSpec::int(
+        "batch",
+        "Work per iteration",
+        1.0,
+        1e6,
+        64.0,
+        "Vertex pairs tested (while building) or vertices settled (while searching) per iteration.",
+    ),
+];
+
+/// The margin kept from closed obstacles, as a fraction of the map's larger side.
+pub const MARGIN: Real = 1e-7;
+
+/// A grown map: the polygons the path may touch but not cross, and the graph's candidate vertices.
+#[derive(Debug)]
+pub struct Grown {
+    /// The grown obstacles (bounds: the map's).
+    pub ws: Workspace,
+    /// How far the obstacles were grown (the disc's radius plus the margin).
+    pub growth: Real,
+    /// Convex vertices: point, and its two neighbours on its polygon (for the tangent test).
+    pub corners: Vec<[Vec2; 3]>,
+}
+
+/// A regular `k`-gon of apothem `r` about `c` (counter-clockwise; edge normals at angles `2πi/k`, so
+/// with `k` a multiple of 4 it has edges along the axes).
+fn ngon(c: Vec2, r: Real, k: usize) -> Vec<Vec2> {
+    let rv = r / (std::f64::consts::PI / k as Real).cos();
+    (0..k)
+        .map(|i| {
+            let a = std::f64::consts::TAU * (i as Real + 0.5) / k as Real;
+            c + Vec2::new(libm::cos(a), libm::sin(a)) * rv
+        })
+        .collect()
+}
+
+/// The convex hull of `pts`, counter-clockwise, no collinear vertices (Andrew's monotone chain on
+/// exact orientations).
+fn hull(mut pts: Vec<Vec2>) -> Vec<Vec2> {
+    pts.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    pts.dedup();
+    if pts.len() < 3 {
+        return pts;
+    }
+    let mut h: Vec<Vec2> = Vec::with_capacity(2 * pts.len());
+    for pass in 0..2 {
+        let start = h.len();
+        let it: Box<dyn Iterator<Item = &Vec2>> =
+            if pass == 0 { Box::new(pts.iter()) } else { Box::new(pts.iter().rev()) };
+        for &p in it {
+            while h.len() >= start + 2 && orient_sign(h[h.len() - 2], h[h.len() - 1], p) <= 0 {
+                h.pop();
+            }
+            h.push(p);
+        }
+        h.pop();
+    }
+    h
+}
+
+/// The corners of the convex polygon `poly` (counter-clockwise) with their neighbours.
+fn corners_of(poly: &[Vec2], out: &mut Vec<[Vec2; 3]>) {
+    let n = poly.len();
+    let w = polygon::winding(poly);
+    for i in 0..n {
+        let (p, v, q) = (poly[(i + n - 1) % n], poly[i], poly[(i + 1) % n]);
+        // Only convex corners: a shortest path never bends at a reflex one.
+        if orient_sign(p, v, q) * w > 0 {
+            out.push([v, p, q]);
+        }
+    }
+}
+
+/// Grow the obstacles of `ws` by `g` (see the module's doc), circles as `k`-gons; `round`: whether
+/// the growth is a disc's (vertices grown by a `k`-gon) or only the margin (by a square of apothem
+/// `g`: fewer vertices, and the path's cost moves by a few `g` all the same).
+pub fn grow(ws: &Workspace, g: Real, k: usize, round: bool) -> Grown {
+    let kv = if round { k } else { 4 };
+    let mut shapes = Vec::new();
+    let mut corners = Vec::new();
+    let convex = |pts: Vec<Vec2>, shapes: &mut Vec<Shape>, corners: &mut Vec<[Vec2; 3]>| {
+        let h = if g > 0.0 { hull(pts.iter().flat_map(|&p| ngon(p, g, kv)).collect()) } else { hull(pts) };
+        corners_of(&h, corners);
+        shapes.push(Shape::Polygon(h));
+    };
+    for o in &ws.obstacles {
+        match o {
+            Shape::Rect(b) => convex(
+                vec![b.min, Vec2::new(b.max.x, b.min.y), b.max, Vec2::new(b.min.x, b.max.y)],
+                &mut shapes,
+                &mut corners,
+            ),
+            Shape::Circle(c, r) => {
+                let p = ngon(*c, r + g, k);
+                corners_of(&p, &mut corners);
+                shapes.push(Shape::Polygon(p));
+            }
+            Shape::Segment(a, b) if g <= 0.0 => {
+                corners.push([*a, *b, *b]);
+                corners.push([*b, *a, *a]);
+                shapes.push(o.clone());
+            }
+            Shape::Segment(a, b) => convex(vec![*a, *b], &mut shapes, &mut corners),
+            Shape::Polygon(p) if polygon::is_convex(p) => convex(p.clone(), &mut shapes, &mut corners),
+            Shape::Polygon(p) => {
+                if g <= 0.0 {
+                    corners_of(p, &mut corners);
+                } else {
+                    for i in 0..p.len() {
+                        convex(vec![p[i], p[(i + 1) % p.len()]], &mut shapes, &mut corners);
+                    }
+                }
+                shapes.push(o.clone());
+            }
+        }
+    }
+    let mut grown = Workspace::new(ws.bounds, shapes);
+    grown.touching_allowed = true;
+    // Candidate vertices: in bounds, strictly inside no grown polygon.
+    let b = ws.bounds;
+    corners.retain(|c| b.contains(c[0]) && grown.sight_clear(c[0], c[0]));
+    corners.dedup_by(|a, b| a[0] == b[0]);
+    Grown { ws: grown, growth: g, corners }
+}
+
+/// How the robot is seen: a point or its bounding disc, and whether the result is its optimum.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Body {
+    /// The disc's radius (0: a point).
+    pub radius: Real,
+    /// Whether the robot is (nearly) that disc, so the path is its optimum: a point, or a
+    /// footprint whose inner radius is at least 99% of its outer one.
+    pub round: bool,
+}
+
+/// The robot as a point or disc, or why the planner does not apply to it.
+pub fn body_of(si: &SpaceInfo) -> Result<Body, String> {
+    match si.robot_kind() {
+        "point" => Ok(Body { radius: 0.0, round: true }),
+        "rigid" => {
+            let outline = si.outline(&[0.0, 0.0, 0.0]);
+            let pts: Vec<Vec2> = outline.iter().flatten().copied().collect();
+            let outer = pts.iter().map(|p| p.norm()).fold(0.0, Real::max);
+            let inner = outline
+                .iter()
+                .flat_map(|poly| (0..poly.len()).map(|i| (poly[i], poly[(i + 1) % poly.len()])))
+                .map(|(a, b)| crate::geometry::segment::distance2_point_segment(Vec2::zeros(), a, b).sqrt())
+                .fold(Real::INFINITY, Real::min);
+            Ok(Body { radius: outer, round: inner >= 0.99 * outer })
+        }
+        kind => Err(format!(
+            "needs a point robot or a rigid robot (planned as its bounding disc); this is a{} {kind} robot, whose paths are not polylines in the plane",
+            if kind.starts_with(['a', 'e', 'i', 'o', 'u']) { "n" } else { "" }
+        )),
+    }
+}
+
+/// The growth for a robot on a map: its disc's radius, plus the margin unless a point may touch.
+pub fn growth(si: &SpaceInfo, body: Body) -> Real {
+    let b = si.workspace().bounds;
+    let margin = MARGIN * (b.max.x - b.min.x).max(b.max.y - b.min.y);
+    if body.radius == 0.0 && si.workspace().touching_allowed {
+        0.0
+    } else {
+        body.radius + margin
+    }
+}
+
+/// A queue entry: estimated total, cost so far, vertex (ties broken by the vertex: deterministic).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Entry(Real, Real, u32);
+
+impl Eq for Entry {}
+impl Ord for Entry {
+    fn cmp(&self, o: &Self) -> Ordering {
+        o.0.total_cmp(&self.0).then(o.2.cmp(&self.2))
+    }
+}
+impl PartialOrd for Entry {
+    fn partial_cmp(&self, o: &Self) -> Option<Ordering> {
+        Some(self.cmp(o))
+    }
+}
+
+/// What the planner is doing.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Phase {
+    /// Testing pairs: the next is `(i, j)`.
+    Build(usize, usize),
+    /// A* on the graph.
+    Search,
+}
+
+/// The visibility-graph planner.
+#[derive(Clone)]
+pub struct VisibilityGraph {
+    grown: Rc<Grown>,
+    /// Vertex points: 0 the start, 1 the goal, then the corners.
+    points: Vec<Vec2>,
+    /// Each vertex's two polygon neighbours (the start and goal: itself, so every pair passes).
+    sides: Vec<[Vec2; 2]>,
+    adj: Vec<Vec<(u32, Real)>>,
+    phase: Phase,
+    batch: usize,
+    start: Vec<Real>,
+    goal: Vec<Real>,
+    /// Rigid robots: the heading's total turn from start to goal.
+    turn: Option<Real>,
+    /// The robot's disc radius (0: a point).
+    radius: Real,
+    // A* state.
+    open: BinaryHeap<Entry>,
+    cost: Vec<Real>,
+    parent: Vec<u32>,
+    closed: Vec<bool>,
+    /// Tree id of each settled vertex.
+    tree_id: Vec<u32>,
+    tree: Option<Tree>,
+    edges: usize,
+    reason: Option<String>,
+}
+
+impl VisibilityGraph {
+    /// A visibility-graph planner for `task`; an error for robots it does not apply to, or a start
+    /// or goal too close to an obstacle for the growth.
+    pub fn new(si: &SpaceInfo, task: &Task, params: &Params) -> Result<Self, String> {
+        let body = body_of(si)?;
+        let k = params.real("sides") as usize;
+        let grown = grow(si.workspace(), growth(si, body), k, body.radius > 0.0);
+        let (start, goal) = (task.start.clone(), task.goal().to_vec());
+        let (s, g) = (si.project(&start), si.project(&goal));
+        for (what, p) in [("start", s), ("goal", g)] {
+            if !grown.ws.sight_clear(p, p) {
+                return Err(format!(
+                    "the {what} ({}, {}) is within {:.3e} of an obstacle (the robot's disc{}): the grown obstacles cover it",
+                    p.x,
+                    p.y,
+                    grown.growth,
+                    if body.radius > 0.0 { "" } else { ", or the margin kept from closed obstacles" }
+                ));
+            }
+        }
+        let mut points = vec![s, g];
+        let mut sides = vec![[s, s], [g, g]];
+        for c in &grown.corners {
+            points.push(c[0]);
+            sides.push([c[1], c[2]]);
+        }
+        let max_nodes = params.real("max_nodes");
+        if points.len() as Real > max_nodes {
+            return Err(format!(
+                "the graph has {} vertices, more than max_nodes ({max_nodes}): raise max_nodes or lower sides",
+                points.len()
+            ));
+        }
+        let n = points.len();
+        let turn = (start.len() == 3).then(|| angle_diff(start[2], goal[2]));
+        Ok(VisibilityGraph {
+            grown: Rc::new(grown),
+            points,
+            sides,
+            adj: vec![Vec::new(); n],
+            phase: Phase::Build(0, 1),
+            batch: params.real("batch") as usize,
+            start,
+            goal,
+            turn,
+            radius: body.radius,
+            open: BinaryHeap::new(),
+            cost: vec![Real::INFINITY; n],
+            parent: vec![u32::MAX; n],
+            closed: vec![false; n],
+            tree_id: vec![u32::MAX; n],
+            tree: None,
+            edges: 0,
+            reason: None,
+        })
+    }
+
+    /// Edges of the graph so far.
+    pub fn edge_count(&self) -> usize {
+        self.edges
+    }
+
+    /// Whether segment `i j` may be on a shortest path: tangent to the polygon at both ends.
+    fn tangent(&self, i: usize, j: usize) -> bool {
+        let (a, b) = (self.points[i], self.points[j]);
+        let ok = |v: Vec2, w: Vec2, s: [Vec2; 2]| orient_sign(v, w, s[0]) * orient_sign(v, w, s[1]) >= 0;
+        ok(a, b, self.sides[i]) && ok(b, a, self.sides[j])
+    }
+
+    /// The state at vertex `v`, `along` of the way (rigid robots: the heading turned that far).
+    fn state(&self, v: u32, along: Real) -> Vec<Real> {
+        match v {
+            0 => self.start.clone(),
+            1 => self.goal.clone(),
+            _ => {
+                let p = self.points[v as usize];
+                match self.turn {
+                    Some(t) => vec![p.x, p.y, wrap_angle(self.start[2] + t * along)],
+                    None => vec![p.x, p.y],
+                }
+            }
+        }
+    }
+
+    fn build(&mut self, cx: &mut Context) {
+        let Phase::Build(mut i, mut j) = self.phase else { return };
+        let n = self.points.len();
+        let mut tests = 0;
+        while tests < self.batch && i < n {
+            if j >= n {
+                i += 1;
+                j = i + 1;
+                continue;
+            }
+            if self.points[i] != self.points[j] && self.tangent(i, j) {
+                tests += 1;
+                let (a, b) = (self.points[i], self.points[j]);
+                if self.grown.ws.sight_clear(a, b) {
+                    let d = (b - a).norm();
+                    self.adj[i].push((j as u32, d));
+                    self.adj[j].push((i as u32, d));
+                    self.edges += 1;
+                    cx.events.values(
+                        EventKind::GraphEdge,
+                        0,
+                        i as i64,
+                        j as i64,
+                        [a.x, a.y, b.x, b.y, d, 1.0, 0.0, 0.0],
+                    );
+                }
+                if cx.si.tick(1) {
+                    break;
+                }
+            }
+            j += 1;
+        }
+        cx.si.count_checks(tests as u64);
+        self.phase = if i >= n { Phase::Search } else { Phase::Build(i, j) };
+        if self.phase == Phase::Search {
+            self.cost[0] = 0.0;
+            self.open.push(Entry((self.points[1] - self.points[0]).norm(), 0.0, 0));
+            self.tree = Some(Tree::new(cx, &self.start, 0));
+            self.tree_id[0] = 0;
+        }
+    }
+
+    /// Settle up to a batch of vertices; the path when the goal is settled.
+    fn search(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
+        let goal = self.points[1];
+        for _ in 0..self.batch {
+            let Some(Entry(_, c, v)) = self.open.pop() else {
+                self.reason = Some(format!(
+                    "the start and goal are not connected in the visibility graph ({} vertices, {} edges): no path exists for {}",
+                    self.points.len(),
+                    self.edges,
+                    match self.radius {
+                        r if r > 0.0 => format!("the robot's bounding disc (radius {r}); the robot itself may still pass by turning"),
+                        _ => "a point".to_string(),
+                    },
+                ));
+                return None;
+            };
+            let vi = v as usize;
+            if self.closed[vi] || c > self.cost[vi] {
+                continue;
+            }
+            self.closed[vi] = true;
+            if vi != 0 {
+                let p = self.parent[vi];
+                let q = self.state(v, 0.0);
+                let tree = self.tree.as_mut().expect("the search has its tree");
+                let id = tree.add(cx, &q, self.tree_id[p as usize]);
+                self.tree_id[vi] = id;
+                let pq = tree.state(self.tree_id[p as usize]).to_vec();
+                let (a, b) = (cx.si.project(&q), cx.si.project(&pq));
+                cx.events.push(EventKind::NodeAdded, 0, id as i64, self.tree_id[p as usize] as i64, a, b, &q, &pq);
+            }
+            if vi == 1 {
+                return self.finish(cx);
+            }
+            for &(w, d) in &self.adj[vi] {
+                let wi = w as usize;
+                let nc = c + d;
+                if !self.closed[wi] && nc < self.cost[wi] {
+                    self.cost[wi] = nc;
+                    self.parent[wi] = v;
+                    self.open.push(Entry(nc + (goal - self.points[wi]).norm(), nc, w));
+                }
+            }
+        }
+        None
+    }
+
+    /// The goal is settled: the path, checked by the run's motion validator.
+    fn finish(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
+        let mut chain = vec![1u32];
+        while *chain.last().unwrap() != 0 {
+            chain.push(self.parent[*chain.last().unwrap() as usize]);
+        }
+        chain.reverse();
+        let total = self.cost[1];
+        let mut along = 0.0;
+        let mut path = Vec::with_capacity(chain.len());
+        for (k, &v) in chain.iter().enumerate() {
+            if k > 0 {
+                along += (self.points[v as usize] - self.points[chain[k - 1] as usize]).norm();
+            }
+            path.push(self.state(v, if total > 0.0 { along / total } else { 1.0 }));
+        }
+        let mut scratch = vec![0.0; cx.si.dims()];
+        for (k, w) in path.windows(2).enumerate() {
+            if cx.si.check_motion(&w[0], &w[1], &mut scratch).is_err() {
+                if !cx.si.stopped() {
+                    self.reason = Some(format!(
+                        "segment {k} of the visibility path ({:?} → {:?}) failed the run's motion check: a bug, or a robot the disc does not bound",
+                        w[0], w[1]
+                    ));
+                }
+                return None;
+            }
+        }
+        let cost: Real = path.windows(2).map(|w| cx.si.distance(&w[0], &w[1])).sum();
+        let at = cx.si.project(&self.goal);
+        cx.events.mark(EventKind::Cost, 0, self.tree_id[1] as i64, cx.iteration as f64, at, cost, 0.0);
+        cx.events.at(EventKind::Solved, 0, at, &self.goal);
+        Some(path)
+    }
+}
+
+impl Planner for VisibilityGraph {
+    fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
+        if self.reason.is_some() {
+            return None;
+        }
+        match self.phase {
+            Phase::Build(..) => {
+                self.build(cx);
+                None
+            }
+            Phase::Search => self.search(cx),
+        }
+    }
+    fn snapshot(&self) -> Box<dyn Planner> {
+        Box::new(self.clone())
+    }
+    fn node_count(&self) -> usize {
+        self.points.len()
+    }
+    fn data(&self) -> PlannerData {
+        PlannerData { trees: self.tree.iter().cloned().collect() }
+    }
+    fn gave_up(&self) -> Option<String> {
+        self.reason.clone()
+    }
+}
+
+/// The shortest path's cost for a problem, from a run of the planner to its end: `Ok(None)` when no
+/// path exists; an error for a robot it does not apply to. `exact` says whether the cost is the
+/// robot's optimum (a point, or a round footprint: see [`Body`]) or only a valid path's cost.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Optimum {
+    /// The shortest path's cost in the robot's metric (`None`: start and goal not connected).
+    pub cost: Option<Real>,
+    /// Whether that is the robot's optimum (up to the approximations in the module's doc).
+    pub exact: bool,
+    /// The path (planning states).
+    pub path: Vec<Vec<Real>>,
+}
+
+/// The optimum of `problem` by the visibility graph (default parameters, no events).
+pub fn optimum(problem: crate::problem::Problem) -> Result<Optimum, String> {
+    let exact = body_of(&problem.si)?.round;
+    let spec = &SPEC;
+    let mut params = Params::defaults(crate::planners::find(spec.name).expect("registered"));
+    params.set_text(crate::planners::find(spec.name).expect("registered"), "time_limit", "3600")?;
+    let mut s = crate::run::Session::new(
+        problem,
+        crate::run::RunConfig { planner: spec.name.into(), params, seed: 1, record_events: false },
+    )?;
+    s.run_to_end();
+    let r = s.result();
+    if r.solved {
+        Ok(Optimum { cost: r.stats.cost, exact, path: s.planning_path(true).to_vec() })
+    } else if s.status() == crate::status::Status::NoPath {
+        Ok(Optimum { cost: None, exact, path: Vec::new() })
+    } else {
+        Err(format!("the visibility graph stopped: {}", r.status))
+    }
+}
