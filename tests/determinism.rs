@@ -84,6 +84,7 @@ fn every_robot_and_planner_gives_the_same_run_in_suspended_batches() {
             serde_json::json!({ "sampler": "obstacle", "exhausted": 2, "exhausted_policy": "weighted", "max_iterations": 1000 }),
         ),
         ("hex-trap", "hex-potential", serde_json::json!({})),
+        ("zigzag", "visibility-graph", serde_json::json!({ "batch": 8 })),
     ];
     let mut suspended = 0;
     for (name, planner, params) in &cases {

@@ -33,12 +33,12 @@
 //! non-convex polygon by itself plus, for each edge, the hull of the edge plus the `sides`-gon.
 //! The growth is
 //!
-//! - for a **point robot** on a map whose obstacles may be touched (`touching_allowed`): 0, and
-//!   polygons are used as they are (only circles are replaced by circumscribed polygons), so the
-//!   path is the exact optimum among polygons;
-//! - for a **point robot** on a map with closed obstacles (the default: touching is a collision):
-//!   a margin `ε = 1e-7 ×` the map's larger side, so the path stays off every boundary; the cost
-//!   is above the infimum (which no valid path attains) by a few `ε`;
+//! - for a **point robot**: a margin `ε = 1e-7 ×` the map's larger side, so the path stays off
+//!   every boundary: a point (or rigid) robot's state on an obstacle's boundary is a collision
+//!   whatever the scenario's `touching_allowed` says (that key opens obstacles only to the segment
+//!   robots, arms: see [`Workspace::touching_allowed`]). The shortest path would slide along
+//!   boundaries; with the margin its cost is above that infimum (which no valid path attains) by a
+//!   few `ε`;
 //! - for a **rigid robot**: treated as its bounding disc (radius `R` = its footprint's farthest
 //!   vertex from the rotation point) plus the margin `ε`; the heading turns from the start's to the
 //!   goal's in proportion to the distance travelled (a disc may turn anywhere). For a footprint
@@ -239,15 +239,11 @@ pub fn body_of(si: &SpaceInfo) -> Result<Body, String> {
     }
 }
 
-/// The growth for a robot on a map: its disc's radius, plus the margin unless a point may touch.
+/// The growth for a robot on a map: its disc's radius plus the margin ([`MARGIN`] × the map's
+/// larger side), since a point or a rigid body touching an obstacle collides.
 pub fn growth(si: &SpaceInfo, body: Body) -> Real {
     let b = si.workspace().bounds;
-    let margin = MARGIN * (b.max.x - b.min.x).max(b.max.y - b.min.y);
-    if body.radius == 0.0 && si.workspace().touching_allowed {
-        0.0
-    } else {
-        body.radius + margin
-    }
+    body.radius + MARGIN * (b.max.x - b.min.x).max(b.max.y - b.min.y)
 }
 
 /// A queue entry: estimated total, cost so far, vertex (ties broken by the vertex: deterministic).
@@ -320,7 +316,7 @@ impl VisibilityGraph {
                     p.x,
                     p.y,
                     grown.growth,
-                    if body.radius > 0.0 { "" } else { ", or the margin kept from closed obstacles" }
+                    if body.radius > 0.0 { " and the margin" } else { ", the margin kept from obstacles" }
                 ));
             }
         }
