@@ -549,16 +549,21 @@ pub struct Optimum {
     pub path: Vec<Vec<Real>>,
 }
 
-/// The optimum of `problem` by the visibility graph (default parameters, no events).
+/// The optimum of `problem` by the visibility graph (default parameters, no events, an hour at
+/// most: see [`optimum_within`]).
 pub fn optimum(problem: crate::problem::Problem) -> Result<Optimum, String> {
+    optimum_within(problem, 3600.0)
+}
+
+/// [`optimum`] within `seconds`; an error when the graph takes longer (a map of many obstacles).
+pub fn optimum_within(problem: crate::problem::Problem, seconds: Real) -> Result<Optimum, String> {
     let exact = body_of(&problem.si)?.round;
-    let spec = &SPEC;
-    let mut params = Params::defaults(crate::planners::find(spec.name).expect("registered"));
-    params.set_text(crate::planners::find(spec.name).expect("registered"), "time_limit", "3600")?;
-    let mut s = crate::run::Session::new(
-        problem,
-        crate::run::RunConfig { planner: spec.name.into(), params, seed: 1, record_events: false },
-    )?;
+    let spec = crate::planners::find(SPEC.name).expect("registered");
+    let mut params = Params::defaults(spec);
+    params.set_text(spec, "time_limit", &format!("{}", seconds.clamp(0.01, 3600.0)))?;
+    params.set_text(spec, "batch", "1000000")?;
+    let config = crate::run::RunConfig { planner: spec.name.into(), params, seed: 1, record_events: false };
+    let mut s = crate::run::Session::new(problem, config)?;
     s.run_to_end();
     let r = s.result();
     if r.solved {

@@ -24,6 +24,11 @@ test('RRT* on the open field: the best-cost chart has a line and the stats show 
   assert.match(await page.textContent('#chart-title'), /cost/i);
   await nextFrames();
   assert.equal(await chartLine(), 0, 'no line before the run');
+  // the optimum (visibility graph, issue 17) is the chart's dashed reference line from the start
+  const [dashed] = await countColours('chart', [PALETTE.chartTarget], 8);
+  assert.ok(dashed > 40, `optimum line pixels before the run: ${dashed}`);
+  const optimum = (await page.evaluate(() => window.planarium.model())).optimum;
+  assert.ok(Math.abs(optimum - 1.226427) < 1e-5, `open-field's optimum: ${optimum}`);
   await setField('seed', 1);
   await fastPlayback();
   await page.click('#run');
@@ -32,6 +37,8 @@ test('RRT* on the open field: the best-cost chart has a line and the stats show 
   const model = await page.evaluate(() => window.planarium.model());
   assert.ok(model.costs.length >= 2, `cost improvements shown: ${model.costs.length}`);
   assert.ok(model.costs.every(([, c], i) => i === 0 || c <= model.costs[i - 1][1]), 'the best cost never grows');
+  assert.ok(model.costs.every(([, c]) => c >= optimum - 1e-6), `no cost below the optimum ${optimum}`);
+  assert.ok(await page.evaluate(() => window.planarium.model().optimum) === optimum, 'the line stays');
   assert.ok(model.rewires > 0, `rewires: ${model.rewires}`);
   assert.ok(model.bestBranch >= 2, 'the best path walks back to the root');
   const line = await chartLine();
