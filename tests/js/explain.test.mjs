@@ -32,7 +32,7 @@ function records(scenario, planner, params, seed) {
 
 /** What the caption must end with (or contain) after record `r`; null: no check for that kind. */
 function expected(planner, r) {
-  const [kind, , id, parent, x, y, px, , c0] = r;
+  const [kind, , id, parent, x, y, px, py, c0] = r;
   switch (kind) {
     case K.SAMPLE: return id === 1 ? `sample q_goal (${num(x)}, ${num(y)}) (goal bias)` : id === 2 ? `sample (${num(x)}, ${num(y)}) (uniform share)` : `sample (${num(x)}, ${num(y)})`;
     case K.NEAREST: return `nearest #${id} at ${num(c0)}`;
@@ -40,6 +40,7 @@ function expected(planner, r) {
     case K.COLLISION: return `${blockerText(id)} at (${num(x)}, ${num(y)})`;
     case K.NODE_ADDED:
       if (parent < 0 || planner === 'hex-potential' || planner === 'potential-field') return `(${num(x)}, ${num(y)})`;
+      if (planner === 'visibility-graph') return `(${num(x)}, ${num(y)}) (node #${id}, parent #${parent})`;
       return `add #${id} under #${parent}`;
     case K.REWIRE: return `rewire #${id}: its parent is now #${parent}`;
     case K.COST: return `best cost now ${num(px)}`;
@@ -48,6 +49,7 @@ function expected(planner, r) {
     case K.MINIMUM: return `local minimum at (${num(x)}, ${num(y)})`;
     case K.CELL_STATE: return `#${id}`;
     case K.REGION: return `radius ${num(px)}`;
+    case K.GRAPH_EDGE: return `edge (${num(x)}, ${num(y)}) – (${num(px)}, ${num(py)}): clear, length ${num(c0)}`;
     default: return null;
   }
 }
@@ -62,6 +64,7 @@ const RUNS = [
   ['apf-minimum', 'potential-field', {}, 1],
   ['open-field', 'rrt', { sampler: 'bridge', goal_bias: 0.2 }, 2],
   ['zigzag', 'rrt-connect', { sampler: 'bridge', max_iterations: 3000 }, 2],
+  ['open-field', 'visibility-graph', {}, 1],
 ];
 
 for (const [scenario, planner, params, seed] of RUNS) {

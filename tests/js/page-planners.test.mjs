@@ -122,3 +122,25 @@ test('inspection on technion-ip: the coverage chart grows and seen points light 
   const [litOff] = await countColours('canvas', [PALETTE.seen], 6);
   assert.equal(litOff, 0, `lit pixels with the overlay off: ${litOff}`);
 });
+
+test('visibility graph on the open field: the graph is drawn, the path is the optimum the chart marks', async () => {
+  await pickScenario('open-field', 'Open field');
+  await page.selectOption('#planner', 'visibility-graph');
+  await waitState('idle');
+  await nextFrames();
+  const [before] = await countColours('canvas', [PALETTE.graphEdge], 4);
+  await fastPlayback();
+  await page.click('#run');
+  await waitState('finished', 60000);
+  await nextFrames();
+  await page.screenshot({ path: join(shots, 'page-visibility.png') });
+  const [edges] = await countColours('canvas', [PALETTE.graphEdge], 4);
+  console.log(`visibility graph: edge pixels ${before} → ${edges}`);
+  assert.ok(edges > before + 200, `graph edge pixels: ${before} → ${edges}`);
+  assert.equal(await page.getAttribute('#status', 'data-status'), 'solved');
+  const model = await page.evaluate(() => window.planarium.model());
+  assert.ok(Math.abs(model.optimum - 1.226427) < 1e-5, `open-field's optimum: ${model.optimum}`);
+  assert.ok(model.trees[0].nodes >= 3, 'the A* search tree is drawn');
+  const cost = Number(await page.textContent('#stat-cost'));
+  assert.ok(Math.abs(cost - model.optimum) < 1e-4, `the run's cost ${cost} is the optimum ${model.optimum}`);
+});

@@ -41,6 +41,7 @@ export const PALETTE = Object.freeze({
   chartLine: '#d55e00',
   chartTarget: '#009e73',
   chartAxis: '#5d6470',
+  graphEdge: '#a9b4c2', // visibility-graph edges: light, under the search tree
   // cells and potential fields (cells.js): free cells light, darker by level; mixed amber; full grey;
   // visited blue and step-blocked pink (with a × mark), told apart by lightness too
   cellFree: Object.freeze(['#f7f4ea', '#efe9d8', '#e6dec6', '#ddd3b4']),
@@ -79,6 +80,7 @@ export const STYLE = Object.freeze({
   [EventKind.CELL_STATE]: { layer: 'cells', shape: 'polygon', colors: { 1: PALETTE.cellBlocked, 2: PALETTE.cellVisited }, mark: PALETTE.cellBlockedMark, toggle: 'showCells', label: 'cell judged by the search' },
   [EventKind.FIELD]: { layer: 'cells', shape: 'tile', colors: PALETTE.heat, toggle: 'showHeat', label: 'potential heat map' },
   [EventKind.REGION]: { layer: 'marker', shape: 'circle', color: PALETTE.region, width: 2, toggle: 'showRegion', label: 'region of influence' },
+  [EventKind.GRAPH_EDGE]: { layer: 'under', shape: 'edge', color: PALETTE.graphEdge, width: 1, label: 'graph edge' },
   [EventKind.MINIMUM]: { layer: 'marker', shape: 'ring', color: PALETTE.minimum, size: 11, width: 3, label: 'local minimum' },
 });
 
@@ -140,4 +142,5 @@ export const TREE_LEGEND = Object.freeze({
   rrt: [['tree', PALETTE.tree0]],
   'rrt-star': [['tree', PALETTE.tree0]],
   inspection: [['tree', PALETTE.tree0]],
+  'visibility-graph': [['A* search tree', PALETTE.tree0], ['visibility-graph edge', PALETTE.graphEdge]],
 });
