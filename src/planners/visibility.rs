@@ -92,6 +92,9 @@ pub const PARAMS: &[ParamSpec] = &[
     ),
 ];
 
+/// Pairs visited (most skipped by the tangent test) per pair tested, in an iteration's budget.
+const VISITS: usize = 32;
+
 /// The margin kept from closed obstacles, as a fraction of the map's larger side.
 pub const MARGIN: Real = 1e-7;
 
@@ -387,12 +390,18 @@ impl VisibilityGraph {
     fn build(&mut self, cx: &mut Context) {
         let Phase::Build(mut i, mut j) = self.phase else { return };
         let n = self.points.len();
-        let mut tests = 0;
-        while tests < self.batch && i < n {
+        // Pairs that are not tangent are skipped cheaply, but on a large map there are many: they
+        // count too (VISITS of them per test), so an iteration stays short.
+        let (mut tests, mut visits) = (0, 0);
+        while tests < self.batch && visits < self.batch * VISITS && i < n {
             if j >= n {
                 i += 1;
                 j = i + 1;
                 continue;
+            }
+            visits += 1;
+            if visits % VISITS == 0 && cx.si.tick(1) {
+                break;
             }
             if self.points[i] != self.points[j] && self.tangent(i, j) {
                 tests += 1;

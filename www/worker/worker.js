@@ -47,7 +47,8 @@ import { thinTries } from './thin.js';
 const BATCH_MS = 12;          // one batch of planning, then yield to the message queue
 const FRAME_SPACING = 0.004;  // animation frames along the path, in the robot's metric
 const CSPACE_N = 128;         // cells per side of the configuration-space grid
-const OPTIMUM_S = 0.5;        // the visibility graph's time for the cost chart's reference line
+const OPTIMUM_S = 0.5;        // the visibility graph's time for the cost chart's reference line…
+const OPTIMUM_MAX = 5000;     // …on maps of at most this many obstacles (its graph is quadratic)
 
 let scene = null;       // current Scene
 let scenarioText = null;
@@ -163,7 +164,7 @@ function load(text) {
   }
   // The shortest path's cost (visibility graph), for a point or a rigid robot: {cost, exact} or
   // {error}. The cost chart draws it as its reference line when it is the robot's optimum.
-  if (sc.goal && sc.robot && (sc.robot.kind === 'point' || sc.robot.kind === 'rigid')) {
+  if (sc.goal && sc.robot && (sc.robot.kind === 'point' || sc.robot.kind === 'rigid') && sc.obstacles.length <= OPTIMUM_MAX) {
     try { msg.optimum = JSON.parse(scene.optimum_json(OPTIMUM_S)); } catch (e) { rethrowPanic(e); }
   }
   post(msg, transfer);
