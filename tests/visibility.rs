@@ -212,22 +212,21 @@ fn a_disc_robot_goes_around_the_grown_square() {
     assert!(!optimum(Problem::from_scenario(&bar).unwrap()).unwrap().exact);
 }
 
-/// Catches: a planner that disagrees with an independent construction. tests/rrt_star.rs's
-/// brute-force visibility graph (every pair of points around every corner, each motion checked
-/// by the run's validator, the disc as a 96-gon) on open-field.
-#[test]
-fn open_field_agrees_with_a_brute_force_graph() {
-    let sc = builtin("open-field").unwrap();
-    let problem = Problem::from_scenario(&sc).unwrap();
+/// The shortest path by brute force, independent of the planner's code: every pair of points
+/// around every corner (8 points `eps` from it, the valid ones; a disc as a circumscribed 96-gon),
+/// each motion checked by the run's validator, Dijkstra over the complete graph.
+fn brute_force(sc: &Scenario) -> f64 {
+    use planarium::scenario::ObstacleSpec;
+    let problem = Problem::from_scenario(sc).unwrap();
     let si = &problem.si;
     let eps = 1e-7;
     let mut points = vec![problem.start.clone(), problem.goal.clone().unwrap()];
     for o in &sc.obstacles {
         let corners: Vec<(f64, f64)> = match o {
-            planarium::scenario::ObstacleSpec::Rect(r) => vec![(r[0], r[1]), (r[2], r[1]), (r[2], r[3]), (r[0], r[3])],
-            planarium::scenario::ObstacleSpec::Polygon(p) => p.iter().map(|q| (q[0], q[1])).collect(),
-            planarium::scenario::ObstacleSpec::Segment(s) => vec![(s[0], s[1]), (s[2], s[3])],
-            planarium::scenario::ObstacleSpec::Circle(c) => {
+            ObstacleSpec::Rect(r) => vec![(r[0], r[1]), (r[2], r[1]), (r[2], r[3]), (r[0], r[3])],
+            ObstacleSpec::Polygon(p) => p.iter().map(|q| (q[0], q[1])).collect(),
+            ObstacleSpec::Segment(s) => vec![(s[0], s[1]), (s[2], s[3])],
+            ObstacleSpec::Circle(c) => {
                 let r = c[2] / (std::f64::consts::PI / 96.0).cos() + eps;
                 (0..96)
                     .map(|k| {
@@ -264,10 +263,65 @@ fn open_field_agrees_with_a_brute_force_graph() {
             }
         }
     }
+    dist[1]
+}
+
+/// Catches: a planner that disagrees with an independent construction ([`brute_force`]) on
+/// open-field (rects, a non-convex polygon, a disc, a wall).
+#[test]
+fn open_field_agrees_with_a_brute_force_graph() {
+    let sc = builtin("open-field").unwrap();
+    let want = brute_force(&sc);
     let r = run(&sc, "visibility-graph", &json!({"sides": 96}), 1);
     let c = r.stats.cost.unwrap();
-    println!("open-field: visibility-graph {c:.9}, brute force {:.9}", dist[1]);
-    assert!((c - dist[1]).abs() < 1e-5, "visibility-graph {c}, brute force {}", dist[1]);
+    println!("open-field: visibility-graph {c:.9}, brute force {want:.9}");
+    assert!((c - want).abs() < 1e-5, "visibility-graph {c}, brute force {want}");
+}
+
+/// Catches: a search that is not exact (an inadmissible heuristic, a vertex settled twice, a
+/// missed edge) where the maps above happen not to show it: 30 maps of 8 random rectangles
+/// (seeded), each against [`brute_force`].
+#[test]
+fn random_maps_agree_with_a_brute_force_graph() {
+    let mut state = 0x9e3779b97f4a7c15u64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut solved = 0;
+    for map in 0..30 {
+        let rects: Vec<Value> = (0..8)
+            .map(|_| {
+                let (x, y) = (0.15 + 0.6 * next(), 0.05 + 0.8 * next());
+                let (w, h) = (0.02 + 0.15 * next(), 0.02 + 0.3 * next());
+                json!({"rect": [x, y, x + w, y + h]})
+            })
+            .collect();
+        let mut v = json!({
+            "format": "planarium-scenario/1", "name": "random", "bounds": [0, 0, 1, 1],
+            "obstacles": rects, "robot": {"kind": "point"},
+            "start": [0.05, 0.05 + 0.9 * next()], "goal": [0.95, 0.05 + 0.9 * next()],
+            "goal_tolerance": 0.0, "resolution": 0.001
+        });
+        v["name"] = json!(format!("random {map}"));
+        let Ok(sc) = Scenario::from_json(&v.to_string()) else { continue };
+        if Problem::from_scenario(&sc).is_err() {
+            continue;
+        }
+        let want = brute_force(&sc);
+        let r = vis(&sc);
+        if !want.is_finite() {
+            assert_eq!(r.status, "no_path", "map {map}");
+            continue;
+        }
+        solved += 1;
+        let c = r.stats.cost.unwrap_or(f64::NAN);
+        assert!(common::path_problem(&sc, &r.path).is_none(), "map {map}: {:?}", common::path_problem(&sc, &r.path));
+        assert!((c - want).abs() < 1e-5, "map {map}: visibility-graph {c}, brute force {want}");
+    }
+    assert!(solved >= 20, "only {solved} maps solved: the test compares too few");
 }
 
 /// Catches: nondeterminism (hash-map order, unstable ties in the queue): two runs give the same
