@@ -95,6 +95,36 @@ fn paths_on_every_point_builtin_pass_the_independent_checker() {
     }
 }
 
+/// Catches: a disc growth that is not conservative for the real footprint, and rigid robots'
+/// failures reported as anything but `no_path` with the bounding-disc reason. Every built-in with
+/// a rigid robot: solved (the path passes the independent checker, which tests the footprint) or
+/// refused with the reason (the bar through the slot can only pass by turning).
+#[test]
+fn rigid_builtins_are_solved_as_their_bounding_disc_or_say_why_not() {
+    let mut solved = 0;
+    for name in builtin_names() {
+        let sc = builtin(name).unwrap();
+        if sc.goal.is_none() || !matches!(sc.robot, RobotSpec::Rigid { .. }) {
+            continue;
+        }
+        let r = vis(&sc);
+        if r.solved {
+            solved += 1;
+            for (what, p) in [("raw", &r.path), ("smoothed", &r.smoothed)] {
+                if let Some(e) = common::path_problem(&sc, p) {
+                    panic!("{name}: {what} path: {e}");
+                }
+            }
+        } else {
+            assert_eq!(r.status, "no_path", "{name}");
+            let why = r.reason.unwrap_or_default();
+            assert!(why.contains("bounding disc"), "{name}: {why}");
+        }
+        println!("{name}: {} {:?}", r.status, r.stats.cost);
+    }
+    assert!(solved >= 3, "{solved} rigid built-ins solved");
+}
+
 /// Catches: a graph that misses edges (a longer path than some planner's), a wrong search (not the
 /// shortest in the graph), costs in another metric. Every sampling planner's smoothed path, on
 /// several maps and seeds, must be at least as long (up to the margin kept from closed obstacles).
