@@ -392,3 +392,21 @@ fn arms_are_refused_and_walled_off_goals_have_no_path() {
     assert_eq!(r.status, "no_path");
     assert_eq!(optimum(Problem::from_scenario(&sc).unwrap()).unwrap().cost, None);
 }
+
+/// Catches: the CLI's optimum line missing or computed on another map: `plan zigzag --planner
+/// rrt-star` says the optimum and how far above it the path is; `--planner visibility-graph` is
+/// the optimum itself.
+#[test]
+fn the_cli_reports_the_optimum_beside_a_path() {
+    let cli = |args: &[&str]| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_planarium")).args(args).output().unwrap();
+        assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+        String::from_utf8_lossy(&out.stdout).to_string()
+    };
+    let star = cli(&["plan", "zigzag", "--planner", "rrt-star", "--seed", "1"]);
+    assert!(star.contains("optimum (visibility graph) 3.8597: the path is"), "{star}");
+    let vg = cli(&["plan", "zigzag", "--planner", "visibility-graph"]);
+    assert!(vg.contains("cost 3.8597") && !vg.contains("optimum ("), "{vg}");
+    let arm = cli(&["plan", "arm-2", "--planner", "rrt-connect"]);
+    assert!(!arm.contains("optimum"), "{arm}");
+}
