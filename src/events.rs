@@ -99,11 +99,14 @@ pub enum EventKind {
     /// grid cell; `py` the cell's probability (its 1/count over the sum for all cells); `c0` the
     /// cells in use; `c1, pc0` the cell's column and row; `pc1` the grid's cells a side.
     Select = 25,
+    /// A graph edge was found (visibility graph): between vertices `id` (at `x, y`) and `parent`
+    /// (at `px, py`); `c0` its length; `c1` 1 when the segment is clear (kept), 0 when blocked.
+    GraphEdge = 26,
 }
 
 impl EventKind {
     /// Every kind with its name, for the JS constant check.
-    pub const ALL: [(EventKind, &'static str); 26] = [
+    pub const ALL: [(EventKind, &'static str); 27] = [
         (EventKind::Sample, "SAMPLE"),
         (EventKind::SampleRejected, "SAMPLE_REJECTED"),
         (EventKind::NodeAdded, "NODE_ADDED"),
@@ -130,6 +133,7 @@ impl EventKind {
         (EventKind::EdgeChecked, "EDGE_CHECKED"),
         (EventKind::QueryPath, "QUERY_PATH"),
         (EventKind::Select, "SELECT"),
+        (EventKind::GraphEdge, "GRAPH_EDGE"),
     ];
 }
 

@@ -183,6 +183,19 @@ impl Scene {
             .collect();
         serde_json::Value::Array(dims).to_string()
     }
+    /// The shortest path's cost by the visibility graph (issue 17: the reference line of the cost
+    /// chart), as JSON `{"cost": c | null, "exact": bool}` (`cost` null: no path; `exact`: the
+    /// robot's optimum, a point or a round footprint), or `{"error": why}` for robots it does not
+    /// apply to or a graph that takes more than `seconds`.
+    pub fn optimum_json(&self, seconds: f64) -> String {
+        let r = Problem::from_scenario(&self.inner.scenario)
+            .map_err(|e| e.to_string())
+            .and_then(|p| crate::planners::visibility::optimum_within(p, seconds));
+        match r {
+            Ok(o) => serde_json::json!({"cost": o.cost, "exact": o.exact}).to_string(),
+            Err(e) => serde_json::json!({ "error": e }).to_string(),
+        }
+    }
     /// The robot's outline at scenario state `q`, flat: `[n_polygons, n_1, x, y, ..., n_2, ...]`
     /// (empty when `q` is not a state of this robot).
     pub fn outline(&self, q: &[f64]) -> Vec<f64> {

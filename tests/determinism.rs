@@ -89,6 +89,7 @@ fn every_robot_and_planner_gives_the_same_run_in_suspended_batches() {
         ("zigzag", "prm", serde_json::json!({})),
         ("slot", "lazy-prm", serde_json::json!({ "max_iterations": 1500 })),
         ("arm-2", "prm-star", serde_json::json!({ "connect": "radius" })),
+        ("zigzag", "visibility-graph", serde_json::json!({ "batch": 8 })),
     ];
     let mut suspended = 0;
     for (name, planner, params) in &cases {

@@ -414,8 +414,12 @@ fn at_the_limits_every_planners_batches_return_within_50_ms() {
         (&arm, "prm", json!({})),
         (&point, "lazy-prm", json!({})),
         (&point, "prm-star", json!({"connect": "radius"})),
+        (&point, "visibility-graph", json!({})),
     ] {
+        let made = Instant::now();
         let mut s = session(v, planner, params, 1).unwrap();
+        let setup_ms = made.elapsed().as_secs_f64() * 1000.0;
+        eprintln!("{planner}: set up in {setup_ms:.0} ms");
         s.set_record_events(true); // as the worker does (the potential field draws its heat map)
         let (mut longest, mut batches) = (0.0f64, 0);
         let t = Instant::now();

@@ -339,9 +339,30 @@ fn plan(m: &ArgMatches) -> Result<(), String> {
             if let (Some(a), Some(b)) = (st.cost_fk, st.smoothed_cost_fk) {
                 println!("  cost in report 004's unit (fk): {a:.2}, smoothed {b:.2}");
             }
+            print_optimum(&sc, spec.name, st.cost, st.smoothed_cost);
         }
     }
     Ok(())
+}
+
+/// For a point robot or a round rigid one (issue 17): the visibility graph's optimum, and how far
+/// above it the path is. Nothing for other robots, maps of more than 5,000 obstacles, or a graph
+/// that takes more than 5 s.
+fn print_optimum(sc: &Scenario, planner: &str, cost: Option<f64>, smoothed: Option<f64>) {
+    if planner == "visibility-graph" || sc.obstacles.len() > 5000 {
+        return;
+    }
+    let Ok(problem) = Problem::from_scenario(sc) else { return };
+    if let Ok(o) = planarium::planners::visibility::optimum_within(problem, 5.0) {
+        if let (true, Some(opt), Some(c), Some(sm)) = (o.exact, o.cost, cost, smoothed) {
+            let above = |v: f64| 100.0 * (v / opt - 1.0);
+            println!(
+                "  optimum (visibility graph) {opt:.4}: the path is {:.2}% above it, smoothed {:.2}%",
+                above(c),
+                above(sm)
+            );
+        }
+    }
 }
 
 fn run_bench(m: &ArgMatches) -> Result<(), String> {

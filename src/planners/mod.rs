@@ -16,6 +16,7 @@ pub mod roadmap;
 pub mod rrt;
 pub mod smoothing;
 pub mod tree;
+pub mod visibility;
 
 pub use crate::params::{ParamGroup, ParamKind, ParamSpec};
 pub use params::Params;
@@ -250,6 +251,7 @@ pub static REGISTRY: &[PlannerSpec] = &[
     hex::SPEC,
     grid::SPEC,
     apf::SPEC,
+    visibility::SPEC,
 ];
 
 /// A planner by name.

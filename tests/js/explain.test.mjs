@@ -32,7 +32,7 @@ function records(scenario, planner, params, seed) {
 
 /** What the caption must end with (or contain) after record `r`; null: no check for that kind. */
 function expected(planner, r) {
-  const [kind, , id, parent, x, y, px, , c0] = r;
+  const [kind, , id, parent, x, y, px, py, c0] = r;
   switch (kind) {
     case K.SAMPLE: return id === 1 ? `sample q_goal (${num(x)}, ${num(y)}) (goal bias)` : id === 2 ? `sample (${num(x)}, ${num(y)}) (uniform share)` : `sample (${num(x)}, ${num(y)})`;
     case K.NEAREST: return `nearest #${id} at ${num(c0)}`;
@@ -40,6 +40,7 @@ function expected(planner, r) {
     case K.COLLISION: return `${blockerText(id)} at (${num(x)}, ${num(y)})`;
     case K.NODE_ADDED:
       if (parent < 0 || planner === 'hex-potential' || planner === 'grid-search' || planner === 'potential-field') return `(${num(x)}, ${num(y)})`;
+      if (planner === 'visibility-graph') return `(${num(x)}, ${num(y)}) (node #${id}, parent #${parent})`;
       return `add #${id} under #${parent}`;
     case K.REWIRE: return `rewire #${id}: its parent is now #${parent}`;
     case K.COST: return `best cost now ${num(px)}`;
@@ -52,6 +53,7 @@ function expected(planner, r) {
     case K.ROADMAP_EDGE: return `edge #${parent}–#${id}`;
     case K.EDGE_CHECKED: return `edge #${id}–#${parent} ${r[1] === 1 ? 'blocked' : 'checked: free'}`;
     case K.QUERY_PATH: return 'A* over the roadmap';
+    case K.GRAPH_EDGE: return `edge (${num(x)}, ${num(y)}) – (${num(px)}, ${num(py)}): clear, length ${num(c0)}`;
     default: return null;
   }
 }
@@ -75,6 +77,7 @@ const RUNS = [
   ['zigzag', 'prm', {}, 1],
   ['narrow', 'prm-star', { connect: 'radius' }, 2],
   ['zigzag', 'lazy-prm', {}, 1],
+  ['open-field', 'visibility-graph', {}, 1],
 ];
 
 for (const [scenario, planner, params, seed] of RUNS) {

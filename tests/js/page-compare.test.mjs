@@ -276,3 +276,13 @@ test('compare on a phone (390×844): the two lanes are tabs A / B, one shown at 
   assert.equal(await page.isVisible('#b-lane'), true);
   await page.screenshot({ path: join(shots, 'page-compare-desktop.png') });
 });
+
+test('compare: RRT* against RRT-Connect on the open field: the RRT* lane\'s cost chart draws the optimum line', async () => {
+  await openCompare('#scenario=open-field&a=rrt-star&b=rrt-connect&seed=1');
+  assert.equal(await page.isVisible('#a-chart'), true, 'RRT* has its cost chart');
+  assert.equal(await page.isVisible('#b-chart'), false, 'RRT-Connect has none before a cost');
+  await page.waitForFunction(() => document.getElementById('a-chart').width > 0);
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  const [dashed] = await countColours('a-chart', [PALETTE.chartTarget], 8);
+  assert.ok(dashed > 40, `optimum line pixels in lane A's chart: ${dashed}`);
+});

@@ -78,6 +78,21 @@ test('SVG of a hexagon run has its cells', async () => {
   assert.ok(cells > 100 && cells === want, `${cells} cells in the SVG, ${want} in the run`);
 });
 
+test('SVG of a visibility-graph run has its graph edges', async () => {
+  await fx.pickScenario('open-field', 'Open field');
+  await page.selectOption('#planner', 'visibility-graph');
+  await fx.waitState('idle');
+  await fx.fastPlayback();
+  await page.click('#run');
+  await fx.waitStatus('solved');
+  const svg = (await download(() => page.click('#export-svg'))).bytes.toString('utf8');
+  const d = await page.evaluate((t) => new DOMParser().parseFromString(t, 'image/svg+xml').querySelector('#graph')?.getAttribute('d') ?? '', svg);
+  const edges = (d.match(/M/g) || []).length;
+  assert.ok(edges >= 50, `${edges} graph edges in the SVG`);
+  await page.selectOption('#planner', 'rrt-connect');
+  await fx.waitState('idle');
+});
+
 test('a WebM recording of a run', async () => {
   await fx.pickScenario('narrow', 'Narrow passage');
   await page.click('#record');

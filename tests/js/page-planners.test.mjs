@@ -24,6 +24,11 @@ test('RRT* on the open field: the best-cost chart has a line and the stats show 
   assert.match(await page.textContent('#chart-title'), /cost/i);
   await nextFrames();
   assert.equal(await chartLine(), 0, 'no line before the run');
+  // the optimum (visibility graph, issue 17) is the chart's dashed reference line from the start
+  const [dashed] = await countColours('chart', [PALETTE.chartTarget], 8);
+  assert.ok(dashed > 40, `optimum line pixels before the run: ${dashed}`);
+  const optimum = (await page.evaluate(() => window.planarium.model())).optimum;
+  assert.ok(Math.abs(optimum - 1.226427) < 1e-5, `open-field's optimum: ${optimum}`);
   await setField('seed', 1);
   await fastPlayback();
   await page.click('#run');
@@ -32,6 +37,8 @@ test('RRT* on the open field: the best-cost chart has a line and the stats show 
   const model = await page.evaluate(() => window.planarium.model());
   assert.ok(model.costs.length >= 2, `cost improvements shown: ${model.costs.length}`);
   assert.ok(model.costs.every(([, c], i) => i === 0 || c <= model.costs[i - 1][1]), 'the best cost never grows');
+  assert.ok(model.costs.every(([, c]) => c >= optimum - 1e-6), `no cost below the optimum ${optimum}`);
+  assert.ok(await page.evaluate(() => window.planarium.model().optimum) === optimum, 'the line stays');
   assert.ok(model.rewires > 0, `rewires: ${model.rewires}`);
   assert.ok(model.bestBranch >= 2, 'the best path walks back to the root');
   const line = await chartLine();
@@ -147,4 +154,26 @@ test('inspection on technion-ip: the coverage chart grows and seen points light 
   await nextFrames();
   const [litOff] = await countColours('canvas', [PALETTE.seen], 6);
   assert.equal(litOff, 0, `lit pixels with the overlay off: ${litOff}`);
+});
+
+test('visibility graph on the open field: the graph is drawn, the path is the optimum the chart marks', async () => {
+  await pickScenario('open-field', 'Open field');
+  await page.selectOption('#planner', 'visibility-graph');
+  await waitState('idle');
+  await nextFrames();
+  const [before] = await countColours('canvas', [PALETTE.graphEdge], 4);
+  await fastPlayback();
+  await page.click('#run');
+  await waitState('finished', 60000);
+  await nextFrames();
+  await page.screenshot({ path: join(shots, 'page-visibility.png') });
+  const [edges] = await countColours('canvas', [PALETTE.graphEdge], 4);
+  console.log(`visibility graph: edge pixels ${before} → ${edges}`);
+  assert.ok(edges > before + 200, `graph edge pixels: ${before} → ${edges}`);
+  assert.equal(await page.getAttribute('#status', 'data-status'), 'solved');
+  const model = await page.evaluate(() => window.planarium.model());
+  assert.ok(Math.abs(model.optimum - 1.226427) < 1e-5, `open-field's optimum: ${model.optimum}`);
+  assert.ok(model.trees[0].nodes >= 3, 'the A* search tree is drawn');
+  const cost = Number(await page.textContent('#stat-cost'));
+  assert.ok(Math.abs(cost - model.optimum) < 1e-4, `the run's cost ${cost} is the optimum ${model.optimum}`);
 });

@@ -2,7 +2,8 @@
 // that keeps improving, RRT*) or the coverage against iterations (inspection), read from the run
 // model's series (playback.js). Both are step functions: a value holds until the next event.
 //
-//   chart.setKind('cost' | 'coverage' | null, {target})   null hides it
+//   chart.setKind('cost' | 'coverage' | null, {target, optimum})   null hides it; optimum: the
+//                                      exact shortest cost (visibility graph), drawn dashed
 //   chart.render(iterationNow)                             redraws when the data or size changed
 
 const PAD = { left: 46, right: 10, top: 8, bottom: 22 }; // css px
@@ -33,12 +34,14 @@ export class Chart {
     this.palette = palette;
     this.kind = null;
     this.target = null;
+    this.optimum = null;
     this.drawn = '';
   }
 
-  setKind(kind, { target = null } = {}) {
+  setKind(kind, { target = null, optimum = null } = {}) {
     this.kind = kind;
     this.target = target;
+    this.optimum = kind === 'cost' && Number.isFinite(optimum) ? optimum : null;
     this.drawn = '';
   }
 
@@ -58,7 +61,7 @@ export class Chart {
     const dpr = window.devicePixelRatio || 1;
     const w = Math.round(rect.width * dpr), h = Math.round(rect.height * dpr);
     const data = this.series();
-    const key = `${this.kind}|${w}|${h}|${data.length}|${now}|${this.target}`;
+    const key = `${this.kind}|${w}|${h}|${data.length}|${now}|${this.target}|${this.optimum}`;
     if (key === this.drawn) return;
     this.drawn = key;
     if (this.canvas.width !== w || this.canvas.height !== h) { this.canvas.width = w; this.canvas.height = h; }
@@ -76,8 +79,9 @@ export class Chart {
     let lo, hi;
     if (this.kind === 'coverage') {
       lo = 0; hi = 1;
-    } else if (data.length) {
+    } else if (data.length || this.optimum != null) {
       const vals = data.map((d) => d[1]);
+      if (this.optimum != null) vals.push(this.optimum);
       const vmin = Math.min(...vals), vmax = Math.max(...vals);
       const span = Math.max(vmax - vmin, Math.abs(vmax) * 0.05, 1e-9);
       lo = Math.max(0, vmin - span * 0.15);
@@ -119,6 +123,22 @@ export class Chart {
       ctx.strokeStyle = P.chartTarget;
       ctx.stroke();
       ctx.setLineDash([]);
+    }
+    // the optimum (visibility graph): what the best cost can approach, never beat
+    if (this.optimum != null) {
+      const y = sy(this.optimum);
+      ctx.beginPath();
+      ctx.setLineDash([px(5), px(4)]);
+      ctx.moveTo(x0, y); ctx.lineTo(x1, y);
+      ctx.strokeStyle = P.chartTarget;
+      ctx.lineWidth = px(1.5);
+      ctx.stroke();
+      ctx.setLineDash([]);
+      ctx.fillStyle = P.chartTarget;
+      ctx.textAlign = 'right';
+      ctx.textBaseline = 'bottom';
+      ctx.fillText(`optimum ${formatValue(this.optimum)}`, x1, y - px(2));
+      ctx.lineWidth = px(1);
     }
     if (!data.length) {
       ctx.textAlign = 'center';

@@ -41,6 +41,7 @@ export const PALETTE = Object.freeze({
   chartLine: '#d55e00',
   chartTarget: '#009e73',
   chartAxis: '#5d6470',
+  graphEdge: '#a9b4c2', // visibility-graph edges: light, under the search tree
   // cells and potential fields (cells.js): free cells light, darker by level; mixed amber; full grey;
   // visited (closed) blue, step-blocked pink (with a × mark) and, for A*/Dijkstra, open green, told
   // apart by lightness too
@@ -86,6 +87,7 @@ export const STYLE = Object.freeze({
   [EventKind.CELL_STATE]: { layer: 'cells', shape: 'polygon', colors: { 0: PALETTE.cellOpen, 1: PALETTE.cellBlocked, 2: PALETTE.cellVisited }, mark: PALETTE.cellBlockedMark, toggle: 'showCells', label: 'cell judged by the search' },
   [EventKind.FIELD]: { layer: 'cells', shape: 'tile', colors: PALETTE.heat, toggle: 'showHeat', label: 'potential heat map' },
   [EventKind.REGION]: { layer: 'marker', shape: 'circle', color: PALETTE.region, width: 2, toggle: 'showRegion', label: 'region of influence' },
+  [EventKind.GRAPH_EDGE]: { layer: 'under', shape: 'edge', color: PALETTE.graphEdge, width: 1, label: 'graph edge' },
   [EventKind.MINIMUM]: { layer: 'marker', shape: 'ring', color: PALETTE.minimum, size: 11, width: 3, label: 'local minimum' },
   // roadmaps: edges on the tree layer (checked solid, unchecked dashed); the query's path on top
   [EventKind.ROADMAP_EDGE]: { layer: 'tree', shape: 'edge', colors: [PALETTE.tree0, PALETTE.roadmapUnchecked], width: 1, dash: [3, 3], label: 'roadmap edge: checked / unchecked' },
@@ -155,4 +157,5 @@ export const TREE_LEGEND = Object.freeze({
   'prm-star': [['roadmap: milestones, checked edges', PALETTE.tree0], ["search's latest path", PALETTE.queryPath]],
   'lazy-prm': [['milestones, edges checked valid', PALETTE.tree0], ['unchecked edge', PALETTE.roadmapUnchecked],
     ['edge checked: blocked', PALETTE.roadmapInvalid], ["search's latest path", PALETTE.queryPath]],
+  'visibility-graph': [['A* search tree', PALETTE.tree0], ['visibility-graph edge', PALETTE.graphEdge]],
 });

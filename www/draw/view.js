@@ -347,9 +347,18 @@ export class View {
     const tries = STYLE[EventKind.SAMPLE_TRY];
     const rs = Math.max(1, Math.round(L.px(rej.size)));
     const ts = Math.max(1, Math.round(L.px(tries.size)));
+    const graph = STYLE[EventKind.GRAPH_EDGE];
+    ctx.beginPath(); // graph edges (visibility graph): one stroke for the whole span
+    let edges = 0;
     for (const [d, o0, o1] of this.store.spans(from, to)) for (let o = o0; o < o1; o += STRIDE) {
       const kind = d[o];
-      if (kind === EventKind.SAMPLE) {
+      if (kind === EventKind.GRAPH_EDGE) {
+        if (d[o + 9] > 0) {
+          ctx.moveTo(L.sx(d[o + 4]), L.sy(d[o + 5]));
+          ctx.lineTo(L.sx(d[o + 6]), L.sy(d[o + 7]));
+          edges++;
+        }
+      } else if (kind === EventKind.SAMPLE) {
         if (this.pendingSample && showAccepted) this.drawAccepted(ctx, this.pendingSample);
         this.pendingSample = [d[o + 4], d[o + 5]];
       } else if (kind === EventKind.SAMPLE_REJECTED) {
@@ -362,6 +371,11 @@ export class View {
         ctx.fillStyle = tries.colors[d[o + 2] > 0 ? 1 : 0];
         ctx.fillRect(Math.round(L.sx(d[o + 4]) - ts / 2), Math.round(L.sy(d[o + 5]) - ts / 2), ts, ts);
       }
+    }
+    if (edges) {
+      ctx.strokeStyle = graph.color;
+      ctx.lineWidth = L.px(graph.width);
+      ctx.stroke();
     }
   }
 

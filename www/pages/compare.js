@@ -436,7 +436,9 @@ function syncSide(s) {
   const extras = Object.entries(cfg.params).filter(([k]) => k !== 'sampler').map(([k, v]) => `${k} ${v}`);
   s.title.textContent = [p.label, sampler ? `${sampler} sampler` : null, ...extras].filter(Boolean).join(' · ');
   const kind = chartKind(p, s.playback.model);
-  s.chart.setKind(kind, { target: scenario?.inspection?.coverage ?? null });
+  const best = s.loaded?.optimum;
+  const optimum = best && best.exact && Number.isFinite(best.cost) ? best.cost : null;
+  s.chart.setKind(kind, { target: scenario?.inspection?.coverage ?? null, optimum });
   s.chartBox.hidden = !kind;
   s.chartTitle.textContent = kind === 'cost' ? 'Best cost against iterations'
     : kind === 'coverage' ? 'Coverage of the best branch against iterations' : '';

@@ -70,6 +70,7 @@ let scenarioText = null; // the last valid scenario (reloaded after a crash)
 let sentEdit = false;    // the latest `load` is a start/goal edit
 let course = '';         // the course of the scenario being loaded
 let loaded = null;       // the latest `loaded` message's scenario
+let optimum = null;      // its shortest path's cost when that is the robot's optimum (the cost chart's line)
 let applyDefaults = false;
 // Share links: where the scenario came from ({id}: a built-in as shipped; {custom}: edited or
 // opened), the share being restored (applied when its scenario has loaded), and the hash writer.
@@ -354,8 +355,9 @@ const markCustom = (label) => markCustomScenario(ui.scenario, label);
 
 // Display
 
-function showScenario({ scenario, start, goal, space, cspace: grid }) {
+function showScenario({ scenario, start, goal, space, cspace: grid, optimum: best }) {
   loaded = scenario;
+  optimum = best && best.exact && Number.isFinite(best.cost) ? best.cost : null;
   ui.course.textContent = course;
   ui.name.textContent = scenario.name || 'Untitled scenario';
   ui.notes.textContent = scenario.notes || '';
@@ -374,6 +376,7 @@ function showInvalid(error, edit) {
   lane.clearRun();
   if (!edit) { // an edit keeps the scene on screen, so the start or goal can be dragged back
     loaded = null;
+    optimum = null;
     ui.course.textContent = '';
     ui.name.textContent = 'No valid scenario';
     ui.notes.textContent = 'Fix the file and open it again, or pick a built-in scenario.';
@@ -416,7 +419,7 @@ function updateStats() {
 /** The chart that fits the chosen planner: best cost, coverage, or none. */
 function syncChart() {
   const kind = panel ? chartKind(panel.planner(), playback.model) : null;
-  chart.setKind(kind, { target: loaded?.inspection?.coverage ?? null });
+  chart.setKind(kind, { target: loaded?.inspection?.coverage ?? null, optimum });
   ui.chartBox.hidden = !kind;
   ui.chartTitle.textContent = kind === 'cost' ? 'Best cost against iterations'
     : kind === 'coverage' ? 'Coverage of the best branch against iterations' : '';

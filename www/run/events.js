@@ -32,4 +32,6 @@ export const EventKind = Object.freeze({
   EDGE_CHECKED: 23, // id, parent: the two vertices; tree: 0 valid, 1 invalid (removed)
   QUERY_PATH: 24, // id -> parent: one edge of a search's path; tree: 0 the path's first edge, 1 the others
   SELECT: 25, // EST: id: node picked, x y: its point, px: nodes in its cell, py: the cell's probability, c0: cells, c1 pc0: column, row, pc1: grid
+  // The visibility graph: an edge between two graph vertices.
+  GRAPH_EDGE: 26, // id, parent: the vertices, x y / px py: their points, c0: length, c1: 1 clear (kept), 0 blocked
 });

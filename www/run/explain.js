@@ -158,6 +158,17 @@ export const PSEUDOCODE = {
       { id: 'met', text: 'T_b\'s nearest node within range and the motion free: the trees meet, done', indent: 1 },
     ],
   },
+  'visibility-graph': {
+    title: 'Visibility graph + A* (Lozano-Pérez & Wesley 1979)',
+    lines: [
+      { id: 'init', text: 'grow the obstacles by the robot\'s disc (and a margin); V ← {q_start, q_goal} ∪ convex corners' },
+      { id: 'loop', text: 'for each pair (u, v) tangent at both ends' },
+      { id: 'edge', text: 'if the segment u v crosses no grown interior: E ← E ∪ {u v}', indent: 1 },
+      { id: 'add', text: 'A*: settle the open vertex of least g + |v − q_goal|, parent ← its best neighbour' },
+      { id: 'cost', text: 'q_goal settled: its g is the shortest cost' },
+      { id: 'goal-check', text: 'check the path with MOTION_FREE and return it' },
+    ],
+  },
   'potential-field': {
     title: 'Artificial potential field (Khatib 1986; escapes: Barraquand & Latombe 1991)',
     lines: [
@@ -387,6 +398,12 @@ export class Explainer {
           this.line = 'add';
           break;
         }
+        if (this.planner === 'visibility-graph') {
+          this.begin(`A* settles ${pt(x, y)} (node #${id}, parent #${parent})`);
+          A.edge = [px, py, x, y];
+          this.line = 'add';
+          break;
+        }
         if (this.planner === 'potential-field') {
           this.begin(`${tree === 1 ? 'random-walk step' : 'step down the gradient'} to ${pt(x, y)} (node #${id})`);
           A.edge = [px, py, x, y];
@@ -450,6 +467,11 @@ export class Explainer {
       case K.SOLVED:
         this.then('solved: the path is returned');
         this.line = TWO_TREES.has(this.planner) ? 'met' : ROADMAPS.has(this.planner) && this.planner !== 'lazy-prm' ? 'query' : 'goal-check';
+        break;
+      case K.GRAPH_EDGE:
+        this.begin(`edge ${pt(x, y)} – ${pt(px, py)}: ${c1 > 0 ? 'clear' : 'blocked'}, length ${num(c0)}`);
+        A.edge = [px, py, x, y];
+        this.line = 'edge';
         break;
       case K.REWIRE:
         this.begin(`rewire #${id}: its parent is now #${parent}, cheaper`);

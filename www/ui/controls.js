@@ -39,6 +39,7 @@ export function modelSummary(model, chart = null) {
   const count = (kind) => model.counts[kind] || 0;
   return {
     chart: chart ? chart.kind : null,
+    optimum: chart ? chart.optimum : null,
     trees: model.trees.map((t) => ({ nodes: t.n, domains: t.domains, exhausted: t.exhausted })),
     tries: count(EventKind.SAMPLE_TRY),
     rewires: count(EventKind.REWIRE),

@@ -150,6 +150,16 @@ function samplesSvg(svg, view, L) {
   }
 }
 
+/** The visibility graph's clear edges (view.js drawUnder), one path. */
+function graphSvg(svg, view, L) {
+  let d = '';
+  for (const [r, o0, o1] of view.store.spans(0, view.store.length)) for (let o = o0; o < o1; o += STRIDE) {
+    if (r[o] === EventKind.GRAPH_EDGE && r[o + 9] > 0) d += `M${fmt(L.sx(r[o + 4]))} ${fmt(L.sy(r[o + 5]))}L${fmt(L.sx(r[o + 6]))} ${fmt(L.sy(r[o + 7]))}`;
+  }
+  const st = STYLE[EventKind.GRAPH_EDGE];
+  if (d) node('path', { id: 'graph', d, fill: 'none', ...stroke(st.color, st.width) }, svg);
+}
+
 /** The cells' × marks (step-blocked cells) of cells `list`, as path data. */
 function cellMarksD(L, list) {
   let d = '';
@@ -402,6 +412,7 @@ export function sceneSvg(view, { legend = null, transparent = false } = {}) {
   node('rect', { id: 'bounds', ...boundsBox, fill: 'none', ...stroke(PALETTE.bounds, 1.5) }, svg);
   cellsSvg(svg, view, L);
   samplesSvg(svg, view, L);
+  graphSvg(svg, view, L);
   domainsSvg(svg, view, L);
   treesSvg(svg, view, L);
   collisionsSvg(svg, view, L);

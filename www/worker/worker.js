@@ -21,7 +21,7 @@
 // acknowledge cancel, reset, configure or load within a second).
 // Messages out {type, run, ...}:
 //   ready     {builtins, planners, eventKinds}
-//   loaded    {scenario, start, goal, space, cspace?}  normalised scenario; start/goal outlines
+//   loaded    {scenario, start, goal, space, cspace?, optimum?}  normalised scenario; start/goal outlines
 //                                            (flat); space: the planning space [{lo, hi, wraps}];
 //                                            cspace {n, grid: Uint8Array (transferred), dims} for a
 //                                            2-D arm: n×n validity, rows from the lowest 2nd coordinate
@@ -47,6 +47,8 @@ import { thinTries } from './thin.js';
 const BATCH_MS = 12;          // one batch of planning, then yield to the message queue
 const FRAME_SPACING = 0.004;  // animation frames along the path, in the robot's metric
 const CSPACE_N = 128;         // cells per side of the configuration-space grid
+const OPTIMUM_S = 0.5;        // the visibility graph's time for the cost chart's reference line…
+const OPTIMUM_MAX = 500;      // …on maps of at most this many obstacles (its graph is quadratic: 1,000 rects take 1.3 s natively)
 
 let scene = null;       // current Scene
 let scenarioText = null;
@@ -159,6 +161,11 @@ function load(text) {
       msg.cspace = { n: CSPACE_N, grid, dims: space };
       transfer.push(grid.buffer);
     }
+  }
+  // The shortest path's cost (visibility graph), for a point or a rigid robot: {cost, exact} or
+  // {error}. The cost chart draws it as its reference line when it is the robot's optimum.
+  if (sc.goal && sc.robot && (sc.robot.kind === 'point' || sc.robot.kind === 'rigid') && sc.obstacles.length <= OPTIMUM_MAX) {
+    try { msg.optimum = JSON.parse(scene.optimum_json(OPTIMUM_S)); } catch (e) { rethrowPanic(e); }
   }
   post(msg, transfer);
 }
