@@ -321,7 +321,10 @@ impl SpaceInfo {
     #[inline]
     fn sample_now(&self, rng: &mut Rng, out: &mut [Real]) -> u64 {
         match self.own_sampler() {
-            Some(own) => own.sample(&self.space, rng, out),
+            Some(own) => own.sample(&self.space, rng, out, &|| {
+                self.look();
+                self.interrupted.get()
+            }),
             None => {
                 self.space.sample_uniform(rng, out);
                 0

@@ -336,6 +336,29 @@ impl Workspace {
         }
     }
 
+    /// The smallest index `i` of an obstacle whose box meets `bb` and for which `hit(i)` holds (the
+    /// exact test is the caller's, e.g. a robot's own rule), through the hierarchy when the map
+    /// has one: the answer a scan of every obstacle in order gives.
+    pub fn first_hit(&self, bb: &Aabb, hit: impl Fn(usize) -> bool) -> Option<usize> {
+        match &self.bvh {
+            None => (0..self.obstacles.len()).find(|&i| self.boxes[i].intersects(bb) && hit(i)),
+            Some(t) => t
+                .leaves(|n| node_meets(n, bb))
+                .map(|i| i as usize)
+                .filter(|&i| self.boxes[i].intersects(bb))
+                .inspect(|_| add_tests(1))
+                .filter(|&i| hit(i))
+                .min(),
+        }
+    }
+
+    /// The smallest of `cap` and `dist(i, best so far)` over the obstacles whose boxes come within
+    /// the best so far of `bb` (stopping at 0): a robot's own distance rule, through the hierarchy.
+    #[inline]
+    pub fn nearest_by(&self, bb: &Aabb, cap: Real, dist: impl Fn(usize, Real) -> Real) -> Real {
+        self.nearest(bb, cap, dist)
+    }
+
     /// The smallest of `cap` and `dist(i, best so far)` over the obstacles whose boxes come within
     /// the best so far of `bb` (stopping at 0).
     #[inline]

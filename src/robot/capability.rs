@@ -66,8 +66,16 @@ impl MotionModel for DiscreteOnly {}
 /// Gaussian neighbours move every coordinate independently.
 pub trait OwnSampler {
     /// Write a random state into `out` and return the state checks it spent (counted like the
-    /// planner's).
-    fn sample(&self, space: &StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) -> u64;
+    /// planner's). `deadline_passed` reads the run's clock: a draw that takes many checks asks it
+    /// between them and, once it says yes, gives up with what it has (the state written may be
+    /// invalid; the run is ending).
+    fn sample(
+        &self,
+        space: &StateSpace,
+        rng: &mut crate::rng::Rng,
+        out: &mut [Real],
+        deadline_passed: &dyn Fn() -> bool,
+    ) -> u64;
     /// Write into `out` a Gaussian neighbour of `centre` (spread `sigma` × each coordinate's
     /// range), drawn the robot's own way (OMPL's `StateSampler::sampleGaussian`).
     fn sample_gaussian(

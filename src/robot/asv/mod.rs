@@ -318,8 +318,14 @@ impl MotionModel for AsvRobot {
 
 /// Uniform chains are almost never valid: the chain draws its own (the `sampler` module).
 impl OwnSampler for AsvRobot {
-    fn sample(&self, space: &StateSpace, rng: &mut crate::rng::Rng, out: &mut [Real]) -> u64 {
-        sampler::sample(self, space, rng, out)
+    fn sample(
+        &self,
+        space: &StateSpace,
+        rng: &mut crate::rng::Rng,
+        out: &mut [Real],
+        deadline_passed: &dyn Fn() -> bool,
+    ) -> u64 {
+        sampler::sample(self, space, rng, out, deadline_passed)
     }
     fn sample_gaussian(
         &self,

@@ -40,62 +40,50 @@ fn segments_meet(a: Vec2, b: Vec2, c: Vec2, d: Vec2) -> bool {
 #[inline]
 pub(super) fn broom_hit(ws: &Workspace, a: Vec2, b: Vec2) -> Option<usize> {
     let shrink = if ws.touching_allowed { MARGIN } else { 0.0 };
-    for (i, o) in ws.obstacles.iter().enumerate() {
-        let hit = match o {
-            Shape::Rect(r) => {
-                let (lo, hi) =
-                    (Vec2::new(r.min.x + shrink, r.min.y + shrink), Vec2::new(r.max.x - shrink, r.max.y - shrink));
-                lo.x <= hi.x && lo.y <= hi.y && segment_meets_box(a, b, lo, hi)
-            }
-            other => other.aabb().intersects(&Aabb::of_points(&[a, b])) && other.intersects_segment(a, b),
-        };
-        if hit {
-            return Some(i);
+    ws.first_hit(&Aabb::of_points(&[a, b]), |i| match &ws.obstacles[i] {
+        Shape::Rect(r) => {
+            let (lo, hi) =
+                (Vec2::new(r.min.x + shrink, r.min.y + shrink), Vec2::new(r.max.x - shrink, r.max.y - shrink));
+            lo.x <= hi.x && lo.y <= hi.y && segment_meets_box(a, b, lo, hi)
         }
-    }
-    None
+        other => other.intersects_segment(a, b),
+    })
 }
 
 /// The distance from broom `a b` to the nearest obstacle (rectangles shrunk as in [`broom_hit`]),
-/// or `cap` if that is smaller; 0 when it meets one.
+/// or `cap` if that is smaller; 0 when it meets one. Through the workspace's broad phase (its
+/// boxes are the unshrunk ones, so it skips only obstacles that cannot be nearer).
 fn broom_distance(ws: &Workspace, a: Vec2, b: Vec2, cap: Real) -> Real {
     let shrink = if ws.touching_allowed { MARGIN } else { 0.0 };
     let bb = Aabb::of_points(&[a, b]);
-    let mut best = cap;
-    for o in &ws.obstacles {
-        match o {
-            Shape::Rect(r) => {
-                let (lo, hi) =
-                    (Vec2::new(r.min.x + shrink, r.min.y + shrink), Vec2::new(r.max.x - shrink, r.max.y - shrink));
-                if lo.x > hi.x || lo.y > hi.y {
-                    continue;
-                }
-                // Box-to-box gap first: most rectangles are farther than `best`.
-                if (Aabb { min: lo, max: hi }).gap(&bb).norm_squared() >= best * best {
-                    continue;
-                }
-                if segment_meets_box(a, b, lo, hi) {
-                    return 0.0;
-                }
-                // Apart: the nearest points are an end of the broom or a corner of the box.
-                let to_box = |p: Vec2| {
-                    let dx = (lo.x - p.x).at_least(p.x - hi.x).at_least(0.0);
-                    let dy = (lo.y - p.y).at_least(p.y - hi.y).at_least(0.0);
-                    dx * dx + dy * dy
-                };
-                let mut d2 = to_box(a).at_most(to_box(b));
-                for corner in [lo, Vec2::new(hi.x, lo.y), hi, Vec2::new(lo.x, hi.y)] {
-                    d2 = d2.at_most(distance2_point_segment(corner, a, b));
-                }
-                best = best.at_most(d2.sqrt());
+    ws.nearest_by(&bb, cap, |i, best| match &ws.obstacles[i] {
+        Shape::Rect(r) => {
+            let (lo, hi) =
+                (Vec2::new(r.min.x + shrink, r.min.y + shrink), Vec2::new(r.max.x - shrink, r.max.y - shrink));
+            if lo.x > hi.x || lo.y > hi.y {
+                return best;
             }
-            other => best = best.at_most(other.distance_to_polygon(&[a, b], &bb, best)),
+            // Box-to-box gap first: most rectangles are farther than `best`.
+            if (Aabb { min: lo, max: hi }).gap(&bb).norm_squared() >= best * best {
+                return best;
+            }
+            if segment_meets_box(a, b, lo, hi) {
+                return 0.0;
+            }
+            // Apart: the nearest points are an end of the broom or a corner of the box.
+            let to_box = |p: Vec2| {
+                let dx = (lo.x - p.x).at_least(p.x - hi.x).at_least(0.0);
+                let dy = (lo.y - p.y).at_least(p.y - hi.y).at_least(0.0);
+                dx * dx + dy * dy
+            };
+            let mut d2 = to_box(a).at_most(to_box(b));
+            for corner in [lo, Vec2::new(hi.x, lo.y), hi, Vec2::new(lo.x, hi.y)] {
+                d2 = d2.at_most(distance2_point_segment(corner, a, b));
+            }
+            best.at_most(d2.sqrt())
         }
-        if best == 0.0 {
-            return 0.0;
-        }
-    }
-    best
+        other => best.at_most(other.distance_to_polygon(&[a, b], &bb, best)),
+    })
 }
 
 impl AsvRobot {

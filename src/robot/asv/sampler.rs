@@ -57,20 +57,26 @@ const BRIDGE_TRIES: usize = 60_000;
 const BRIDGE_KEEP: usize = 768;
 /// Half the longest bridge, as a fraction of the workspace's size (gaps up to twice this wide).
 const GAP_REACH: Real = 0.06;
+/// Bridge tests between two looks at the run's deadline.
+const LOOK_EVERY: usize = 256;
 /// Directions probed for a gap's width.
 const PROBES: usize = 16;
 
 impl Gaps {
-    /// The gaps of `ws`.
-    pub(super) fn find(ws: &Workspace) -> Gaps {
+    /// The gaps of `ws`; `None` when `stop` said to give up first (asked every
+    /// [`LOOK_EVERY`] bridge tests: on a map of many obstacles the search takes a while).
+    pub(super) fn find(ws: &Workspace, stop: &dyn Fn() -> bool) -> Option<Gaps> {
         let mut rng = Rng::new(0xA5_6A95);
         let b = ws.bounds;
         let reach = GAP_REACH * (b.max.x - b.min.x).max(b.max.y - b.min.y);
         let (mut points, mut centres) = (Vec::new(), Vec::new());
         if ws.obstacles.is_empty() {
-            return Gaps { points, centres };
+            return Some(Gaps { points, centres });
         }
-        for _ in 0..BRIDGE_TRIES {
+        for i in 0..BRIDGE_TRIES {
+            if i % LOOK_EVERY == LOOK_EVERY - 1 && stop() {
+                return None;
+            }
             let m = Vec2::new(rng.uniform(b.min.x, b.max.x), rng.uniform(b.min.y, b.max.y));
             let beta = rng.uniform(0.0, PI);
             let (s, c) = libm::sincos(beta);
@@ -87,7 +93,7 @@ impl Gaps {
                 }
             }
         }
-        Gaps { points, centres }
+        Some(Gaps { points, centres })
     }
 
     /// The gap points and directions found.
@@ -163,13 +169,27 @@ fn across(ws: &Workspace, m: Vec2, reach: Real) -> Option<Real> {
 }
 
 /// Write a sample into `out` (see the module documentation); returns the state checks spent.
-pub(super) fn sample(robot: &AsvRobot, space: &StateSpace, rng: &mut Rng, out: &mut [Real]) -> u64 {
+///
+/// `stop` is asked between candidates and during the gap search: once the run's deadline has
+/// passed, the sample ends with the candidate it has (and a gap search cut short is not kept, so
+/// the next run on this robot searches again and finds the same gaps).
+pub(super) fn sample(
+    robot: &AsvRobot,
+    space: &StateSpace,
+    rng: &mut Rng,
+    out: &mut [Real],
+    stop: &dyn Fn() -> bool,
+) -> u64 {
     let ws = robot.workspace.borrow();
-    let mut gaps = robot.gaps.borrow_mut();
-    if gaps.is_none() {
-        *gaps = Some(ws.as_ref().map(Gaps::find).unwrap_or_default());
+    let mut cached = robot.gaps.borrow_mut();
+    if cached.is_none() {
+        *cached = match ws.as_ref() {
+            Some(ws) => Gaps::find(ws, stop),
+            None => Some(Gaps::default()),
+        };
     }
-    let gaps = gaps.as_ref().expect("just set");
+    let none = Gaps::default();
+    let gaps = cached.as_ref().unwrap_or(&none);
     let n = robot.n;
     let mut rel = [Vec2::default(); STACK];
     let mut heap;
@@ -181,7 +201,10 @@ pub(super) fn sample(robot: &AsvRobot, space: &StateSpace, rng: &mut Rng, out: &
     };
     let (xd, yd) = (space.dims[0], space.dims[1]);
     let mut checks = 0;
-    for _ in 0..TRIES {
+    for t in 0..TRIES {
+        if t > 0 && stop() {
+            return checks;
+        }
         let winding = match robot.orientation() {
             0.0 if rng.uniform01() < 0.5 => 1.0,
             0.0 => -1.0,

@@ -69,7 +69,7 @@ fn pairs(r: &AsvRobot, ws: &Workspace, count: usize) -> Vec<(Vec<Real>, Vec<Real
     let mut rng = Rng::new(7);
     let mut draw = || {
         let mut q = vec![0.0; space.dim_count()];
-        r.sample(&space, &mut rng, &mut q);
+        r.sample(&space, &mut rng, &mut q, &|| false);
         q
     };
     (0..count).map(|_| (draw(), draw())).collect()
@@ -149,7 +149,7 @@ fn samples_are_mostly_valid_and_wind_like_the_start() {
     let mut q = vec![0.0; 8];
     let mut valid = 0;
     for _ in 0..1000 {
-        r.sample(&space, &mut rng, &mut q);
+        r.sample(&space, &mut rng, &mut q, &|| false);
         if r.verdict(&ws, &q) == Verdict::Valid {
             valid += 1;
             assert!(rules::signed_area2(&positions(&r, &q)) > 0.0);
@@ -160,7 +160,7 @@ fn samples_are_mostly_valid_and_wind_like_the_start() {
 
 #[test]
 fn the_bridge_test_finds_the_slot() {
-    let gaps = sampler::Gaps::find(&slot());
+    let gaps = sampler::Gaps::find(&slot(), &|| false).unwrap();
     let pts = gaps.points();
     assert!(pts.len() >= 20, "{} gap points", pts.len());
     // Most in the slot; a few in inner corners where a wall meets the bounds.
@@ -183,7 +183,7 @@ fn gap_centres_lie_in_the_middle_of_a_long_gap() {
         ],
     );
     ws.touching_allowed = true;
-    let gaps = sampler::Gaps::find(&ws);
+    let gaps = sampler::Gaps::find(&ws, &|| false).unwrap();
     let inside: Vec<usize> =
         (0..gaps.points().len()).filter(|&i| gaps.points()[i].0.x > 0.36 && gaps.points()[i].0.x < 0.64).collect();
     assert!(inside.len() >= 20, "{} gap points inside the gap", inside.len());
