@@ -97,7 +97,7 @@ fn cli() -> Command {
                     Arg::new("course-grade")
                         .long("course-grade")
                         .action(ArgAction::SetTrue)
-                        .help("Grade ASV problems as the course did: 10 runs (seeds 1..10), solved when 5 pass the course's rules within 60 s (open map) or 300 s (cluttered: 3 obstacles or more); a verdict per file; exit code 1 when one fails. SCENARIO may be a directory (its .txt files)"),
+                        .help("Grade ASV problems as the course did: 10 runs (seeds 1..10), solved when 5 pass the course's rules within 60 s (open map) or 300 s (cluttered: 3 obstacles or more); a verdict per file; exit code 2 when one fails. SCENARIO may be a directory (its .txt files)"),
                 )
                 .arg(Arg::new("course-runs").long("course-runs").hide(true).value_parser(clap::value_parser!(u64).range(1..=1000)))
                 .arg(Arg::new("course-time-limit").long("course-time-limit").hide(true).value_parser(clap::value_parser!(f64)))

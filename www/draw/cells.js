@@ -267,11 +267,8 @@ export class CellsDrawing {
     for (let k = from; k < to; k++) {
       const c = m.cells.get(ids[k]);
       if (!c || !c.done) continue;
-      const level = Math.min(3, Math.max(0, c.level | 0));
-      let fill = c.label === 1 ? PALETTE.cellMixed : c.label === 2 || c.state === 4 ? PALETTE.cellFull : PALETTE.cellFree[level];
-      if (!o.showHeat && c.state === 0) fill = PALETTE.cellOpen;
-      if (!o.showHeat && c.state === 2) fill = PALETTE.cellVisited;
-      if (!o.showHeat && c.state === 1) fill = PALETTE.cellBlocked;
+      const level = cellLevel(c);
+      const fill = cellFill(c, o.showHeat);
       trace(ctx, L, c.pts);
       if (!overHeat) { ctx.fillStyle = fill; ctx.fill(); }
       ctx.strokeStyle = PALETTE.cellEdge;
@@ -517,6 +514,21 @@ function trace(ctx, L, p) {
   traceInto(ctx, L, p);
 }
 
+/** A cell's drawing level (0–3: coarser levels get lighter fills and thicker outlines). */
+export const cellLevel = (c) => Math.min(3, Math.max(0, c.level | 0));
+
+/**
+ * A cell's fill, on the canvas and in the SVG export alike: by label (free by level, mixed, full),
+ * or, unless the heat map is shown, by the search's verdict (open or passable, closed or visited,
+ * step-blocked).
+ */
+export function cellFill(c, showHeat) {
+  if (!showHeat && c.state === 0) return PALETTE.cellOpen;
+  if (!showHeat && c.state === 2) return PALETTE.cellVisited;
+  if (!showHeat && c.state === 1) return PALETTE.cellBlocked;
+  return c.label === 1 ? PALETTE.cellMixed : c.label === 2 || c.state === 4 ? PALETTE.cellFull : PALETTE.cellFree[cellLevel(c)];
+}
+
 /** Legend items for the planner `name` (marks the overlay box does not show). */
 export function cellLegend(name) {
   if (name === 'grid-search') {
@@ -529,7 +541,7 @@ export function cellLegend(name) {
   if (name === 'hex-potential') {
     return [
       { label: 'visited (closed) cell', color: PALETTE.cellVisited, shape: 'box' },
-      { label: 'open cell (A*, Dijkstra)', color: PALETTE.cellOpen, shape: 'box' },
+      { label: 'open (A*, Dijkstra) or passable cell', color: PALETTE.cellOpen, shape: 'box' },
       { label: 'step-blocked cell (×)', color: PALETTE.cellBlocked, shape: 'box' },
       { label: 'later attempts: earlier trees faint', color: PALETTE.tree0, shape: 'line' },
     ];

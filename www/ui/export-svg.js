@@ -5,7 +5,7 @@ import { PALETTE, STYLE } from '../draw/palette.js';
 import { EventKind, STRIDE } from '../run/events.js';
 import { Layout, pointInPolygon } from '../draw/transform.js';
 import { robotStyle, outlineOf } from '../draw/robots.js';
-import { heatScale } from '../draw/cells.js';
+import { heatScale, cellFill, cellLevel } from '../draw/cells.js';
 import { LEGEND_TEXT, frameShown, legendLayout, measure } from './export-legend.js';
 
 const SVG_NS = 'http://www.w3.org/2000/svg';
@@ -189,7 +189,6 @@ function cellsSvg(svg, view, L) {
   const o = view.options;
   if (!m || !view.cells.active(o)) return;
   const st = STYLE[EventKind.CELL];
-  const level = (c) => Math.min(3, Math.max(0, c.level | 0));
   const marks = (ids, id) => {
     const d = cellMarksD(L, ids.map((k) => m.cells.get(k)).filter((c) => c?.done && c.state === 1));
     if (!d) return;
@@ -202,10 +201,7 @@ function cellsSvg(svg, view, L) {
     for (const id of m.order) {
       const c = m.cells.get(id);
       if (!c || !c.done) continue;
-      let f = c.label === 1 ? PALETTE.cellMixed : c.label === 2 || c.state === 4 ? PALETTE.cellFull : PALETTE.cellFree[level(c)];
-      if (!o.showHeat && c.state === 2) f = PALETTE.cellVisited;
-      if (!o.showHeat && c.state === 1) f = PALETTE.cellBlocked;
-      node('polygon', { points: cellPoints(L, c), ...fill(f), ...stroke(PALETTE.cellEdge, st.widths[level(c)]) }, g);
+      node('polygon', { points: cellPoints(L, c), ...fill(cellFill(c, o.showHeat)), ...stroke(PALETTE.cellEdge, st.widths[cellLevel(c)]) }, g);
     }
     marks(m.order, 'cell-marks');
   }
@@ -233,7 +229,7 @@ function cellsSvg(svg, view, L) {
       const g2 = node('g', { id: 'judged', fill: 'none' }, svg);
       for (const id of m.changed) {
         const c = m.cells.get(id);
-        if (c?.done) node('polygon', { points: cellPoints(L, c), ...stroke(PALETTE.cellEdge, st.widths[level(c)]) }, g2);
+        if (c?.done) node('polygon', { points: cellPoints(L, c), ...stroke(PALETTE.cellEdge, st.widths[cellLevel(c)]) }, g2);
       }
       marks(m.changed, 'judged-marks');
     }
