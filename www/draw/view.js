@@ -7,7 +7,8 @@
 //          incrementally as records are revealed, redrawn from the stored records on resize or
 //          when one of their toggles changes;
 //   domain (offscreen): dynamic-domain radii, redrawn from the run model when a radius changes;
-//   tree   (offscreen): edges and nodes (exhausted nodes greyed), drawn incrementally; a REWIRE
+//   tree   (offscreen): edges and nodes (exhausted nodes greyed), drawn incrementally, roadmaps
+//          from their records (graphs.js); a REWIRE
 //          moves an edge, so the layer is then redrawn from the model's node/parent mirror;
 //   over   (offscreen): blocked motions, incremental like `under`;
 //   top    (the visible canvas): the layers composited, then inspection points (seen ones lit),
@@ -21,6 +22,7 @@ import { drawRobotShape, drawInspection, robotStyle, outlineOf, footprintRadius,
 import { PALETTE, STYLE, OVERLAY_DEFAULTS, TREE_LEGEND } from './palette.js';
 import { Layout, parseOutline, parseFrames, makeLayer, drawExhausted, drawObstacle, drawMarker, drawPolyline } from './transform.js';
 import { CellsDrawing } from './cells.js';
+import { addQueryEdge, drawGraphEdges, drawRoadmap } from './graphs.js';
 
 const FLASH_MS = 600;        // a rewire flashes this long
 const MAX_FLASHES = 80;      // the most flashes shown at once (a burst keeps only the latest)
@@ -194,7 +196,7 @@ export class View {
       if (kind === EventKind.SAMPLE || kind === EventKind.SAMPLE_REJECTED) this.lastSample = [d[o + 4], d[o + 5]];
       else if (kind === EventKind.TREES_CONNECTED || kind === EventKind.SOLVED) this.markers.push([kind, d[o + 4], d[o + 5]]);
       else if (kind === EventKind.REWIRE && flash) this.flashes.push([now, d[o + 4], d[o + 5], d[o + 6], d[o + 7]]);
-      else if (kind === EventKind.QUERY_PATH) this.addQueryEdge(d, o);
+      else if (kind === EventKind.QUERY_PATH) this.queryPath = addQueryEdge(this.queryPath, d, o);
     }
     if (this.flashes.length > MAX_FLASHES) this.flashes.splice(0, this.flashes.length - MAX_FLASHES);
     this.dirty = true;
@@ -230,50 +232,7 @@ export class View {
       }
       drawExhausted(ctx, L, pts);
     }
-    if (this.roadmap) this.drawRoadmapRecords(from, to, false);
-  }
-
-  /** A QUERY_PATH record: its first edge (tree 0) starts a new path. */
-  addQueryEdge(d, o) {
-    if (d[o + 1] === 0 || !this.queryPath) this.queryPath = [[d[o + 4], d[o + 5]]];
-    this.queryPath.push([d[o + 6], d[o + 7]]);
-  }
-
-  /**
-   * Roadmap edges of records [from, to) on the tree layer: checked edges solid, Lazy PRM's
-   * unchecked ones dashed, then what its checks found (blocked: faint vermilion over the dashes;
-   * valid: solid, on top). With `nodes`, milestones too (NODE_ADDED records without a parent, which the model's
-   * tree mirror does not draw).
-   */
-  drawRoadmapRecords(from, to, nodes) {
-    const { ctx } = this.treeLayer;
-    const L = this.layout;
-    const added = STYLE[EventKind.ROADMAP_EDGE];
-    const checked = STYLE[EventKind.EDGE_CHECKED];
-    const node = Math.max(1, Math.round(L.px(STYLE[EventKind.NODE_ADDED].size)));
-    const pass = (kind, group, style, dash) => {
-      ctx.beginPath();
-      for (const [d, o0, o1] of this.store.spans(from, to)) for (let o = o0; o < o1; o += STRIDE) {
-        if (d[o] !== kind || (d[o + 1] > 0 ? 1 : 0) !== group) continue;
-        ctx.moveTo(L.sx(d[o + 4]), L.sy(d[o + 5]));
-        ctx.lineTo(L.sx(d[o + 6]), L.sy(d[o + 7]));
-      }
-      ctx.strokeStyle = style.colors[group];
-      ctx.lineWidth = L.px(style.width);
-      ctx.setLineDash(dash);
-      ctx.stroke();
-      ctx.setLineDash([]);
-    };
-    pass(EventKind.ROADMAP_EDGE, 1, added, added.dash.map((v) => L.px(v)));
-    pass(EventKind.EDGE_CHECKED, 1, checked, []);
-    pass(EventKind.ROADMAP_EDGE, 0, added, []);
-    pass(EventKind.EDGE_CHECKED, 0, checked, []);
-    if (!nodes) return;
-    ctx.fillStyle = STYLE[EventKind.NODE_ADDED].colors[0];
-    for (const [d, o0, o1] of this.store.spans(from, to)) for (let o = o0; o < o1; o += STRIDE) {
-      if (d[o] !== EventKind.NODE_ADDED || d[o + 3] >= 0) continue;
-      ctx.fillRect(Math.round(L.sx(d[o + 4]) - node / 2), Math.round(L.sy(d[o + 5]) - node / 2), node, node);
-    }
+    if (this.roadmap) drawRoadmap(this.treeLayer.ctx, this.layout, this.store, from, to, false);
   }
 
   /** Whether the run drew a roadmap (its layer is then redrawn from the records). */
@@ -317,7 +276,7 @@ export class View {
       }
     });
     ctx.globalAlpha = 1;
-    if (this.roadmap) this.drawRoadmapRecords(0, this.store.length, true);
+    if (this.roadmap) drawRoadmap(this.treeLayer.ctx, this.layout, this.store, 0, this.store.length, true);
     this.treeSeen = this.model ? this.model.treeVersion : 0;
     this.treeDrawnAt = performance.now();
     this.dirty = true;
@@ -347,18 +306,9 @@ export class View {
     const tries = STYLE[EventKind.SAMPLE_TRY];
     const rs = Math.max(1, Math.round(L.px(rej.size)));
     const ts = Math.max(1, Math.round(L.px(tries.size)));
-    const graph = STYLE[EventKind.GRAPH_EDGE];
-    ctx.beginPath(); // graph edges (visibility graph): one stroke for the whole span
-    let edges = 0;
     for (const [d, o0, o1] of this.store.spans(from, to)) for (let o = o0; o < o1; o += STRIDE) {
       const kind = d[o];
-      if (kind === EventKind.GRAPH_EDGE) {
-        if (d[o + 9] > 0) {
-          ctx.moveTo(L.sx(d[o + 4]), L.sy(d[o + 5]));
-          ctx.lineTo(L.sx(d[o + 6]), L.sy(d[o + 7]));
-          edges++;
-        }
-      } else if (kind === EventKind.SAMPLE) {
+      if (kind === EventKind.SAMPLE) {
         if (this.pendingSample && showAccepted) this.drawAccepted(ctx, this.pendingSample);
         this.pendingSample = [d[o + 4], d[o + 5]];
       } else if (kind === EventKind.SAMPLE_REJECTED) {
@@ -372,11 +322,7 @@ export class View {
         ctx.fillRect(Math.round(L.sx(d[o + 4]) - ts / 2), Math.round(L.sy(d[o + 5]) - ts / 2), ts, ts);
       }
     }
-    if (edges) {
-      ctx.strokeStyle = graph.color;
-      ctx.lineWidth = L.px(graph.width);
-      ctx.stroke();
-    }
+    drawGraphEdges(ctx, L, this.store, from, to);
   }
 
   redrawUnder() {
@@ -461,7 +407,7 @@ export class View {
     this.cells.redraw(this.layout, this.options);
     for (const [d, o0, o1] of this.store.spans(0, this.store.length)) for (let o = o0; o < o1; o += STRIDE) {
       if (d[o] === EventKind.TREES_CONNECTED || d[o] === EventKind.SOLVED) this.markers.push([d[o], d[o + 4], d[o + 5]]);
-      else if (d[o] === EventKind.QUERY_PATH) this.addQueryEdge(d, o);
+      else if (d[o] === EventKind.QUERY_PATH) this.queryPath = addQueryEdge(this.queryPath, d, o);
     }
     this.dirty = true;
   }
