@@ -111,6 +111,9 @@ pub struct Est {
     turn: usize,
     new: Vec<Real>,
     scratch: Vec<Real>,
+    /// The picked node's state (a buffer: an iteration allocates nothing until it adds a node).
+    from: Vec<Real>,
+    goal: Vec<Real>,
 }
 
 impl Est {
@@ -127,6 +130,8 @@ impl Est {
             turn: 0,
             new: vec![0.0; n],
             scratch: vec![0.0; n],
+            from: vec![0.0; n],
+            goal: task.goal().to_vec(),
         }
     }
 
@@ -180,16 +185,17 @@ impl Est {
         if cx.nodes_left == 0 {
             return None;
         }
-        let a = self.trees[t].tree.state(from).to_vec();
-        if cx.si.check_motion(&a, q, &mut self.scratch).is_err() {
-            cx.note_collision(t, from, &a, q, &self.scratch);
+        self.from.copy_from_slice(self.trees[t].tree.state(from));
+        let a = &self.from;
+        if cx.si.check_motion(a, q, &mut self.scratch).is_err() {
+            cx.note_collision(t, from, a, q, &self.scratch);
             return None;
         }
         let g = &mut self.trees[t];
         let id = g.tree.add(cx, q, from);
         cx.nodes_left -= 1;
-        let (p, pp) = (cx.si.project(q), cx.si.project(&a));
-        cx.events.push(EventKind::NodeAdded, t, id as i64, from as i64, p, pp, q, &a);
+        let (p, pp) = (cx.si.project(q), cx.si.project(a));
+        cx.events.push(EventKind::NodeAdded, t, id as i64, from as i64, p, pp, q, a);
         g.file(cx.si, self.grid, id);
         Some(id)
     }
@@ -227,15 +233,13 @@ impl Planner for Est {
             self.turn = 1 - t;
         }
         let from = self.select(cx, t);
-        let goal = self.task.goal().to_vec();
         let mut q = std::mem::take(&mut self.new);
         if !self.bi && cx.rng.uniform01() < self.goal_bias {
-            q.copy_from_slice(&goal);
+            q.copy_from_slice(&self.goal);
             let p = cx.si.project(&q);
             cx.events.push(EventKind::Sample, t, 1, -1, p, p, &q, &q);
         } else {
-            let a = self.trees[t].tree.state(from).to_vec();
-            self.near(cx, &a, &mut q);
+            self.near(cx, self.trees[t].tree.state(from), &mut q);
             let p = cx.si.project(&q);
             cx.events.push(EventKind::Sample, t, 0, -1, p, p, &q, &q);
         }
@@ -243,6 +247,7 @@ impl Planner for Est {
         self.new = q;
         let id = added?;
         let state = self.trees[t].tree.state(id).to_vec();
+        let goal = self.goal.clone();
         if !self.bi {
             let d = cx.si.distance(&state, &goal);
             if d <= self.task.goal_tolerance {
