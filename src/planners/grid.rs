@@ -200,17 +200,22 @@ impl GridSearch {
         self.rows += 1;
     }
 
-    /// The neighbours of cell `k` a move may go to: (cell, whether the move must be checked).
-    fn neighbours(&self, k: usize) -> Vec<(usize, bool)> {
+    /// The neighbours of cell `k` a move may go to: (cell, whether the move must be checked), the
+    /// first `n` of the 8 (no allocation: this runs once per cell closed).
+    fn neighbours(&self, k: usize) -> ([(usize, bool); 8], usize) {
         let (i, j) = ((k % self.nx) as i64, (k / self.nx) as i64);
         let at = |di: i64, dj: i64| {
             let (a, b) = (i + di, j + dj);
             (a >= 0 && b >= 0 && a < self.nx as i64 && b < self.ny as i64).then(|| b as usize * self.nx + a as usize)
         };
-        let mut out = Vec::with_capacity(8);
+        let (mut out, mut n) = ([(0, false); 8], 0);
+        let mut push = |m: usize, check: bool| {
+            out[n] = (m, check);
+            n += 1;
+        };
         for (di, dj) in [(1, 0), (-1, 0), (0, 1), (0, -1)] {
             if let Some(m) = at(di, dj) {
-                out.push((m, false));
+                push(m, false);
             }
         }
         if self.diagonal > 0 {
@@ -219,13 +224,13 @@ impl GridSearch {
                 let beside = [at(di, 0), at(0, dj)];
                 let clear = beside.iter().all(|c| c.is_some_and(|c| self.free[c]));
                 if clear {
-                    out.push((m, false));
+                    push(m, false);
                 } else if self.diagonal == 2 {
-                    out.push((m, true));
+                    push(m, true);
                 }
             }
         }
-        out
+        (out, n)
     }
 
     /// Whether the straight motion between two points is valid (a check counted).
@@ -272,7 +277,9 @@ impl GridSearch {
         self.state(cx, k, parent, 2.0, p);
         let len = |a: Vec2, b: Vec2, unit: bool| if unit { 1.0 } else { (b - a).norm() };
         let to_cell = self.cell_of(to_pt);
-        if k == to_cell || self.neighbours(k).iter().any(|&(m, _)| m == to_cell) {
+        let (nb, count) = self.neighbours(k);
+        let nb = &nb[..count];
+        if k == to_cell || nb.iter().any(|&(m, _)| m == to_cell) {
             cx.si.count_checks(1);
             if self.motion(cx, p, to_pt) {
                 if f.relax(k, end, to_pt, len(p, to_pt, self.unit)) {
@@ -283,7 +290,7 @@ impl GridSearch {
             }
         }
         let own = k == self.cell_of(from_pt);
-        for (m, check) in self.neighbours(k) {
+        for &(m, check) in nb {
             if f.is_closed(m) || !self.free[m] {
                 continue;
             }
