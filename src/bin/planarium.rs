@@ -312,10 +312,14 @@ fn plan(m: &ArgMatches) -> Result<(), String> {
         println!("{} on \"{}\", seed {}: {}", spec.label, sc.name, seed, r.status);
         println!("  time {:.3} ms, {} iterations, {} nodes, {} checks", st.time_ms, st.iterations, st.nodes, st.checks);
         let sm = &st.sampler;
-        println!(
-            "  sampler {}: {} samples ({} given up), {:.2} draws and {:.2} checks per sample",
-            sm.name, sm.accepted, sm.failed, sm.draws_per_sample, sm.checks_per_sample
-        );
+        if sm.used {
+            println!(
+                "  sampler {}: {} samples ({} given up), {:.2} draws and {:.2} checks per sample",
+                sm.name, sm.accepted, sm.failed, sm.draws_per_sample, sm.checks_per_sample
+            );
+        } else {
+            println!("  no sampler: {} draws no samples through one", spec.label);
+        }
         if let Some(c) = st.coverage {
             println!(
                 "  coverage {:.1}% (smoothed path: {:.1}%)",

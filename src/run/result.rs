@@ -47,6 +47,9 @@ pub struct Stats {
 pub struct SamplerSummary {
     /// The sampler's name.
     pub name: &'static str,
+    /// Whether the planner draws its samples through it (`false` for EST, grid and cell searches,
+    /// the potential field and the visibility graph, whose counts then stay 0).
+    pub used: bool,
     /// Samples handed to the planner.
     pub accepted: u64,
     /// Samples given up after `sampler_tries` raw draws.
@@ -63,9 +66,10 @@ pub struct SamplerSummary {
 
 impl SamplerSummary {
     /// The summary of a sampler's statistics.
-    pub fn of(name: &'static str, s: crate::sampler::SamplerStats) -> SamplerSummary {
+    pub fn of(name: &'static str, used: bool, s: crate::sampler::SamplerStats) -> SamplerSummary {
         SamplerSummary {
             name,
+            used,
             accepted: s.accepted,
             failed: s.failed,
             draws: s.draws,

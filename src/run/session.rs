@@ -417,7 +417,11 @@ impl Session {
             continuous_coverage: self.coverage_by(&self.path, planners::inspection::continuous_coverage),
             cost_fk: self.cost_fk(&self.path),
             smoothed_cost_fk: self.cost_fk(&self.smoothed),
-            sampler: SamplerSummary::of(self.sampler.name(), self.sampler.stats()),
+            sampler: SamplerSummary::of(
+                self.sampler.name(),
+                self.spec.groups.iter().any(|g| g.name == crate::sampler::SAMPLER_GROUP.name),
+                self.sampler.stats(),
+            ),
         }
     }
 

@@ -103,6 +103,43 @@ test('Lazy PRM on the zigzag: unchecked edges drawn dashed grey, checked ones in
   assert.ok(grey2 < grey / 10, `no unchecked edges drawn: ${grey2} px`);
 });
 
+test('EST on the zigzag: the density grid shades the picking tree\'s cells and outlines the pick; no sampler rows', async () => {
+  await pickScenario('zigzag', 'Zigzag of walls');
+  await page.selectOption('#planner', 'est');
+  await waitState('idle');
+  assert.equal(await page.isVisible('#show-density'), true, "EST's density overlay is offered");
+  await setField('seed', 1);
+  await page.$eval('#speed', (el) => { el.value = 40; el.dispatchEvent(new Event('input', { bubbles: true })); });
+  await page.click('#run');
+  await page.waitForFunction(() => window.planarium.nodeCount() > 60, null, { timeout: 60000 });
+  await page.click('#pause');
+  await waitState('paused');
+  await nextFrames();
+  const pixels = () => page.evaluate(() => {
+    const c = document.getElementById('canvas');
+    return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data);
+  });
+  const on = await pixels();
+  const [outline] = await countColours('canvas', [PALETTE.densityPick], 10);
+  await page.screenshot({ path: join(shots, 'page-est-density.png') });
+  await page.click('#show-density');
+  await nextFrames();
+  const off = await pixels();
+  const [outlineOff] = await countColours('canvas', [PALETTE.densityPick], 10);
+  let changed = 0;
+  for (let i = 0; i < on.length; i += 4) {
+    if (Math.abs(on[i] - off[i]) + Math.abs(on[i + 1] - off[i + 1]) + Math.abs(on[i + 2] - off[i + 2]) > 24) changed++;
+  }
+  console.log(`EST density: outline ${outline} px (off: ${outlineOff}), ${changed} px shaded`);
+  assert.ok(outline > 40 && outlineOff === 0, `the latest pick's cell outlined: ${outline} px, then ${outlineOff}`);
+  assert.ok(changed > 2000, `cells shaded: ${changed} px change when the overlay is switched off`);
+  assert.equal(await page.isVisible('#stat-sampler'), false, 'EST draws no samples through the sampler: no Sampler row');
+  await page.click('#show-density');
+  await page.selectOption('#planner', 'rrt-connect');
+  await waitState('idle');
+  assert.equal(await page.isVisible('#show-density'), false, 'not offered for RRT-Connect');
+});
+
 test('technion-ip: only inspection planners are offered, with the reason; narrow offers no inspection', async () => {
   await pickScenario('technion-ip', 'Technion HW3: inspect the room');
   const offered = await page.$$eval('#planner option', (os) => os.map((o) => o.value));

@@ -63,6 +63,7 @@ export function overlayApplies(option, { config, inspection = false } = {}) {
     case 'showSeen': case 'showFov': return inspection || planner === 'inspection';
     case 'showCells': return planner === 'hex-potential' || planner === 'grid-search';
     case 'showRegion': return planner === 'hex-potential';
+    case 'showDensity': return planner === 'est' || planner === 'bi-est';
     case 'showHeat': case 'showArrows': return planner === 'hex-potential' || planner === 'potential-field';
     default: return true;
   }

@@ -64,6 +64,9 @@ export const PALETTE = Object.freeze({
   roadmapUnchecked: '#9aa3ad',
   roadmapInvalid: 'rgba(213, 94, 0, 0.35)', // faint: on the zigzag most of Lazy PRM's checks find a wall
   queryPath: '#111111',
+  // EST's density grid: a cell shaded by its chance of being picked, the latest pick outlined
+  density: '#cc79a7',
+  densityPick: '#882255',
 });
 
 // How each event kind is drawn. `layer`: 'under', 'tree', 'over' (persistent, incremental),
@@ -131,6 +134,9 @@ export const OVERLAYS = Object.freeze([
   { option: 'showCells', id: 'show-cells', label: 'cells: free / mixed / full', on: true,
     swatches: [{ color: PALETTE.cellFree[0], shape: 'box' }, { color: PALETTE.cellMixed, shape: 'box' }, { color: PALETTE.cellFull, shape: 'box' }],
     doc: 'Hexagonal decomposition (hex-potential): each cell as it is made and labelled, free (lighter at coarser levels, thicker outline), mixed (an obstacle meets it: refined, or impassable at the finest level) or full; refined cells are covered by their children. During the search, visited cells turn blue and cells whose step test failed pink with a × (hover for why). Hover a cell for its level, state and potential terms.' },
+  { option: 'showDensity', id: 'show-density', label: "EST's pick chance by cell", on: true,
+    swatches: [{ color: '#cc79a7', shape: 'box' }, { color: '#882255', shape: 'ring' }],
+    doc: "EST and bi-EST: the density grid over the map, each cell of the tree that picked last shaded by its chance of being picked next (darkest: the sparsest cell, 1 / its nodes, over the sum for all the tree's cells); the cell of the latest pick outlined. Empty cells hold no node, so they cannot be picked." },
   { option: 'showHeat', id: 'show-heat', label: 'potential heat map (low → high)', on: false,
     swatches: [{ color: PALETTE.heat[1], shape: 'box' }, { color: PALETTE.heat[4], shape: 'box' }, { color: PALETTE.heat[8], shape: 'box' }],
     doc: "The potential field the planner reports, light where it is low, dark where it is high, by rank: each of the nine colours holds about a ninth of the samples, so the repulsion's blow-up near obstacles does not wash out the rest (hover a cell or tile for its numbers); where the robot would collide it takes the obstacle colour. hex-potential: each free cell in the region of influence, coloured by its obstacle terms (repulsion + trap term; the goal term depends on the step); potential-field: a grid of tiles, coloured by attraction + repulsion. A new region of influence replaces it." },
@@ -151,6 +157,7 @@ export const TREE_LEGEND = Object.freeze({
   'hex-potential': [['search steps, cell to cell', PALETTE.tree0]],
   'potential-field': [['descent steps', PALETTE.tree0], ['random-walk steps', PALETTE.tree1]],
   rrt: [['tree', PALETTE.tree0]],
+  est: [['tree', PALETTE.tree0]],
   'rrt-star': [['tree', PALETTE.tree0]],
   inspection: [['tree', PALETTE.tree0]],
   prm: [['roadmap: milestones, checked edges', PALETTE.tree0], ["search's latest path", PALETTE.queryPath]],

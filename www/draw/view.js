@@ -22,6 +22,7 @@ import { drawRobotShape, drawInspection, robotStyle, outlineOf, footprintRadius,
 import { PALETTE, STYLE, OVERLAY_DEFAULTS, TREE_LEGEND } from './palette.js';
 import { Layout, parseOutline, parseFrames, makeLayer, drawExhausted, drawObstacle, drawMarker, drawPolyline } from './transform.js';
 import { CellsDrawing } from './cells.js';
+import { drawDensity } from './density.js';
 import { addQueryEdge, drawGraphEdges, drawRoadmap } from './graphs.js';
 
 const FLASH_MS = 600;        // a rewire flashes this long
@@ -444,6 +445,7 @@ export class View {
     for (const l of this.runLayers) {
       ctx.drawImage(l.canvas, 0, 0);
       if (l === this.cellsLayer && this.cells.active(o)) this.cells.veil(ctx, L, this.scenario);
+      if (l === this.cellsLayer && o.showDensity && this.scenario && !this.showResult) drawDensity(ctx, L, this.model?.density, this.scenario.bounds);
     }
     if (!this.scenario) { this.drawTopHooks(ctx, L); return; }
     const inspection = this.scenario.inspection;

@@ -11,6 +11,7 @@
 
 import { EventKind, STRIDE } from './events.js';
 import { CellMirror } from '../draw/cells.js';
+import { DensityMirror } from '../draw/density.js';
 import { STORE_CHUNK_RECORDS } from './limits.js';
 
 /**
@@ -155,6 +156,7 @@ export class RunModel {
     this.seen = new Set(); // inspection point numbers seen
     this.counts = new Float64Array(32); // records per kind
     this.cells = new CellMirror(); // cells, verdicts, regions, fields, minima
+    this.density = new DensityMirror(); // EST's density grid (after its first SELECT)
     this.treeVersion = 0;     // bumped when an edge moves (REWIRE): the tree layer is redrawn
     this.domainVersion = 0;   // bumped when a radius changes
   }
@@ -171,6 +173,7 @@ export class RunModel {
     if (kind >= 0 && kind < this.counts.length) this.counts[kind]++;
     switch (kind) {
       case EventKind.NODE_ADDED: {
+        if (!this.density.empty) this.density.apply(d, o);
         const t = this.tree(d[o + 1]);
         const parent = d[o + 3];
         // the root has no record of its own: its first child's record says where it is
@@ -219,6 +222,10 @@ export class RunModel {
         return;
       case EventKind.POINT_SEEN:
         this.seen.add(d[o + 2]);
+        return;
+      case EventKind.SELECT:
+        this.tree(d[o + 1]).placeIfUnknown(d[o + 2], d[o + 4], d[o + 5]);
+        this.density.apply(d, o);
         return;
       case EventKind.CELL: case EventKind.CELL_SHAPE: case EventKind.CELL_STATE: case EventKind.POTENTIAL:
       case EventKind.REGION: case EventKind.FIELD: case EventKind.MINIMUM:

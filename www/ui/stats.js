@@ -1,12 +1,16 @@
 // The stats panel: a <dl> built from one field table, filled from Lane.statsFor(). The playground
 // and each lane of the compare page use it, with an id prefix. Rows marked `optional` are hidden
 // while they have no value (the best cost only exists for planners that keep improving, the
-// coverage only for inspection, raw tries only for validity-checking samplers, the course's and the
+// coverage only for inspection, the sampler's rows only for planners that draw through it, raw
+// tries only for validity-checking samplers, the course's and the
 // continuous coverage and the fk cost only in a finished result that has them).
 
 import { el } from './dom.js';
 
 const fixed = (v, n) => (v === undefined || v === null || !Number.isFinite(v) ? undefined : v.toFixed(n));
+
+/** The run's sampler summary, or undefined when the planner draws no samples through one (EST, grid). */
+const sampler = (s) => (s.sampler?.used === false ? undefined : s.sampler);
 
 /** "112 of 349" while the replay is behind the planner, else the number. */
 const ofPlanner = (shown, planner) => (planner === undefined || planner === shown ? shown : `${shown} of ${planner}`);
@@ -39,10 +43,10 @@ export const STAT_FIELDS = Object.freeze([
     value: (s) => (s.cost_fk == null ? undefined
       : `${fixed(s.cost_fk, 1)} (smoothed ${fixed(s.smoothed_cost_fk, 1) ?? '–'})`),
     title: "An arm's path cost in report 004's unit: the norm of the stacked link-end differences, summed" },
-  { key: 'sampler', label: 'Sampler', value: (s) => s.sampler?.name },
-  { key: 'draws', label: 'Draws / sample', value: (s) => fixed(s.sampler?.draws_per_sample, 2),
+  { key: 'sampler', label: 'Sampler', optional: true, value: (s) => sampler(s)?.name },
+  { key: 'draws', label: 'Draws / sample', optional: true, value: (s) => fixed(sampler(s)?.draws_per_sample, 2),
     title: "The sampler's raw draws per sample it handed to the planner" },
-  { key: 'sampler-checks', label: 'Checks / sample', value: (s) => fixed(s.sampler?.checks_per_sample, 2),
+  { key: 'sampler-checks', label: 'Checks / sample', optional: true, value: (s) => fixed(sampler(s)?.checks_per_sample, 2),
     title: 'State checks the sampler spent per sample it handed to the planner' },
   { key: 'tries', label: 'Raw tries shown', optional: true,
     value: (s) => (s.tries_seen ? `${s.tries_sent.toLocaleString('en')} of ${s.tries_seen.toLocaleString('en')}` : undefined),
