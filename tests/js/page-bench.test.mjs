@@ -114,6 +114,36 @@ test('a benchmark over two workers gives the CLI\'s numbers, plots and exports',
   await fx.page.screenshot({ path: join(SHOTS, 'page-bench.png'), fullPage: true });
 });
 
+test('issue 17: PRM, Lazy PRM, EST, RRT-Connect and grid A* side by side on the zigzag, as the CLI gives them', async () => {
+  await openBench();
+  await fx.page.fill('#workers', '2');
+  const setups = ['prm: prm', 'lazy: lazy-prm', 'est: est', 'connect: rrt-connect', 'astar: grid-search --search astar'];
+  await runBench('zigzag', setups.join('\n'), 10);
+  await fx.page.waitForFunction(() => window.planarium.state() === 'idle' && window.planarium.report(), null, { timeout: 240000 });
+  assert.match(await fx.page.textContent('#bench-status'), /^50 runs in /);
+  const report = await fx.page.evaluate(() => window.planarium.report());
+  const dir = mkdtempSync(join(tmpdir(), 'planarium-bench-'));
+  execFileSync(join(ROOT, 'target/release/planarium'), ['bench', 'zigzag', '--runs', '10',
+    ...setups.flatMap((x) => ['--setup', x]), '--json-file', join(dir, 'cli.json')], { encoding: 'utf8' });
+  const native = JSON.parse(readFileSync(join(dir, 'cli.json'), 'utf8'));
+  assert.deepEqual(report.setups.map((x) => x.label), ['prm', 'lazy', 'est', 'connect', 'astar']);
+  report.setups.forEach((x, k) => {
+    assert.ok(x.rows.every((r) => r.solved), `${x.label}: every run solved`);
+    for (const key of ['status', 'iterations', 'nodes', 'checks', 'cost', 'smoothed_cost']) {
+      assert.deepEqual(x.rows.map((r) => r[key]), native.setups[k].rows.map((r) => r[key]), `${x.label}: ${key} as the CLI`);
+    }
+  });
+  const cells = await fx.page.$$eval('#bench-table tbody tr', (trs) => trs.map((tr) => [...tr.children].map((c) => c.textContent)));
+  assert.deepEqual(cells.map((c) => c[0]), ['prm', 'lazy', 'est', 'connect', 'astar']);
+  for (const c of cells) assert.match(c[1], /^100% \(10\/10\)$/);
+  // Lazy PRM checks fewer motions than PRM on the same seeds (its roadmap's edges wait for a query)
+  const median = (label) => native.setups[setups.findIndex((x) => x.startsWith(`${label}:`))].summary.checks.median;
+  assert.ok(median('lazy') < median('prm'), `checks: lazy ${median('lazy')}, prm ${median('prm')}`);
+  const log = readOmplLog(await fx.page.evaluate(() => window.planarium.exported('ompl')));
+  assert.equal(log.planners.length, 5);
+  await fx.page.screenshot({ path: join(SHOTS, 'page-bench-issue17.png'), fullPage: true });
+});
+
 test('cancel stops the pool at once and the page stays usable; a bad line is named', async () => {
   await openBench();
   await runBench('horn-20', 'rrt-connect --time-limit 30', 50);
