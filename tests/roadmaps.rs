@@ -161,6 +161,39 @@ fn one_roadmap_answers_two_more_queries_without_new_milestones() {
     }
 }
 
+#[test]
+fn a_finished_session_answers_more_queries_on_its_roadmap_and_refuses_what_it_cannot() {
+    // What `plan --query` does: the session's own roadmap, after its run, two vertices a query.
+    let sc = builtin("zigzag").unwrap();
+    for planner in ROADMAPS {
+        let mut s = session(&sc, planner, json!({}), 5);
+        assert!(s.query(&[0.92, 0.1], &[0.08, 0.9]).unwrap_err().contains("not finished"), "{planner}: before the run");
+        s.run_to_end();
+        let before = s.result();
+        let nodes = s.stats().nodes;
+        let (path, cost) = s.query(&[0.92, 0.1], &[0.08, 0.9]).unwrap();
+        assert!(!path.is_empty(), "{planner}: the other way across the zigzag");
+        let mut other = sc.clone();
+        other.start = vec![0.92, 0.1];
+        other.goal = Some(vec![0.08, 0.9]);
+        if let Some(e) = common::path_problem(&other, &path) {
+            panic!("{planner}: the query's path: {e}");
+        }
+        assert_eq!((path[0].clone(), path.last().unwrap().clone()), (vec![0.92, 0.1], vec![0.08, 0.9]));
+        let length: f64 =
+            path.windows(2).map(|w| ((w[1][0] - w[0][0]).powi(2) + (w[1][1] - w[0][1]).powi(2)).sqrt()).sum();
+        assert!((length - cost).abs() < 1e-9, "{planner}: cost {cost} is the path's length {length}");
+        assert_eq!(s.stats().nodes, nodes + 2, "{planner}: only the two terminals join the roadmap");
+        assert_eq!(s.result().path, before.path, "{planner}: the run's own path is kept");
+        // A state in a wall is refused with its name; a tree planner keeps nothing to query.
+        let e = s.query(&[0.92, 0.1], &[0.6, 0.5]).unwrap_err();
+        assert!(e.starts_with("goal"), "{planner}: {e}");
+    }
+    let mut s = session(&sc, "rrt-connect", json!({}), 5);
+    s.run_to_end();
+    assert!(s.query(&[0.92, 0.1], &[0.08, 0.9]).unwrap_err().contains("keeps no roadmap"));
+}
+
 /// Every vertex's bits, and every edge (ends, length's bits, state), in order.
 type Bits = (Vec<u64>, Vec<(u32, u32, u64, EdgeState)>);
 

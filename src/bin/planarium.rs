@@ -57,6 +57,14 @@ fn cli() -> Command {
                 .arg(Arg::new("start").long("start").value_name("X,Y|Q1,...").allow_hyphen_values(true).help("The start state, comma-separated (x,y for a point robot, 4 joint angles for the Technion arm); replaces the scenario's or map's"))
                 .arg(Arg::new("goal").long("goal").value_name("X,Y|Q1,...").allow_hyphen_values(true).help("The goal state, comma-separated; replaces the scenario's or map's"))
                 .arg(
+                    Arg::new("query")
+                        .long("query")
+                        .value_name("START:GOAL")
+                        .action(ArgAction::Append)
+                        .allow_hyphen_values(true)
+                        .help("After the run, another query on its roadmap (prm, prm-star, lazy-prm), start and goal comma-separated (e.g. 0.1,0.1:0.9,0.5); repeat for more. The roadmap is reused: no milestone is added"),
+                )
+                .arg(
                     Arg::new("events")
                         .long("events")
                         .value_name("FILE")
@@ -192,6 +200,8 @@ fn seed_arg(text: &str) -> Result<SeedArg, String> {
 
 /// Most numbers in a `--start` or `--goal` state.
 const MAX_STATE_NUMBERS: usize = 256;
+/// Queries `plan --query` answers on one roadmap.
+const MAX_QUERIES: usize = 1000;
 
 /// A `--start`/`--goal` value: finite numbers separated by commas.
 fn state_arg(flag: &str, text: &str) -> Result<Vec<f64>, String> {
@@ -211,6 +221,26 @@ fn state_arg(flag: &str, text: &str) -> Result<Vec<f64>, String> {
                     i + 1
                 )
             })
+        })
+        .collect()
+}
+
+/// A `--query`'s text, start and goal.
+type Query = (String, Vec<f64>, Vec<f64>);
+
+/// `plan --query START:GOAL` (repeatable): each query's text and its two states.
+fn query_args(m: &ArgMatches) -> Result<Vec<Query>, String> {
+    let texts: Vec<&String> = m.get_many::<String>("query").map(|q| q.collect()).unwrap_or_default();
+    if texts.len() > MAX_QUERIES {
+        return Err(format!("--query: {} queries; the limit is {MAX_QUERIES}", texts.len()));
+    }
+    texts
+        .into_iter()
+        .map(|text| {
+            let cut = planarium::limits::cut(text, 80);
+            let (a, b) =
+                text.split_once(':').ok_or_else(|| format!("--query {cut}: start and goal are separated by ':'"))?;
+            Ok((cut.to_string(), state_arg("query", a)?, state_arg("query", b)?))
         })
         .collect()
 }
@@ -275,6 +305,7 @@ fn plan(m: &ArgMatches) -> Result<(), String> {
         }
         None => block.filter(|b| b.name == spec.name).and_then(|b| b.seed).unwrap_or(1),
     };
+    let queries = query_args(m)?;
     let events_file = m.get_one::<String>("events");
     let mut s = Session::new(
         problem,
@@ -282,6 +313,19 @@ fn plan(m: &ArgMatches) -> Result<(), String> {
     )?;
     s.run_to_end();
     let r = s.result();
+    let mut answers = Vec::new();
+    for (k, (text, start, goal)) in queries.iter().enumerate() {
+        answers.push(match s.query(start, goal) {
+            Ok((path, _)) if path.is_empty() => format!("  query {}: {text}: the roadmap does not join them", k + 1),
+            Ok((path, cost)) => format!(
+                "  query {}: {text}: {} states, cost {cost:.4} (the same roadmap: {} vertices now)",
+                k + 1,
+                path.len(),
+                s.stats().nodes
+            ),
+            Err(e) => format!("  query {}: {text}: {e}", k + 1),
+        });
+    }
     if let Some(file) = events_file {
         let kinds: serde_json::Map<String, serde_json::Value> = planarium::events::EventKind::ALL
             .iter()
@@ -344,6 +388,13 @@ fn plan(m: &ArgMatches) -> Result<(), String> {
                 println!("  cost in report 004's unit (fk): {a:.2}, smoothed {b:.2}");
             }
             print_optimum(&sc, spec.name, st.cost, st.smoothed_cost);
+        }
+    }
+    for line in &answers {
+        if m.get_flag("json") {
+            eprintln!("{line}");
+        } else {
+            println!("{line}");
         }
     }
     Ok(())

@@ -201,6 +201,12 @@ pub trait Planner {
     fn gave_up(&self) -> Option<String> {
         None
     }
+    /// For planners that keep a roadmap (PRM, PRM*, Lazy PRM): answer another query on it as it
+    /// stands, `start` and `goal` being valid planning states; `Some(None)` when the roadmap does
+    /// not join them. `None`: this planner keeps nothing a new query could reuse.
+    fn query(&mut self, _cx: &mut Context, _start: &[Real], _goal: &[Real]) -> Option<Option<Vec<Vec<Real>>>> {
+        None
+    }
 }
 
 /// How a registered planner is made for a task: the planner, or why it cannot plan for it.

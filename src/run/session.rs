@@ -388,6 +388,44 @@ impl Session {
         }
     }
 
+    /// Another query on a finished run's roadmap (PRM, PRM*, Lazy PRM): `start` and `goal` are
+    /// scenario states, checked as the scenario's own are (errors name `start` or `goal`). The
+    /// planner joins them to the roadmap as it stands and searches it; events are recorded as in
+    /// the run. The answer: the path in scenario states (empty when the roadmap does not join
+    /// them) and its cost in the robot's metric. The run's own path and status are kept.
+    pub fn query(&mut self, start: &[Real], goal: &[Real]) -> Result<(Vec<Vec<Real>>, Real), String> {
+        if !self.status.is_finished() {
+            return Err("the run has not finished: a roadmap is queried once it is built".into());
+        }
+        let mut sc = self.problem.scenario.clone();
+        sc.start = start.to_vec();
+        sc.goal = Some(goal.to_vec());
+        let q = Problem::from_scenario(&sc).map_err(|e| e.to_string())?;
+        let goal_q = q.goal.as_deref().unwrap_or(&q.start);
+        self.problem.si.set_deadline(Deadline::in_ms(self.limits.time_ms));
+        let nodes_left = self.limits.nodes.saturating_sub(self.planner.node_count());
+        let mut cx = Context {
+            si: &self.problem.si,
+            rng: &mut self.rng,
+            events: &mut self.events,
+            nodes_left,
+            sampler: &mut self.sampler,
+            iteration: self.iterations,
+        };
+        let answer = self.planner.query(&mut cx, &q.start, goal_q);
+        let interrupted = self.problem.si.interrupted();
+        self.problem.si.set_deadline(Deadline::NONE);
+        match answer {
+            None => Err(format!("{} keeps no roadmap to query", self.spec.label)),
+            Some(_) if interrupted => Err("the query ran out of the run's time limit".into()),
+            Some(None) => Ok((Vec::new(), 0.0)),
+            Some(Some(path)) => {
+                let cost = smoothing::path_cost(&self.problem.si, &path);
+                Ok((self.problem.decode_path(&path), cost))
+            }
+        }
+    }
+
     /// Run until solved or a limit is reached.
     pub fn run_to_end(&mut self) -> Status {
         while !self.step(u64::MAX, f64::INFINITY).is_finished() {}

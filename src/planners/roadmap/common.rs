@@ -278,6 +278,9 @@ impl Planner for RoadmapPlanner {
     fn node_count(&self) -> usize {
         self.graph.len()
     }
+    fn query(&mut self, cx: &mut Context, start: &[Real], goal: &[Real]) -> Option<Option<Vec<Vec<Real>>>> {
+        Some(RoadmapPlanner::query(self, cx, start, goal))
+    }
     /// No trees: the roadmap is read through [`RoadmapPlanner::roadmap`].
     fn data(&self) -> PlannerData {
         PlannerData::default()
