@@ -256,6 +256,14 @@ impl Run {
     pub fn drain_events(&mut self) -> Vec<f64> {
         self.inner.drain_events()
     }
+    /// After the run, another query on its roadmap (PRM, PRM*, Lazy PRM): `start` and `goal` are
+    /// scenario states. JSON `{path, points, cost}` (`path` empty when the roadmap does not join
+    /// them); an error names the state or says why the run cannot be queried. Its events are
+    /// recorded as the run's are.
+    pub fn query(&mut self, start: &[f64], goal: &[f64]) -> Result<String, JsError> {
+        let answer = self.inner.query(start, goal).map_err(|e| JsError::new(&e))?;
+        Ok(serde_json::to_string(&answer).unwrap())
+    }
     /// Stop now.
     pub fn cancel(&mut self) {
         self.inner.cancel()

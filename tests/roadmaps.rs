@@ -171,7 +171,9 @@ fn a_finished_session_answers_more_queries_on_its_roadmap_and_refuses_what_it_ca
         s.run_to_end();
         let before = s.result();
         let nodes = s.stats().nodes;
-        let (path, cost) = s.query(&[0.92, 0.1], &[0.08, 0.9]).unwrap();
+        let answer = s.query(&[0.92, 0.1], &[0.08, 0.9]).unwrap();
+        let (path, cost) = (answer.path.clone(), answer.cost);
+        assert_eq!(answer.points.len(), path.len());
         assert!(!path.is_empty(), "{planner}: the other way across the zigzag");
         let mut other = sc.clone();
         other.start = vec![0.92, 0.1];

@@ -316,11 +316,12 @@ fn plan(m: &ArgMatches) -> Result<(), String> {
     let mut answers = Vec::new();
     for (k, (text, start, goal)) in queries.iter().enumerate() {
         answers.push(match s.query(start, goal) {
-            Ok((path, _)) if path.is_empty() => format!("  query {}: {text}: the roadmap does not join them", k + 1),
-            Ok((path, cost)) => format!(
-                "  query {}: {text}: {} states, cost {cost:.4} (the same roadmap: {} vertices now)",
+            Ok(a) if a.path.is_empty() => format!("  query {}: {text}: the roadmap does not join them", k + 1),
+            Ok(a) => format!(
+                "  query {}: {text}: {} states, cost {:.4} (the same roadmap: {} vertices now)",
                 k + 1,
-                path.len(),
+                a.path.len(),
+                a.cost,
                 s.stats().nodes
             ),
             Err(e) => format!("  query {}: {text}: {e}", k + 1),

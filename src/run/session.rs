@@ -58,6 +58,17 @@ struct Limits {
     nodes: usize,
 }
 
+/// The answer to [`Session::query`]: empty when the roadmap does not join the two states.
+#[derive(Clone, Debug, Default, serde::Serialize)]
+pub struct QueryAnswer {
+    /// The path in scenario states, start first.
+    pub path: Vec<Vec<Real>>,
+    /// Its states' projected points (what the page draws).
+    pub points: Vec<[Real; 2]>,
+    /// Its cost in the robot's metric (0 when empty).
+    pub cost: Real,
+}
+
 /// One planning run, advanced in bounded batches.
 pub struct Session {
     problem: Problem,
@@ -392,8 +403,9 @@ impl Session {
     /// scenario states, checked as the scenario's own are (errors name `start` or `goal`). The
     /// planner joins them to the roadmap as it stands and searches it; events are recorded as in
     /// the run. The answer: the path in scenario states (empty when the roadmap does not join
-    /// them) and its cost in the robot's metric. The run's own path and status are kept.
-    pub fn query(&mut self, start: &[Real], goal: &[Real]) -> Result<(Vec<Vec<Real>>, Real), String> {
+    /// them), its projected points and its cost in the robot's metric. The run's own path and
+    /// status are kept.
+    pub fn query(&mut self, start: &[Real], goal: &[Real]) -> Result<QueryAnswer, String> {
         if !self.status.is_finished() {
             return Err("the run has not finished: a roadmap is queried once it is built".into());
         }
@@ -418,11 +430,12 @@ impl Session {
         match answer {
             None => Err(format!("{} keeps no roadmap to query", self.spec.label)),
             Some(_) if interrupted => Err("the query ran out of the run's time limit".into()),
-            Some(None) => Ok((Vec::new(), 0.0)),
-            Some(Some(path)) => {
-                let cost = smoothing::path_cost(&self.problem.si, &path);
-                Ok((self.problem.decode_path(&path), cost))
-            }
+            Some(None) => Ok(QueryAnswer::default()),
+            Some(Some(path)) => Ok(QueryAnswer {
+                cost: smoothing::path_cost(&self.problem.si, &path),
+                points: path.iter().map(|q| self.problem.si.project(q)).map(|p| [p.x, p.y]).collect(),
+                path: self.problem.decode_path(&path),
+            }),
         }
     }
 
