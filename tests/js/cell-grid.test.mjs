@@ -1,0 +1,135 @@
+// The Cells tool's geometry (www/ui/cell-grid.js): the lattice is grid search's (src/planners/grid.rs),
+// the cell under a point, the cells a drag crosses (no gaps), a rectangle minus a box (every point
+// left covered exactly once, the box's not at all), and a painted cell's pieces (they cover the
+// wall cells and never meet a free cell, which grid search would then block).
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { lattice, defaultCell, cellAt, cellBox, cellsOnSegment, rectMinus, wallPieces, pieceCell, grow, meets } from '../../www/ui/cell-grid.js';
+
+/** A seeded generator (mulberry32), so a failure repeats. */
+function rng(seed) {
+  let a = seed >>> 0;
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+const inBox = (b, x, y) => x >= b[0] && x <= b[2] && y >= b[1] && y <= b[3];
+const inOpen = (b, x, y) => x > b[0] && x < b[2] && y > b[1] && y < b[3];
+
+test('the lattice is grid search\'s: origin at the lower-left corner, ceil(w / cell) × ceil(h / cell) cells, a fortieth of the shorter side by default', () => {
+  const unit = lattice([0, 0, 1, 1], defaultCell([0, 0, 1, 1]));
+  assert.deepEqual([unit.ox, unit.oy, unit.side, unit.nx, unit.ny], [0, 0, 0.025, 40, 40]);
+  const wide = lattice([-2, 1, 8, 6], defaultCell([-2, 1, 8, 6]));
+  assert.deepEqual([wide.ox, wide.oy, wide.side, wide.nx, wide.ny], [-2, 1, 0.125, 80, 40]);
+  const odd = lattice([0, 0, 1, 0.7], 0.3); // the last row and column reach past the bounds
+  assert.deepEqual([odd.nx, odd.ny], [4, 3]);
+  // the snapping grid's lattice is anchored at 0
+  const snap = lattice([0.12, -0.33, 1, 1], 0.1, 0);
+  assert.ok(Math.abs(snap.ox - 0.1) < 1e-12 && Math.abs(snap.oy + 0.4) < 1e-12, JSON.stringify(snap));
+  assert.deepEqual([snap.nx, snap.ny], [9, 14]);
+});
+
+test('the cell under a point: floor, as grid.rs\'s cell_of; outside the lattice, none', () => {
+  const lat = lattice([0, 0, 1, 1], 0.025);
+  assert.deepEqual(cellAt(lat, 0.0125, 0.0125), [0, 0]);
+  assert.deepEqual(cellAt(lat, 0.1, 0.1), [4, 4]);
+  assert.deepEqual(cellAt(lat, 0.999, 0.5125), [39, 20]);
+  assert.equal(cellAt(lat, -0.001, 0.5), null);
+  assert.equal(cellAt(lat, 0.5, 1.0001), null);
+  assert.deepEqual(cellBox(lat, 13, 2), [0.325, 0.05, 0.35, 0.075], 'no float noise');
+});
+
+test('the cells a drag crosses: each shares a side with the one before, from the first cell to the last, every point of the move in one of them', () => {
+  const lat = lattice([0, 0, 1, 1], 0.05);
+  const r = rng(7);
+  for (let n = 0; n < 500; n++) {
+    const a = [r() * 1.2 - 0.1, r() * 1.2 - 0.1];
+    const b = n % 5 === 0 ? [a[0], r()] : [r() * 1.2 - 0.1, r() * 1.2 - 0.1]; // some vertical moves
+    const cells = cellsOnSegment(lat, a, b);
+    const f = (p) => [Math.floor((p[0] - lat.ox) / lat.side), Math.floor((p[1] - lat.oy) / lat.side)];
+    assert.deepEqual(cells[0], f(a));
+    assert.deepEqual(cells.at(-1), f(b));
+    for (let k = 1; k < cells.length; k++) {
+      assert.equal(Math.abs(cells[k][0] - cells[k - 1][0]) + Math.abs(cells[k][1] - cells[k - 1][1]), 1, `${JSON.stringify([a, b])}: step ${k}`);
+    }
+    const keys = new Set(cells.map((c) => c.join()));
+    for (let t = 0; t <= 1; t += 1 / 400) {
+      const c = f([a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]);
+      assert.ok(keys.has(c.join()), `${JSON.stringify([a, b])} at t = ${t}: cell ${c} missed`);
+    }
+  }
+  // a long drag is bounded
+  assert.equal(cellsOnSegment(lat, [0, 0], [1e6, 0], 100).length, 100);
+});
+
+test('a rectangle minus a box: every point left covered exactly once, the box\'s not at all', () => {
+  const r = rng(11);
+  for (let n = 0; n < 300; n++) {
+    const rect = [r(), r(), r(), r()]; // any corner order
+    const bx = r() * 1.2 - 0.1, by = r() * 1.2 - 0.1;
+    const box = [bx, by, bx + r() * 0.5, by + r() * 0.5];
+    const pieces = rectMinus(rect, box);
+    assert.ok(pieces.length <= 4);
+    const R = [Math.min(rect[0], rect[2]), Math.min(rect[1], rect[3]), Math.max(rect[0], rect[2]), Math.max(rect[1], rect[3])];
+    for (const p of pieces) assert.ok(p[2] > p[0] && p[3] > p[1] && p[0] >= R[0] && p[2] <= R[2] && p[1] >= R[1] && p[3] <= R[3], JSON.stringify(p));
+    for (let k = 0; k < 400; k++) {
+      const x = r() * 1.2 - 0.1, y = r() * 1.2 - 0.1;
+      const covered = pieces.filter((p) => inBox(p, x, y)).length;
+      const want = inBox(R, x, y) && !inBox(box, x, y) ? 1 : 0;
+      assert.equal(covered, want, `${JSON.stringify({ rect, box, x, y, pieces })}`);
+    }
+  }
+  assert.deepEqual(rectMinus([0, 0, 1, 1], [2, 2, 3, 3]), [[0, 0, 1, 1]], 'apart: unchanged');
+  assert.deepEqual(rectMinus([0, 0, 1, 1], [-1, -1, 2, 2]), [], 'covered: nothing left');
+  assert.deepEqual(rectMinus([0, 0, 3, 3], [1, 1, 2, 2]).length, 4, 'a hole: four pieces around it');
+});
+
+test('a painted cell\'s pieces: inside its cell, covering it up to a hair from free cells, never meeting a free cell; walls side by side touch', () => {
+  const lat = lattice([0, 0, 1, 1], 0.1);
+  const r = rng(3);
+  for (let n = 0; n < 40; n++) {
+    const wall = new Set();
+    for (let i = 0; i < lat.nx; i++) for (let j = 0; j < lat.ny; j++) if (r() < 0.45) wall.add(`${i},${j}`);
+    const isWall = (i, j) => i < 0 || j < 0 || i >= lat.nx || j >= lat.ny || wall.has(`${i},${j}`);
+    const pieces = [];
+    for (const k of wall) {
+      const [i, j] = k.split(',').map(Number);
+      for (const p of wallPieces(lat, i, j, isWall)) {
+        assert.deepEqual(pieceCell(lat, p), [i, j], 'a piece lies within its cell');
+        pieces.push(p);
+      }
+    }
+    for (let i = 0; i < lat.nx; i++) {
+      for (let j = 0; j < lat.ny; j++) {
+        if (isWall(i, j)) continue;
+        const box = cellBox(lat, i, j);
+        const p = pieces.find((q) => meets(q, box));
+        assert.ok(!p, `free cell ${i},${j} is met by ${JSON.stringify(p)}`);
+      }
+    }
+    // every point of a wall cell farther than the margin from any free cell is covered
+    const free = [];
+    for (let i = 0; i < lat.nx; i++) for (let j = 0; j < lat.ny; j++) if (!isWall(i, j)) free.push(grow(cellBox(lat, i, j), lat.margin));
+    for (let k = 0; k < 3000; k++) {
+      const x = r(), y = r();
+      const c = cellAt(lat, x, y);
+      if (!isWall(...c) || free.some((b) => inBox(b, x, y))) continue;
+      assert.ok(pieces.some((p) => inBox(p, x, y)), `(${x}, ${y}) in wall cell ${c} is not covered`);
+    }
+    // two walls side by side share their edge: its midpoint is in both cells' pieces
+    for (const k of wall) {
+      const [i, j] = k.split(',').map(Number);
+      if (!wall.has(`${i + 1},${j}`)) continue;
+      const x = cellBox(lat, i + 1, j)[0], y = lat.oy + (j + 0.5) * lat.side;
+      assert.ok(pieces.some((p) => inBox(p, x, y) && p[2] === x) && pieces.some((p) => inBox(p, x, y) && p[0] === x), `edge of ${k}`);
+    }
+  }
+  // a lone cell: its square a hundredth of a cell inside on every side
+  const lone = wallPieces(lat, 3, 4, (i, j) => i === 3 && j === 4);
+  assert.deepEqual(lone, [[0.301, 0.401, 0.399, 0.499]]);
+  assert.ok(!inOpen(lone[0], 0.3, 0.45));
+});
