@@ -178,3 +178,39 @@ test('Cells on another planner: the snapping grid\'s cells when snapping, grid s
   const rects = sortRects((await scenario()).obstacles);
   assert.deepEqual(rects, [[0.1005, 0.5005, 0.15, 0.5495], [0.15, 0.5005, 0.2, 0.5495], [0.2, 0.5005, 0.2495, 0.5495]]);
 });
+
+test('Cells: erasing a cell of a drawn rectangle splits it around the cell, which grid search then leaves free; Escape drops a drag', async () => {
+  await fx.pickScenario('open-field', 'Open field');
+  await page.click('#new-map');
+  await settled(0);
+  await page.selectOption('#planner', 'grid-search');
+  await fx.waitState('idle');
+  await page.click('#tool-rect');
+  await fx.drag(await fx.toPage(0.3, 0.7), await fx.toPage(0.5, 0.9));
+  await settled(1);
+  const [rect] = (await scenario()).obstacles;
+  const cell = 32 * N + 16; // (0.4125, 0.8125), in the middle of it
+  assert.ok((await blockedCells()).includes(cell));
+
+  // A click (no move) on a wall cell erases that one cell: four rects around it.
+  await page.click('#tool-cells');
+  await drag([centre(16), centre(32)], [centre(16), centre(32)], 1);
+  await settled(4);
+  const parts = (await scenario()).obstacles.map((o) => o.rect);
+  const area = (r) => Math.abs((r[2] - r[0]) * (r[3] - r[1]));
+  const hole = (SIDE + 2 * M) ** 2;
+  assert.ok(Math.abs(parts.reduce((a, r) => a + area(r), 0) - (area(rect.rect) - hole)) < 1e-12, 'the rectangle minus the cell (and its hair)');
+  const blocked = await blockedCells();
+  assert.ok(!blocked.includes(cell), 'the erased cell is free');
+  for (const k of [cell - 1, cell + 1, cell - N, cell + N]) assert.ok(blocked.includes(k), `its neighbour ${k} stays blocked`);
+
+  // Escape in the middle of a drag: the map as before it, nothing sent.
+  await page.mouse.move(...(await fx.toPage(centre(2), centre(2))));
+  await page.mouse.down();
+  await page.mouse.move(...(await fx.toPage(centre(9), centre(2))));
+  await page.keyboard.press('Escape');
+  await page.mouse.up();
+  await fx.nextFrames();
+  await fx.waitState('idle');
+  assert.equal((await scenario()).obstacles.length, 4);
+});
