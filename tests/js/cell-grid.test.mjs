@@ -1,10 +1,12 @@
 // The Cells tool's geometry (www/ui/cell-grid.js): the lattice is grid search's (src/planners/grid.rs),
 // the cell under a point, the cells a drag crosses (no gaps), a rectangle minus a box (every point
-// left covered exactly once, the box's not at all), and a painted cell's pieces (they cover the
-// wall cells and never meet a free cell, which grid search would then block).
+// left covered exactly once, the box's not at all), a painted cell's pieces (they cover the wall
+// cells and never meet a free cell, which grid search would then block), and the Cells tool itself
+// on a stand-in editor: random drags against a model of the painted set.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { lattice, defaultCell, cellAt, cellBox, cellsOnSegment, rectMinus, wallPieces, pieceCell, grow, meets } from '../../www/ui/cell-grid.js';
+import { CellPainter, MAX_OBSTACLES, MAX_DRAG_CELLS } from '../../www/ui/cell-painter.js';
 
 /** A seeded generator (mulberry32), so a failure repeats. */
 function rng(seed) {
@@ -132,4 +134,75 @@ test('a painted cell\'s pieces: inside its cell, covering it up to a hair from f
   const lone = wallPieces(lat, 3, 4, (i, j) => i === 3 && j === 4);
   assert.deepEqual(lone, [[0.301, 0.401, 0.399, 0.499]]);
   assert.ok(!inOpen(lone[0], 0.3, 0.45));
+});
+
+/** The Cells tool (cell-painter.js) on a stand-in for the obstacle editor: the scenario it edits, commits counted. */
+function painterOn(scenario, config = () => ({ planner: 'grid-search', params: { cell: 0.1 } })) {
+  const host = {
+    scenario, grid: { on: false, step: 0.05 }, selected: -1, said: '', commits: 0,
+    preview() {}, say(text) { this.said = text; }, commit() { this.commits++; },
+  };
+  return [new CellPainter(host, config), host];
+}
+/** Grid search's labels (grid.rs): a cell is blocked when a (closed) rect meets its (closed) square. */
+function blockedByGrid(lat, obstacles) {
+  const out = new Set();
+  for (let j = 0; j < lat.ny; j++) {
+    for (let i = 0; i < lat.nx; i++) {
+      const cx = lat.ox + (i + 0.5) * lat.side, cy = lat.oy + (j + 0.5) * lat.side, h = 0.5 * lat.side;
+      const sq = [cx - h, cy - h, cx + h, cy + h];
+      if (obstacles.some((o) => meets([Math.min(o.rect[0], o.rect[2]), Math.min(o.rect[1], o.rect[3]), Math.max(o.rect[0], o.rect[2]), Math.max(o.rect[1], o.rect[3])], sq))) out.add(`${i},${j}`);
+    }
+  }
+  return out;
+}
+
+test('the Cells tool, drag after drag: grid search blocks exactly the cells painted and not erased, walls side by side touch, the start and goal cells stay free', () => {
+  const r = rng(5);
+  const scenario = { bounds: [0, 0, 1, 1], start: [0.15, 0.15], goal: [0.85, 0.85], obstacles: [] };
+  const [painter, host] = painterOn(scenario);
+  const lat = painter.lattice();
+  assert.deepEqual([lat.nx, lat.ny, lat.side], [10, 10, 0.1]);
+  const model = new Set();
+  const ends = new Set(['1,1', '8,8']);
+  for (let n = 0; n < 150; n++) {
+    const a = [r(), r()];
+    const path = [a, ...Array.from({ length: 1 + Math.floor(r() * 3) }, () => [r() * 1.1 - 0.05, r() * 1.1 - 0.05])];
+    const first = cellAt(lat, ...a).join();
+    const paint = !model.has(first);
+    const cells = [first];
+    for (let k = 1; k < path.length; k++) {
+      for (const c of cellsOnSegment(lat, path[k - 1], path[k]).slice(1)) if (cellAt(lat, c[0] * 0.1 + 0.05, c[1] * 0.1 + 0.05)) cells.push(c.join());
+    }
+    for (const c of cells) if (paint && !ends.has(c)) model.add(c); else if (!paint) model.delete(c);
+    const commits = host.commits;
+    assert.ok(painter.down(...a));
+    for (const p of path.slice(1)) painter.move(...p);
+    painter.up();
+    assert.ok(host.commits - commits <= 1, 'one commit per drag');
+    assert.deepEqual([...blockedByGrid(lat, scenario.obstacles)].sort(), [...model].sort(), `drag ${n}`);
+    for (const c of model) {
+      const [i, j] = c.split(',').map(Number);
+      if (!model.has(`${i + 1},${j}`)) continue;
+      const x = cellBox(lat, i + 1, j)[0], y = (j + 0.5) * 0.1;
+      assert.ok(scenario.obstacles.some((o) => inBox(o.rect, x, y)), `the edge between ${c} and its right neighbour is a wall`);
+    }
+  }
+});
+
+test('the Cells tool stops at the obstacle limit and says so; a painted cell is never the start\'s', () => {
+  const scenario = { bounds: [0, 0, 1, 1], start: [0.15, 0.15], goal: [0.85, 0.85], obstacles: Array.from({ length: MAX_OBSTACLES - 12 }, () => ({ circle: [2, 2, 0.01] })) };
+  const [painter, host] = painterOn(scenario);
+  painter.down(0.05, 0.55);
+  painter.move(0.95, 0.55);
+  painter.up();
+  assert.equal(scenario.obstacles.length, MAX_OBSTACLES - 12 + 2, 'two cells (5 obstacles at most each), then it stops');
+  assert.match(host.said, /at most 100,000 obstacles/);
+  const [p2, h2] = painterOn({ bounds: [0, 0, 1, 1], start: [0.15, 0.15], goal: [0.85, 0.85], obstacles: [] });
+  p2.down(0.05, 0.15);
+  p2.move(0.25, 0.15);
+  p2.up();
+  assert.equal(p2.host.scenario.obstacles.length, 2, 'cells 0 and 2 of the row, not the start\'s');
+  assert.match(h2.said, /never covers the start/);
+  assert.ok(MAX_DRAG_CELLS >= 1000);
 });
