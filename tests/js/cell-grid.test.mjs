@@ -6,7 +6,8 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { lattice, defaultCell, cellAt, cellBox, cellsOnSegment, rectMinus, wallPieces, pieceCell, grow, meets } from '../../www/ui/cell-grid.js';
-import { CellPainter, MAX_OBSTACLES, MAX_DRAG_CELLS } from '../../www/ui/cell-painter.js';
+import { readFileSync } from 'node:fs';
+import { CellPainter, MAX_OBSTACLES, MAX_TOTAL_VERTICES, MAX_DRAG_CELLS } from '../../www/ui/cell-painter.js';
 
 /** A seeded generator (mulberry32), so a failure repeats. */
 function rng(seed) {
@@ -197,7 +198,18 @@ test('the Cells tool stops at the obstacle limit and says so; a painted cell is 
   painter.move(0.95, 0.55);
   painter.up();
   assert.equal(scenario.obstacles.length, MAX_OBSTACLES - 12 + 2, 'two cells (5 obstacles at most each), then it stops');
-  assert.match(host.said, /at most 100,000 obstacles/);
+  assert.match(host.said, /at most 100,000 obstacles and 400,000 vertices/);
+  // the same limits as the core's
+  const rust = readFileSync(new URL('../../src/limits.rs', import.meta.url), 'utf8');
+  const limit = (name) => Number(new RegExp(`pub const ${name}: usize = ([\\d_]+);`).exec(rust)[1].replaceAll('_', ''));
+  assert.deepEqual([MAX_OBSTACLES, MAX_TOTAL_VERTICES], [limit('MAX_OBSTACLES'), limit('MAX_TOTAL_VERTICES')]);
+  // polygons count their vertices
+  const poly = { polygon: Array.from({ length: 1000 }, (_, k) => [2 + Math.cos(k / 159.2), 2 + Math.sin(k / 159.2)]) };
+  const [p3] = painterOn({ bounds: [0, 0, 1, 1], start: [0.15, 0.15], goal: [0.85, 0.85], obstacles: [...Array.from({ length: 399 }, () => poly), { polygon: poly.polygon.slice(0, 900) }] });
+  p3.down(0.05, 0.55);
+  p3.move(0.95, 0.55);
+  p3.up();
+  assert.equal(p3.host.scenario.obstacles.length, 400 + 5, '100 vertices left: 25 rects, 5 cells budgeted at 5 each');
   const [p2, h2] = painterOn({ bounds: [0, 0, 1, 1], start: [0.15, 0.15], goal: [0.85, 0.85], obstacles: [] });
   p2.down(0.05, 0.15);
   p2.move(0.25, 0.15);

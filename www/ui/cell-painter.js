@@ -7,13 +7,15 @@
 // into up to 4 rectangles), but leaves circles and polygons (the status line says so). A painted
 // cell never covers the start or goal. A whole drag is one undo step and one commit (on release);
 // the canvas shows the cells as they are painted. A drag paints at most MAX_DRAG_CELLS cells, and
-// the map keeps at most MAX_OBSTACLES obstacles (the core's limit, src/limits.rs).
+// the map keeps at most MAX_OBSTACLES obstacles and MAX_TOTAL_VERTICES vertices (a rect counts 4:
+// the core's limits, src/limits.rs).
 
 import { lattice, defaultCell, cellAt, cellBox, cellsOnSegment, grow, meets, rectMinus, wallPieces, pieceCell } from './cell-grid.js';
 import { inside } from './obstacle-shapes.js';
 
 export const MAX_DRAG_CELLS = 10000;
 export const MAX_OBSTACLES = 100000;
+export const MAX_TOTAL_VERTICES = 400000;
 const LATTICE_COLOUR = 'rgba(31, 78, 154, 0.22)';
 const LATTICE_PX = 6; // css px: lines closer than this are thinned
 
@@ -62,7 +64,7 @@ export class CellPainter {
         pieces.get(k).push(ob.rect);
       } else others.push(ob);
     }
-    this.drag = { lat, pieces, others, base: s.obstacles.length, count: 0, added: 0, changed: false, notes: new Set(), last: [x, y], wallCache: new Map() };
+    this.drag = { lat, pieces, others, base: s.obstacles.length, baseVerts: s.obstacles.reduce((n, ob) => n + (ob.polygon ? ob.polygon.length : 4), 0), count: 0, added: 0, changed: false, notes: new Set(), last: [x, y], wallCache: new Map() };
     this.drag.mode = this.isWall(...c) ? 'erase' : 'paint';
     this.visit(c);
     this.flush();
@@ -171,7 +173,9 @@ export class CellPainter {
     const d = this.drag;
     const verb = d.mode === 'paint' ? 'paints' : 'erases';
     if (d.count >= MAX_DRAG_CELLS) d.notes.add(`A drag ${verb} at most ${MAX_DRAG_CELLS.toLocaleString('en')} cells: release and drag again.`);
-    else if (d.base + d.added + more > MAX_OBSTACLES) d.notes.add(`The map holds at most ${MAX_OBSTACLES.toLocaleString('en')} obstacles: the drag stops here.`);
+    else if (d.base + d.added + more > MAX_OBSTACLES || d.baseVerts + 4 * (d.added + more) > MAX_TOTAL_VERTICES) {
+      d.notes.add(`The map holds at most ${MAX_OBSTACLES.toLocaleString('en')} obstacles and ${MAX_TOTAL_VERTICES.toLocaleString('en')} vertices (a rectangle counts 4): the drag stops here.`);
+    }
     else {
       d.count++;
       d.added += more;
