@@ -557,7 +557,7 @@ export function cellSummary(m) {
   const pick = (state) => [...new Set(m.changed)].map((id) => m.cells.get(id)).filter((c) => c && c.state === state)
     .map((c) => { const [x, y] = centreOf(c); return { id: c.id, x, y, level: c.level, radius: c.radius }; });
   return {
-    cells: m.order.length, labels, visited: pick(2), open: pick(0).length, blocked: pick(1).length, field: m.field.length,
+    cells: m.order.length, labels, full: m.order.filter((id) => m.cells.get(id).label === 2), visited: pick(2), open: pick(0).length, blocked: pick(1).length, field: m.field.length,
     regions: m.regions.map((r) => ({ ...r })), minima: m.minima.map((p) => ({ ...p })), t: m.t,
   };
 }

@@ -145,7 +145,7 @@ function onReady(msg) {
   if (!registry) {
     registry = applyPageLimits(msg.planners);
     builtins = msg.builtins;
-    panel = createPanel(ui.panel, registry, () => { configure(); clearError(); syncChart(); },
+    panel = createPanel(ui.panel, registry, () => { configure(); clearError(); syncChart(); obstacleEditor.plannerChanged(); },
       { freshSeed: () => lane.session.send({ type: 'fresh-seed' }) });
     const first = fillScenarioPicker(ui.scenario, builtins);
     if (location.hash.length > 1) restoreHash(location.hash);
@@ -461,7 +461,8 @@ const editor = new Editor({
 
 // Obstacles and bounds: drawn, moved, resized, deleted; undo/redo; saved as JSON (obstacle-editor.js)
 
-const obstacleEditor = new ObstacleEditor({ canvas: ui.canvas, view, editor, root: $('obstacle-tools'), download: downloadText });
+const obstacleEditor = new ObstacleEditor({ canvas: ui.canvas, view, editor, root: $('obstacle-tools'), download: downloadText,
+  config: () => panel?.config() ?? null }); // the Cells tool paints on grid search's cells
 
 // Exports for slides (exports.js): PNG at a width, SVG, GIF, WebM at a width; legend and transparency options
 wireExports({

@@ -5,11 +5,17 @@
 // start or goal is reported there (with its JSON path) and the page stays usable.
 //
 // Tools: select (default), rect, circle, polygon (click the corners; double-click, Enter or a click
-// on the first corner closes it; Escape drops it). Keys (never while typing in a field):
-// Delete/Backspace deletes the selection; ctrl/cmd+Z undo, ctrl/cmd+shift+Z or ctrl+Y redo.
+// on the first corner closes it; Escape drops it), and cells (PathFinding.js's walls, cell-painter.js:
+// drag from a free cell to paint walls on grid search's cells, from a wall to erase; the lattice is
+// drawn faintly while it is the tool). Keys (never while typing in a field): Delete/Backspace
+// deletes the selection; ctrl/cmd+Z undo, ctrl/cmd+shift+Z or ctrl+Y redo; Escape drops a polygon
+// being drawn or a cell drag (the map as before it).
 //
 // The map as a whole: "New map" (same bounds and robot, no obstacles, start and goal in opposite
-// corners, "Untitled map") and "Clear obstacles", both undoable; "Snap to grid" with a grid step
+// corners, "Untitled map"), "Clear walls" and "Clear obstacles", all undoable. Clear walls is
+// PathFinding.js's button: it removes the painted cells (the rectangles that lie within one cell of
+// the Cells tool's lattice) and keeps drawn shapes and the built-in maps' walls, as a student who
+// painted a maze over a map expects; Clear obstacles removes every obstacle. "Snap to grid" with a grid step
 // (drawn faintly while on): every placed or dragged vertex, corner, circle centre and radius, start
 // and goal lands on the grid, rounded to the step's decimals; off, values are rounded to about four
 // digits below the map's size. Under the pointer, a read-out gives the world coordinates. The name
@@ -19,6 +25,7 @@
 import { el } from './dom.js';
 import { PALETTE } from '../draw/palette.js';
 import { anchor, handles, inside, moved, reshaped, niceStep, stepDecimals, snapTo, tidy, readoutDecimals } from './obstacle-shapes.js';
+import { CellPainter } from './cell-painter.js';
 
 const HANDLE = 6; // css px: handle half-size and grab distance
 const MIN = 1e-3; // the smallest rectangle side or circle radius, as a fraction of the scene
@@ -32,9 +39,10 @@ const GRID_PX = 6; // css px: grid lines closer than this are thinned (every 2nd
 export class ObstacleEditor {
   /**
    * `editor`: the start/goal Editor (its `scenario` and `commit()` are shared); `root`: where the
-   * toolbar goes. The view draws the selection through `view.overlayHooks`.
+   * toolbar goes. The view draws the selection through `view.overlayHooks`. `config()`: the
+   * planner chosen, {planner, params} (the Cells tool paints on grid search's cells).
    */
-  constructor({ canvas, view, editor, root, download }) {
+  constructor({ canvas, view, editor, root, download, config = () => null }) {
     this.canvas = canvas;
     this.view = view;
     this.editor = editor;
@@ -48,6 +56,7 @@ export class ObstacleEditor {
     this.redoStack = [];
     this.committed = null; // the scenario as last committed (what undo returns to)
     this.grid = { on: false, step: 0.05, custom: false }; // custom: the step was typed, not the default
+    this.cells = new CellPainter(this, config);
     view.overlayHooks = [...(view.overlayHooks ?? []), (ctx, L) => this.draw(ctx, L)];
     editor.beforeCommit = () => this.record(); // start/goal drags are undoable too
     editor.place = (x, y) => this.place(x, y); // a dragged start/goal snaps (or is tidied) as obstacles are
@@ -56,6 +65,7 @@ export class ObstacleEditor {
     canvas.addEventListener('pointermove', (e) => { this.move(e); this.showPointer(e); });
     canvas.addEventListener('pointerup', (e) => this.up(e));
     canvas.addEventListener('pointerleave', () => { this.readout.hidden = true; });
+    canvas.addEventListener('pointercancel', () => this.cells.cancel());
     canvas.addEventListener('dblclick', (e) => { if (this.draft) { e.preventDefault(); this.closeDraft(); } });
     document.addEventListener('keydown', (e) => this.key(e));
     // The pointer's world coordinates, in a corner of the stage (text only).
@@ -79,12 +89,20 @@ export class ObstacleEditor {
       this.redoStack = [];
       this.selected = -1;
       this.draft = null;
+      this.say('');
     }
+    this.cells.drag = null;
     this.committed = this.scenario ? structuredClone(this.scenario) : null;
     if (this.selected >= (this.scenario?.obstacles?.length ?? 0)) this.selected = -1;
     this.fitGrid(!edited);
     this.syncFixed();
     this.render();
+  }
+
+  /** Another planner or parameter: the Cells tool's lattice may have changed. */
+  plannerChanged() {
+    this.render();
+    this.view.dirty = true;
   }
 
   /** Record the change about to be committed (any edit: obstacles, bounds, start, goal). */
@@ -117,6 +135,7 @@ export class ObstacleEditor {
   setTool(tool) {
     this.tool = tool;
     this.draft = null;
+    this.say('');
     this.canvas.classList.toggle('drawing', tool !== 'select');
     this.render();
     this.view.dirty = true;
@@ -167,6 +186,26 @@ export class ObstacleEditor {
     this.commit();
   }
 
+  /** "Clear walls": the painted cells (rectangles within one cell of the Cells tool's lattice). */
+  clearWalls() {
+    if (!this.scenario || this.editor.stale) return;
+    const lat = this.cells.lattice();
+    const kept = this.scenario.obstacles.filter((ob) => !this.cells.isPiece(ob, lat));
+    if (kept.length === this.scenario.obstacles.length) return;
+    this.scenario.obstacles = kept;
+    this.selected = -1;
+    this.preview();
+    this.commit();
+  }
+
+  /** The status line under the tools (why a cell was not painted or erased); '' hides it. */
+  say(text) {
+    const s = this.barParts?.status;
+    if (!s || s.textContent === text) return;
+    s.textContent = text;
+    s.hidden = !text;
+  }
+
   save() {
     if (!this.scenario) return;
     const name = (this.scenario.name || 'scenario').replace(/[^\w.-]+/g, '-').toLowerCase();
@@ -191,13 +230,15 @@ export class ObstacleEditor {
       return b;
     };
     const tools = { select: tool('select', 'Select', 'Select, move and resize obstacles'), rect: tool('rect', 'Rectangle', 'Draw a rectangle'),
-      circle: tool('circle', 'Circle', 'Draw a circle'), polygon: tool('polygon', 'Polygon', 'Draw a polygon') };
+      circle: tool('circle', 'Circle', 'Draw a circle'), polygon: tool('polygon', 'Polygon', 'Draw a polygon'),
+      cells: tool('cells', 'Cells', 'Paint walls on grid cells: drag from a free cell to paint, from a wall to erase') };
     const buttons = {
       del: act('obstacle-delete', 'Delete', () => this.deleteSelected(), 'Delete the selected obstacle (Delete)'),
       undo: act('undo', 'Undo', () => this.undo(), 'Undo (ctrl+Z)'),
       redo: act('redo', 'Redo', () => this.redo(), 'Redo (ctrl+shift+Z)'),
       save: act('save-scenario', 'Save JSON', () => this.save(), 'Download the scenario as JSON'),
       newMap: act('new-map', 'New map', () => this.newMap(), 'An empty map: the same bounds and robot, no obstacles (undo brings the old one back)'),
+      walls: act('clear-walls', 'Clear walls', () => this.clearWalls(), 'Remove the painted cells; drawn shapes stay (undo brings them back)'),
       clear: act('clear-obstacles', 'Clear obstacles', () => this.clearObstacles(), 'Delete every obstacle (undo brings them back)'),
     };
     const bounds = el('div', { className: 'row bounds' });
@@ -228,12 +269,15 @@ export class ObstacleEditor {
       return input;
     });
     const hint = el('p', { className: 'hint' });
-    this.barParts = { tools, buttons, boundInputs, hint };
+    const status = el('p', { id: 'edit-status', className: 'hint bad', role: 'status' });
+    status.hidden = true;
+    this.barParts = { tools, buttons, boundInputs, hint, status };
     this.bar.replaceChildren(
       el('div', { className: 'row tools', role: 'toolbar', 'aria-label': 'Obstacle tools' }, ...Object.values(tools)),
       el('div', { className: 'row' }, buttons.del, buttons.undo, buttons.redo, buttons.save),
-      el('div', { className: 'row' }, buttons.newMap, buttons.clear),
+      el('div', { className: 'row' }, buttons.newMap, buttons.walls, buttons.clear),
       hint,
+      status,
       bounds,
       boundsError,
     );
@@ -250,6 +294,8 @@ export class ObstacleEditor {
     b.save.disabled = !s;
     b.newMap.disabled = !s;
     b.clear.disabled = !s?.obstacles?.length;
+    const lat = s ? this.cells.lattice() : null;
+    b.walls.disabled = !s?.obstacles?.some((ob) => this.cells.isPiece(ob, lat));
     boundInputs.forEach((input, i) => {
       input.disabled = !s;
       if (document.activeElement !== input) input.value = s ? String(s.bounds[i]) : '';
@@ -259,6 +305,7 @@ export class ObstacleEditor {
       rect: 'Drag on the canvas to draw a rectangle.',
       circle: 'Drag from the centre to draw a circle.',
       polygon: 'Click the corners; double-click, press Enter or click the first corner to close it. Escape drops it.',
+      cells: 'Drag from a free cell to paint walls, from a wall to erase them; drag the start or goal to move it. The cells are grid search\'s.',
     }[this.tool];
   }
 
@@ -422,7 +469,11 @@ export class ObstacleEditor {
     const [rx, ry] = this.world(e); // where the press is (what it grabs)
     const [x, y] = this.tool === 'select' ? [rx, ry] : this.place(rx, ry); // where a new corner goes
     const obs = this.scenario.obstacles;
-    if (this.tool === 'select') {
+    if (this.tool === 'cells') {
+      if (this.editor.draggable && this.editor.hit(this.editor.devicePoint(e), e.shiftKey)) return; // start/goal first
+      this.selected = -1;
+      if (!this.cells.down(rx, ry)) return;
+    } else if (this.tool === 'select') {
       if (this.editor.draggable && this.editor.hit(this.editor.devicePoint(e), e.shiftKey)) return; // start/goal first
       const sel = obs[this.selected];
       const k = sel ? handles(sel).findIndex(([hx, hy]) => Math.hypot(hx - x, hy - y) <= this.tol()) : -1;
@@ -452,6 +503,7 @@ export class ObstacleEditor {
   }
 
   move(e) {
+    if (this.cells.drag) { this.cells.move(...this.world(e)); return; }
     if (!this.drag || !this.scenario) { if (this.draft) this.view.dirty = true; this.hover = this.view.layout && this.scenario ? this.place(...this.world(e)) : null; return; }
     const [x, y] = this.world(e);
     const obs = this.scenario.obstacles;
@@ -478,6 +530,11 @@ export class ObstacleEditor {
   }
 
   up(e) {
+    if (this.cells.drag) {
+      if (this.canvas.hasPointerCapture(e.pointerId)) this.canvas.releasePointerCapture(e.pointerId);
+      this.cells.up();
+      return;
+    }
     const d = this.drag;
     if (!d) return;
     this.drag = null;
@@ -515,6 +572,7 @@ export class ObstacleEditor {
     else if ((e.key === 'Delete' || e.key === 'Backspace') && this.selected >= 0) { e.preventDefault(); this.deleteSelected(); }
     else if (e.key === 'Enter' && this.draft) { e.preventDefault(); this.closeDraft(); }
     else if (e.key === 'Escape' && this.draft) { e.preventDefault(); this.draft = null; this.view.dirty = true; }
+    else if (e.key === 'Escape' && this.cells.drag) { e.preventDefault(); this.cells.cancel(); }
   }
 
   /** The selection's outline and handles, and a polygon being drawn (called by the view). */
@@ -524,7 +582,8 @@ export class ObstacleEditor {
     const px = (x, y) => [L.sx(x), L.sy(y)];
     const ob = s.obstacles[this.selected];
     ctx.save();
-    if (this.grid.on) this.drawGrid(ctx, L);
+    if (this.grid.on && this.tool !== 'cells') this.drawGrid(ctx, L);
+    if (this.tool === 'cells') this.cells.draw(ctx, L);
     if (ob) {
       ctx.fillStyle = PALETTE.start;
       ctx.strokeStyle = '#000';
