@@ -5,7 +5,8 @@
 import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { pageFixture, SHOTS as shots } from './browser.mjs';
+import { execFileSync } from 'node:child_process';
+import { pageFixture, ROOT, SHOTS as shots } from './browser.mjs';
 import { PALETTE } from '../../www/draw/palette.js';
 
 const fx = await pageFixture();
@@ -138,6 +139,51 @@ test('EST on the zigzag: the density grid shades the picking tree\'s cells and o
   await page.selectOption('#planner', 'rrt-connect');
   await waitState('idle');
   assert.equal(await page.isVisible('#show-density'), false, 'not offered for RRT-Connect');
+});
+
+test('Lazy PRM on the zigzag: two clicks ask the finished roadmap another query, answered as the CLI answers it', async () => {
+  await pickScenario('zigzag', 'Zigzag of walls');
+  await page.selectOption('#planner', 'lazy-prm');
+  await waitState('idle');
+  assert.equal(await page.isVisible('#query-button'), false, 'no query before the roadmap is built');
+  await setField('seed', 1);
+  await fastPlayback();
+  await page.click('#run');
+  await waitState('finished', 90000);
+  await nextFrames();
+  const before = await page.evaluate(() => window.planarium.stats().nodes);
+  const scenario = await page.evaluate(() => window.planarium.scenario());
+  // Escape drops a query half asked; the map is not edited by the clicks
+  await page.click('#query-button');
+  await page.mouse.click(...(await fx.toPage(0.92, 0.1)));
+  await page.keyboard.press('Escape');
+  assert.match(await page.textContent('#query-status'), /cancelled/);
+  await page.click('#query-button');
+  await page.mouse.click(...(await fx.toPage(0.92, 0.1)));
+  await page.mouse.click(...(await fx.toPage(0.08, 0.9)));
+  await page.waitForFunction(() => /cost|does not join/.test(document.getElementById('query-status').textContent), null, { timeout: 30000 });
+  const status = await page.textContent('#query-status');
+  assert.match(status, /^Query 1: \d+ states, cost [\d.]+, on the same roadmap\.$/);
+  assert.deepEqual(await page.evaluate(() => window.planarium.scenario()), scenario, 'the clicks edited nothing');
+  assert.equal(await page.evaluate(() => window.planarium.state()), 'finished', 'still the same finished run');
+  const { points, cost } = await page.evaluate(() => window.planarium.query());
+  assert.ok(Math.hypot(points[0][0] - 0.92, points[0][1] - 0.1) < 0.01, `starts where clicked: ${points[0]}`);
+  assert.equal(await page.evaluate(() => window.planarium.stats().nodes), before, "the stats stay the run's");
+  // the native CLI, same roadmap (seed), same two states: the same answer
+  const arg = `${points[0].join(',')}:${points.at(-1).join(',')}`;
+  const out = execFileSync(join(ROOT, 'target/release/planarium'), ['plan', 'zigzag', '--planner', 'lazy-prm', '--seed', '1', '--query', arg], { encoding: 'utf8' });
+  const m = out.match(/query 1: [^:]+:[^:]+: (\d+) states, cost ([\d.]+)/);
+  assert.ok(m, out);
+  assert.equal(`${points.length} states, cost ${cost.toFixed(4)}`, `${m[1]} states, cost ${m[2]}`, `the CLI: ${m[0]}`);
+  await nextFrames();
+  const [drawn] = await countColours('canvas', [PALETTE.queryAnswer], 8);
+  assert.ok(drawn > 300, `the answer drawn: ${drawn} px`);
+  await page.screenshot({ path: join(shots, 'page-roadmap-query.png') });
+  // a new run (reset) forgets the query
+  await page.click('#reset');
+  await waitState('idle');
+  assert.equal(await page.isVisible('#query-button'), false);
+  assert.equal(await page.evaluate(() => window.planarium.query()), null);
 });
 
 test('technion-ip: only inspection planners are offered, with the reason; narrow offers no inspection', async () => {

@@ -4,7 +4,8 @@
 // on its layers, incrementally as records are revealed and in full on a redraw.
 
 import { EventKind, STRIDE } from '../run/events.js';
-import { STYLE } from './palette.js';
+import { PALETTE, STYLE } from './palette.js';
+import { drawPolyline } from './transform.js';
 
 /** A QUERY_PATH record added to `path` ([[x, y], ...]); its first edge (tree 0) starts a new one. */
 export function addQueryEdge(path, d, o) {
@@ -63,4 +64,26 @@ export function drawGraphEdges(ctx, L, store, from, to) {
   ctx.strokeStyle = graph.color;
   ctx.lineWidth = L.px(graph.width);
   ctx.stroke();
+}
+
+/**
+ * Another query on a finished roadmap (ui/roadmap-query.js): `query` = {points, picks}: the
+ * answer's path (projected points) drawn thick over the run's, and the clicked start and goal as
+ * rings (the start hollow, the goal filled).
+ */
+export function drawQueryAnswer(ctx, L, query) {
+  if (!query) return;
+  if (query.points?.length >= 2) {
+    drawPolyline(ctx, L, query.points, PALETTE.pathCasing, L.px(7));
+    drawPolyline(ctx, L, query.points, PALETTE.queryAnswer, L.px(4.5));
+  }
+  (query.picks || []).forEach(([x, y], i) => {
+    ctx.beginPath();
+    ctx.arc(L.sx(x), L.sy(y), L.px(6), 0, 2 * Math.PI);
+    ctx.lineWidth = L.px(2.5);
+    ctx.strokeStyle = PALETTE.queryAnswer;
+    ctx.fillStyle = i === 0 ? '#ffffff' : PALETTE.queryAnswer;
+    ctx.fill();
+    ctx.stroke();
+  });
 }

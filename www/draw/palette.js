@@ -64,6 +64,7 @@ export const PALETTE = Object.freeze({
   roadmapUnchecked: '#9aa3ad',
   roadmapInvalid: 'rgba(213, 94, 0, 0.35)', // faint: on the zigzag most of Lazy PRM's checks find a wall
   queryPath: '#111111',
+  queryAnswer: '#5e3c99', // another query on the finished roadmap: its path and its two clicks
   // EST's density grid: a cell shaded by its chance of being picked, the latest pick outlined
   density: '#cc79a7',
   densityPick: '#882255',

@@ -23,7 +23,7 @@ import { PALETTE, STYLE, OVERLAY_DEFAULTS, TREE_LEGEND } from './palette.js';
 import { Layout, parseOutline, parseFrames, makeLayer, drawExhausted, drawObstacle, drawMarker, drawPolyline } from './transform.js';
 import { CellsDrawing } from './cells.js';
 import { drawDensity } from './density.js';
-import { addQueryEdge, drawGraphEdges, drawRoadmap } from './graphs.js';
+import { addQueryEdge, drawGraphEdges, drawRoadmap, drawQueryAnswer } from './graphs.js';
 
 const FLASH_MS = 600;        // a rewire flashes this long
 const MAX_FLASHES = 80;      // the most flashes shown at once (a burst keeps only the latest)
@@ -67,6 +67,12 @@ export class View {
   get runLayers() { return [this.cellsLayer, this.underLayer, this.domainLayer, this.treeLayer, this.overLayer]; }
 
   /** Forget the run's drawing (tree, markers, result). */
+  /** Another query's answer on the finished roadmap, or null (ui/roadmap-query.js). */
+  setQuery(query) {
+    this.query = query;
+    this.dirty = true;
+  }
+
   clearRun() {
     this.markers = [];
     this.lastSample = null;
@@ -74,6 +80,7 @@ export class View {
     this.pendingSample = null; // the latest SAMPLE, until a rejection or the next sample says what it was
     this.flashes = [];
     this.queryPath = null; // roadmaps: the latest graph search's path, [[x, y], ...]
+    this.query = null;     // another query on the finished roadmap: {points, picks} (ui/roadmap-query.js)
     this.path = null;
     this.smoothed = null;
     this.frames = [];
@@ -479,6 +486,7 @@ export class View {
       drawPolyline(ctx, L, this.smoothed, PALETTE.pathCasing, L.px(6));
       drawPolyline(ctx, L, this.smoothed, PALETTE.smoothPath, L.px(4));
     }
+    drawQueryAnswer(ctx, L, this.query);
     let frame = null;
     if (animating) {
       const frames = this.options.animateRaw && this.rawFrames.length ? this.rawFrames : this.frames;

@@ -22,6 +22,7 @@ import { createPanel, taskOf } from '../ui/panel.js';
 import { Playback } from '../run/playback.js';
 import { Chart } from '../draw/chart.js';
 import { Player } from '../run/player.js';
+import { wireRoadmapQuery, ROADMAP_PLANNERS } from '../ui/roadmap-query.js';
 import { createStats } from '../ui/stats.js';
 import { createOverlays } from '../draw/overlays.js';
 import { cellLegend, cellSummary } from '../draw/cells.js';
@@ -127,6 +128,7 @@ const player = new Player({
     error(message) { showError(message); },
     seed(seed) { panel?.setSeed(seed); },
     asv(text) { downloadText(text, `${(loaded?.name || 'solution').replace(/[^\w.-]+/g, '_')}-solution.txt`); },
+    query(answer) { roadmapQuery.answered(answer); },
     stopped: showStopped,
     changed: () => { updateStats(); syncDownload(); },
     frame() {
@@ -437,7 +439,7 @@ function syncButtons() {
   document.body.dataset.state = controller.state;
 }
 
-controller.onChange((state) => { syncButtons(); updateStats(); updateRunStatus(); explain.setLive(state !== 'running'); syncSpeedButtons(); });
+controller.onChange((state) => { syncButtons(); updateStats(); updateRunStatus(); explain.setLive(state !== 'running'); syncSpeedButtons(); syncDownload(); });
 
 function buildLegend() {
   const name = panel?.planner()?.name;
@@ -473,7 +475,15 @@ wireExports({
 
 function syncDownload() {
   ui.download.hidden = !(loaded?.robot?.kind === 'asv' && lane.result?.solved && controller.state === 'finished');
+  roadmapQuery.sync();
 }
+
+// More queries on a finished roadmap run (roadmap-query.js): two clicks, the same roadmap
+const roadmapQuery = wireRoadmapQuery({
+  button: $('query-button'), status: $('query-status'), canvas: ui.canvas, view, lane, scenario: () => loaded,
+  applies: () => ROADMAP_PLANNERS.has(panel?.planner()?.name) && controller.state === 'finished' && !!lane.result
+    && (loaded?.robot?.kind === 'point' || loaded?.robot?.kind === 'rigid'),
+});
 
 ui.download.addEventListener('click', () => { if (lane.session.alive && lane.result?.solved) lane.session.send({ type: 'asv-solution' }); });
 
@@ -583,6 +593,8 @@ Object.defineProperty(window, 'planarium', {
     /** The last record revealed, as numbers (null before any). */
     lastEvent: () => (playback.store.length ? [...playback.store.record(playback.store.length - 1)] : null),
     cells: () => cellSummary(playback.model.cells),
+    /** Another query on the finished roadmap, as drawn: {points, picks}, or null. */
+    query: () => (view.query ? structuredClone(view.query) : null),
     /** Css px within the workspace canvas of the world point (x, y), or null. */
     toCanvas: (x, y) => (view.layout ? [view.layout.sx(x) / view.layout.dpr, view.layout.sy(y) / view.layout.dpr] : null),
   }),

@@ -34,6 +34,7 @@ export class Lane {
         hooks.error?.(message);
       },
       asv: (text) => hooks.asv?.(text),
+      query: (m) => this.onQuery(m),
       seed: (seed) => hooks.seed?.(seed),
       stopped: (message, fatal, why) => { this.clearRun(); hooks.stopped?.(message, fatal, why); },
     });
@@ -70,6 +71,11 @@ export class Lane {
     if (this.done) { this.reveal(this.playback.revealAll()); return; }
     this.stepPending++;
     this.session.send({ type: 'step', iterations });
+  }
+
+  /** Another query on the finished run's roadmap (start and goal: scenario states). */
+  query(start, goal) {
+    if (this.done) this.session.send({ type: 'query', start, goal });
   }
 
   /** Show one more event; with nothing buffered, ask the planner for one more iteration. */
@@ -109,6 +115,18 @@ export class Lane {
     this.done = true;
     for (const v of this.views) v.setResult(msg.result, msg.frames, msg.rawFrames);
     this.hooks.revealed?.();
+    this.hooks.changed?.();
+  }
+
+  /**
+   * A query's events join the run's (shown at once); the page gets the answer (hooks.query). The
+   * stats stay the run's result's.
+   */
+  onQuery(msg) {
+    if (!this.done) return;
+    this.playback.push(msg.data);
+    this.reveal(this.playback.revealAll());
+    this.hooks.query?.(msg.answer);
     this.hooks.changed?.();
   }
 

@@ -8,6 +8,7 @@
  *   | {type: 'configure', planner: string, params: Record<string, number | string>, seed: number}
  *   | {type: 'run' | 'pause' | 'reset' | 'cancel' | 'asv-solution' | 'ping' | 'fresh-seed'}
  *   | {type: 'step', iterations: number}
+ *   | {type: 'query', start: number[], goal: number[]}
  *   | {type: 'debug-panic', message?: string}
  *   | {type: 'debug-hang', ms: number}} WorkerRequest
  * @typedef {WorkerRequest & {ack?: number, run?: number}} WorkerIn
@@ -16,7 +17,12 @@
 /**
  * The run's statistics as the core reports them (src/run/result.rs; a few of the fields).
  * @typedef {{time_ms: number, iterations: number, nodes: number, checks: number, cost?: number | null,
- *   smoothed_cost?: number | null, sampler?: {name: string, draws_per_sample: number, checks_per_sample: number}}} RunStats
+ *   smoothed_cost?: number | null, sampler?: {name: string, used?: boolean, draws_per_sample: number, checks_per_sample: number}}} RunStats
+ */
+
+/**
+ * Another query on a finished roadmap run (src/run/session.rs QueryAnswer), or why it failed.
+ * @typedef {{path?: number[][], points?: number[][], cost?: number, error?: string}} QueryAnswer
  */
 
 /**
@@ -29,6 +35,7 @@
  *   | {type: 'status', status: string}
  *   | {type: 'ack', ack: number}
  *   | {type: 'asv-solution', text: string}
+ *   | {type: 'query', data: Float64Array, answer: QueryAnswer}
  *   | {type: 'seed', seed: number}
  *   | {type: 'error' | 'crashed', message: string}} WorkerReply
  * @typedef {WorkerReply & {run?: number}} WorkerOut

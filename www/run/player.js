@@ -15,7 +15,7 @@ export class Player {
    * `playback`: a Playback; `views`: [View, ...] (the first is the workspace view); `chart`: a
    * Chart or null; `rate()`: events per second to reveal while running (Infinity: all at once);
    * `fps()`: robot animation frames per second; `hooks`: {ready, loaded, invalid, error, asv, seed,
-   * stopped, changed} as lane.js's (the player does the controller's part of error / stopped and
+   * query, stopped, changed} as lane.js's (the player does the controller's part of error / stopped and
    * the run's bookkeeping), plus `frame(time)` after the views were drawn.
    */
   /** @param {{playback: any, views: any[], chart?: any, rate?: () => number, fps?: () => number, hooks?: Record<string, Function>}} options */
@@ -48,6 +48,7 @@ export class Player {
           if (!this.lane.done && c.fire('fail')) this.lane.clearRun();
         },
         asv: (text) => hooks.asv?.(text),
+        query: (answer) => hooks.query?.(answer),
         seed: (seed) => hooks.seed?.(seed),
         stopped: (message, fatal, why) => {
           // Run after Cancel on a worker that did not stop: the run the user asked for starts

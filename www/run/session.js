@@ -178,6 +178,9 @@ export class WorkerSession {
       case 'asv-solution':
         if (msg.run === this.latestRun) h.asv?.(msg.text);
         return;
+      case 'query':
+        if (this.current(msg)) h.query?.(msg);
+        return;
       case 'seed': h.seed?.(msg.seed); return;
       case 'crashed': this.recover(msg.message); return;
       default:

@@ -11,6 +11,8 @@
 //   reset     {}                             drop the run (the next run starts from the seed)
 //   cancel    {}                             stop the run now; it is finished
 //   asv-solution {}                          the finished run's path as an ASV solution file
+//   query     {start, goal}                  after a roadmap run (prm, prm-star, lazy-prm): another
+//                                            query on its roadmap, scenario states (arrays)
 //   ping      {}                             nothing (with `ack`: shows the worker reads messages)
 //   fresh-seed {}                            a fresh seed from the core's entropy (a `seed` reply)
 //   debug-panic  {message}                   tests only: make the core panic (a `crashed` reply)
@@ -35,6 +37,9 @@
 //   status    {status}
 //   ack       {ack}                          the message carrying `ack` was read
 //   asv-solution {text}
+//   query     {data: Float64Array, answer: {path, points, cost} | {error}}   the query's events
+//                                            (transferred) and its answer; `path` empty when the
+//                                            roadmap does not join the two states
 //   seed      {seed}                         a fresh seed (asked for by fresh-seed), ≤ 2^53 − 1
 //   error     {message}                      a bad request; the worker stays usable
 //   crashed   {message}                      the core panicked; the page must replace this worker
@@ -172,7 +177,7 @@ function load(text) {
 
 function handle(msg) {
   // Any request but another step ends a step in progress.
-  if (msg.type !== 'step' && msg.type !== 'asv-solution' && msg.type !== 'ping' && msg.type !== 'fresh-seed') stepping = null;
+  if (msg.type !== 'step' && msg.type !== 'asv-solution' && msg.type !== 'query' && msg.type !== 'ping' && msg.type !== 'fresh-seed') stepping = null;
   switch (msg.type) {
     case 'load':
       load(msg.text);
@@ -233,6 +238,18 @@ function handle(msg) {
       }
       post({ type: 'asv-solution', run: runId, text: run.asv_solution() });
       return;
+    case 'query': {
+      if (!run) {
+        post({ type: 'query', run: runId, data: new Float64Array(0), answer: { error: 'no run: the roadmap is built by a run first' } });
+        return;
+      }
+      const state = (v) => Float64Array.from(Array.isArray(v) ? v.slice(0, 64).map(Number) : []);
+      let answer;
+      try { answer = JSON.parse(run.query(state(msg.start), state(msg.goal))); } catch (e) { rethrowPanic(e); answer = { error: parseError(e).text }; }
+      const data = run.drain_events();
+      post({ type: 'query', run: runId, data, answer }, [data.buffer]);
+      return;
+    }
     case 'debug-panic':
       debug_panic(msg.message || 'debug panic requested');
       return;
