@@ -179,6 +179,11 @@ test('Lazy PRM on the zigzag: two clicks ask the finished roadmap another query,
   const [drawn] = await countColours('canvas', [PALETTE.queryAnswer], 8);
   assert.ok(drawn > 300, `the answer drawn: ${drawn} px`);
   await page.screenshot({ path: join(shots, 'page-roadmap-query.png') });
+  // step back replays the run from its seed: the query goes with the finished state
+  await page.click('#step-back');
+  await page.waitForFunction(() => window.planarium.state() !== 'finished', null, { timeout: 30000 });
+  assert.equal(await page.evaluate(() => window.planarium.query()), null, 'step back drops the answer');
+  assert.equal(await page.isVisible('#query-button'), false);
   // a new run (reset) forgets the query
   await page.click('#reset');
   await waitState('idle');
