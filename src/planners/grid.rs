@@ -4,7 +4,12 @@
 //! **The grid.** Square cells of side `cell` over the map (0: a fortieth of its shorter side); a
 //! cell is blocked when an obstacle touches it (the hexagons' exact cell test,
 //! [`label_of`](super::hex::cells::label_of)), so a move between the centres of free cells never
-//! meets an obstacle. The cells are labelled a row per iteration, each evented as a `Cell` with
+//! meets an obstacle. On an occupancy map (the scenario's `map` block, `io::occupancy`) the default
+//! cell is one pixel and the grid starts on a pixel corner; a cell is then blocked when an
+//! obstacle meets its interior ([`cell_blocked`]: a rectangle that only shares a side with it does
+//! not), so the blocked cells are exactly the image's occupied pixels. A move between free cells'
+//! centres still meets no obstacle: a rectangle of positive size that contains a point of a shared
+//! side or corner enters one of the cells around it. The cells are labelled a row per iteration, each evented as a `Cell` with
 //! its square outline (label 0 free, 2 blocked), so the page draws the grid as it is made.
 //!
 //! **The search.** Nodes are the cells (the start's cell stands at the start itself) and the goal
@@ -41,7 +46,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
 
 /// The planner's parameters.
 pub const PARAMS: &[ParamSpec] = &[
-    ParamSpec::real("cell", "Cell size", 0.0, 1e6, 0.0, "Side of the grid's square cells (0: a fortieth of the map's shorter side). A cell an obstacle touches is blocked."),
+    ParamSpec::real("cell", "Cell size", 0.0, 1e6, 0.0, "Side of the grid's square cells (0: a fortieth of the map's shorter side; on an occupancy map, one pixel, the cells aligned with the image's). A cell an obstacle touches is blocked (on an occupancy map's pixels, one a rectangle overlaps)."),
     ParamSpec::choice(
         "search",
         "Search",
