@@ -32,13 +32,7 @@ use crate::math::{Real, Vec2};
 use crate::scenario::{Scenario, ScenarioError};
 use serde_json::json;
 
-/// Most pixels along either side of a map image.
-pub const MAX_MAP_SIDE: usize = 4096;
-
-/// Most pixels of a map image: grid-search's own limit
-/// ([`MAX_GRID_CELLS`](crate::planners::grid::MAX_GRID_CELLS)), so it can plan on every map one cell a
-/// pixel.
-pub const MAX_MAP_PIXELS: usize = 4_000_000;
+pub use crate::limits::{MAX_MAP_PIXELS, MAX_MAP_SIDE};
 
 /// Metres (scenario units) per pixel of a plain image without a YAML.
 pub const PLAIN_RESOLUTION: Real = 0.05;
