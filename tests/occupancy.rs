@@ -380,3 +380,57 @@ fn grid_search_and_rrt_connect_solve_an_imported_map_with_valid_paths() {
     let (r, _) = run(&sc, "grid-search", json!({}));
     assert!(r.solved && common::path_problem(&sc, &r.path).is_none());
 }
+
+fn cli(args: &[&str]) -> (bool, String, String) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_planarium")).args(args).output().unwrap();
+    (out.status.success(), String::from_utf8_lossy(&out.stdout).into(), String::from_utf8_lossy(&out.stderr).into())
+}
+
+#[test]
+fn the_cli_plans_validates_benches_and_exports_maps() {
+    let yaml = format!("{DIR}/sample.yaml");
+    let (ok, out, err) = cli(&["plan", &yaml, "--json"]);
+    assert!(ok, "{err}");
+    let r: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!((r["solved"].as_bool(), r["planner"].as_str()), (Some(true), Some("grid-search")));
+    // --start and --goal replace the map's.
+    let (ok, out, err) =
+        cli(&["plan", &yaml, "--planner", "rrt-connect", "--start", "-0.95,-0.45", "--goal", "2.95,2.45", "--json"]);
+    assert!(ok, "{err}");
+    let r: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(r["path"][0], json!([-0.95, -0.45]));
+    // A start in an occupied pixel is named by its flag.
+    let (ok, _, err) = cli(&["plan", &yaml, "--start", "0.3,1.0"]);
+    assert!(!ok && err.contains("--start: in collision with obstacles["), "{err}");
+    for f in ["sample.pgm", "sample.png"] {
+        let (ok, out, err) = cli(&["validate", &format!("{DIR}/{f}")]);
+        assert!(ok, "{err}");
+        assert!(out.contains("\"map\""), "{out}");
+    }
+    let (ok, out, err) = cli(&["bench", &yaml, "--planners", "grid-search,rrt-connect", "--runs", "2", "--json"]);
+    assert!(ok, "{err}");
+    assert!(out.contains("grid-search"));
+    // export-map then plan on the export; the PNG reads the same as the PGM.
+    let dir = std::env::temp_dir().join(format!("planarium-maps-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let prefix = dir.join("exported");
+    let prefix = prefix.to_str().unwrap();
+    let (ok, _, err) = cli(&["export-map", &yaml, "--cell", "0.1", "--out", prefix, "--png"]);
+    assert!(ok, "{err}");
+    let exported = std::fs::read_to_string(format!("{prefix}.yaml")).unwrap();
+    assert!(exported.starts_with("image: exported.pgm\nresolution: 0.1\norigin: [-1, -0.5, 0.0]\n"), "{exported}");
+    let (ok, a, err) = cli(&["validate", &format!("{prefix}.yaml")]);
+    assert!(ok, "{err}");
+    let from_png =
+        occupancy::import_image(&std::fs::read(format!("{prefix}.png")).unwrap(), "x", Some((&exported, "e.yaml")))
+            .unwrap();
+    let from_pgm = Scenario::from_json(&a).unwrap();
+    same_map(&from_pgm, &from_png);
+    // Named errors: a YAML whose image is missing, a bad cell.
+    std::fs::write(dir.join("lost.yaml"), "image: nowhere.pgm\nresolution: 0.1\n").unwrap();
+    let (ok, _, err) = cli(&["plan", dir.join("lost.yaml").to_str().unwrap()]);
+    assert!(!ok && err.contains("nowhere.pgm"), "{err}");
+    let (ok, _, err) = cli(&["export-map", &yaml, "--cell", "0.00001", "--out", prefix]);
+    assert!(!ok && err.contains("--cell: 0.00001 makes a grid of"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

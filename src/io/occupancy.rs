@@ -313,6 +313,9 @@ fn decode_png(bytes: &[u8], file: &str) -> Result<Image, ScenarioError> {
     let mut buf = vec![0u8; size];
     let info = reader.next_frame(&mut buf).map_err(why)?;
     let stride = info.line_size;
+    if stride < w * channels || stride.checked_mul(h).is_none_or(|n| n > buf.len()) {
+        return Err(file_err(file, "the PNG's decoded rows do not match its header"));
+    }
     let mut values = Vec::with_capacity(w * h);
     for row in 0..h {
         let line = &buf[row * stride..row * stride + w * channels];
@@ -580,7 +583,7 @@ pub fn rectangles(grid: &OccupancyGrid) -> Vec<[Real; 4]> {
             open.entry(r).or_insert(row);
         }
     }
-    out.sort_by(|a, b| (a.0, a.1).cmp(&(b.0, b.1)));
+    out.sort_by_key(|a| (a.0, a.1));
     out.into_iter().map(|(_, _, r)| r).collect()
 }
 
