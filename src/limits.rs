@@ -71,9 +71,10 @@ pub const MAX_SOLUTION_STEPS: usize = 5_000_000;
 /// before anything is allocated.
 pub const MAX_MAP_SIDE: usize = 4096;
 
-/// Pixels of an occupancy map's image: grid-search's own limit
-/// ([`MAX_GRID_CELLS`](crate::planners::grid::MAX_GRID_CELLS)), so it can plan on every map one
-/// cell a pixel.
+/// Pixels of an occupancy map's image: grid-search's own grid limit
+/// ([`MAX_GRID_CELLS`](crate::planners::grid::MAX_GRID_CELLS)). At one cell a pixel grid-search
+/// also needs `max_nodes` ≥ the pixels, so it plans on maps of up to [`MAX_NODES`] pixels; larger
+/// maps open with rrt-connect as their planner (grid-search then needs a larger `cell`).
 pub const MAX_MAP_PIXELS: usize = 4_000_000;
 
 /// Animation frames the worker sends for one path (the spacing grows to stay within it).

@@ -434,3 +434,19 @@ fn the_cli_plans_validates_benches_and_exports_maps() {
     assert!(!ok && err.contains("--cell: 0.00001 makes a grid of"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn large_maps_open_with_rrt_connect_and_noisy_ones_past_the_obstacle_limit_are_refused() {
+    // 1001×1000 pixels, all free but a wall: more pixels than grid-search's max_nodes allows.
+    let (w, h) = (1001, 1000);
+    let vals: Vec<u16> = (0..w * h).map(|k| if k % w == 500 && k / w > 10 { 0 } else { 254 }).collect();
+    let sc = occupancy::import_image(&p5(w, h, 255, &vals), "big.pgm", None).unwrap();
+    assert_eq!(sc.planner.as_ref().unwrap().name, "rrt-connect");
+    let sc = occupancy::import_image(&p5(1000, 1000, 255, &vals[..1_000_000]), "b.pgm", None).unwrap();
+    assert_eq!(sc.planner.as_ref().unwrap().name, "grid-search");
+    // A checkerboard of 600×400: 120,000 isolated occupied pixels, a rectangle each.
+    let (w, h) = (600, 400);
+    let vals: Vec<u16> = (0..w * h).map(|k| if (k % w + k / w) % 2 == 0 { 0 } else { 254 }).collect();
+    let e = err_of(occupancy::import_image(&p5(w, h, 255, &vals), "noise.pgm", None));
+    assert!(e.starts_with("noise.pgm: the map's occupied pixels make 120000 rectangles; the limit is 100000"), "{e}");
+}

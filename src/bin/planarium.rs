@@ -174,13 +174,13 @@ fn load_map(arg: &str) -> Result<Scenario, String> {
     let file_name = path.file_name().and_then(|s| s.to_str()).unwrap_or(arg).to_string();
     if occupancy::is_yaml_name(arg) {
         let text = read_limited(arg)?;
-        let meta = occupancy::parse_yaml(&text, &file_name).map_err(|e| format!("{arg}: {e}"))?;
+        let meta = occupancy::parse_yaml(&text, &file_name).map_err(|e| e.to_string())?;
         let image = path.parent().unwrap_or(std::path::Path::new(".")).join(&meta.image);
         let bytes = read_bytes_limited(&image)?;
-        occupancy::import_image(&bytes, &meta.image, Some((&text, &file_name))).map_err(|e| format!("{arg}: {e}"))
+        occupancy::import_image(&bytes, &meta.image, Some((&text, &file_name))).map_err(|e| e.to_string())
     } else {
         let bytes = read_bytes_limited(path)?;
-        occupancy::import_image(&bytes, &file_name, None).map_err(|e| format!("{arg}: {e}"))
+        occupancy::import_image(&bytes, &file_name, None).map_err(|e| e.to_string())
     }
 }
 

@@ -574,7 +574,8 @@ pub fn rectangles(grid: &OccupancyGrid) -> Vec<[Real; 4]> {
                 }
             }
         }
-        let ended: Vec<(usize, usize)> = open.keys().filter(|k| !runs.contains(k)).copied().collect();
+        let here: std::collections::BTreeSet<(usize, usize)> = runs.iter().copied().collect();
+        let ended: Vec<(usize, usize)> = open.keys().filter(|k| !here.contains(k)).copied().collect();
         for k in ended {
             let top = open.remove(&k).expect("an open run");
             close(k.0, k.1, top, row - 1, &mut out);
@@ -682,7 +683,7 @@ pub fn grid_to_scenario(grid: &OccupancyGrid, name: &str) -> Result<Scenario, Sc
     let notes = format!(
         "An occupancy map of {}×{} pixels, {} units a pixel ({w}×{h}): occupied pixels (and the {unknown} unknown ones, which planning treats as occupied) \
          merged into {} rectangles. The point robot starts at the free pixel nearest the lower left corner and goes to the one nearest the upper right, \
-         both in the largest connected free region; move them in the editor. Grid search's default cell is one pixel.",
+         both in the largest connected free region; move them in the editor. Grid search's default cell is one pixel (on maps of at most a million pixels it is the default planner).",
         grid.width,
         grid.height,
         grid.resolution,
@@ -700,7 +701,8 @@ pub fn grid_to_scenario(grid: &OccupancyGrid, name: &str) -> Result<Scenario, Sc
         "goal": centre(goal),
         "resolution": grid.resolution * 0.5,
         "map": {"resolution": grid.resolution, "origin": grid.origin},
-        "planner": {"name": "grid-search", "seed": 1},
+        // Grid-search a cell a pixel needs max_nodes ≥ the pixels (at most MAX_NODES).
+        "planner": {"name": if (grid.width * grid.height) as f64 <= limits::MAX_NODES { "grid-search" } else { "rrt-connect" }, "seed": 1},
     });
     Scenario::from_value(&v).map_err(|e| file_err(name, e.to_string()))
 }
