@@ -67,6 +67,16 @@ pub const MAX_COARSE_CELLS: usize = 100_000;
 /// States in a vehicle chain's solution file (its primitive steps), read or written.
 pub const MAX_SOLUTION_STEPS: usize = 5_000_000;
 
+/// Pixels along either side of an occupancy map's image (`io::occupancy`), checked from its header
+/// before anything is allocated.
+pub const MAX_MAP_SIDE: usize = 4096;
+
+/// Pixels of an occupancy map's image: grid-search's own grid limit
+/// ([`MAX_GRID_CELLS`](crate::planners::grid::MAX_GRID_CELLS)). At one cell a pixel grid-search
+/// also needs `max_nodes` ≥ the pixels, so it plans on maps of up to [`MAX_NODES`] pixels; larger
+/// maps open with rrt-connect as their planner (grid-search then needs a larger `cell`).
+pub const MAX_MAP_PIXELS: usize = 4_000_000;
+
 /// Animation frames the worker sends for one path (the spacing grows to stay within it).
 pub const MAX_PATH_FRAMES: usize = 100_000;
 
@@ -88,6 +98,8 @@ pub fn to_json() -> serde_json::Value {
         "max_nodes": MAX_NODES,
         "max_coarse_cells": MAX_COARSE_CELLS,
         "max_solution_steps": MAX_SOLUTION_STEPS,
+        "max_map_side": MAX_MAP_SIDE,
+        "max_map_pixels": MAX_MAP_PIXELS,
         "max_path_frames": MAX_PATH_FRAMES,
     })
 }

@@ -88,6 +88,7 @@ impl Problem {
             sc.obstacles.iter().map(shape_of).collect(),
         );
         workspace.touching_allowed = sc.touching_allowed;
+        workspace.map_grid = sc.map.as_ref().map(|m| (Vec2::new(m.origin[0], m.origin[1]), m.resolution));
         let robot: Rc<dyn Robot> =
             robot::from_spec(&sc.robot, sc.body_in_bounds).map_err(|e| ScenarioError::at("robot.kind", e))?.into();
         let space = robot.space(&workspace);

@@ -106,6 +106,28 @@ pub fn import_file(text: &str, name: &str) -> Result<String, JsError> {
     Ok(sc.to_json())
 }
 
+/// Read an occupancy map (`io::occupancy`): `bytes` the image (PGM or PNG) named `name`, `yaml`
+/// its map_server YAML (text) named `yaml_name`, or none for a plain image (dark is occupied).
+/// Returns scenario JSON; errors are JSON `{path, message, line, column, text}`.
+#[wasm_bindgen]
+pub fn import_map(
+    bytes: &[u8],
+    name: &str,
+    yaml: Option<String>,
+    yaml_name: Option<String>,
+) -> Result<String, JsError> {
+    let y = yaml.as_deref().map(|t| (t, yaml_name.as_deref().unwrap_or("map.yaml")));
+    let sc = crate::io::occupancy::import_image(bytes, name, y).map_err(|e| error_json(&e))?;
+    Ok(sc.to_json())
+}
+
+/// The image a map_server YAML names (its `image` key), so the page can ask for it; errors as
+/// [`import_map`]'s.
+#[wasm_bindgen]
+pub fn map_image_name(yaml: &str, yaml_name: &str) -> Result<String, JsError> {
+    crate::io::occupancy::parse_yaml(yaml, yaml_name).map(|m| m.image).map_err(|e| error_json(&e))
+}
+
 /// The benchmark page's set-up lines (`[label:] planner [--param value ...]`, one per line, the
 /// CLI's `--setup` syntax) as JSON `[{label, planner, params}]` (`params`: the values set); an
 /// error names the line. The same parser as the CLI's.

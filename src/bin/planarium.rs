@@ -1,4 +1,4 @@
-//! The native command line: `plan`, `bench`, `scaling`, `validate` and `list`.
+//! The native command line: `plan`, `bench`, `scaling`, `validate`, `export-map` and `list`.
 //!
 //! Every planner parameter is a flag (`--goal-bias 0.2`, `--extend connect`), generated from the
 //! planner registry, so a new parameter needs no CLI code.
@@ -42,7 +42,7 @@ fn with_param_flags(mut cmd: Command) -> Command {
 fn cli() -> Command {
     let scenario_arg = Arg::new("scenario")
         .required(true)
-        .help("Scenario JSON file, a course file (Technion map JSON, ASV problem text), or the id of a built-in scenario (see `list`)");
+        .help("Scenario JSON file, a course file (Technion map JSON, ASV problem text), an occupancy map (map_server's map.yaml naming its image, or a plain .pgm/.png image: dark is occupied), or the id of a built-in scenario (see `list`)");
     Command::new("planarium")
         .about("Motion-planning playground core: plan, benchmark and validate scenarios")
         .subcommand_required(true)
@@ -125,7 +125,15 @@ fn cli() -> Command {
                 .arg(Arg::new("rounds").long("rounds").default_value("3").value_parser(clap::value_parser!(u32)).help("Rounds (the best is kept)"))
                 .arg(Arg::new("json-file").long("json-file").value_name("FILE").help("Also write the rows as JSON")),
         )
-        .subcommand(Command::new("validate").about("Check a scenario and print it normalised").arg(scenario_arg))
+        .subcommand(Command::new("validate").about("Check a scenario and print it normalised").arg(scenario_arg.clone()))
+        .subcommand(
+            Command::new("export-map")
+                .about("Rasterise a scenario's obstacles as an occupancy map: PREFIX.pgm and PREFIX.yaml in map_server's form (and PREFIX.png with --png)")
+                .arg(scenario_arg)
+                .arg(Arg::new("cell").long("cell").required(true).value_parser(clap::value_parser!(f64)).help("Side of a pixel, in scenario units"))
+                .arg(Arg::new("out").long("out").required(true).value_name("PREFIX").help("Output path without extension"))
+                .arg(Arg::new("png").long("png").action(ArgAction::SetTrue).help("Also write PREFIX.png (the same grid as an 8-bit grey PNG)")),
+        )
         .subcommand(Command::new("list").about("List built-in scenarios and planners"))
 }
 
@@ -142,8 +150,52 @@ fn read_limited(path: &str) -> Result<String, String> {
     String::from_utf8(bytes).map_err(|e| format!("{path}: not UTF-8 text (byte {})", e.utf8_error().valid_up_to()))
 }
 
+/// A file's bytes, refused past [`planarium::limits::MAX_TEXT_BYTES`] without reading the rest.
+fn read_bytes_limited(path: &std::path::Path) -> Result<Vec<u8>, String> {
+    use std::io::Read;
+    let shown = path.display();
+    let max = planarium::limits::MAX_TEXT_BYTES as u64;
+    let file = std::fs::File::open(path).map_err(|e| format!("{shown}: {e}"))?;
+    let mut bytes = Vec::new();
+    file.take(max + 1).read_to_end(&mut bytes).map_err(|e| format!("{shown}: {e}"))?;
+    if bytes.len() as u64 > max {
+        return Err(format!("{shown}: the file is larger than the limit of {max} bytes (16 MiB)"));
+    }
+    Ok(bytes)
+}
+
+/// Whether `arg` is an occupancy map file: by its extension, or a PGM/PNG by its first bytes.
+fn is_map_file(arg: &str) -> bool {
+    use std::io::Read;
+    if planarium::io::occupancy::is_map_name(arg) {
+        return true;
+    }
+    let mut head = [0u8; 8];
+    let n = std::fs::File::open(arg).and_then(|mut f| f.read(&mut head)).unwrap_or(0);
+    planarium::io::occupancy::sniff(&head[..n]).is_some()
+}
+
+/// An occupancy map: map_server's YAML (its image read from the YAML's folder) or a plain image.
+fn load_map(arg: &str) -> Result<Scenario, String> {
+    use planarium::io::occupancy;
+    let path = std::path::Path::new(arg);
+    let file_name = path.file_name().and_then(|s| s.to_str()).unwrap_or(arg).to_string();
+    if occupancy::is_yaml_name(arg) {
+        let text = read_limited(arg)?;
+        let meta = occupancy::parse_yaml(&text, &file_name).map_err(|e| e.to_string())?;
+        let image = path.parent().unwrap_or(std::path::Path::new(".")).join(&meta.image);
+        let bytes = read_bytes_limited(&image)?;
+        occupancy::import_image(&bytes, &meta.image, Some((&text, &file_name))).map_err(|e| e.to_string())
+    } else {
+        let bytes = read_bytes_limited(path)?;
+        occupancy::import_image(&bytes, &file_name, None).map_err(|e| e.to_string())
+    }
+}
+
 fn load(arg: &str) -> Result<Scenario, String> {
-    if std::path::Path::new(arg).exists() {
+    if std::path::Path::new(arg).is_file() && is_map_file(arg) {
+        load_map(arg)
+    } else if std::path::Path::new(arg).exists() {
         let text = read_limited(arg)?;
         let stem = std::path::Path::new(arg).file_stem().and_then(|s| s.to_str()).unwrap_or(arg);
         planarium::io::import(&text, stem).map_err(|e| format!("{arg}: {e}"))
@@ -264,7 +316,7 @@ fn load_for_plan(m: &ArgMatches) -> Result<Scenario, String> {
             None => format!("{arg}: {e}"),
         }
     };
-    let text = std::path::Path::new(arg).exists().then(|| read_limited(arg)).transpose()?;
+    let text = (std::path::Path::new(arg).exists() && !is_map_file(arg)).then(|| read_limited(arg)).transpose()?;
     if let Some(text) = text.as_ref().filter(|t| planarium::io::detect(t) == planarium::io::Format::TechnionMap) {
         let stem = std::path::Path::new(arg).file_stem().and_then(|s| s.to_str()).unwrap_or(arg);
         let opts = planarium::io::technion::MapOptions { robot, start, goal };
@@ -579,6 +631,29 @@ fn host_name() -> String {
         .unwrap_or_else(|| "unknown".into())
 }
 
+/// `export-map`: the scenario rasterised at `--cell`, written as PREFIX.pgm + PREFIX.yaml (+ .png).
+fn export_map(m: &ArgMatches) -> Result<(), String> {
+    use planarium::io::occupancy;
+    let sc = load(m.get_one::<String>("scenario").unwrap())?;
+    let cell = *m.get_one::<f64>("cell").unwrap();
+    let grid = occupancy::scenario_to_grid(&sc, cell).map_err(|e| format!("--{e}"))?;
+    let prefix = m.get_one::<String>("out").unwrap();
+    let base = std::path::Path::new(prefix).file_name().and_then(|s| s.to_str()).unwrap_or("map").to_string();
+    let (pgm, yaml) = occupancy::to_pgm_yaml(&grid, &format!("{base}.pgm"));
+    let write = |ext: &str, bytes: &[u8]| {
+        let f = format!("{prefix}.{ext}");
+        std::fs::write(&f, bytes).map_err(|e| format!("{f}: {e}"))?;
+        eprintln!("wrote {f}");
+        Ok::<(), String>(())
+    };
+    write("pgm", &pgm)?;
+    write("yaml", yaml.as_bytes())?;
+    if m.get_flag("png") {
+        write("png", &occupancy::to_png(&grid))?;
+    }
+    Ok(())
+}
+
 fn main() -> ExitCode {
     let m = cli().get_matches();
     let r = match m.subcommand() {
@@ -590,6 +665,7 @@ fn main() -> ExitCode {
             println!("{}", sc.to_json());
             Ok(())
         }),
+        Some(("export-map", m)) => export_map(m),
         Some(("list", _)) => {
             println!("Built-in scenarios:");
             for (id, _) in scenario::BUILTINS {

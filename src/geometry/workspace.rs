@@ -47,6 +47,9 @@ pub struct Workspace {
     pub touching_allowed: bool,
     /// The obstacles, in scenario order.
     pub obstacles: Vec<Shape>,
+    /// The pixel grid of the occupancy map the scenario came from (its `map` block): `(origin,
+    /// side)`. Only grid-search reads it (its default cell, aligned with the pixels).
+    pub map_grid: Option<(Vec2, Real)>,
     boxes: Vec<Aabb>,
     bvh: Option<Bvh>,
     /// With the hierarchy, a grid of candidate lists in front of it (see `geometry/grid.rs`).
@@ -195,7 +198,7 @@ impl Workspace {
             Bvh::from_leaves(BvhBuildStrategy::Binned, &leaves)
         });
         let grid = (boxes.len() >= GRID_FROM).then(|| Grid::new(&boxes)).flatten();
-        Workspace { bounds, obstacles, boxes, bvh, grid, touching_allowed: false }
+        Workspace { bounds, obstacles, boxes, bvh, grid, touching_allowed: false, map_grid: None }
     }
 
     /// The same workspace with the broad phase a scan of every box (for tests and benchmarks

@@ -4,6 +4,7 @@
 //! a Technion HW3 map, an ASV problem file) and returns a [`Scenario`]. Each format has its own file.
 
 pub mod asv;
+pub mod occupancy;
 pub mod technion;
 
 use crate::scenario::{Scenario, ScenarioError};

@@ -4,7 +4,12 @@
 //! **The grid.** Square cells of side `cell` over the map (0: a fortieth of its shorter side); a
 //! cell is blocked when an obstacle touches it (the hexagons' exact cell test,
 //! [`label_of`](super::hex::cells::label_of)), so a move between the centres of free cells never
-//! meets an obstacle. The cells are labelled a row per iteration, each evented as a `Cell` with
+//! meets an obstacle. On an occupancy map (the scenario's `map` block, `io::occupancy`) the default
+//! cell is one pixel and the grid starts on a pixel corner; a cell is then blocked when an
+//! obstacle meets its interior ([`cell_blocked`]: a rectangle that only shares a side with it does
+//! not), so the blocked cells are exactly the image's occupied pixels. A move between free cells'
+//! centres still meets no obstacle: a rectangle of positive size that contains a point of a shared
+//! side or corner enters one of the cells around it. The cells are labelled a row per iteration, each evented as a `Cell` with
 //! its square outline (label 0 free, 2 blocked), so the page draws the grid as it is made.
 //!
 //! **The search.** Nodes are the cells (the start's cell stands at the start itself) and the goal
@@ -22,6 +27,7 @@ use super::hex::search::{Frontier, Search};
 use super::hex::CellLabel;
 use crate::events::EventKind;
 use crate::geometry::{Aabb, Workspace};
+use crate::io::occupancy::cell_blocked;
 use crate::math::{Real, Vec2};
 use crate::motion::MotionValidator;
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
@@ -40,7 +46,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
 
 /// The planner's parameters.
 pub const PARAMS: &[ParamSpec] = &[
-    ParamSpec::real("cell", "Cell size", 0.0, 1e6, 0.0, "Side of the grid's square cells (0: a fortieth of the map's shorter side). A cell an obstacle touches is blocked."),
+    ParamSpec::real("cell", "Cell size", 0.0, 1e6, 0.0, "Side of the grid's square cells (0: a fortieth of the map's shorter side; on an occupancy map, one pixel, the cells aligned with the image's). A cell an obstacle touches is blocked (on an occupancy map's pixels, one a rectangle overlaps)."),
     ParamSpec::choice(
         "search",
         "Search",
@@ -69,6 +75,9 @@ pub struct GridSearch {
     goal: Vec<Real>,
     origin: Vec2,
     side: Real,
+    /// The cells are an occupancy map's pixels: a cell is blocked when an obstacle meets its
+    /// interior ([`cell_blocked`]), so a pixel beside an occupied one stays free.
+    aligned: bool,
     nx: usize,
     ny: usize,
     free: Vec<bool>,
@@ -94,10 +103,27 @@ impl GridSearch {
         let ws = si.workspace().clone();
         let b = ws.bounds;
         let (w, h) = (b.max.x - b.min.x, b.max.y - b.min.y);
+        // On an occupancy map (the scenario's `map` block) the default cell is one pixel, and the
+        // grid starts on a pixel corner, so its cells are the image's pixels.
+        let map = ws.map_grid.filter(|(o, r)| *r > 0.0 && o.x.is_finite() && o.y.is_finite());
         let side = match params.real("cell") {
             s if s > 0.0 => s,
-            _ => w.min(h) / 40.0,
+            _ => map.map_or(w.min(h) / 40.0, |(_, r)| r),
         };
+        let origin = match map {
+            Some((o, r)) if side == r => {
+                let snap = |lo: Real, o: Real| o + ((lo - o) / r).floor() * r;
+                let s = Vec2::new(snap(b.min.x, o.x), snap(b.min.y, o.y));
+                if s.x.is_finite() && s.y.is_finite() {
+                    s
+                } else {
+                    b.min
+                }
+            }
+            _ => b.min,
+        };
+        let aligned = map.is_some_and(|(_, r)| side == r);
+        let (w, h) = (b.max.x - origin.x, b.max.y - origin.y);
         let (fx, fy) = ((w / side).ceil(), (h / side).ceil());
         let cells = fx * fy;
         if !cells.is_finite() || cells > MAX_GRID_CELLS as Real {
@@ -117,8 +143,9 @@ impl GridSearch {
         Ok(GridSearch {
             start: task.start.clone(),
             goal: task.goal().to_vec(),
-            origin: b.min,
+            origin,
             side,
+            aligned,
             nx,
             ny,
             free: vec![false; nx * ny],
@@ -179,7 +206,16 @@ impl GridSearch {
             let outline = [c + Vec2::new(-h, -h), c + Vec2::new(h, -h), c + Vec2::new(h, h), c + Vec2::new(-h, h)];
             let bbox = Aabb { min: outline[0], max: outline[2] };
             cx.si.count_checks(1);
-            self.free[k] = label_of(&self.ws, &outline, &bbox) == CellLabel::Free && self.ws.bounds.contains(c);
+            let clear = if self.aligned {
+                // The pixel's sides as the importer computed them: origin + index · side.
+                let at = |o: Real, n: usize| o + n as Real * self.side;
+                let min = Vec2::new(at(self.origin.x, i), at(self.origin.y, j));
+                let max = Vec2::new(at(self.origin.x, i + 1), at(self.origin.y, j + 1));
+                !cell_blocked(&self.ws, min, max)
+            } else {
+                label_of(&self.ws, &outline, &bbox) == CellLabel::Free
+            };
+            self.free[k] = clear && self.ws.bounds.contains(c);
             if cx.events.enabled {
                 let label = if self.free[k] { 0.0 } else { 2.0 };
                 cx.events.values(

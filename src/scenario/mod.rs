@@ -13,7 +13,7 @@ mod types;
 
 pub use builtin::{builtin, builtin_names, course_of, BUILTINS};
 pub use error::ScenarioError;
-pub use types::{Inspection, ObstacleSpec, PlannerDefaults, RobotSpec, Scenario, FORMAT};
+pub use types::{Inspection, MapGrid, ObstacleSpec, PlannerDefaults, RobotSpec, Scenario, FORMAT};
 
 #[cfg(test)]
 mod tests;

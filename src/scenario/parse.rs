@@ -508,6 +508,10 @@ impl Scenario {
             Some((v, p)) => Some(planner(v, &p)?),
             None => None,
         };
+        let map = match o.get("map") {
+            Some((v, p)) => Some(map_grid(v, &p)?),
+            None => None,
+        };
         o.finish()?;
         Ok(Scenario {
             format: FORMAT.to_string(),
@@ -524,6 +528,21 @@ impl Scenario {
             touching_allowed,
             inspection,
             planner,
+            map,
         })
     }
+}
+
+/// The optional `map` block: `{"resolution": r, "origin": [x, y]}`.
+fn map_grid(v: &Value, path: &str) -> Result<MapGrid> {
+    let mut o = Obj::new(path, v)?;
+    let (rv, rp) = o.req("resolution")?;
+    let resolution = number(rv, &rp)?;
+    if resolution <= 0.0 {
+        return Err(ScenarioError::at(rp, "must be positive"));
+    }
+    let (ov, op) = o.req("origin")?;
+    let origin = fixed::<2>(ov, &op, "a point [x, y]")?;
+    o.finish()?;
+    Ok(MapGrid { resolution, origin })
 }

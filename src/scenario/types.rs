@@ -42,6 +42,19 @@ pub struct Scenario {
     /// Planner defaults selected when the scenario opens.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub planner: Option<PlannerDefaults>,
+    /// The pixel grid of the occupancy map the scenario came from (optional).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub map: Option<MapGrid>,
+}
+
+/// The optional `map` block: the pixel grid of an imported occupancy map (`io::occupancy`), so
+/// grid-search's default cell is one pixel, aligned with the image.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct MapGrid {
+    /// Side of a pixel.
+    pub resolution: Real,
+    /// The lower left corner of the lower left pixel `[x, y]`.
+    pub origin: [Real; 2],
 }
 
 /// One obstacle, as the contract writes it (`{"rect": [...]}` and so on).

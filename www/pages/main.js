@@ -194,18 +194,20 @@ function openDefaultScenario() {
 /**
  * Send a scenario (or, with `file`, any file the core imports) to the worker. `source`: {id} for
  * a built-in as shipped, {custom: true} for anything else (an edit, a file, a link's JSON: the
- * default for an edit or a file); left out otherwise, it stays (a reload after a crash).
+ * default for an edit or a file); left out otherwise, it stays (a reload after a crash). `map`: an
+ * occupancy map's image bytes and YAML text (the worker's `import` message).
  * @param {string} text
  * @param {boolean} defaults
- * @param {{course?: string, edit?: boolean, file?: string | null, source?: {id?: string, custom?: boolean}}} [options]
+ * @param {{course?: string, edit?: boolean, file?: string | null, source?: {id?: string, custom?: boolean},
+ *   map?: {bytes: ArrayBuffer | null, yaml?: string | null, yamlName?: string | null} | null}} [options]
  */
-function load(text, defaults, { course: c = course, edit = false, file = null, source: s = edit || file ? { custom: true } : undefined } = {}) {
+function load(text, defaults, { course: c = course, edit = false, file = null, map = null, source: s = edit || file ? { custom: true } : undefined } = {}) {
   sentEdit = edit;
   course = c;
   applyDefaults = defaults;
   if (s !== undefined) source = s;
   if (!edit) editor.loading();
-  player.load(text, file);
+  player.load(text, file, map);
 }
 
 function configure() {
@@ -502,11 +504,32 @@ ui.scenario.addEventListener('change', () => {
   load(JSON.stringify(b.scenario), true, { course: b.course, source: { id: b.id } });
 });
 
+// Occupancy maps (issue 17): a map_server YAML with its image (chosen together), or an image alone
+// (a plain image: dark is occupied); the core decodes them in the worker.
+const MAP_IMAGE = /\.(pgm|png)$/i;
+const MAP_YAML = /\.ya?ml$/i;
+
 ui.file.addEventListener('change', async () => {
-  const file = ui.file.files[0];
+  const files = [...ui.file.files];
   ui.file.value = ''; // the same file can be opened again
-  if (!file) return;
+  if (!files.length) return;
   clearError();
+  const yaml = files.find((f) => MAP_YAML.test(f.name));
+  const images = files.filter((f) => MAP_IMAGE.test(f.name));
+  if (yaml || images.length) {
+    // The image the YAML names (by its base name) when several were chosen, else the only one.
+    let yamlText = null;
+    try { yamlText = yaml ? await yaml.text() : null; } catch (e) { showError(`Could not read ${yaml.name}: ${e.message}`); return; }
+    const named = yamlText?.match(/^\s*image\s*:\s*["']?([^"'#\r\n]*?)["']?\s*(#.*)?$/m)?.[1].split(/[\\/]/).pop();
+    const image = images.find((f) => f.name === named) ?? images[0] ?? null;
+    let bytes = null;
+    try { bytes = image ? await image.arrayBuffer() : null; } catch (e) { showError(`Could not read ${image.name}: ${e.message}`); return; }
+    const name = yaml ? yaml.name : image.name;
+    markCustom(`File: ${name}`);
+    load('', true, { course: 'Opened file', file: image ? image.name : name, map: { bytes, yaml: yamlText, yamlName: yaml?.name ?? null }, source: { custom: true } });
+    return;
+  }
+  const file = files[0];
   let text;
   try { text = await file.text(); } catch (e) { showError(`Could not read ${file.name}: ${e.message}`); return; }
   markCustom(`File: ${file.name}`);

@@ -60,7 +60,7 @@ export class Lane {
 
   // Requests (the page's controller decides whether they are allowed)
 
-  load(text, file = null) { this.clearRun(); this.session.load(text, file); }
+  load(text, file = null, map = null) { this.clearRun(); this.session.load(text, file, map); }
   configure(config) { this.session.configure(config); this.clearRun(); }
   resetRun() { this.session.reset(); this.clearRun(); }
   run() { if (!this.done) this.session.send({ type: 'run' }); }

@@ -4,7 +4,7 @@
 
 /**
  * @typedef {{type: 'load', text: string}
- *   | {type: 'import', text: string, name: string}
+ *   | {type: 'import', text: string, name: string, bytes?: ArrayBuffer | null, yaml?: string | null, yamlName?: string | null}
  *   | {type: 'configure', planner: string, params: Record<string, number | string>, seed: number}
  *   | {type: 'run' | 'pause' | 'reset' | 'cancel' | 'asv-solution' | 'ping' | 'fresh-seed'}
  *   | {type: 'step', iterations: number}

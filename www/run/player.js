@@ -38,7 +38,7 @@ export class Player {
           // its last scenario then stands aside: a load is pending)
           const again = this.resend;
           this.resend = null;
-          if (again) this.lane.load(again.text, again.file);
+          if (again) this.lane.load(again.text, again.file, again.map);
           hooks.ready?.(m);
         },
         loaded: (m) => { this.pendingLoad = null; hooks.loaded?.(m); },
@@ -95,9 +95,9 @@ export class Player {
    * Send a scenario (JSON text; with `file`, any file the core imports) to the worker (in the
    * `stopped` state, to a fresh one).
    */
-  load(text, file = null) {
-    this.pendingLoad = { text, file };
-    this.lane.load(text, file);
+  load(text, file = null, map = null) {
+    this.pendingLoad = { text, file, map };
+    this.lane.load(text, file, map);
     this.controller.fire('load');
   }
 

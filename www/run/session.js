@@ -61,14 +61,18 @@ export class WorkerSession {
 
   get alive() { return !!this.worker; }
 
-  send(msg) { this.worker?.postMessage(msg); }
+  /** @param {any} msg @param {Transferable[]} [transfer] */
+  send(msg, transfer = []) { this.worker?.postMessage(msg, transfer); }
 
-  /** Send `msg` and expect the worker to acknowledge it within WATCHDOG_MS. */
-  sendWatched(msg) {
+  /**
+   * Send `msg` and expect the worker to acknowledge it within WATCHDOG_MS.
+   * @param {any} msg @param {Transferable[]} [transfer]
+   */
+  sendWatched(msg, transfer = []) {
     if (!this.worker) return;
     const ack = ++this.ackSeq;
     this.acks.set(ack, { type: msg.type, sent: performance.now() });
-    this.send({ ...msg, ack });
+    this.send({ ...msg, ack }, transfer);
     this.armWatchdog();
   }
 
@@ -95,16 +99,27 @@ export class WorkerSession {
   }
 
   /**
-   * Send a scenario (or, with `file`, any file the core imports). Without a worker (it kept
-   * crashing: `fatal`), a fresh one is started first, the crash count forgotten.
+   * Send a scenario (or, with `file`, any file the core imports; with `map`, an occupancy map:
+   * an image's bytes and/or a map_server YAML's text). Without a worker (it kept crashing:
+   * `fatal`), a fresh one is started first, the crash count forgotten.
+   * @param {string} text @param {string | null} [file]
+   * @param {{bytes: ArrayBuffer | null, yaml?: string | null, yamlName?: string | null} | null} [map]
    */
-  load(text, file = null) {
+  load(text, file = null, map = null) {
     if (!this.worker) {
       this.crashes = [];
       this.start();
     }
     this.loadsPending++;
     this.bumpsPending++;
+    if (map) {
+      // An occupancy map: the image's bytes (a copy is transferred, so the page keeps its own
+      // for a resend) and the YAML's text, decoded by the core.
+      const bytes = map.bytes ? map.bytes.slice(0) : null;
+      this.sendWatched({ type: 'import', text: '', name: file || '', bytes, yaml: map.yaml ?? null, yamlName: map.yamlName ?? null },
+        bytes ? [bytes] : []);
+      return;
+    }
     this.sendWatched(file ? { type: 'import', text, name: file } : { type: 'load', text });
   }
 

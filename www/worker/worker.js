@@ -4,6 +4,12 @@
 //   load      {text}                         validate a scenario (JSON text) and keep it
 //   import    {text, name}                   read any supported file (scenario, Technion map, ASV
 //                                            problem .txt) and proceed as `load` with the scenario
+//   import    {text: '', name, bytes, yaml, yamlName}   an occupancy map (issue 17): `bytes` (an
+//                                            ArrayBuffer, transferred) the image (PGM or PNG) named
+//                                            `name`, `yaml` (text or null) its map_server YAML named
+//                                            `yamlName`; no YAML: a plain image (dark is occupied);
+//                                            a YAML without `bytes` is `invalid`, naming the image
+//                                            it needs. Then as `load` with the scenario
 //   configure {planner, params, seed}        choose the planner set-up for the next run
 //   run       {}                             start (or resume) planning; streams events
 //   pause     {}                             stop stepping, keep the run
@@ -45,7 +51,7 @@
 //   crashed   {message}                      the core panicked; the page must replace this worker
 // `run` is a counter bumped on every run/reset/load, so the page can drop stale replies.
 
-import init, { Scene, Run, builtins, import_file, planners, event_kinds, install_panic_hook, last_panic, debug_panic, fresh_seed }
+import init, { Scene, Run, builtins, import_file, import_map, map_image_name, planners, event_kinds, install_panic_hook, last_panic, debug_panic, fresh_seed }
   from '../pkg/planarium.js';
 import { thinTries } from './thin.js';
 
@@ -175,6 +181,18 @@ function load(text) {
   post(msg, transfer);
 }
 
+/** An occupancy map's scenario JSON (see `import` above); throws what the core throws. */
+function importMap(msg) {
+  const yamlName = String(msg.yamlName || 'map.yaml');
+  if (!msg.bytes) {
+    const image = map_image_name(String(msg.yaml), yamlName); // throws the YAML's own errors first
+    const message = `${yamlName} names its image "${image}": open the YAML and that image together (choose both files)`;
+    throw new Error(JSON.stringify({ path: 'image', message, line: null, column: null, text: message }));
+  }
+  const yaml = msg.yaml == null ? undefined : String(msg.yaml);
+  return import_map(new Uint8Array(msg.bytes), String(msg.name || 'map'), yaml, yaml === undefined ? undefined : yamlName);
+}
+
 function handle(msg) {
   // Any request but another step ends a step in progress.
   if (msg.type !== 'step' && msg.type !== 'asv-solution' && msg.type !== 'query' && msg.type !== 'ping' && msg.type !== 'fresh-seed') stepping = null;
@@ -185,7 +203,8 @@ function handle(msg) {
     case 'import': {
       let text;
       try {
-        text = import_file(String(msg.text), String(msg.name || ''));
+        if (msg.bytes || msg.yaml != null) text = importMap(msg);
+        else text = import_file(String(msg.text), String(msg.name || ''));
       } catch (e) {
         rethrowPanic(e);
         freeRun();

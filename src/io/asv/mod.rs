@@ -173,6 +173,7 @@ pub fn import_problem(text: &str, name: &str) -> Result<Scenario, ScenarioError>
         touching_allowed: true,
         inspection: None,
         planner: Some(PlannerDefaults { name: "rrt-connect".into(), seed: None, params }),
+        map: None,
     })
 }
 

@@ -1,0 +1,39 @@
+// Occupancy maps through the wasm build under Node (issue 17): `import_map` on the sample's PGM +
+// YAML and on its PNG gives the scenario the native CLI gives (`planarium validate map.yaml`), and
+// `map_image_name` and the errors are what the worker relies on.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { execFileSync } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
+import { dirname, join } from 'node:path';
+import { initSync, import_map, map_image_name } from '../../www/pkg/planarium.js';
+
+const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
+initSync({ module: readFileSync(join(root, 'www/pkg/planarium_bg.wasm')) });
+const data = (name) => readFileSync(join(root, 'tests', 'data', 'maps', name));
+
+test('import_map gives the native CLI\'s scenario for the PGM + YAML and the PNG', () => {
+  const yaml = data('sample.yaml').toString('utf8');
+  const fromPgm = JSON.parse(import_map(data('sample.pgm'), 'sample.pgm', yaml, 'sample.yaml'));
+  const native = JSON.parse(execFileSync('cargo', ['run', '--release', '--quiet', '--', 'validate', join(root, 'tests/data/maps/sample.yaml')],
+    { cwd: root, encoding: 'utf8', maxBuffer: 1 << 26 }));
+  assert.deepEqual(fromPgm, native);
+  const fromPng = JSON.parse(import_map(data('sample.png'), 'sample.png', yaml, 'sample.yaml'));
+  assert.deepEqual(fromPng, native);
+  assert.equal(map_image_name(yaml, 'sample.yaml'), 'sample.pgm');
+  const plain = JSON.parse(import_map(data('sample.png'), 'sample.png'));
+  assert.deepEqual(plain.bounds, [0, 0, 2, 1.5]);
+});
+
+test('errors are JSON with the line, column and key', () => {
+  assert.throws(() => map_image_name('image: a.pgm\nresolution: 0.o5\n', 'm.yaml'), (e) => {
+    const err = JSON.parse(e.message);
+    assert.equal(err.path, 'resolution');
+    assert.equal(err.line, 2);
+    assert.equal(err.column, 13);
+    assert.equal(err.text, 'line 2, column 13: m.yaml: resolution: "0.o5" is not a number');
+    return true;
+  });
+  assert.throws(() => import_map(new Uint8Array([80, 53, 10, 52]), 't.pgm'), (e) => /t\.pgm: byte \d+: the file ends/.test(JSON.parse(e.message).text));
+});
