@@ -8,6 +8,7 @@ import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { dirname, join } from 'node:path';
 import { initSync, import_map, map_image_name } from '../../www/pkg/planarium.js';
+import { gridLattice } from '../../www/ui/cell-grid.js';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
 initSync({ module: readFileSync(join(root, 'www/pkg/planarium_bg.wasm')) });
@@ -36,4 +37,21 @@ test('errors are JSON with the line, column and key', () => {
     return true;
   });
   assert.throws(() => import_map(new Uint8Array([80, 53, 10, 52]), 't.pgm'), (e) => /t\.pgm: byte \d+: the file ends/.test(JSON.parse(e.message).text));
+});
+
+test("the Cells tool paints on a map's pixels: its lattice is the image's (origin, one pixel a cell), as grid search's", () => {
+  const yaml = data('sample.yaml').toString('utf8');
+  const sc = JSON.parse(import_map(data('sample.pgm'), 'sample.pgm', yaml, 'sample.yaml'));
+  const lat = gridLattice(sc);
+  assert.deepEqual([lat.ox, lat.oy, lat.side, lat.nx, lat.ny], [-1, -0.5, 0.1, 40, 30]);
+  // every rectangle the importer made from occupied pixels lies on that lattice
+  for (const o of sc.obstacles) {
+    for (const [v, a] of [[o.rect[0], lat.ox], [o.rect[1], lat.oy], [o.rect[2], lat.ox], [o.rect[3], lat.oy]]) {
+      const k = (v - a) / lat.side;
+      assert.ok(Math.abs(k - Math.round(k)) < 1e-9, `rect ${o.rect} on the pixels`);
+    }
+  }
+  // another cell size is grid search's plain lattice from the bounds' corner
+  const coarse = gridLattice(sc, 0.25);
+  assert.deepEqual([coarse.ox, coarse.oy, coarse.side], [sc.bounds[0], sc.bounds[1], 0.25]);
 });

@@ -16,15 +16,31 @@ export function defaultCell(bounds) {
 }
 
 /**
+ * Grid search's lattice for a scenario and a `cell` parameter (0: the default): on an occupancy map
+ * (the scenario's `map` block, io::occupancy) the default is one pixel and the lattice is the
+ * image's pixels, anchored at the map's origin, as grid.rs lays it; else the bounds' fortieth.
+ */
+export function gridLattice(scenario, cell = 0) {
+  const map = scenario.map;
+  const r = Number(map?.resolution);
+  const onMap = r > 0 && Array.isArray(map.origin) && map.origin.every(Number.isFinite);
+  const side = cell > 0 ? cell : onMap ? r : defaultCell(scenario.bounds);
+  return onMap && side === r ? lattice(scenario.bounds, side, map.origin) : lattice(scenario.bounds, side);
+}
+
+/**
  * The lattice of square cells of `side` covering `bounds`, anchored at (ox, oy): grid search's
  * own (anchored at the bounds' lower-left corner, ceil(w / side) × ceil(h / side) cells, the last
- * ones reaching past the bounds) unless `anchor` is given (the snapping grid's 0).
+ * ones reaching past the bounds) unless `anchor` is given (the snapping grid's 0, or an
+ * occupancy map's origin [x, y]).
+ * @param {number[]} bounds @param {number} side @param {null | number | number[]} [anchor]
  * @returns {{ox: number, oy: number, side: number, nx: number, ny: number, margin: number}}
  */
 export function lattice(bounds, side, anchor = null) {
   const [x0, y0, x1, y1] = bounds;
-  const ox = anchor === null ? x0 : anchor + Math.floor((x0 - anchor) / side) * side;
-  const oy = anchor === null ? y0 : anchor + Math.floor((y0 - anchor) / side) * side;
+  const [ax, ay] = Array.isArray(anchor) ? anchor : [anchor, anchor];
+  const ox = ax === null ? x0 : ax + Math.floor((x0 - ax) / side) * side;
+  const oy = ay === null ? y0 : ay + Math.floor((y0 - ay) / side) * side;
   const nx = Math.max(1, Math.ceil((x1 - ox) / side - 1e-9));
   const ny = Math.max(1, Math.ceil((y1 - oy) / side - 1e-9));
   return { ox, oy, side, nx, ny, margin: side / 100 };

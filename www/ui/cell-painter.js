@@ -10,7 +10,7 @@
 // the map keeps at most MAX_OBSTACLES obstacles and MAX_TOTAL_VERTICES vertices (a rect counts 4:
 // the core's limits, src/limits.rs).
 
-import { lattice, defaultCell, cellAt, cellBox, cellsOnSegment, grow, meets, rectMinus, wallPieces, pieceCell } from './cell-grid.js';
+import { lattice, gridLattice, cellAt, cellBox, cellsOnSegment, grow, meets, rectMinus, wallPieces, pieceCell } from './cell-grid.js';
 import { inside } from './obstacle-shapes.js';
 
 export const MAX_DRAG_CELLS = 10000;
@@ -34,12 +34,9 @@ export class CellPainter {
   lattice() {
     const s = this.host.scenario;
     const c = this.config?.();
-    if (c?.planner === 'grid-search') {
-      const cell = Number(c.params?.cell);
-      return lattice(s.bounds, cell > 0 ? cell : defaultCell(s.bounds));
-    }
+    if (c?.planner === 'grid-search') return gridLattice(s, Number(c.params?.cell) || 0);
     if (this.host.grid.on) return lattice(s.bounds, this.host.grid.step, 0);
-    return lattice(s.bounds, defaultCell(s.bounds));
+    return gridLattice(s);
   }
 
   /** Rectangles that are painted cells' pieces on the current lattice (what Clear walls removes). */
