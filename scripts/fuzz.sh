@@ -18,7 +18,7 @@ cd "$(dirname "$0")/.."
 ROOT=$PWD
 SECONDS_PER_TARGET=${1:-60}
 shift || true
-ALL_TARGETS=(scenario technion asv_problem asv_solution plan)
+ALL_TARGETS=(scenario technion asv_problem asv_solution plan map)
 TARGETS=("$@")
 [ ${#TARGETS[@]} -eq 0 ] && TARGETS=("${ALL_TARGETS[@]}")
 TIMEOUT=${TIMEOUT:-1}

@@ -93,6 +93,19 @@ pub fn check_technion(text: &str) -> Result<Outcome, String> {
     scenario_outcome("technion::import_map", io::technion::import_map(text, "fuzz"))
 }
 
+/// Target (f): an occupancy map (issue 17): a map_server YAML, a line `===`, then the image's
+/// bytes (PGM or PNG); without `===` the whole input is a plain image.
+pub fn check_map(data: &[u8]) -> Result<Outcome, String> {
+    let split = data.windows(5).position(|w| w == b"\n===\n");
+    let (yaml, image) = match split {
+        Some(k) => (Some(String::from_utf8_lossy(&data[..k]).into_owned()), &data[k + 5..]),
+        None => (None, data),
+    };
+    let name = if image.starts_with(b"\x89PNG") { "fuzz.png" } else { "fuzz.pgm" };
+    let read = io::occupancy::import_image(image, name, yaml.as_deref().map(|y| (y, "fuzz.yaml")));
+    scenario_outcome("occupancy::import_image", read)
+}
+
 /// Target (c): an ASV problem file.
 pub fn check_asv_problem(text: &str) -> Result<Outcome, String> {
     scenario_outcome("asv::import_problem", io::asv::import_problem(text, "fuzz"))
