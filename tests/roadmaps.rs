@@ -321,3 +321,42 @@ fn prm_star_connects_each_milestone_by_its_rule() {
         }
     }
 }
+
+#[test]
+fn prm_star_keeps_shortening_its_path_and_reports_each_improvement() {
+    // improve_for 0 is the first solution; with improve_for the same roadmap grows on (same draws),
+    // its first Cost event is that first solution's cost, each later one is shorter, none is under
+    // the visibility graph's optimum, and the path returned is the last one reported.
+    for (name, optimum) in [("zigzag", 3.859660), ("narrow", 1.150026)] {
+        let sc = builtin(name).unwrap();
+        for seed in 1..=3 {
+            let mut first = session(&sc, "prm-star", json!({"improve_for": 0}), seed);
+            first.run_to_end();
+            let first_cost = first.result().stats.cost.unwrap();
+            let spec = planners::find("prm-star").unwrap();
+            let params = Params::from_json(spec, &json!({"improve_for": 300})).unwrap();
+            let problem = Problem::from_scenario(&sc).unwrap();
+            let mut s =
+                Session::new(problem, RunConfig { planner: "prm-star".into(), params, seed, record_events: true })
+                    .unwrap();
+            s.run_to_end();
+            let r = s.result();
+            assert!(r.solved, "{name} / {seed}");
+            let ev = s.drain_events();
+            let costs: Vec<f64> =
+                ev.chunks(STRIDE).filter(|c| c[0] as u8 == EventKind::Cost as u8).map(|c| c[6]).collect();
+            assert!((costs[0] - first_cost).abs() < 1e-12, "{name} / {seed}: first cost {} vs {first_cost}", costs[0]);
+            assert!(costs.windows(2).all(|w| w[1] < w[0]), "{name} / {seed}: {costs:?}");
+            assert!(costs.iter().all(|&c| c >= optimum - 1e-6), "{name} / {seed}: {costs:?} under {optimum}");
+            assert_eq!(r.stats.cost.unwrap(), *costs.last().unwrap(), "{name} / {seed}: the path returned");
+            if let Some(e) = common::path_problem(&sc, &r.path) {
+                panic!("{name} / {seed}: {e}");
+            }
+            println!(
+                "{name} seed {seed}: first {first_cost:.4}, then {} improvements to {:.4}",
+                costs.len() - 1,
+                costs.last().unwrap()
+            );
+        }
+    }
+}

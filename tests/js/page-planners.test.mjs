@@ -71,6 +71,26 @@ test('RRT* on the open field: the best-cost chart has a line and the stats show 
   assert.ok(bestOff < bestPath / 10, `best path gone: ${bestOff} of ${bestPath}`);
 });
 
+test('PRM* on the zigzag: its cost chart falls toward the optimum line as the roadmap grows', async () => {
+  await pickScenario('zigzag', 'Zigzag of walls');
+  await page.selectOption('#planner', 'prm-star');
+  await waitState('idle');
+  assert.equal(await page.isVisible('#chart'), true, 'PRM* keeps improving: the cost chart is shown');
+  const optimum = (await page.evaluate(() => window.planarium.model())).optimum;
+  assert.ok(Math.abs(optimum - 3.85966) < 1e-4, `zigzag's optimum: ${optimum}`);
+  await setField('seed', 1);
+  await fastPlayback();
+  await page.click('#run');
+  await waitState('finished', 90000);
+  await nextFrames();
+  const model = await page.evaluate(() => window.planarium.model());
+  assert.ok(model.costs.length >= 5, `improvements shown: ${model.costs.length}`);
+  assert.ok(model.costs.every(([, c], i) => c >= optimum - 1e-6 && (i === 0 || c < model.costs[i - 1][1])), JSON.stringify(model.costs));
+  assert.ok(Math.abs(Number(await page.textContent('#stat-cost')) - model.costs.at(-1)[1]) < 1e-3, 'the path is the last improvement');
+  const [line, dashed] = await countColours('chart', [PALETTE.chartLine, PALETTE.chartTarget], 8);
+  assert.ok(line > 60 && dashed > 40, `chart line ${line} px, optimum line ${dashed} px`);
+});
+
 test('Lazy PRM on the zigzag: unchecked edges drawn dashed grey, checked ones in the tree colour; PRM draws only checked edges', async () => {
   await pickScenario('zigzag', 'Zigzag of walls');
   await page.selectOption('#planner', 'lazy-prm');

@@ -201,7 +201,10 @@ PSEUDOCODE.prm = {
 };
 PSEUDOCODE['prm-star'] = {
   title: 'PRM* (Karaman & Frazzoli 2011)',
-  lines: [...ROADMAP_HEAD, { id: 'near', text: "for q' in the k(n) = ⌈e(1 + 1/d)·ln n⌉ nearest of q (or within r(n)):", indent: 1 }, ...EAGER_TAIL],
+  lines: [...ROADMAP_HEAD, { id: 'near', text: "for q' in the k(n) = ⌈e(1 + 1/d)·ln n⌉ nearest of q (or within r(n)):", indent: 1 },
+    EAGER_TAIL[0],
+    { id: 'query', text: 'if q_start and q_goal share a component: path ← A*(q_start, q_goal) over (V, E)', indent: 1 },
+    { id: 'cost', text: 'if cost(path) < best: best ← path; improve_for milestones after the first, return best', indent: 2 }],
 };
 PSEUDOCODE['lazy-prm'] = {
   title: 'Lazy PRM (Bohlin & Kavraki 2000)',

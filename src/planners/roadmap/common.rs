@@ -100,6 +100,12 @@ pub struct RoadmapPlanner {
     scratch: Vec<Real>,
     a: Vec<Real>,
     b: Vec<Real>,
+    /// Iterations spent improving after the first solution (PRM*; 0: return the first).
+    improve_for: u64,
+    iterations: u64,
+    solved_at: Option<u64>,
+    /// The shortest path found so far and its cost (while improving).
+    best: Option<(Vec<Vec<Real>>, Real)>,
 }
 
 impl RoadmapPlanner {
@@ -116,7 +122,18 @@ impl RoadmapPlanner {
             scratch: vec![0.0; dims],
             a: vec![0.0; dims],
             b: vec![0.0; dims],
+            improve_for: 0,
+            iterations: 0,
+            solved_at: None,
+            best: None,
         }
+    }
+    /// Keep growing the roadmap for `iterations` after the first solution, searching it again
+    /// after each milestone: a shorter path is a `Cost` event (the page's cost chart), and the
+    /// shortest is returned at the end (PRM*, whose paths approach the optimum as it grows).
+    pub fn improving(mut self, iterations: u64) -> Self {
+        self.improve_for = iterations;
+        self
     }
     /// The roadmap.
     pub fn roadmap(&self) -> &Roadmap {
@@ -267,13 +284,40 @@ impl Planner for RoadmapPlanner {
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         let first = self.graph.is_empty();
         self.init(cx);
-        if !self.grow(cx) && !first {
+        let grew = self.grow(cx);
+        if self.improve_for == 0 {
+            if !grew && !first {
+                return None;
+            }
+            let path = self.query_vertices(cx, 0, 1)?;
+            let goal = self.task.goal();
+            cx.events.at(EventKind::Solved, 0, cx.si.project(goal), goal);
+            return Some(path);
+        }
+        // Anytime (PRM*): every milestone may shorten the path; the search runs again.
+        let iteration = self.iterations;
+        self.iterations += 1;
+        if grew || first {
+            if let Some(path) = self.query_vertices(cx, 0, 1) {
+                let c = crate::planners::smoothing::path_cost(cx.si, &path);
+                if self.best.as_ref().is_none_or(|(_, b)| c < *b) {
+                    self.solved_at.get_or_insert(iteration);
+                    let goal = self.task.goal();
+                    cx.events.mark(EventKind::Cost, 0, 1, cx.iteration as Real, cx.si.project(goal), c, 0.0);
+                    self.best = Some((path, c));
+                }
+            }
+        }
+        let solved = self.solved_at?;
+        if iteration - solved < self.improve_for {
             return None;
         }
-        let path = self.query_vertices(cx, 0, 1)?;
         let goal = self.task.goal();
         cx.events.at(EventKind::Solved, 0, cx.si.project(goal), goal);
-        Some(path)
+        self.best_so_far()
+    }
+    fn best_so_far(&self) -> Option<Vec<Vec<Real>>> {
+        self.best.as_ref().map(|(p, _)| p.clone())
     }
     fn node_count(&self) -> usize {
         self.graph.len()

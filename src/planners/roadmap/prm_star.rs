@@ -24,7 +24,11 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     params: PARAMS,
     groups: &[SAMPLER_GROUP],
     task: TaskKind::Goal,
-    make: |si, task, params| Ok(Box::new(RoadmapPlanner::new(si.dims(), task, rule(si, params), false))),
+    make: |si, task, params| {
+        Ok(Box::new(
+            RoadmapPlanner::new(si.dims(), task, rule(si, params), false).improving(params.real("improve_for") as u64),
+        ))
+    },
 };
 
 /// PRM*'s parameters.
@@ -35,6 +39,14 @@ pub const PARAMS: &[ParamSpec] = &[
         &["k-nearest", "radius"],
         0,
         "k-nearest: the ⌈f·e·(1 + 1/d)·ln n⌉ nearest vertices; radius: those within f·γ·(ln n / n)^(1/d).",
+    ),
+    ParamSpec::int(
+        "improve_for",
+        "Improve for",
+        0.0,
+        1e9,
+        500.0,
+        "Iterations (milestones) spent shortening the path after the first solution, the roadmap searched again after each (0: return the first solution).",
     ),
     ParamSpec::real(
         "factor",
