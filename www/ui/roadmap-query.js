@@ -50,10 +50,11 @@ export function wireRoadmapQuery({ button, status, canvas, view, lane, applies, 
     say("Click the query's start on the map (Escape cancels).");
   });
 
-  canvas.addEventListener('pointerdown', (e) => {
+  // On the canvas's parent, capturing: it runs before the canvas's own listeners (the editors'),
+  // so the query's clicks are not edits: the start/goal drag and the drawing tools never see them.
+  (canvas.parentElement ?? canvas).addEventListener('pointerdown', (e) => {
     const L = view.layout;
-    if (!picking || !L) return;
-    // the query's clicks are not edits: the start/goal drag and the drawing tools never see them
+    if (!picking || !L || e.target !== canvas) return;
     e.preventDefault();
     e.stopImmediatePropagation();
     const p = [L.wx(e.offsetX * L.dpr), L.wy(e.offsetY * L.dpr)];
