@@ -231,7 +231,7 @@ impl RoadmapPlanner {
                 return None;
             }
             self.stats.searches += 1;
-            let path = self.graph.shortest(&cx.si.space, s, g, &mut self.stats.expanded)?;
+            let path = self.graph.shortest(cx.si, s, g, &mut self.stats.expanded)?;
             let verts = self.graph.walk(s, &path);
             for (i, w) in verts.windows(2).enumerate() {
                 self.note_edge(cx, EventKind::QueryPath, (i > 0) as usize, w[0], w[1]);

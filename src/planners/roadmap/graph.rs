@@ -9,6 +9,7 @@
 use crate::math::Real;
 use crate::nn::KdTree;
 use crate::space::StateSpace;
+use crate::space_info::SpaceInfo;
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
@@ -180,8 +181,10 @@ impl Roadmap {
     }
     /// The shortest path from `a` to `b` over usable edges, as edge ids in order, by A* with the
     /// space's distance as heuristic (admissible: an edge's cost is its length in that metric);
-    /// `None` when they are not connected. `expanded` counts the vertices the search closed.
-    pub fn shortest(&self, space: &StateSpace, a: u32, b: u32, expanded: &mut u64) -> Option<Vec<u32>> {
+    /// `None` when they are not connected, or when the run must stop (`si.tick`, a unit a vertex
+    /// closed). `expanded` counts the vertices the search closed.
+    pub fn shortest(&self, si: &SpaceInfo, a: u32, b: u32, expanded: &mut u64) -> Option<Vec<u32>> {
+        let space = &si.space;
         let n = self.len();
         let mut g = vec![Real::INFINITY; n];
         let mut via = vec![u32::MAX; n];
@@ -196,6 +199,11 @@ impl Roadmap {
             }
             closed[v as usize] = true;
             *expanded += 1;
+            // A search over a large roadmap is long work: the run's time limit and a bounded
+            // batch's suspension hold inside it (a stopped search finds nothing).
+            if si.tick(1) {
+                return None;
+            }
             if v == b {
                 let mut path = Vec::new();
                 let mut at = b;
