@@ -73,7 +73,53 @@ fn check_resolution(sc: &Scenario, space: &crate::space::StateSpace) -> Result<(
     Ok(())
 }
 
+/// A start or goal state `q` (scenario form) as a planning state: the robot's dimension, in
+/// bounds, collision-free; errors name the state (`name`) and why.
+fn check_state(
+    robot: &dyn Robot,
+    space: &crate::space::StateSpace,
+    workspace: &Workspace,
+    sc: &Scenario,
+    name: &str,
+    q: &[Real],
+) -> Result<Vec<Real>, ScenarioError> {
+    let dims = robot.external_dims();
+    if q.len() != dims {
+        return Err(ScenarioError::at(
+            name,
+            format!(
+                "{} {} robot's state has {dims} numbers, found {}",
+                if robot.kind().starts_with('a') { "an" } else { "a" },
+                robot.kind(),
+                q.len()
+            ),
+        ));
+    }
+    let mut q = robot.encode(q).map_err(|e| ScenarioError::at(name, e))?;
+    space.enforce(&mut q);
+    match robot.verdict(workspace, &q) {
+        Verdict::Valid => Ok(q),
+        Verdict::Invalid(why) => Err(ScenarioError::at(name, why)),
+        Verdict::OutOfBounds(d) => {
+            let axis = ["x", "y"][d.min(1)];
+            let b = sc.bounds;
+            let (lo, hi) = if d == 0 { (b[0], b[2]) } else { (b[1], b[3]) };
+            Err(ScenarioError::at(name, format!("out of bounds: {axis} must stay within [{lo}, {hi}]")))
+        }
+        Verdict::Collision(i) => Err(ScenarioError::at(
+            name,
+            format!("in collision with obstacles[{i}] (a {})", obstacle_kind(&sc.obstacles[i])),
+        )),
+    }
+}
+
 impl Problem {
+    /// Another start or goal for this problem (a roadmap's further query): checked as the
+    /// scenario's own are, against this problem's robot and workspace (nothing is rebuilt).
+    pub fn check_state(&self, name: &str, q: &[Real]) -> Result<Vec<Real>, ScenarioError> {
+        check_state(self.robot.as_ref(), &self.si.space, self.si.workspace(), &self.scenario, name, q)
+    }
+
     /// A planning path as scenario states.
     pub fn decode_path(&self, path: &[Vec<Real>]) -> Vec<Vec<Real>> {
         path.iter().map(|q| self.robot.decode(q)).collect()
@@ -93,35 +139,7 @@ impl Problem {
             robot::from_spec(&sc.robot, sc.body_in_bounds).map_err(|e| ScenarioError::at("robot.kind", e))?.into();
         let space = robot.space(&workspace);
         check_resolution(sc, &space)?;
-        let check = |name: &str, q: &[Real]| -> Result<Vec<Real>, ScenarioError> {
-            let dims = robot.external_dims();
-            if q.len() != dims {
-                return Err(ScenarioError::at(
-                    name,
-                    format!(
-                        "{} {} robot's state has {dims} numbers, found {}",
-                        if robot.kind().starts_with('a') { "an" } else { "a" },
-                        robot.kind(),
-                        q.len()
-                    ),
-                ));
-            }
-            let mut q = robot.encode(q).map_err(|e| ScenarioError::at(name, e))?;
-            space.enforce(&mut q);
-            match robot.verdict(&workspace, &q) {
-                Verdict::Valid => Ok(q),
-                Verdict::Invalid(why) => Err(ScenarioError::at(name, why)),
-                Verdict::OutOfBounds(d) => {
-                    let axis = ["x", "y"][d.min(1)];
-                    let (lo, hi) = if d == 0 { (b[0], b[2]) } else { (b[1], b[3]) };
-                    Err(ScenarioError::at(name, format!("out of bounds: {axis} must stay within [{lo}, {hi}]")))
-                }
-                Verdict::Collision(i) => Err(ScenarioError::at(
-                    name,
-                    format!("in collision with obstacles[{i}] (a {})", obstacle_kind(&sc.obstacles[i])),
-                )),
-            }
-        };
+        let check = |name: &str, q: &[Real]| check_state(robot.as_ref(), &space, &workspace, sc, name, q);
         let start = check("start", &sc.start)?;
         let goal = sc.goal.as_deref().map(|g| check("goal", g)).transpose()?;
         let validity = RobotInWorkspace { robot: Rc::clone(&robot), workspace };

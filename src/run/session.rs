@@ -409,11 +409,8 @@ impl Session {
         if !self.status.is_finished() {
             return Err("the run has not finished: a roadmap is queried once it is built".into());
         }
-        let mut sc = self.problem.scenario.clone();
-        sc.start = start.to_vec();
-        sc.goal = Some(goal.to_vec());
-        let q = Problem::from_scenario(&sc).map_err(|e| e.to_string())?;
-        let goal_q = q.goal.as_deref().unwrap_or(&q.start);
+        let start_q = self.problem.check_state("start", start).map_err(|e| e.to_string())?;
+        let goal_q = self.problem.check_state("goal", goal).map_err(|e| e.to_string())?;
         self.problem.si.set_deadline(Deadline::in_ms(self.limits.time_ms));
         let nodes_left = self.limits.nodes.saturating_sub(self.planner.node_count());
         let mut cx = Context {
@@ -424,7 +421,7 @@ impl Session {
             sampler: &mut self.sampler,
             iteration: self.iterations,
         };
-        let answer = self.planner.query(&mut cx, &q.start, goal_q);
+        let answer = self.planner.query(&mut cx, &start_q, &goal_q);
         let interrupted = self.problem.si.interrupted();
         self.problem.si.set_deadline(Deadline::NONE);
         match answer {
