@@ -8,18 +8,8 @@ import assert from 'node:assert/strict';
 import { lattice, defaultCell, cellAt, cellBox, cellsOnSegment, rectMinus, wallPieces, pieceCell, grow, meets } from '../../www/ui/cell-grid.js';
 import { readFileSync } from 'node:fs';
 import { CellPainter, MAX_OBSTACLES, MAX_TOTAL_VERTICES, MAX_DRAG_CELLS } from '../../www/ui/cell-painter.js';
+import { mulberry32 as rng } from './seeded.mjs';
 
-/** A seeded generator (mulberry32), so a failure repeats. */
-function rng(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 const inBox = (b, x, y) => x >= b[0] && x <= b[2] && y >= b[1] && y <= b[3];
 const inOpen = (b, x, y) => x > b[0] && x < b[2] && y > b[1] && y < b[3];
 

@@ -7,29 +7,10 @@
 // size fails here.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
-import { fileURLToPath } from 'node:url';
-import { dirname, join } from 'node:path';
-import { initSync, Run, builtins } from '../../www/pkg/planarium.js';
+import { scenarios, runRecords as records } from './core-runs.mjs';
 import { EventKind as K, STRIDE } from '../../www/run/events.js';
 import { RunModel } from '../../www/run/playback.js';
 import { densityCell } from '../../www/draw/density.js';
-
-const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
-initSync({ module: readFileSync(join(root, 'www/pkg/planarium_bg.wasm')) });
-const scenarios = Object.fromEntries(JSON.parse(builtins()).map((b) => [b.id, b.scenario]));
-
-function records(scenario, planner, params, seed) {
-  const run = new Run(JSON.stringify(scenarios[scenario]), planner, JSON.stringify(params), seed);
-  const out = [];
-  let status;
-  do {
-    status = run.step(200, 1e9);
-    for (const v of run.drain_events()) out.push(v);
-  } while (status === 'running' && out.length < 3e6);
-  run.free();
-  return { out, status };
-}
 
 const RUNS = [
   ['narrow', 'est', {}, 3],
@@ -52,7 +33,7 @@ for (const [scenario, planner, params, seed] of RUNS) {
       const t = d[o + 1];
       const counts = model.density.counts(t, b);
       assert.equal(model.density.grid, params.grid ?? 20);
-      const key = `${d[o + 9]},${d[o + 10]}`;
+      const key = d[o + 9] * model.density.grid + d[o + 10];
       assert.equal(counts.get(key), d[o + 6], `pick ${picks}: cell ${key} of tree ${t}`);
       assert.equal(counts.size, d[o + 8], `pick ${picks}: cells of tree ${t}`);
       let total = 0;

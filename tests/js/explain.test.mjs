@@ -5,26 +5,12 @@
 // true by construction. Runs on real built-ins with their default seeds.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
-import { fileURLToPath } from 'node:url';
-import { dirname, join } from 'node:path';
-import { initSync, Run, builtins } from '../../www/pkg/planarium.js';
+import { scenarios, runRecords } from './core-runs.mjs';
 import { EventKind as K, STRIDE } from '../../www/run/events.js';
 import { Explainer, pseudocode, optionsOf, num, blockerText } from '../../www/run/explain.js';
 
-const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
-initSync({ module: readFileSync(join(root, 'www/pkg/planarium_bg.wasm')) });
-const scenarios = Object.fromEntries(JSON.parse(builtins()).map((b) => [b.id, b.scenario]));
-
 function records(scenario, planner, params, seed) {
-  const run = new Run(JSON.stringify(scenarios[scenario]), planner, JSON.stringify(params), seed);
-  const out = [];
-  let status;
-  do {
-    status = run.step(200, 1e9);
-    for (const v of run.drain_events()) out.push(v);
-  } while (status === 'running' && out.length < 3e6);
-  run.free();
+  const { out } = runRecords(scenario, planner, params, seed);
   const recs = [];
   for (let o = 0; o < out.length; o += STRIDE) recs.push(out.slice(o, o + STRIDE));
   return recs;

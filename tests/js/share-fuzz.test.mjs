@@ -10,22 +10,13 @@ import {
   readShare, writeShare, decodeScenario, encodeScenario, parsePairs, toBase64url, boundedProblems,
   MAX_PAIRS, MAX_PROBLEMS, MAX_HASH_CHARS, MAX_SCENARIO_BYTES, VIEW_DEFAULTS,
 } from '../../www/ui/links.js';
+import { mulberry32 } from './seeded.mjs';
 
 const SEED = 0x5eed13;
 const INPUTS = 10000;
 const PER_INPUT_MS = 3000;   // generous: 2 shared cores; a 2 MB hash takes ~0.1 s
 const MAX_PROBLEM_CHARS = 400;
 
-function mulberry32(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 const rand = mulberry32(SEED);
 const int = (n) => Math.floor(rand() * n);
 const pick = (xs) => xs[int(xs.length)];

@@ -28,7 +28,7 @@ class DensityTree {
     this.ys = [];
     this.rooted = false;
     this.filed = 0;            // points filed into `counts` so far
-    this.counts = new Map();   // "column,row" → nodes
+    this.counts = new Map();   // column · grid + row → nodes
   }
 
   add(x, y) { this.xs.push(x); this.ys.push(y); }
@@ -65,7 +65,10 @@ export class DensityMirror {
       cells: d[o + 8], column: d[o + 9], row: d[o + 10] };
   }
 
-  /** Tree `t`'s node counts by cell over `bounds` = [x0, y0, x1, y1] (filed incrementally). */
+  /**
+   * Tree `t`'s node counts by cell over `bounds` = [x0, y0, x1, y1], keyed column · grid + row
+   * (filed incrementally).
+   */
   counts(t, bounds) {
     const key = `${bounds.join(',')}/${this.grid}`;
     if (key !== this.key) {
@@ -75,7 +78,7 @@ export class DensityMirror {
     const tr = this.tree(t);
     const [x0, y0, x1, y1] = bounds;
     for (; tr.filed < tr.xs.length; tr.filed++) {
-      const c = `${densityCell(tr.xs[tr.filed], x0, x1, this.grid)},${densityCell(tr.ys[tr.filed], y0, y1, this.grid)}`;
+      const c = densityCell(tr.xs[tr.filed], x0, x1, this.grid) * this.grid + densityCell(tr.ys[tr.filed], y0, y1, this.grid);
       tr.counts.set(c, (tr.counts.get(c) || 0) + 1);
     }
     return tr.counts;
@@ -96,7 +99,7 @@ export function drawDensity(ctx, L, mirror, bounds) {
   ctx.save();
   ctx.fillStyle = PALETTE.density;
   for (const [c, n] of counts) {
-    const [i, j] = c.split(',').map(Number);
+    const i = Math.floor(c / mirror.grid), j = c % mirror.grid;
     ctx.globalAlpha = 0.08 + 0.5 * ((1 / n) / total) / maxShare;
     ctx.fillRect(L.sx(x0 + i * cw), L.sy(y0 + (j + 1) * ch), cw * L.scale, ch * L.scale);
   }
