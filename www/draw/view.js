@@ -15,17 +15,18 @@
 //          the sensor's field of view, start/goal, markers, the best path so far, rewire flashes,
 //          the result's paths and the robot, the region of influence, local minima and the robot's
 //          t/2 circle, which are cheap to draw every frame.
-// The tables (colours, styles, overlays) are in palette.js; the transform and primitives in transform.js.
+// The tables (colours, styles, overlays) are in palette.js; the transform and primitives in transform.js;
+// the rewire flashes, the sensor's wedge and the rotation handles in marks.js.
 
 import { EventKind, STRIDE } from '../run/events.js';
-import { drawRobotShape, drawInspection, robotStyle, outlineOf, footprintRadius, sensorPose } from './robots.js';
+import { drawRobotShape, drawInspection, robotStyle, outlineOf, footprintRadius } from './robots.js';
 import { PALETTE, STYLE, OVERLAY_DEFAULTS, TREE_LEGEND } from './palette.js';
 import { Layout, parseOutline, parseFrames, makeLayer, drawExhausted, drawObstacle, drawMarker, drawPolyline } from './transform.js';
 import { CellsDrawing } from './cells.js';
 import { drawDensity } from './density.js';
 import { addQueryEdge, drawGraphEdges, drawRoadmap, drawQueryAnswer } from './graphs.js';
+import { drawFlashes, drawSensor, drawHandle } from './marks.js';
 
-const FLASH_MS = 600;        // a rewire flashes this long
 const MAX_FLASHES = 80;      // the most flashes shown at once (a burst keeps only the latest)
 const BIG_TREE = 20000;      // above this many nodes, a rewired tree is redrawn at most every…
 const BIG_TREE_MS = 250;     // …this many ms
@@ -463,10 +464,10 @@ export class View {
       if (!state) continue;
       const polys = this.preview[which] ? outlineOf(this.scenario.robot, state) : this[which];
       drawRobotShape(ctx, L, this.scenario.robot, polys, state, robotStyle(PALETTE[which], which, PALETTE));
-      if (this.editable) this.drawHandle(ctx, which);
+      if (this.editable) drawHandle(ctx, L, this.handlePoint(which), PALETTE[which]);
     }
     for (const [kind, x, y] of this.markers) drawMarker(ctx, L, STYLE[kind], x, y);
-    if (flashing) this.drawFlashes(ctx, time);
+    if (flashing) this.flashes = drawFlashes(ctx, L, this.flashes, time);
     const best = o.showBest && this.model ? this.model.bestBranch() : [];
     if (best.length >= 2) {
       drawPolyline(ctx, L, best, PALETTE.bestCasing, L.px(6));
@@ -492,7 +493,7 @@ export class View {
       const frames = this.options.animateRaw && this.rawFrames.length ? this.rawFrames : this.frames;
       frame = frames[Math.floor((time / 1000) * animFps) % frames.length];
     }
-    if (inspection && o.showFov) this.drawSensor(ctx, frame ? frame.state : this.stateOf('start'), best);
+    if (inspection && o.showFov) drawSensor(ctx, L, this, frame ? frame.state : this.stateOf('start'), best);
     if (frame) {
       drawRobotShape(ctx, L, this.scenario.robot, frame.polys, frame.state, robotStyle(null, 'robot', PALETTE));
       this.robotState = frame.state;
@@ -504,74 +505,6 @@ export class View {
   /** The hooks drawn over everything (they also run, to clear what they show, with no scenario). */
   drawTopHooks(ctx, L) {
     for (const hook of this.topHooks) hook(ctx, L);
-  }
-
-  /** Rewired edges, fading out; expired flashes are dropped. */
-  drawFlashes(ctx, time) {
-    const L = this.layout;
-    const now = Math.max(time, performance.now());
-    this.flashes = this.flashes.filter(([t]) => now - t < FLASH_MS);
-    const st = STYLE[EventKind.REWIRE];
-    for (const [t, x, y, px, py] of this.flashes) {
-      ctx.globalAlpha = Math.max(0, 1 - (now - t) / FLASH_MS);
-      ctx.beginPath();
-      ctx.moveTo(L.sx(px), L.sy(py));
-      ctx.lineTo(L.sx(x), L.sy(y));
-      ctx.strokeStyle = st.color;
-      ctx.lineWidth = L.px(st.width);
-      ctx.stroke();
-      ctx.beginPath();
-      ctx.arc(L.sx(x), L.sy(y), L.px(st.size), 0, 2 * Math.PI);
-      ctx.stroke();
-    }
-    ctx.globalAlpha = 1;
-  }
-
-  /**
-   * The inspection sensor: its wedge (radius `range`, half-angle fov/2) at the end effector of the
-   * robot shown at `state`; during a run, a dashed ring of the range at the best branch's tip
-   * (a wedge when the tip's heading is known: a 2-joint arm, whose two planning coordinates are
-   * its whole state).
-   */
-  drawSensor(ctx, state, best) {
-    const L = this.layout;
-    const { range, fov } = this.scenario.inspection;
-    if (!(range > 0)) return;
-    const wedge = (pose) => {
-      const cx = L.sx(pose.x), cy = L.sy(pose.y), r = range * L.scale;
-      ctx.beginPath();
-      if (pose.heading == null || !(fov > 0) || fov >= 2 * Math.PI) {
-        ctx.arc(cx, cy, r, 0, 2 * Math.PI);
-      } else { // screen y points down: world angle a is screen angle −a
-        ctx.moveTo(cx, cy);
-        ctx.arc(cx, cy, r, -(pose.heading + fov / 2), -(pose.heading - fov / 2));
-        ctx.closePath();
-      }
-      ctx.fillStyle = PALETTE.fovFill;
-      ctx.fill();
-      ctx.strokeStyle = PALETTE.fov;
-      ctx.lineWidth = L.px(1.5);
-      ctx.stroke();
-    };
-    const robot = this.scenario.robot;
-    const pose = state ? sensorPose(robot, state) : null;
-    if (pose) wedge(pose);
-    if (!this.showResult && best.length && this.model?.best) {
-      const t = this.model.trees[this.model.best.tree];
-      const id = this.model.best.id;
-      const [x, y] = best[best.length - 1];
-      if (robot?.kind === 'arm' && robot.links?.length === 2 && t?.known(id)) {
-        const tip = sensorPose(robot, [t.c0[id], t.c1[id]]);
-        if (tip) { wedge(tip); return; }
-      }
-      ctx.beginPath();
-      ctx.arc(L.sx(x), L.sy(y), range * L.scale, 0, 2 * Math.PI);
-      ctx.setLineDash([L.px(5), L.px(4)]);
-      ctx.strokeStyle = PALETTE.fov;
-      ctx.lineWidth = L.px(1.25);
-      ctx.stroke();
-      ctx.setLineDash([]);
-    }
   }
 
   /** The start or goal state shown: the one being edited, else the scenario's. */
@@ -586,23 +519,6 @@ export class View {
     const L = this.layout;
     const r = footprintRadius(this.scenario.robot) * L.scale + L.px(14);
     return { x: L.sx(q[0]) + r * Math.cos(q[2]), y: L.sy(q[1]) - r * Math.sin(q[2]), cx: L.sx(q[0]), cy: L.sy(q[1]) };
-  }
-
-  drawHandle(ctx, which) {
-    const h = this.handlePoint(which);
-    if (!h) return;
-    const L = this.layout;
-    ctx.beginPath();
-    ctx.moveTo(h.cx, h.cy);
-    ctx.lineTo(h.x, h.y);
-    ctx.strokeStyle = PALETTE[which];
-    ctx.lineWidth = L.px(1.5);
-    ctx.stroke();
-    ctx.beginPath();
-    ctx.arc(h.x, h.y, L.px(5), 0, 2 * Math.PI);
-    ctx.fillStyle = PALETTE.handle;
-    ctx.fill();
-    ctx.stroke();
   }
 
   /**

@@ -1,13 +1,13 @@
 // Wiring: one player (player.js: the controller's table, a lane with the worker session, its
 // playback, the views and the chart, the actions and the frame loop), the panel, the overlay box
 // and the stats; the hover text of cells and potential fields (cells.js), and the note under the
-// canvas when a planner finds no path; the share link (ui/links.js): the state is kept in the URL
-// hash, and a page opened with a hash restores it. A link with problems stays in the address bar
-// as pasted (and is shown with them) until the state changes; Copy link checks the link reads back
-// and is short enough to paste (ui/links.js checkLink), else offers Save JSON. When the worker
-// crashed or was replaced (the session's watchdog), the message says so and offers "Open the
-// default scenario instead", which leaves the hash's state (a crashing scenario would otherwise
-// come back with every reload).
+// canvas when a planner finds no path; the share link (ui/links.js; written by ui/share-hash.js):
+// the state is kept in the URL hash, and a page opened with a hash restores it. A link with
+// problems stays in the address bar as pasted (and is shown with them) until the state changes;
+// Copy link checks the link reads back and is short enough to paste (ui/links.js checkLink), else
+// offers Save JSON. When the worker crashed or was replaced (the session's watchdog), the message
+// says so and offers "Open the default scenario instead", which leaves the hash's state (a
+// crashing scenario would otherwise come back with every reload).
 // Read-only state for tests is exposed as window.planarium (nothing else is global).
 
 import { BUTTONS } from '../run/controller.js';
@@ -32,7 +32,9 @@ import { createTrials } from '../ui/trials.js';
 import { wireKeys, wireCellTip } from '../ui/keys.js';
 import { runStatusText } from '../ui/run-status.js';
 import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend, removeCustomScenarios, markCustomScenario, invalidText } from '../ui/controls.js';
-import { readShare, setupFor, writeShare, wireCopyLink, boundedProblems, cut, VIEW_DEFAULTS, MAX_HASH_CHARS, MAX_LINK_CHARS, MAX_SCENARIO_BYTES } from '../ui/links.js';
+import { readShare, setupFor, VIEW_DEFAULTS } from '../ui/links.js';
+import { wireShareHash } from '../ui/share-hash.js';
+import { wireOpenFile } from '../ui/open-file.js';
 import { OVERLAYS } from '../draw/palette.js';
 import { applyPageLimits } from '../run/limits.js';
 
@@ -103,9 +105,9 @@ const player = new Player({
         restoreNotes.push(...problems);
         restoring = null;
         if (restoreNotes.length) {
-          showLinkProblems(restoreNotes);
-          if (pasted) pasted.state = stateHash(); // the state the link restored: the pasted link stays until it changes
-        } else pasted = null;
+          share.showProblems(restoreNotes);
+          if (share.pasted) share.pasted.state = share.stateHash(); // the state the link restored: the pasted link stays until it changes
+        } else share.pasted = null;
         restoreNotes = [];
         shareReady = true;
       } else if (applyDefaults) {
@@ -178,7 +180,7 @@ function showStopped(message, fatal, why) {
 /** "Open the default scenario instead": forget the link's state, load the first built-in as shipped. */
 function openDefaultScenario() {
   history.replaceState(history.state, '', `${location.pathname}${location.search}`);
-  lastHash = null;
+  share.lastHash = null;
   restoring = null;
   restoreNotes = [];
   clearError();
@@ -240,13 +242,13 @@ const actions = {
 /** Restore the state a link's hash describes (bad values are reported and left at defaults). */
 async function restoreHash(hash) {
   shareReady = false;
-  clearTimeout(shareTimer);
-  const share = await readShare(hash, { builtins });
-  pasted = { hash, state: null };
-  restoring = share;
-  restoreNotes = [...share.problems];
-  applyView(share);
-  restoreScenario(share);
+  share.cancel();
+  const read = await readShare(hash, { builtins });
+  share.pasted = { hash, state: null };
+  restoring = read;
+  restoreNotes = [...read.problems];
+  applyView(read);
+  restoreScenario(read);
 }
 
 /** Load the scenario a share names: a built-in, a link's JSON, or (none) the first built-in. */
@@ -275,82 +277,25 @@ function applyView(share) {
   syncOptions();
 }
 
-let shareTimer = 0;
-let shareGen = 0;
-let lastHash = null;          // the hash this page wrote last (a hashchange to it is ours)
-// A link opened with problems stays in the address bar, as pasted, until the state shown changes
-// (the hash of the state it restored is `state`), so it can be copied back to whoever sent it.
-let pasted = null;            // {hash, state: a promise of the restored state's hash}
-const encodedScenarios = new Map();
-
-/** Keep the hash up to date, a moment after the last change. */
-function scheduleShare() {
-  if (!shareReady) return;
-  clearTimeout(shareTimer);
-  shareTimer = setTimeout(() => { writeHash(); }, 250);
-}
-
-/**
- * Write the current state into the hash now; resolves to the page's full link. A hash too long to
- * be read back is not written (the address bar loses its hash: a reload shows the first built-in);
- * `force`: write it even over a pasted link with problems (Copy link).
- */
-async function writeHash({ force = false } = {}) {
-  clearTimeout(shareTimer);
-  if (!shareReady || !panel || !scenarioText || !source || controller.state === 'invalid' || controller.state === 'loading') {
-    return location.href;
-  }
-  const gen = ++shareGen;
-  const hash = await stateHash();
-  const restored = pasted && !force ? await pasted.state : null;
-  if (gen !== shareGen) return location.href; // a newer write is on its way
-  const here = `${location.origin}${location.pathname}${location.search}`;
-  const readable = hash.length <= MAX_HASH_CHARS && (source.id || scenarioText.length <= MAX_SCENARIO_BYTES);
-  ui.shareUrl.value = readable && here.length + hash.length < MAX_LINK_CHARS ? `${here}#${hash}` : '';
-  syncPageLinks(ui.shareUrl.value ? hash : '');
-  if (restored === hash) return `${here}#${hash}`; // the link as pasted stays in the address bar
-  pasted = null;
-  lastHash = readable ? `#${hash}` : '';
-  if (location.hash !== lastHash) history.replaceState(history.state, '', `${location.pathname}${location.search}${lastHash}`);
-  return `${here}#${hash}`;
-}
-
-/** The hash (without `#`) of the state shown. */
-function stateHash() {
-  return writeShare({
-    scenario: source.id ? { id: source.id } : { text: scenarioText },
+const share = wireShareHash({
+  ui, bench: $('to-bench'), ready: () => shareReady,
+  writable: () => !!(shareReady && panel && scenarioText && source) && controller.state !== 'invalid' && controller.state !== 'loading',
+  source: () => source, scenarioText: () => scenarioText, registry: () => registry,
+  state: () => ({
     config: panel.config(),
     overlays: overlayOptions(),
     view: {
       speed: Number(ui.speed.value), anim: Number(ui.animSpeed.value), rawPath: ui.animRaw.checked,
       stepSize: stepSize(),
     },
-  }, registry, encodedScenarios);
-}
-
-/** A link's problems (at most a screenful, repeats once), and the link as it was opened, cut. */
-function showLinkProblems(notes) {
-  const lines = boundedProblems(notes, 12);
-  const link = pasted ? `${location.origin}${location.pathname}${location.search}${pasted.hash}` : '';
-  showError(`Some of this link could not be used:\n• ${lines.join('\n• ')}`
-    + (link ? `\nThe link you opened (${link.length.toLocaleString('en')} characters; it stays in the address bar until you change something):\n${cut(link, 300)}` : ''));
-}
-
-wireCopyLink({
-  button: ui.copyLink, url: ui.shareUrl, status: ui.copyStatus, saveJson: ui.saveJson,
-  link: () => writeHash({ force: true }), scenarioText: () => (source?.id ? null : scenarioText),
+  }),
+  saveName: () => loaded?.name || 'scenario', download: downloadText, showError,
 });
-
-// a scenario too large for a link: offered as a file (the scenario as the worker normalised it)
-ui.saveJson.addEventListener('click', () => {
-  if (!scenarioText) return;
-  const name = (loaded?.name || 'scenario').replace(/[^\w.-]+/g, '-').toLowerCase().slice(0, 60) || 'scenario';
-  downloadText(`${JSON.stringify(JSON.parse(scenarioText), null, 2)}\n`, `${name}.json`);
-});
+const scheduleShare = () => share.schedule();
 
 // someone pastes another link into the address bar of this tab
 window.addEventListener('hashchange', () => {
-  if (!registry || location.hash === lastHash) return;
+  if (!registry || location.hash === share.lastHash) return;
   if (location.hash.length > 1) restoreHash(location.hash);
 });
 
@@ -504,44 +449,8 @@ ui.scenario.addEventListener('change', () => {
   load(JSON.stringify(b.scenario), true, { course: b.course, source: { id: b.id } });
 });
 
-// Occupancy maps (issue 17): a map_server YAML with its image (chosen together), or an image alone
-// (a plain image: dark is occupied); the core decodes them in the worker.
-const MAP_IMAGE = /\.(pgm|png)$/i;
-const MAP_YAML = /\.ya?ml$/i;
-
-ui.file.addEventListener('change', async () => {
-  const files = [...ui.file.files];
-  ui.file.value = ''; // the same file can be opened again
-  if (!files.length) return;
-  clearError();
-  const yaml = files.find((f) => MAP_YAML.test(f.name));
-  const images = files.filter((f) => MAP_IMAGE.test(f.name));
-  if (yaml || images.length) {
-    // The image the YAML names (by its base name) when several were chosen, else the only one.
-    let yamlText = null;
-    try { yamlText = yaml ? await yaml.text() : null; } catch (e) { showError(`Could not read ${yaml.name}: ${e.message}`); return; }
-    const named = yamlText?.match(/^\s*image\s*:\s*["']?([^"'#\r\n]*?)["']?\s*(#.*)?$/m)?.[1].split(/[\\/]/).pop();
-    const image = images.find((f) => f.name === named) ?? images[0] ?? null;
-    let bytes = null;
-    try { bytes = image ? await image.arrayBuffer() : null; } catch (e) { showError(`Could not read ${image.name}: ${e.message}`); return; }
-    const name = yaml ? yaml.name : image.name;
-    markCustom(`File: ${name}`);
-    load('', true, { course: 'Opened file', file: image ? image.name : name, map: { bytes, yaml: yamlText, yamlName: yaml?.name ?? null }, source: { custom: true } });
-    return;
-  }
-  const file = files[0];
-  let text;
-  try { text = await file.text(); } catch (e) { showError(`Could not read ${file.name}: ${e.message}`); return; }
-  markCustom(`File: ${file.name}`);
-  load(text, true, { course: 'Opened file', file: file.name, source: { custom: true } });
-});
-
-// Compare and Benchmark open on the state shown here (they read the playground's share hash:
-// scenario, even an edited or opened one, and the planner set-up)
-function syncPageLinks(hash) {
-  ui.compare.href = hash ? `compare.html#${hash}` : 'compare.html';
-  $('to-bench').href = hash ? `bench.html#${hash}` : 'bench.html';
-}
+// Open file (open-file.js): a scenario, or an occupancy map's YAML and image; read here, decoded in the worker.
+wireOpenFile({ input: ui.file, clearError, showError, markCustom, load });
 
 // Slow / Normal / Instant: presets of the events-per-second slider (Playback details).
 const SPEEDS = Object.freeze({ 'speed-slow': 0, 'speed-normal': 30, 'speed-instant': 100 });
@@ -609,7 +518,7 @@ Object.defineProperty(window, 'planarium', {
     /** Iterations whose events are all shown (step back goes back from here). */
     shownIterations: () => player.shownIterations,
     /** The link to this state (the hash is kept up to date a moment after each change). */
-    shareLink: () => writeHash(),
+    shareLink: () => share.write(),
     model: () => modelSummary(playback.model, chart),
     /** The explain panel: {line, caption, events} of the last event shown. */
     explain: () => explain.state(),

@@ -21,11 +21,13 @@
 // digits below the map's size. Under the pointer, a read-out gives the world coordinates. The name
 // and notes are edited here too (bounded: MAX_NAME / MAX_NOTES characters; an edit over the bound
 // is refused and says so), so Save JSON and the share link carry them.
+// The toolbar (tools, actions, the hint, the status line, the bounds) is obstacle-toolbar.js's.
 
 import { el } from './dom.js';
 import { PALETTE } from '../draw/palette.js';
 import { anchor, handles, inside, moved, reshaped, niceStep, stepDecimals, snapTo, tidy, readoutDecimals } from './obstacle-shapes.js';
 import { CellPainter } from './cell-painter.js';
+import { buildBar, renderBar } from './obstacle-toolbar.js';
 
 const HANDLE = 6; // css px: handle half-size and grab distance
 const MIN = 1e-3; // the smallest rectangle side or circle radius, as a fraction of the scene
@@ -73,6 +75,8 @@ export class ObstacleEditor {
     this.readout.hidden = true;
     canvas.parentElement?.append(this.readout);
     this.bar = el('div', { className: 'obstacle-bar' });
+    /** @type {any} tools, buttons, boundInputs, hint, status (obstacle-toolbar.js) */
+    this.barParts = null;
     this.buildBar();                // built once, brought up to date by render()
     this.fixed = this.buildFixed(); // the same: typing in a field keeps its focus
     root.replaceChildren(this.bar, this.fixed);
@@ -212,102 +216,12 @@ export class ObstacleEditor {
     this.download(`${JSON.stringify(this.scenario, null, 2)}\n`, `${name}.json`);
   }
 
-  // Toolbar
+  // Toolbar (obstacle-toolbar.js)
 
-  /**
-   * The toolbar, built once (a button pressed while a field's change re-renders must still be
-   * there on release, so that its click arrives): tools, actions, the hint and the bounds.
-   */
-  buildBar() {
-    const tool = (id, label, title) => {
-      const b = el('button', { id: `tool-${id}`, type: 'button', text: label, title });
-      b.addEventListener('click', () => this.setTool(id));
-      return b;
-    };
-    const act = (id, label, fn, title) => {
-      const b = el('button', { id, type: 'button', text: label, title });
-      b.addEventListener('click', fn);
-      return b;
-    };
-    const tools = { select: tool('select', 'Select', 'Select, move and resize obstacles'), rect: tool('rect', 'Rectangle', 'Draw a rectangle'),
-      circle: tool('circle', 'Circle', 'Draw a circle'), polygon: tool('polygon', 'Polygon', 'Draw a polygon'),
-      cells: tool('cells', 'Cells', 'Paint walls on grid cells: drag from a free cell to paint, from a wall to erase') };
-    const buttons = {
-      del: act('obstacle-delete', 'Delete', () => this.deleteSelected(), 'Delete the selected obstacle (Delete)'),
-      undo: act('undo', 'Undo', () => this.undo(), 'Undo (ctrl+Z)'),
-      redo: act('redo', 'Redo', () => this.redo(), 'Redo (ctrl+shift+Z)'),
-      save: act('save-scenario', 'Save JSON', () => this.save(), 'Download the scenario as JSON'),
-      newMap: act('new-map', 'New map', () => this.newMap(), 'An empty map: the same bounds and robot, no obstacles (undo brings the old one back)'),
-      walls: act('clear-walls', 'Clear walls', () => this.clearWalls(), 'Remove the painted cells; drawn shapes stay (undo brings them back)'),
-      clear: act('clear-obstacles', 'Clear obstacles', () => this.clearObstacles(), 'Delete every obstacle (undo brings them back)'),
-    };
-    const bounds = el('div', { className: 'row bounds' });
-    const boundsError = el('p', { id: 'bounds-error', className: 'hint bad', role: 'alert' });
-    boundsError.hidden = true;
-    const boundInputs = ['x min', 'y min', 'x max', 'y max'].map((label, i) => {
-      const id = `bounds-${i}`;
-      const input = el('input', { id, type: 'number', step: 'any' });
-      input.addEventListener('change', () => {
-        const s = this.scenario;
-        const v = Number(input.value);
-        boundsError.hidden = true;
-        if (!s || this.editor.stale) return;
-        const other = s.bounds[(i + 2) % 4];
-        const why = input.value.trim() === '' || !Number.isFinite(v) ? `${label} must be a number`
-          : (i < 2 ? v >= other : v <= other) ? `${label} must be ${i < 2 ? 'below' : 'above'} ${['x max', 'y max', 'x min', 'y min'][i]} (${other})` : '';
-        if (why) {
-          boundsError.textContent = `${why[0].toUpperCase()}${why.slice(1)}; it stays ${s.bounds[i]}.`;
-          boundsError.hidden = false;
-          input.value = String(s.bounds[i]);
-          return;
-        }
-        s.bounds[i] = v;
-        this.preview();
-        this.commit();
-      });
-      bounds.append(el('label', { className: 'bound', htmlFor: id }, el('span', { text: label }), input));
-      return input;
-    });
-    const hint = el('p', { className: 'hint' });
-    const status = el('p', { id: 'edit-status', className: 'hint bad', role: 'status' });
-    status.hidden = true;
-    this.barParts = { tools, buttons, boundInputs, hint, status };
-    this.bar.replaceChildren(
-      el('div', { className: 'row tools', role: 'toolbar', 'aria-label': 'Obstacle tools' }, ...Object.values(tools)),
-      el('div', { className: 'row' }, buttons.del, buttons.undo, buttons.redo, buttons.save),
-      el('div', { className: 'row' }, buttons.newMap, buttons.walls, buttons.clear),
-      hint,
-      status,
-      bounds,
-      boundsError,
-    );
-  }
+  buildBar() { buildBar(this); }
 
   /** The toolbar from the state: the pressed tool, what can be done, the hint, the bounds. */
-  render() {
-    const s = this.scenario;
-    const { tools, buttons: b, boundInputs, hint } = this.barParts;
-    for (const [id, button] of Object.entries(tools)) button.setAttribute('aria-pressed', String(this.tool === id));
-    b.del.disabled = this.selected < 0;
-    b.undo.disabled = !this.undoStack.length;
-    b.redo.disabled = !this.redoStack.length;
-    b.save.disabled = !s;
-    b.newMap.disabled = !s;
-    b.clear.disabled = !s?.obstacles?.length;
-    const lat = s ? this.cells.lattice() : null;
-    b.walls.disabled = !s?.obstacles?.some((ob) => this.cells.isPiece(ob, lat));
-    boundInputs.forEach((input, i) => {
-      input.disabled = !s;
-      if (document.activeElement !== input) input.value = s ? String(s.bounds[i]) : '';
-    });
-    hint.textContent = {
-      select: 'Click an obstacle to select it; drag it to move it, drag a square handle to resize it.',
-      rect: 'Drag on the canvas to draw a rectangle.',
-      circle: 'Drag from the centre to draw a circle.',
-      polygon: 'Click the corners; double-click, press Enter or click the first corner to close it. Escape drops it.',
-      cells: 'Drag from a free cell to paint walls, from a wall to erase them; drag the start or goal to move it. The cells are grid search\'s.',
-    }[this.tool];
-  }
+  render() { renderBar(this); }
 
   /** The parts of the toolbar built once: snapping and the grid step, the name and the notes. */
   buildFixed() {
