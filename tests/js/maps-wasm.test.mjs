@@ -7,7 +7,8 @@ import { readFileSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { dirname, join } from 'node:path';
-import { initSync, import_map, map_image_name } from '../../www/pkg/planarium.js';
+import { initSync, import_map, map_image_name, limits } from '../../www/pkg/planarium.js';
+import { MAX_FILE_BYTES } from '../../www/run/limits.js';
 import { gridLattice } from '../../www/ui/cell-grid.js';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
@@ -54,4 +55,8 @@ test("the Cells tool paints on a map's pixels: its lattice is the image's (origi
   // another cell size is grid search's plain lattice from the bounds' corner
   const coarse = gridLattice(sc, 0.25);
   assert.deepEqual([coarse.ox, coarse.oy, coarse.side], [sc.bounds[0], sc.bounds[1], 0.25]);
+});
+
+test("the page's file limit is the core's", () => {
+  assert.equal(MAX_FILE_BYTES, JSON.parse(limits()).max_text_bytes);
 });

@@ -85,3 +85,12 @@ test('a YAML alone names the image it needs; a PNG alone opens as a plain image'
   assert.deepEqual(sc.bounds, [0, 0, 2, 1.5]);
   assert.equal(await page.isVisible('#error'), false, 'a good load clears the error');
 });
+
+test('a file over 16 MiB is refused before it is read, by name and size; the map shown stays', async () => {
+  const before = await page.evaluate(() => window.planarium.scenario());
+  await page.setInputFiles('#file', { name: 'huge.png', mimeType: 'image/png', buffer: Buffer.alloc(16 * 1024 * 1024 + 1) });
+  await page.waitForSelector('#error', { state: 'visible' });
+  assert.match(await page.textContent('#error'), /huge\.png is 16,777,217 bytes; the limit is 16,777,216 bytes/);
+  assert.deepEqual(await page.evaluate(() => window.planarium.scenario()), before);
+  assert.equal(await page.evaluate(() => window.planarium.state()), 'idle');
+});

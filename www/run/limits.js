@@ -11,6 +11,10 @@
  */
 export const WATCHDOG_MS = 1000;
 
+// The largest file Open file… reads (the core's limits::MAX_TEXT_BYTES, 16 MiB: it refuses more
+// anyway; the page refuses before reading, so a huge file never fills the tab's memory).
+export const MAX_FILE_BYTES = 16 * 1024 * 1024;
+
 /**
  * Worker deaths (crashes and watchdog replacements) within CRASH_WINDOW_MS after which the page
  * stops replacing the worker on its own (the `stopped` state): a scenario that crashes the core

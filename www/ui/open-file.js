@@ -3,6 +3,8 @@
 // dark is occupied); the core decodes them in the worker. The files are read here and handed to the
 // page's `load`, which sends them to the worker (its `load` or `import` message).
 
+import { MAX_FILE_BYTES } from '../run/limits.js';
+
 const MAP_IMAGE = /\.(pgm|png)$/i;
 const MAP_YAML = /\.ya?ml$/i;
 
@@ -18,6 +20,11 @@ export function wireOpenFile({ input, clearError, showError, markCustom, load })
     input.value = ''; // the same file can be opened again
     if (!files.length) return;
     clearError();
+    const big = files.find((f) => f.size > MAX_FILE_BYTES);
+    if (big) {
+      showError(`${big.name} is ${big.size.toLocaleString('en')} bytes; the limit is ${MAX_FILE_BYTES.toLocaleString('en')} bytes (16 MiB), so it was not read.`);
+      return;
+    }
     const yaml = files.find((f) => MAP_YAML.test(f.name));
     const images = files.filter((f) => MAP_IMAGE.test(f.name));
     if (yaml || images.length) {
