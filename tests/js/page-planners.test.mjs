@@ -130,10 +130,9 @@ test('EST on the zigzag: the density grid shades the picking tree\'s cells and o
   await waitState('idle');
   assert.equal(await page.isVisible('#show-density'), true, "EST's density overlay is offered");
   await setField('seed', 1);
-  await page.$eval('#speed', (el) => { el.value = 40; el.dispatchEvent(new Event('input', { bubbles: true })); });
-  await page.click('#run');
-  await page.waitForFunction(() => window.planarium.nodeCount() > 60, null, { timeout: 60000 });
-  await page.click('#pause');
+  // a fixed number of iterations (not a pause at some moment), so the drawing is the same every run
+  await page.fill('#step-size', '120');
+  await page.click('#step');
   await waitState('paused');
   await nextFrames();
   const pixels = () => page.evaluate(() => {
