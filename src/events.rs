@@ -82,7 +82,10 @@ pub enum EventKind {
     Nearest = 20,
     /// A growth step steered from node `id` (at `px, py`) toward its target: `x, y` the new
     /// state's point; `c0` the step's length; `c1` the range; `pc0` 1 when the step reaches the
-    /// target. The motion is checked next: a `Collision` or a `NodeAdded` follows.
+    /// target. The motion is checked next: a `Collision` or a `NodeAdded` follows. `parent` is -1,
+    /// except for a ladder step (after a step collided, one that moves only some coordinates):
+    /// `parent` the coordinates it moves, `pc1` its try's number, `c1` its length; it was checked
+    /// valid, and its `NodeAdded` follows.
     Steer = 21,
     /// A roadmap edge was added between vertices `id` (at `x, y`) and `parent` (at `px, py`):
     /// `tree` 0 when its motion was checked valid (PRM, PRM*), 1 when it is unchecked (Lazy PRM).

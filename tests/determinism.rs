@@ -74,6 +74,8 @@ fn every_robot_and_planner_gives_the_same_run_in_suspended_batches() {
         ("arm-3", "rrt", serde_json::json!({ "goal_bias": 0.2 })),
         ("ompl-rect", "rrt-connect", serde_json::json!({})),
         ("asv-3-easy", "rrt-connect", serde_json::json!({})),
+        ("asv-7", "rrt-connect", serde_json::json!({ "ladder": 8, "range": 0.05 })),
+        ("narrow", "rrt", serde_json::json!({ "ladder": 4, "extend": "connect" })),
         ("narrow", "rrt-star", serde_json::json!({ "max_iterations": 1500 })),
         ("technion-ip", "inspection", serde_json::json!({ "max_iterations": 300 })),
         ("narrow", "rrt", serde_json::json!({ "sampler": "bridge", "dd_radius": 0.3, "exhausted": 3 })),

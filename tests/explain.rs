@@ -123,6 +123,43 @@ fn rrt_connect_steps_toward_samples_and_the_other_tree() {
     check_blockers(&sc, &blocked);
 }
 
+/// The ladder move: after a blocked step, a step that moves only some coordinates, checked free
+/// and added. For a point robot that is one coordinate (report 000's move along one axis), so the
+/// node added differs from its parent in x or in y only; every such step follows a blocked one.
+#[test]
+fn ladder_steps_follow_a_blocked_step_and_move_one_axis_of_a_point() {
+    for planner in ["rrt", "rrt-connect"] {
+        let (sc, records) = run("narrow", planner, json!({"ladder": 8}), 7);
+        let (steps, blocked) = check_steps(&records, true);
+        assert!(steps > 30 && !blocked.is_empty(), "{planner}: {steps} steps");
+        check_blockers(&sc, &blocked);
+        let mut ladders = 0;
+        for (i, r) in records.iter().enumerate() {
+            if r[0] != k(EventKind::Steer) || r[3] < 0.0 {
+                continue;
+            }
+            ladders += 1;
+            assert_eq!(r[3], 1.0, "{planner}: a point's ladder step moves one coordinate: {r:?}");
+            assert!(r[11] >= 1.0 && r[11] <= 8.0, "{planner}: the try's number: {r:?}");
+            assert!((r[4] == r[6]) != (r[5] == r[7]), "{planner}: along x or along y only: {r:?}");
+            let before =
+                records[..i].iter().rev().find(|q| q[0] != k(EventKind::Exhausted) && q[0] != k(EventKind::Domain));
+            assert_eq!(
+                before.map(|q| q[0]),
+                Some(k(EventKind::Collision)),
+                "{planner}: a ladder step follows a blocked step"
+            );
+            let next = &records[i + 1];
+            assert_eq!(next[0], k(EventKind::NodeAdded), "{planner}: the ladder step is added");
+            assert!(common::motion_problem(&sc, &[r[6], r[7]], &[r[4], r[5]]).is_none(), "{planner}: {r:?} is free");
+        }
+        assert!(ladders >= 5, "{planner}: {ladders} ladder steps");
+        // Off by default: the same run without it takes none.
+        let (_, plain) = run("narrow", planner, json!({}), 7);
+        assert!(plain.iter().all(|r| r[0] != k(EventKind::Steer) || r[3] < 0.0), "{planner}: no ladder step when off");
+    }
+}
+
 #[test]
 fn rrt_star_and_inspection_log_their_steps() {
     let (sc, records) = run("ompl-rect", "rrt-star", json!({}), 3);

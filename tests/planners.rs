@@ -19,6 +19,7 @@ fn setups() -> Vec<(&'static str, serde_json::Value)> {
         ("rrt", json!({"goal_bias": 0.2, "range_fraction": 0.05})),
         ("rrt-connect", json!({})),
         ("rrt-connect", json!({"range_fraction": 0.05})),
+        ("rrt-connect", json!({"ladder": 8})),
         ("prm", json!({})),
         ("prm-star", json!({})),
         ("lazy-prm", json!({})),

@@ -159,6 +159,21 @@ impl Context<'_> {
             );
         }
     }
+    /// Log a ladder step from node `near` (state `from`) to `step` after a full step collided:
+    /// a `Steer` whose `parent` is the number of coordinates moved and `pc1` the try's number.
+    pub fn note_ladder(&mut self, tree: usize, near: u32, from: &[Real], step: &[Real], moved: usize, attempt: u32) {
+        if self.events.enabled {
+            let (p, q) = (self.si.project(step), self.si.project(from));
+            let len = self.si.distance(from, step);
+            self.events.values(
+                EventKind::Steer,
+                tree,
+                near as i64,
+                moved as i64,
+                [p.x, p.y, q.x, q.y, len, len, 0.0, attempt as f64],
+            );
+        }
+    }
     /// Log a blocked motion from node `from` (state `a`) toward `b`, found invalid at `at`, with
     /// what blocked it ([`SpaceInfo::blocker`]).
     pub fn note_collision(&mut self, tree: usize, from: u32, a: &[Real], b: &[Real], at: &[Real]) {

@@ -11,6 +11,12 @@
 //!   node is exhausted: then the nearest grows again rather than the tree dying); with
 //!   `weighted` every node stays and the lowest `H = (d − dmin)/(dmax − dmin) + (n − nmin)/(nmax −
 //!   nmin)` is chosen (d: distance to the sample, n: failures).
+//! - **Ladder steps** (report 000's "ladder" move, generalised): when a step collides, up to
+//!   `ladder` steps that move only a random subset of the coordinates (each with probability 1/2,
+//!   the others kept at the node's) are tried, and the first valid one that ends nearer the target
+//!   is added. For a point robot that is the report's move along one axis; for a chain of vehicles
+//!   it bends or shifts part of the chain while the rest holds still, which slides it along walls
+//!   a full step would hit.
 
 use super::{Context, ParamGroup, ParamSpec, Params};
 use crate::events::EventKind;
@@ -26,6 +32,7 @@ pub static TREE_PARAMS: &[ParamSpec] = &[
     ParamSpec::real("dd_min_radius", "Smallest domain", 0.0, 1e6, 0.0, "Adaptive Dynamic-Domain: the smallest radius (0: the motion resolution)."),
     ParamSpec::int("exhausted", "Exhausted after", 0.0, 1e6, 0.0, "Exhausted nodes: failed expansions after which a node is exhausted (0: off)."),
     ParamSpec::choice("exhausted_policy", "Exhausted policy", &["drop", "weighted"], 0, "drop: exhausted nodes leave nearest-neighbour selection; weighted: pick the lowest distance-plus-failures score H."),
+    ParamSpec::int("ladder", "Ladder steps", 0.0, 64.0, 0.0, "When a step collides, try up to this many steps that move only a random half of the coordinates (report 000's ladder move, generalised; 0: off)."),
 ];
 
 /// The tree variants as a group of the page's parameter panel.
@@ -44,6 +51,8 @@ pub struct TreeOptions {
     pub exhausted: u32,
     /// Weighted (history-based) selection instead of dropping.
     pub weighted: bool,
+    /// Ladder steps tried after a step collides (0: off).
+    pub ladder: u32,
 }
 
 impl TreeOptions {
@@ -56,6 +65,7 @@ impl TreeOptions {
             dd_min_radius: if min > 0.0 { min } else { resolution },
             exhausted: params.real("exhausted") as u32,
             weighted: params.choice("exhausted_policy") == "weighted",
+            ladder: params.real("ladder") as u32,
         }
     }
 }
@@ -78,6 +88,10 @@ pub struct Tree {
     pub rejected: u64,
     /// Scratch for the weighted selection's distances (reused, so selection does not allocate).
     dist: Vec<Real>,
+    /// Scratch for a ladder step: the node's state and the step (reused).
+    ladder_buf: Vec<Real>,
+    /// Whether the last growth step was a ladder step.
+    slid: bool,
 }
 
 /// The most steps one CONNECT takes (every step makes progress; this bounds an iteration's time).
@@ -106,6 +120,8 @@ impl Tree {
             fails,
             rejected: 0,
             dist: Vec::new(),
+            ladder_buf: Vec::new(),
+            slid: false,
         };
         t.add(cx, root, ROOT);
         cx.nodes_left = cx.nodes_left.saturating_sub(1);
@@ -298,6 +314,7 @@ impl Tree {
         new: &mut [Real],
         sample: bool,
     ) -> (Grow, u32) {
+        self.slid = false;
         let (near, d) = self.select(cx, target);
         cx.note_nearest(self.index, near, self.state(near), target, d, self.domain(near), sample);
         if d == 0.0 {
@@ -326,20 +343,88 @@ impl Tree {
         if cx.si.check_motion(near_state, new, scratch).is_err() {
             cx.note_collision(self.index, near, near_state, new, scratch);
             cx.sampler.note_collision(self.state(near));
+            if self.opts.ladder > 0 {
+                if let Some(id) = self.ladder(cx, near, target, d, scratch, new) {
+                    self.slid = true;
+                    return (Grow::Advanced, id);
+                }
+            }
             self.record(cx, near, true);
             return (Grow::Trapped, near);
         }
+        let id = self.append(cx, near, new);
+        (if reached { Grow::Reached } else { Grow::Advanced }, id)
+    }
+
+    /// Add `new` as a child of `near` after its motion was found valid: the node's books, the
+    /// run's node budget, the `NodeAdded` event.
+    fn append(&mut self, cx: &mut Context, near: u32, new: &[Real]) -> u32 {
         self.record(cx, near, false);
         let id = self.add(cx, new, near);
         cx.nodes_left -= 1;
         let (p, q) = (cx.si.project(new), cx.si.project(self.state(near)));
         cx.events.push(EventKind::NodeAdded, self.index, id as i64, near as i64, p, q, new, self.state(near));
-        (if reached { Grow::Reached } else { Grow::Advanced }, id)
+        id
+    }
+
+    /// Ladder steps after the step from `near` to `new` collided (see the module documentation):
+    /// each moves every coordinate of that step with probability 1/2 (one random bit each) and
+    /// keeps the others at `near`'s. A try that moves none of them, is the whole step again, or
+    /// does not end nearer `target` than `d`, costs no check. The first valid one is added (its
+    /// `Steer` event carries the coordinates moved and the try's number) and returned, in `new`
+    /// too.
+    fn ladder(
+        &mut self,
+        cx: &mut Context,
+        near: u32,
+        target: &[Real],
+        d: Real,
+        scratch: &mut [Real],
+        new: &mut [Real],
+    ) -> Option<u32> {
+        let n = self.dims;
+        let mut buf = std::mem::take(&mut self.ladder_buf);
+        buf.clear();
+        buf.extend_from_slice(self.state(near));
+        buf.extend_from_slice(new);
+        let (from, step) = buf.split_at_mut(n);
+        let mut found = None;
+        for attempt in 1..=self.opts.ladder {
+            let mut moved = 0;
+            let mut bits = 0u64;
+            for k in 0..n {
+                if k % 64 == 0 {
+                    bits = cx.rng.next_u64();
+                }
+                let take = bits & 1 == 1;
+                bits >>= 1;
+                step[k] = if take { new[k] } else { from[k] };
+                moved += (step[k] != from[k]) as usize;
+            }
+            if moved == 0 || step == new || cx.si.distance(step, target) >= d {
+                continue;
+            }
+            if cx.si.check_motion(from, step, scratch).is_ok() {
+                cx.note_ladder(self.index, near, from, step, moved, attempt);
+                new.copy_from_slice(step);
+                found = Some(self.append(cx, near, new));
+                break;
+            }
+        }
+        self.ladder_buf = buf;
+        found
+    }
+
+    /// Whether the last growth step was a ladder step: a CONNECT ends after one, so one iteration
+    /// never crawls along a wall in thousands of partial steps (its time and a suspended batch's
+    /// replay stay those of one blocked CONNECT).
+    pub fn slid(&self) -> bool {
+        self.slid
     }
 
     /// Grow step after step toward `target` (RRT-Connect's CONNECT) until it is reached, a step is
-    /// trapped, or [`MAX_CONNECT_STEPS`] steps were taken. Returns the last outcome and the last
-    /// node reached or added.
+    /// trapped or was a ladder step, or [`MAX_CONNECT_STEPS`] steps were taken. Returns the last
+    /// outcome and the last node reached or added.
     pub fn connect(
         &mut self,
         cx: &mut Context,
@@ -351,7 +436,7 @@ impl Tree {
         let mut last = (Grow::Trapped, 0);
         for _ in 0..MAX_CONNECT_STEPS {
             last = self.extend(cx, target, range, scratch, new);
-            if last.0 != Grow::Advanced {
+            if last.0 != Grow::Advanced || self.slid {
                 break;
             }
         }

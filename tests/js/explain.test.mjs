@@ -18,11 +18,11 @@ function records(scenario, planner, params, seed) {
 
 /** What the caption must end with (or contain) after record `r`; null: no check for that kind. */
 function expected(planner, r) {
-  const [kind, , id, parent, x, y, px, py, c0] = r;
+  const [kind, , id, parent, x, y, px, py, c0, , , pc1] = r;
   switch (kind) {
     case K.SAMPLE: return id === 1 ? `sample q_goal (${num(x)}, ${num(y)}) (goal bias)` : id === 2 ? `sample (${num(x)}, ${num(y)}) (uniform share)` : `sample (${num(x)}, ${num(y)})`;
     case K.NEAREST: return `nearest #${id} at ${num(c0)}`;
-    case K.STEER: return `step ${num(c0)}`;
+    case K.STEER: return parent > 0 ? `ladder try ${pc1}: a step ${num(c0)} moving ${parent} coordinate` : `step ${num(c0)}`;
     case K.COLLISION: return `${blockerText(id)} at (${num(x)}, ${num(y)})`;
     case K.NODE_ADDED:
       if (parent < 0 || planner === 'hex-potential' || planner === 'grid-search' || planner === 'potential-field') return `(${num(x)}, ${num(y)})`;
@@ -48,6 +48,8 @@ const RUNS = [
   ['narrow', 'rrt', {}, 7],
   ['narrow', 'rrt', { extend: 'connect', dd_radius: 0.05, exhausted: 3 }, 7],
   ['narrow', 'rrt-connect', {}, 7],
+  ['narrow', 'rrt-connect', { ladder: 8 }, 7],
+  ['zigzag', 'rrt', { ladder: 4 }, 1],
   ['ompl-rect', 'rrt-star', { max_iterations: 400 }, 1],
   ['technion-ip', 'inspection', { max_iterations: 300 }, 1],
   ['hex-trap', 'hex-potential', {}, 1],
@@ -74,6 +76,7 @@ for (const [scenario, planner, params, seed] of RUNS) {
     const x = new Explainer(planner, scenarios[scenario].robot.kind, optionsOf({ planner, params }));
     const recs = records(scenario, planner, params, seed);
     assert.ok(recs.length > 50, `${recs.length} records`);
+    if (params.ladder) assert.ok(recs.filter((r) => r[0] === K.STEER && r[3] > 0).length > 3, 'ladder steps were taken and captioned');
     const linesSeen = new Set();
     let checked = 0;
     for (const r of recs) {
@@ -119,6 +122,10 @@ test('explain: the pseudocode shows the lines of the options chosen', () => {
   const all = pseudocode('rrt', optionsOf({ planner: 'rrt', params: { goal_bias: 0.1, dd_radius: 0.1, exhausted: 3, extend: 'connect', sampler: 'bridge' } })).lines.map((l) => l.id);
   for (const id of ['goal', 'domain', 'exhausted', 'connect', 'try']) assert.ok(all.includes(id), id);
   assert.equal(pseudocode('no-such-planner'), null);
+  // the ladder's lines (after a step's check, and CONNECT's) only when it is on
+  const ladder = (planner, params) => pseudocode(planner, optionsOf({ planner, params })).lines.map((l) => l.id);
+  assert.ok(ladder('rrt', { ladder: 8 }).includes('ladder') && !ladder('rrt', {}).includes('ladder') && !ladder('rrt', { ladder: 0 }).includes('ladder'));
+  assert.ok(ladder('rrt-connect', { ladder: 2 }).includes('c-ladder') && !ladder('rrt-connect', {}).includes('c-ladder'));
   // the uniform share's line shows for the narrow-passage samplers unless the share is 0
   const ids = (params) => pseudocode('rrt-connect', optionsOf({ planner: 'rrt-connect', params })).lines.map((l) => l.id);
   assert.ok(ids({ sampler: 'bridge' }).includes('share') && ids({ sampler: 'near-collision', uniform_share: 0.3 }).includes('share'));

@@ -50,7 +50,7 @@ test('the panel shows the sampler and tree-variant groups as their own fieldsets
   assert.deepEqual(groups.map((g) => g.group), ['sampler', 'tree']);
   assert.ok(groups[0].names.includes('sampler') && groups[0].names.includes('sigma'), groups[0].names.join());
   assert.ok(!groups[0].names.includes('goal_bias'), "RRT's own goal bias replaces the sampler group's");
-  assert.deepEqual(groups[1].names, ['dd_radius', 'dd_adaptive', 'dd_min_radius', 'exhausted', 'exhausted_policy']);
+  assert.deepEqual(groups[1].names, ['dd_radius', 'dd_adaptive', 'dd_min_radius', 'exhausted', 'exhausted_policy', 'ladder']);
   // RRT* has no tree variants
   await page.selectOption('#planner', 'rrt-star');
   await waitState('idle');

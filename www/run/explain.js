@@ -11,7 +11,7 @@ import { EventKind as K, STRIDE } from './events.js';
 /**
  * @typedef {{id: string, text: string, indent?: number, when?: (o: Options) => boolean}} Line
  * @typedef {{sampler?: string, goalBias?: number, share?: boolean, connect?: boolean, domain?: boolean, exhausted?: boolean,
- *   weighted?: boolean, escape?: string, vertices?: boolean, search?: string}} Options
+ *   weighted?: boolean, ladder?: boolean, escape?: string, vertices?: boolean, search?: string}} Options
  * @typedef {{title: string, lines: Line[]}} Pseudocode
  */
 
@@ -23,6 +23,13 @@ const SAMPLER_LINES = /** @type {Line[]} */ ([
   { id: 'share', text: 'else with probability uniform_share: q_rand ← a plain uniform draw', indent: 2, when: (o) => !!o.share },
   { id: 'try', text: 'SAMPLE(): uniform draws, checked', indent: 2, when: (o) => !!o.sampler && o.sampler !== 'uniform' && o.sampler !== 'goal-biased' },
 ]);
+
+// The ladder move's line, under a step's check (RRT and RRT-Connect's `ladder` parameter).
+const LADDER = /** @type {Line} */ ({
+  id: 'ladder',
+  text: 'else try up to L steps moving a random half of the coordinates (ladder); the first free one becomes q_new',
+  when: (o) => !!o.ladder,
+});
 
 // The tree variants' lines, under NEAREST (RRT and RRT-Connect grow with them).
 const VARIANT_LINES = /** @type {Line[]} */ ([
@@ -43,6 +50,7 @@ export const PSEUDOCODE = {
       ...VARIANT_LINES,
       { id: 'steer', text: 'q_new ← STEER(q_near, q_rand, range)', indent: 1 },
       { id: 'check', text: 'if not MOTION_FREE(q_near, q_new): reject', indent: 1 },
+      { ...LADDER, indent: 2 },
       { id: 'add', text: 'T ← T ∪ {q_new}, parent(q_new) ← q_near', indent: 1 },
       { id: 'connect', text: 'connect: steer again toward q_rand until reached or blocked', indent: 2, when: (o) => !!o.connect },
       { id: 'goal-check', text: 'if dist(q_new, q_goal) ≤ tolerance: return PATH(q_new)', indent: 1 },
@@ -59,10 +67,12 @@ export const PSEUDOCODE = {
       ...VARIANT_LINES,
       { id: 'steer', text: 'q_new ← STEER(q_near, q_rand, range)', indent: 2 },
       { id: 'check', text: 'if not MOTION_FREE(q_near, q_new): reject', indent: 2 },
+      { ...LADDER, indent: 3 },
       { id: 'add', text: 'add q_new to T_a', indent: 2 },
       { id: 'c-nearest', text: 'CONNECT(T_b, q_new): q_near ← NEAREST(T_b, q_new)', indent: 1 },
       { id: 'c-steer', text: 'repeat: q ← STEER(q_near, q_new, range)', indent: 2 },
       { id: 'c-check', text: 'until blocked: MOTION_FREE fails', indent: 2 },
+      { ...LADDER, id: 'c-ladder', text: 'else try up to L steps moving a random half of the coordinates (ladder): add the first free one, and stop', indent: 3 },
       { id: 'c-add', text: 'add q to T_b', indent: 2 },
       { id: 'met', text: 'if q = q_new: the trees meet: return PATH', indent: 1 },
       { id: 'swap', text: 'swap T_a and T_b', indent: 1 },
@@ -239,6 +249,7 @@ export function optionsOf(config) {
     connect: p.extend === 'connect',
     domain: Number(p.dd_radius) > 0,
     exhausted: Number(p.exhausted) > 0,
+    ladder: Number(p.ladder) > 0,
     weighted: p.exhausted_policy === 'weighted',
     escape: p.escape,
     search: p.search,
@@ -259,7 +270,7 @@ const pt = (x, y) => `(${num(x)}, ${num(y)})`;
 export function blockerText(id) {
   if (id >= 0) return `blocked by obstacle ${id}`;
   if (id === -2) return 'blocked by the map\'s edge';
-  if (id === -3) return 'blocked by the robot\'s own rule (self-collision or a joint limit)';
+  if (id === -3) return 'blocked by the robot\'s own rule (self-collision, a joint limit, or a chain\'s area or convexity)';
   return 'refused (not checked in time)';
 }
 
@@ -370,6 +381,14 @@ export class Explainer {
         break;
       }
       case K.STEER:
+        if (parent > 0) { // a ladder step, checked free: its NODE_ADDED follows
+          this.then(`ladder try ${pc1}: a step ${num(c0)} moving ${parent} coordinate${parent === 1 ? '' : 's'}, free`);
+          A.edge = [px, py, x, y];
+          A.collision = undefined;
+          A.blocked = false;
+          this.line = this.connecting ? 'c-ladder' : 'ladder';
+          break;
+        }
         this.then(`step ${num(c0)}${pc0 === 1 ? ' (reaches it)' : ''}`);
         A.edge = [px, py, x, y];
         if (this.robot === 'point') A.range = [px, py, c1];

@@ -105,7 +105,7 @@ impl Planner for Rrt {
                 cx.events.at(EventKind::Solved, 0, cx.si.project(goal), goal);
                 return Some(path);
             }
-            if grow == Grow::Reached || !self.connect {
+            if grow == Grow::Reached || !self.connect || tree.slid() {
                 return None;
             }
         }
