@@ -380,3 +380,62 @@ fn rrt_connect_threads_the_long_gap_in_valid_primitive_steps() {
         }
     }
 }
+
+/// Issue 16's fifteen vehicles: the scenario's own planner block (RRT-Connect, range 0.05, 8
+/// ladder steps) solves it, and the solution file of the smoothed and the raw path passes the
+/// course's rules, re-checked independently. Seeds 1 and 4 take under 2 s natively (60 s allowed).
+#[test]
+fn rrt_connect_with_ladder_steps_solves_fifteen_vehicles() {
+    let sc = planarium::scenario::builtin("asv-15").unwrap();
+    let block = sc.planner.as_ref().unwrap();
+    assert_eq!(block.name, "rrt-connect");
+    let spec = planners::find("rrt-connect").unwrap();
+    let params = || Params::from_json(spec, &serde_json::Value::Object(block.params.clone())).unwrap();
+    assert_eq!((params().real("range"), params().real("ladder")), (0.05, 8.0));
+    for seed in [1, 4] {
+        let mut p = params();
+        p.set_text(spec, "time_limit", "60").unwrap();
+        let mut s = Session::new(
+            Problem::from_scenario(&sc).unwrap(),
+            RunConfig { planner: "rrt-connect".into(), params: p, seed, record_events: false },
+        )
+        .unwrap();
+        s.run_to_end();
+        assert!(s.result().solved, "seed {seed}: {}", s.result().status);
+        for raw in [true, false] {
+            let configs = read_solution(&solution_text(s.problem(), s.planning_path(raw)).unwrap()).unwrap();
+            check_solution(&sc, &configs).unwrap_or_else(|e| panic!("seed {seed} (raw {raw}): {e}"));
+        }
+    }
+    // A ladder step on the chain moves some of its planning coordinates and keeps the others: the
+    // node added differs from its parent in exactly the coordinates its `Steer` record names.
+    let mut p = params();
+    p.set_text(spec, "max_iterations", "3000").unwrap();
+    let mut s = Session::new(
+        Problem::from_scenario(&sc).unwrap(),
+        RunConfig { planner: "rrt-connect".into(), params: p, seed: 2, record_events: true },
+    )
+    .unwrap();
+    s.run_to_end();
+    let log = s.drain_events();
+    let recs: Vec<&[f64]> = log.chunks_exact(planarium::events::STRIDE).collect();
+    let steer = planarium::events::EventKind::Steer as u8 as f64;
+    let added = planarium::events::EventKind::NodeAdded as u8 as f64;
+    let trees = s.planner_data().trees;
+    let dims = s.problem().si.dims();
+    let mut ladders = 0;
+    for w in recs.windows(2) {
+        if w[0][0] != steer || w[0][3] < 0.0 {
+            continue;
+        }
+        assert_eq!(w[1][0], added, "a ladder step is added: {:?}", w[1]);
+        let tree = &trees[w[1][1] as usize];
+        let id = w[1][2] as u32;
+        let (q, parent) = (tree.state(id), tree.state(tree.parent(id)));
+        let moved = (0..dims).filter(|&k| q[k] != parent[k]).count();
+        assert_eq!(moved as f64, w[0][3], "node {id}: {q:?} from {parent:?}");
+        assert!(moved > 0 && moved < dims);
+        ladders += 1;
+    }
+    assert!(ladders > 20, "{ladders} ladder steps in 3000 iterations");
+}

@@ -6,7 +6,8 @@ import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { pageFixture, SHOTS as shots } from './browser.mjs';
+import { execFileSync } from 'node:child_process';
+import { pageFixture, ROOT, SHOTS as shots } from './browser.mjs';
 import { PALETTE } from '../../www/draw/palette.js';
 import { wrapSegments, wrapInto, formatTick } from '../../www/draw/cspace.js';
 
@@ -297,4 +298,30 @@ test('open file: an ASV problem is drawn as a chain of vehicles; its solution do
   assert.ok(m > 10 && cost > 0);
   const problemStart = (await page.evaluate(() => window.planarium.scenario())).start;
   assert.deepEqual(lines[1].trim().split(/\s+/).map(Number), problemStart);
+});
+
+test('asv-15: the scenario\'s ladder steps are in the panel, the run solves in the worker as natively, and the explain panel captions a ladder step', async () => {
+  await pickScenario('asv-15', 'Fifteen vehicles in the 7ASV map (ASV 15)');
+  assert.equal(await page.inputValue('#param-ladder'), '8', 'the scenario\'s planner block sets 8 ladder steps');
+  assert.equal(await page.inputValue('#param-range'), '0.05');
+  await fastPlayback();
+  await page.click('#run');
+  await waitStatus('solved', 120000);
+  const stats = await page.evaluate(() => window.planarium.result().stats);
+  const native = JSON.parse(execFileSync(join(ROOT, 'target/release/planarium'), ['plan', 'asv-15', '--json'], { encoding: 'utf8', maxBuffer: 1 << 28 })).stats;
+  assert.deepEqual([stats.iterations, stats.nodes, stats.checks, stats.cost], [native.iterations, native.nodes, native.checks, native.cost], 'the same run, bit for bit');
+  // From the start, event by event: a blocked step, then a ladder step, captioned from its record.
+  await page.click('#reset');
+  await waitState('idle');
+  let seen = null;
+  for (let i = 1; i <= 40 && !seen; i++) {
+    await page.click('#step-event');
+    await page.waitForFunction((n) => window.planarium.explain().events === n, i);
+    const r = await page.evaluate(() => window.planarium.lastEvent());
+    if (r[0] === 21 && r[3] > 0) seen = { r, caption: (await page.evaluate(() => window.planarium.explain())).caption };
+  }
+  assert.ok(seen, 'a ladder step within the first 40 events (the core takes its first at event 5)');
+  assert.ok(seen.caption.includes(`ladder try ${seen.r[11]}: a step`) && seen.caption.includes(`moving ${seen.r[3]} coordinates, free`), seen.caption);
+  assert.match(seen.caption, /blocked by .* → ladder try/, 'the blocked step comes first in the caption');
+  await page.screenshot({ path: join(shots, 'page-asv15.png') });
 });
