@@ -8,14 +8,7 @@ use planarium::scenario::{self, Scenario};
 
 /// A file's text, refused past [`planarium::limits::MAX_TEXT_BYTES`] without reading the rest.
 pub fn read_limited(path: &str) -> Result<String, String> {
-    use std::io::Read;
-    let max = planarium::limits::MAX_TEXT_BYTES as u64;
-    let file = std::fs::File::open(path).map_err(|e| format!("{path}: {e}"))?;
-    let mut bytes = Vec::new();
-    file.take(max + 1).read_to_end(&mut bytes).map_err(|e| format!("{path}: {e}"))?;
-    if bytes.len() as u64 > max {
-        return Err(format!("{path}: the file is larger than the limit of {max} bytes (16 MiB)"));
-    }
+    let bytes = read_bytes_limited(std::path::Path::new(path))?;
     String::from_utf8(bytes).map_err(|e| format!("{path}: not UTF-8 text (byte {})", e.utf8_error().valid_up_to()))
 }
 
