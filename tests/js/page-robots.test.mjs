@@ -141,7 +141,9 @@ test('technion-mp: solves with the default planner and the arm is drawn as links
   await waitStatus('solved', 90000);
   const result = await page.evaluate(() => window.planarium.result());
   assert.equal(result.solved, true);
-  await page.waitForTimeout(300);
+  // every event shown and drawn (not a fixed wait, which caught the overlays half drawn)
+  await page.waitForFunction(() => window.planarium.stats().queued_events === 0);
+  await nextFrames();
   const after = await onArm();
   // (the sample and tree overlays, drawn above the start arm, may cover a few of the 12 points)
   assert.ok(after >= points.length - 5, `start-coloured pixels along the links after the run: ${after}`);
