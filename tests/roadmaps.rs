@@ -263,6 +263,50 @@ fn lazy_prm_checks_fewer_edges_than_prm_on_the_same_roadmap() {
 }
 
 #[test]
+fn lazy_prm_searches_once_an_iteration_and_runs_as_one_query_an_iteration_would() {
+    // An iteration searches the roadmap at most once: after an invalid edge, the next iteration
+    // searches again without growing, so a batch suspended in a long query replays one search.
+    // The run is the one a whole query per iteration gives: the same records, checks and path.
+    for (name, seed) in [("zigzag", 1), ("narrow", 3), ("slot", 2)] {
+        let sc = builtin(name).unwrap();
+        let (mut stepped, mut whole) = (Rig::new(&sc, "lazy-prm", json!({}), seed), Rig::new(&sc, "lazy-prm", json!({}), seed));
+        let (mut iterations, mut again) = (0u64, 0u64);
+        let p = (0..20_000)
+            .find_map(|_| {
+                let (searches, invalid) = (stepped.planner.stats().searches, stepped.planner.stats().edges_invalid);
+                let found = stepped.with(|p, cx| p.iterate(cx));
+                let s = stepped.planner.stats();
+                iterations += 1;
+                assert!(s.searches - searches <= 1, "{name}: {} searches in one iteration", s.searches - searches);
+                again += (s.edges_invalid > invalid) as u64;
+                found
+            })
+            .unwrap_or_else(|| panic!("{name}: Lazy PRM"));
+        assert!(again > 3, "{name}: only {again} searches found an invalid edge");
+        // The same run, each query searched to its end in one go.
+        whole.with(|p, cx| p.init(cx));
+        let q = (0..20_000)
+            .find_map(|i| {
+                let grew = whole.with(|p, cx| p.grow(cx));
+                if !grew && i > 0 {
+                    return None;
+                }
+                whole.with(|p, cx| p.query_vertices(cx, 0, 1))
+            })
+            .unwrap_or_else(|| panic!("{name}: Lazy PRM in whole queries"));
+        assert_eq!(p, q, "{name}: the same path");
+        assert_eq!(stepped.planner.stats(), whole.planner.stats(), "{name}: the same searches and checks");
+        // The same records, and the iterations' `Solved` at the end.
+        let (a, b) = (stepped.events.records(), whole.events.records());
+        assert_eq!(a.len(), b.len() + STRIDE, "{name}: record counts");
+        assert_eq!(a[b.len()], EventKind::Solved as u8 as f64, "{name}: the last record");
+        let first_difference = a.iter().zip(b).position(|(x, y)| x.to_bits() != y.to_bits());
+        assert_eq!(first_difference, None, "{name}: the records differ from number {first_difference:?} on");
+        assert!(iterations > stepped.planner.stats().milestones as u64, "{name}: {iterations} iterations");
+    }
+}
+
+#[test]
 fn in_a_session_lazy_prm_solves_with_prms_milestones_and_fewer_checks() {
     for seed in 1..=5 {
         let sc = builtin("zigzag").unwrap();

@@ -11,6 +11,10 @@
 //! 3. query: if start and goal are in one component, A* finds the shortest path over the roadmap;
 //!    for Lazy PRM its unchecked edges are checked in order, an invalid one is removed and the
 //!    search runs again, until a path of valid edges is found or start and goal come apart.
+//!    Each search after an invalid edge is an iteration of its own, with no milestone added, so
+//!    one iteration is at most one graph search: a batch suspended in the middle of a long
+//!    query replays one search, not all those before it (see [`crate::journal`]). The runs are
+//!    the same records, checks and path as one iteration per query; only the count differs.
 //!
 //! The start and the goal are the roadmap's first two vertices (terminals, not milestones), and
 //! new milestones connect to them like to any vertex. [`RoadmapPlanner::query`] answers a further
@@ -106,7 +110,14 @@ pub struct RoadmapPlanner {
     solved_at: Option<u64>,
     /// The shortest path found so far and its cost (while improving).
     best: Option<(Vec<Vec<Real>>, Real)>,
+    /// The last search's path had an invalid edge (Lazy PRM): the next iteration searches again
+    /// without growing.
+    search_again: bool,
 }
+
+/// A search whose path had an invalid edge, now removed: search again.
+#[derive(Debug)]
+pub struct SearchAgain;
 
 impl RoadmapPlanner {
     /// A roadmap planner for `task` (its start and goal become the first two vertices on the
@@ -126,6 +137,7 @@ impl RoadmapPlanner {
             iterations: 0,
             solved_at: None,
             best: None,
+            search_again: false,
         }
     }
     /// Keep growing the roadmap for `iterations` after the first solution, searching it again
@@ -227,43 +239,55 @@ impl RoadmapPlanner {
     /// unchecked edges the search's paths use; `None` when there is none in the roadmap yet.
     pub fn query_vertices(&mut self, cx: &mut Context, s: u32, g: u32) -> Option<Vec<Vec<Real>>> {
         loop {
-            if !self.graph.connected(s, g) || cx.si.stopped() {
-                return None;
-            }
-            self.stats.searches += 1;
-            let path = self.graph.shortest(cx.si, s, g, &mut self.stats.expanded)?;
-            let verts = self.graph.walk(s, &path);
-            for (i, w) in verts.windows(2).enumerate() {
-                self.note_edge(cx, EventKind::QueryPath, (i > 0) as usize, w[0], w[1]);
-            }
-            let mut valid = true;
-            for (i, &e) in path.iter().enumerate() {
-                if self.graph.edges()[e as usize].state != EdgeState::Unchecked {
-                    continue;
-                }
-                let (u, v) = (verts[i], verts[i + 1]);
-                self.a.copy_from_slice(self.graph.state(u));
-                self.b.copy_from_slice(self.graph.state(v));
-                self.stats.edges_checked += 1;
-                if cx.si.check_motion(&self.a, &self.b, &mut self.scratch).is_ok() {
-                    self.graph.set_state(e, EdgeState::Valid);
-                    self.note_edge(cx, EventKind::EdgeChecked, 0, u, v);
-                } else {
-                    self.stats.edges_invalid += 1;
-                    self.graph.set_state(e, EdgeState::Invalid);
-                    self.note_edge(cx, EventKind::EdgeChecked, 1, u, v);
-                    cx.note_collision(0, u, &self.a, &self.b, &self.scratch);
-                    valid = false;
-                    break;
-                }
-            }
-            if cx.si.stopped() {
-                return None; // a motion refused for want of time is not known invalid
-            }
-            if valid {
-                return Some(verts.iter().map(|&v| self.graph.state(v).to_vec()).collect());
+            if let Ok(path) = self.search(cx, s, g) {
+                return path;
             }
         }
+    }
+
+    /// One search of [`RoadmapPlanner::query_vertices`]: the shortest path from `s` to `g`, its
+    /// unchecked edges checked in order. `Ok(None)`: no path in the roadmap (or the run
+    /// stopped); `Err`: the path had an invalid edge, removed, and another search may find one.
+    pub fn search(&mut self, cx: &mut Context, s: u32, g: u32) -> Result<Option<Vec<Vec<Real>>>, SearchAgain> {
+        if !self.graph.connected(s, g) || cx.si.stopped() {
+            return Ok(None);
+        }
+        self.stats.searches += 1;
+        let Some(path) = self.graph.shortest(cx.si, s, g, &mut self.stats.expanded) else {
+            return Ok(None);
+        };
+        let verts = self.graph.walk(s, &path);
+        for (i, w) in verts.windows(2).enumerate() {
+            self.note_edge(cx, EventKind::QueryPath, (i > 0) as usize, w[0], w[1]);
+        }
+        let mut valid = true;
+        for (i, &e) in path.iter().enumerate() {
+            if self.graph.edges()[e as usize].state != EdgeState::Unchecked {
+                continue;
+            }
+            let (u, v) = (verts[i], verts[i + 1]);
+            self.a.copy_from_slice(self.graph.state(u));
+            self.b.copy_from_slice(self.graph.state(v));
+            self.stats.edges_checked += 1;
+            if cx.si.check_motion(&self.a, &self.b, &mut self.scratch).is_ok() {
+                self.graph.set_state(e, EdgeState::Valid);
+                self.note_edge(cx, EventKind::EdgeChecked, 0, u, v);
+            } else {
+                self.stats.edges_invalid += 1;
+                self.graph.set_state(e, EdgeState::Invalid);
+                self.note_edge(cx, EventKind::EdgeChecked, 1, u, v);
+                cx.note_collision(0, u, &self.a, &self.b, &self.scratch);
+                valid = false;
+                break;
+            }
+        }
+        if cx.si.stopped() {
+            return Ok(None); // a motion refused for want of time is not known invalid
+        }
+        if valid {
+            return Ok(Some(verts.iter().map(|&v| self.graph.state(v).to_vec()).collect()));
+        }
+        Err(SearchAgain)
     }
 
     /// Answer a query on the roadmap as it stands: `start` and `goal` (valid states) join it as
@@ -284,12 +308,17 @@ impl Planner for RoadmapPlanner {
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         let first = self.graph.is_empty();
         self.init(cx);
-        let grew = self.grow(cx);
+        let again = std::mem::take(&mut self.search_again);
+        let grew = !again && self.grow(cx);
         if self.improve_for == 0 {
-            if !grew && !first {
+            if !grew && !first && !again {
                 return None;
             }
-            let path = self.query_vertices(cx, 0, 1)?;
+            let Ok(found) = self.search(cx, 0, 1) else {
+                self.search_again = true;
+                return None;
+            };
+            let path = found?;
             let goal = self.task.goal();
             cx.events.at(EventKind::Solved, 0, cx.si.project(goal), goal);
             return Some(path);
