@@ -23,10 +23,12 @@ pub enum EventKind {
     SampleRejected = 1,
     /// A node was added: `id`, `parent`, its point `x, y`, its parent's `px, py`.
     NodeAdded = 2,
-    /// A motion was found in collision at `x, y` (the invalid state found): `parent` the node it
-    /// started from (at `px, py`; -1 when unknown); `id` what blocked it, from
-    /// [`SpaceInfo::blocker`](crate::space_info::SpaceInfo::blocker): an obstacle's index in the
-    /// scenario (≥ 0), -2 the map's edge, -3 one of the robot's own rules, -1 not known.
+    /// A motion was found in collision at the state `c0, c1, …` (its first two numbers), drawn at
+    /// `x, y`: where the robot's body meets the obstacle named, or (a point, the map's edge, a
+    /// robot's own rule) the state's point. `parent` the node it started from (at `px, py`; -1
+    /// when unknown); `id` what blocked it: an obstacle's index in the scenario (≥ 0), -2 the
+    /// map's edge, -3 one of the robot's own rules, -1 not known. Both from
+    /// [`SpaceInfo::blocked_at`](crate::space_info::SpaceInfo::blocked_at).
     Collision = 3,
     /// The two trees met at `x, y` (`id` in `tree`, `parent`: the node in the other tree).
     TreesConnected = 4,

@@ -414,25 +414,51 @@ impl SpaceInfo {
         self.validity.is_valid(q)
     }
     /// What blocked the motion `a → b`, found invalid at `at`, for the explanation of a
-    /// [`Collision`](crate::events::EventKind::Collision) event: the index of the obstacle the
-    /// robot meets at `at` (the first in scenario order; for a robot with an exact sweep whose
-    /// state `at` is free, the first obstacle the sweep meets), -2 the map's edge, -3 one of the
-    /// robot's own rules (self-collision, a joint limit), -1 not known (a motion refused
-    /// unchecked: out of time, or too long to check). Not counted as a state check, not journalled:
-    /// it asks nothing a planner decides by.
-    pub fn blocker(&self, a: &[Real], b: &[Real], at: &[Real]) -> i64 {
+    /// [`Collision`](crate::events::EventKind::Collision) event, and the workspace point to show
+    /// it at. What: the index of the obstacle the robot meets at `at` (the first in scenario
+    /// order; for a robot with an exact sweep whose state `at` is free, the first obstacle the
+    /// sweep meets), -2 the map's edge, -3 one of the robot's own rules (self-collision, a joint
+    /// limit), -1 not known (a motion refused unchecked: out of time, or too long to check).
+    /// Where: for a body meeting an obstacle at `at`, where they meet ([`SpaceInfo::contact`]);
+    /// else the state's reference point. Not counted as a state check, not journalled: it asks
+    /// nothing a planner decides by.
+    pub fn blocked_at(&self, a: &[Real], b: &[Real], at: &[Real]) -> (i64, Vec2) {
+        let reference = self.project(at);
         match self.validity.verdict(at) {
-            Verdict::Collision(i) => i as i64,
-            Verdict::OutOfBounds(_) => -2,
-            Verdict::Invalid(_) => -3,
+            Verdict::Collision(i) => (i as i64, self.contact(at, i).unwrap_or(reference)),
+            Verdict::OutOfBounds(_) => (-2, reference),
+            Verdict::Invalid(_) => (-3, reference),
             Verdict::Valid => match self.motion_model().sweep_hits(self.workspace(), a, b) {
-                Some(true) => self
-                    .workspace()
-                    .first_obstacle_on_segment(self.project(a), self.project(b))
-                    .map_or(-1, |i| i as i64),
-                _ => -1,
+                Some(true) => {
+                    let hit = self.workspace().first_obstacle_on_segment(self.project(a), self.project(b));
+                    (hit.map_or(-1, |i| i as i64), reference)
+                }
+                _ => (-1, reference),
             },
         }
+    }
+    /// Where the robot's body at `q` meets obstacle `i`: the first point, along its outline's
+    /// edges in order (a rigid body's polygon, an arm's links, a vehicle chain's brooms), that lies
+    /// in the obstacle; else a vertex of the outline inside it; else (the obstacle wholly inside a
+    /// rigid body) a point of the obstacle. `None` for a point robot (no outline) or when the
+    /// outline does not meet it. For drawing and captions only: the verdict is the robot's.
+    pub fn contact(&self, q: &[Real], i: usize) -> Option<Vec2> {
+        let shape = self.validity.workspace.obstacles.get(i)?;
+        let open = self.validity.workspace.touching_allowed;
+        let closed = self.validity.robot.kind() == "rigid"; // the others are chains of segments
+        let outline = self.outline(q);
+        for poly in &outline {
+            let edges = poly.len().saturating_sub(if closed && poly.len() > 2 { 0 } else { 1 });
+            for k in 0..edges {
+                if let Some(p) = shape.first_point_on(poly[k], poly[(k + 1) % poly.len()], open) {
+                    return Some(p);
+                }
+            }
+        }
+        if let Some(v) = outline.iter().flatten().find(|v| shape.contains_point(**v)) {
+            return Some(*v);
+        }
+        (closed && !outline.is_empty()).then(|| shape.some_point())
     }
     /// Count `n` geometric tests as state checks (workspace planners test cells and steps rather
     /// than states; their tests are counted here so `checks` compares work across planners).

@@ -219,3 +219,31 @@ fn the_narrow_passage_caption_holds_on_its_default_seed_and_over_101_seeds() {
         "{m_connect} {m_rrt}: {notes}"
     );
 }
+
+/// Where a blocked motion is drawn: for a body (a rigid polygon, an arm, a vehicle chain), the
+/// point where it meets the obstacle its record names, which lies in that obstacle; for a point,
+/// the state itself. (Before, a body's collision was drawn at its reference point, which for the
+/// chain lay far from the obstacle: "blocked by obstacle 1 at (0.146, 0.527)" with obstacle 1 at
+/// x 0.25–0.35.)
+#[test]
+fn a_blocked_motion_is_drawn_where_the_robot_meets_the_obstacle() {
+    for (scenario, planner, seed) in
+        [("slot", "rrt-connect", 3), ("arm-2", "rrt-connect", 2), ("asv-7", "rrt-connect", 1), ("narrow", "rrt", 7)]
+    {
+        let (sc, records) = run(scenario, planner, json!({}), seed);
+        let (mut named, mut moved) = (0, 0);
+        for r in records.iter().filter(|r| r[0] == k(EventKind::Collision) && r[2] >= 0.0) {
+            named += 1;
+            let o = &sc.obstacles[r[2] as usize];
+            let d = common::dist_to_obstacle(o, (r[4], r[5]));
+            assert!(d <= 1e-9, "{scenario}: drawn at ({}, {}), {d} from obstacle {}", r[4], r[5], r[2]);
+            moved += ([r[4], r[5]] != [r[8], r[9]]) as usize;
+        }
+        assert!(named >= 5, "{scenario}: {named} collisions with a named obstacle");
+        if scenario == "narrow" {
+            assert_eq!(moved, 0, "a point's collision is drawn at the state");
+        } else {
+            assert!(moved * 2 > named, "{scenario}: {moved} of {named} drawn away from the reference point");
+        }
+    }
+}

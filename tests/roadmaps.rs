@@ -269,7 +269,8 @@ fn lazy_prm_searches_once_an_iteration_and_runs_as_one_query_an_iteration_would(
     // The run is the one a whole query per iteration gives: the same records, checks and path.
     for (name, seed) in [("zigzag", 1), ("narrow", 3), ("slot", 2)] {
         let sc = builtin(name).unwrap();
-        let (mut stepped, mut whole) = (Rig::new(&sc, "lazy-prm", json!({}), seed), Rig::new(&sc, "lazy-prm", json!({}), seed));
+        let (mut stepped, mut whole) =
+            (Rig::new(&sc, "lazy-prm", json!({}), seed), Rig::new(&sc, "lazy-prm", json!({}), seed));
         let (mut iterations, mut again) = (0u64, 0u64);
         let p = (0..20_000)
             .find_map(|_| {

@@ -43,6 +43,35 @@ impl Shape {
         }
     }
 
+    /// The first point of the segment `a b` (from `a`) in the shape, within 2⁻⁵² of the
+    /// segment's length, or `None` when they do not meet. `open`: the shape as an open set (its
+    /// boundary not counted, as [`Shape::interior_meets_segment`]). A bisection on how much of
+    /// the segment from `a` meets the shape, which only grows with it. For drawing where a body
+    /// meets an obstacle; no validity depends on it.
+    pub fn first_point_on(&self, a: Vec2, b: Vec2, open: bool) -> Option<Vec2> {
+        let meets = |t: Real| {
+            let p = a + (b - a) * t;
+            if open {
+                self.interior_meets_segment(a, p)
+            } else {
+                self.intersects_segment(a, p)
+            }
+        };
+        if !meets(1.0) {
+            return None;
+        }
+        let (mut lo, mut hi) = (0.0, 1.0);
+        for _ in 0..52 {
+            let mid = 0.5 * (lo + hi);
+            if meets(mid) {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        Some(a + (b - a) * hi)
+    }
+
     /// Whether the closed shape contains `p`.
     #[inline(always)]
     pub fn contains_point(&self, p: Vec2) -> bool {

@@ -175,11 +175,11 @@ impl Context<'_> {
         }
     }
     /// Log a blocked motion from node `from` (state `a`) toward `b`, found invalid at `at`, with
-    /// what blocked it ([`SpaceInfo::blocker`]).
+    /// what blocked it and where ([`SpaceInfo::blocked_at`]).
     pub fn note_collision(&mut self, tree: usize, from: u32, a: &[Real], b: &[Real], at: &[Real]) {
         if self.events.enabled {
-            let why = self.si.blocker(a, b, at);
-            let (p, pp) = (self.si.project(at), self.si.project(a));
+            let (why, p) = self.si.blocked_at(a, b, at);
+            let pp = self.si.project(a);
             self.events.push(EventKind::Collision, tree, why, from as i64, p, pp, at, a);
         }
     }

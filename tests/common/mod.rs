@@ -81,6 +81,23 @@ fn point_blocked(o: &ObstacleSpec, p: P) -> bool {
     }
 }
 
+/// The distance from `p` to the closed obstacle `o` (0 inside it).
+pub fn dist_to_obstacle(o: &ObstacleSpec, p: P) -> f64 {
+    if point_blocked(o, p) {
+        return 0.0;
+    }
+    match o {
+        ObstacleSpec::Circle(c) => ((p.0 - c[0]).powi(2) + (p.1 - c[1]).powi(2)).sqrt() - c[2],
+        ObstacleSpec::Segment(s) => dist_point_segment(p, (s[0], s[1]), (s[2], s[3])),
+        _ => {
+            let poly = obstacle_polygon(o).unwrap();
+            (0..poly.len())
+                .map(|i| dist_point_segment(p, poly[i], poly[(i + 1) % poly.len()]))
+                .fold(f64::INFINITY, f64::min)
+        }
+    }
+}
+
 /// Separating axes: does segment a-b meet the closed box? The x and y extents overlap, and the
 /// box's corners are not all strictly on one side of the segment's line.
 fn clip_box(a: P, b: P, x0: f64, y0: f64, x1: f64, y1: f64) -> bool {

@@ -6,7 +6,7 @@ export const EventKind = Object.freeze({
   SAMPLE: 0, // id: 1 the goal itself (goal bias)
   SAMPLE_REJECTED: 1,
   NODE_ADDED: 2,
-  COLLISION: 3, // id: obstacle index (-2 map edge, -3 robot's own rule, -1 unknown), parent: node, px py: its point
+  COLLISION: 3, // id: obstacle index (-2 map edge, -3 robot's own rule, -1 unknown), x y: where the body meets it (a point: the state), parent: node, px py: its point, c0 c1: the state's first numbers
   TREES_CONNECTED: 4,
   SOLVED: 5,
   SAMPLE_TRY: 6, // id: 1 free, 0 occupied
