@@ -211,6 +211,35 @@ test('Lazy PRM on the zigzag: two clicks ask the finished roadmap another query,
   assert.equal(await page.evaluate(() => window.planarium.query()), null);
 });
 
+test('a phone (390×844): the query status, last in the sideways-scrolling run bar, is scrolled on screen', async () => {
+  await page.setViewportSize({ width: 390, height: 844 });
+  await pickScenario('zigzag', 'Zigzag of walls');
+  await page.selectOption('#planner', 'lazy-prm');
+  await waitState('idle');
+  await setField('seed', 1);
+  await fastPlayback();
+  await page.click('#run');
+  await waitState('finished', 90000);
+  const onScreen = () => page.$eval('#query-status', (el) => {
+    const r = el.getBoundingClientRect();
+    return { left: r.left, right: r.right, width: innerWidth, text: el.textContent };
+  });
+  // the bar is wider than the screen: without scrolling, the status would start past its right edge
+  assert.ok(await page.$eval('#run-bar', (b) => b.scrollWidth > b.clientWidth + 200), 'the run bar scrolls sideways');
+  await page.click('#query-button');
+  let s = await onScreen();
+  assert.match(s.text, /Click the query's start/);
+  assert.ok(s.left >= 0 && s.right <= s.width, `the prompt is on screen: ${JSON.stringify(s)}`);
+  await page.mouse.click(...(await fx.toPage(0.92, 0.1)));
+  await page.mouse.click(...(await fx.toPage(0.08, 0.9)));
+  await page.waitForFunction(() => /cost|does not join/.test(document.getElementById('query-status').textContent), null, { timeout: 30000 });
+  s = await onScreen();
+  assert.match(s.text, /^Query 1: \d+ states, cost [\d.]+, on the same roadmap\.$/);
+  assert.ok(s.left >= 0 && s.right <= s.width, `the answer is on screen: ${JSON.stringify(s)}`);
+  assert.ok(await page.evaluate(() => document.documentElement.scrollWidth <= innerWidth), 'the page itself does not scroll sideways');
+  await page.screenshot({ path: join(shots, 'page-roadmap-query-phone.png') });
+});
+
 test('technion-ip: only inspection planners are offered, with the reason; narrow offers no inspection', async () => {
   await pickScenario('technion-ip', 'Technion HW3: inspect the room');
   const offered = await page.$$eval('#planner option', (os) => os.map((o) => o.value));

@@ -23,7 +23,17 @@ export function wireRoadmapQuery({ button, status, canvas, view, lane, applies, 
   let picking = null;
   let asked = 0;
   let picks = []; // the latest query's two clicks
-  const say = (text) => { status.textContent = text; };
+  const say = (text) => { status.textContent = text; reveal(); };
+
+  // On a phone the run bar is one row that scrolls sideways (style.css), and the status, last in
+  // it, would be off screen: scroll the bar (not the page) until it shows.
+  function reveal() {
+    const bar = status.parentElement;
+    if (!bar || status.hidden || !status.textContent || bar.scrollWidth <= bar.clientWidth) return;
+    const b = bar.getBoundingClientRect(), s = status.getBoundingClientRect();
+    if (s.right > b.right) bar.scrollLeft += Math.min(s.right - b.right, s.left - b.left);
+    else if (s.left < b.left) bar.scrollLeft -= b.left - s.left;
+  }
 
   function sync() {
     const on = applies();
