@@ -17,6 +17,17 @@ const { waitState, pickScenario, countColours, nextFrames, fastPlayback, setFiel
 /** Pixels of the chart canvas within `tol` of the chart's line colour. */
 const chartLine = async (tol = 8) => (await countColours('chart', [PALETTE.chartLine], tol))[0];
 
+/** Lazy PRM on the zigzag, seed 1, run to its end at full playback speed. */
+async function finishLazyPrm() {
+  await pickScenario('zigzag', 'Zigzag of walls');
+  await page.selectOption('#planner', 'lazy-prm');
+  await waitState('idle');
+  await setField('seed', 1);
+  await fastPlayback();
+  await page.click('#run');
+  await waitState('finished', 90000);
+}
+
 test('RRT* on the open field: the best-cost chart has a line and the stats show the best cost', async () => {
   await pickScenario('open-field', 'Open field');
   await page.selectOption('#planner', 'rrt-star');
@@ -92,13 +103,7 @@ test('PRM* on the zigzag: its cost chart falls toward the optimum line as the ro
 });
 
 test('Lazy PRM on the zigzag: unchecked edges drawn dashed grey, checked ones in the tree colour; PRM draws only checked edges', async () => {
-  await pickScenario('zigzag', 'Zigzag of walls');
-  await page.selectOption('#planner', 'lazy-prm');
-  await waitState('idle');
-  await setField('seed', 1);
-  await fastPlayback();
-  await page.click('#run');
-  await waitState('finished', 90000);
+  await finishLazyPrm();
   assert.equal(await page.textContent('#status'), 'solved');
   await nextFrames();
   const lazy = (await page.evaluate(() => window.planarium.model())).roadmap;
@@ -213,13 +218,7 @@ test('Lazy PRM on the zigzag: two clicks ask the finished roadmap another query,
 
 test('a phone (390×844): the query status, last in the sideways-scrolling run bar, is scrolled on screen', async () => {
   await page.setViewportSize({ width: 390, height: 844 });
-  await pickScenario('zigzag', 'Zigzag of walls');
-  await page.selectOption('#planner', 'lazy-prm');
-  await waitState('idle');
-  await setField('seed', 1);
-  await fastPlayback();
-  await page.click('#run');
-  await waitState('finished', 90000);
+  await finishLazyPrm();
   const onScreen = () => page.$eval('#query-status', (el) => {
     const r = el.getBoundingClientRect();
     return { left: r.left, right: r.right, width: innerWidth, text: el.textContent };
