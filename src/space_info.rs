@@ -439,24 +439,20 @@ impl SpaceInfo {
     }
     /// Where the robot's body at `q` meets obstacle `i`: the first point, along its outline's
     /// edges in order (a rigid body's polygon, an arm's links, a vehicle chain's brooms), that lies
-    /// in the obstacle; else a vertex of the outline inside it; else (the obstacle wholly inside a
-    /// rigid body) a point of the obstacle. `None` for a point robot (no outline) or when the
-    /// outline does not meet it. For drawing and captions only: the verdict is the robot's.
+    /// in the obstacle; else (the obstacle wholly inside a rigid body) a point of the obstacle.
+    /// `None` for a point robot (no outline). For drawing and captions only: the verdict is the
+    /// robot's.
     pub fn contact(&self, q: &[Real], i: usize) -> Option<Vec2> {
         let shape = self.validity.workspace.obstacles.get(i)?;
         let open = self.validity.workspace.touching_allowed;
-        let closed = self.validity.robot.kind() == "rigid"; // the others are chains of segments
+        let closed = self.validity.robot.body().is_some(); // see `Robot::outline`
         let outline = self.outline(q);
         for poly in &outline {
-            let edges = poly.len().saturating_sub(if closed && poly.len() > 2 { 0 } else { 1 });
-            for k in 0..edges {
-                if let Some(p) = shape.first_point_on(poly[k], poly[(k + 1) % poly.len()], open) {
-                    return Some(p);
-                }
+            let n = poly.len();
+            let edges = if closed && n > 2 { n } else { n.saturating_sub(1) };
+            if let Some(p) = (0..edges).find_map(|k| shape.first_point_on(poly[k], poly[(k + 1) % n], open)) {
+                return Some(p);
             }
-        }
-        if let Some(v) = outline.iter().flatten().find(|v| shape.contains_point(**v)) {
-            return Some(*v);
         }
         (closed && !outline.is_empty()).then(|| shape.some_point())
     }

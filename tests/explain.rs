@@ -238,11 +238,22 @@ fn a_blocked_motion_is_drawn_where_the_robot_meets_the_obstacle() {
             let d = common::dist_to_obstacle(o, (r[4], r[5]));
             assert!(d <= 1e-9, "{scenario}: drawn at ({}, {}), {d} from obstacle {}", r[4], r[5], r[2]);
             moved += ([r[4], r[5]] != [r[8], r[9]]) as usize;
+            if scenario == "arm-2" {
+                // two joints: the record's c0, c1 are the whole state, so the point must lie on a
+                // link of the arm there (its own forward kinematics)
+                let pts = common::arm_points(&sc, &[r[8], r[9]]);
+                let on = pts
+                    .windows(2)
+                    .map(|w| common::dist_point_segment((r[4], r[5]), w[0], w[1]))
+                    .fold(f64::INFINITY, f64::min);
+                assert!(on <= 1e-9, "arm-2: drawn at ({}, {}), {on} from the arm at {:?}", r[4], r[5], [r[8], r[9]]);
+            }
         }
         assert!(named >= 5, "{scenario}: {named} collisions with a named obstacle");
         if scenario == "narrow" {
             assert_eq!(moved, 0, "a point's collision is drawn at the state");
-        } else {
+        } else if scenario != "arm-2" {
+            // (an arm's c0, c1 are angles, not a point: its contacts were checked on its links)
             assert!(moved * 2 > named, "{scenario}: {moved} of {named} drawn away from the reference point");
         }
     }

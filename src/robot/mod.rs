@@ -91,8 +91,10 @@ pub trait Robot: std::fmt::Debug {
     }
     /// The point of the workspace a state is drawn at (trees are projected onto it).
     fn project(&self, q: &[Real]) -> Vec2;
-    /// The body's outline at state `q`, as closed polygons in world coordinates (for drawing and
-    /// exports); a point robot has none.
+    /// The body's outline at state `q` in world coordinates (for drawing and exports): closed
+    /// polygons for a robot with a [`body`](Robot::body) (a rigid body), one open polyline for a
+    /// chain of segments (an arm's base, joints and end; a vehicle chain's vehicles, joined by
+    /// brooms); a point robot has none.
     fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>>;
 
     /// How its motions are checked; `None`: discrete checks only ([`DiscreteOnly`]).

@@ -143,7 +143,7 @@ fn body(sc: &Scenario, q: &[f64]) -> Option<Vec<P>> {
 }
 
 /// An arm's joint points (base first, tip end last), by its own forward kinematics.
-fn arm_points(sc: &Scenario, q: &[f64]) -> Vec<P> {
+pub fn arm_points(sc: &Scenario, q: &[f64]) -> Vec<P> {
     let RobotSpec::Arm { base, links, tip, .. } = &sc.robot else { unreachable!() };
     let mut pts = vec![(base[0], base[1])];
     let mut th = 0.0;
