@@ -28,7 +28,7 @@ const sameRun = (x, y) => x.checks === y.checks && x.nodes === y.nodes && x.cost
 // Each seed's best time over the rounds (rounds: arrays of rows, seed by seed).
 const bestOf = (rounds) => rounds[0].map((_, j) => Math.min(...rounds.map((rows) => rows[j].time_ms)));
 const only = opt('--only', null)?.split(',');
-const ASV = join(root, '..', 'shared', 'data', 'asv');
+const ASV = join(root, 'tests', 'data', 'asv');
 
 // OMPL 1.5.2 (Debian's libompl-dev, -O3), medians over 20 seeds on this machine kind (issue 7).
 const SUITE = [

@@ -9,7 +9,7 @@ use planarium::problem::Problem;
 use planarium::run::{RunConfig, Session};
 use planarium::scenario::Scenario;
 
-const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/asv");
+const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/asv");
 
 /// A scenario for hand-made configurations: `n` vehicles, one obstacle `[0.4, 0.6]²`.
 fn scenario(n: usize, min_area: Option<f64>) -> Scenario {
@@ -153,7 +153,7 @@ fn import(file: &str) -> Scenario {
 
 fn official_files() -> Vec<String> {
     let mut files: Vec<String> = std::fs::read_dir(DATA)
-        .expect("the official ASV problems are in ../shared/data/asv")
+        .expect("the official ASV problems are in tests/data/asv")
         .map(|e| e.unwrap().file_name().into_string().unwrap())
         .filter(|f| f.ends_with(".txt"))
         .collect();

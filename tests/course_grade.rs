@@ -12,7 +12,7 @@ use planarium::run::{RunConfig, Session};
 use planarium::scenario::Scenario;
 use planarium::status::Status;
 
-const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/asv");
+const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/asv");
 const FILES: &[(&str, bool)] = &[("3ASV-easy", false), ("3ASV", true), ("7ASV-easy", false), ("7ASV", true)];
 
 fn official(name: &str) -> Scenario {

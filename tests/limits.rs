@@ -120,7 +120,7 @@ fn an_asv_file_with_a_huge_vehicle_or_obstacle_count_is_refused_before_any_alloc
     assert!(e.message.contains("limit"), "{e}");
     let e = io::import("99999999999999999999999\n", "huger").unwrap_err();
     assert_eq!(e.line, Some(1), "{e}");
-    let good = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/asv/3ASV.txt")).unwrap();
+    let good = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/asv/3ASV.txt")).unwrap();
     let lines: Vec<&str> = good.lines().collect();
     let mut text = lines[..3].join("\n");
     text.push_str("\n4000000000000\n");

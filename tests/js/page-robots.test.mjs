@@ -187,7 +187,7 @@ test('technion-ip: inspection points drawn; only the inspection planner is offer
 });
 
 test('open file: a Technion map is imported', async () => {
-  const text = readFileSync('/work/shared/data/technion-hw3/map_mp.json');
+  const text = readFileSync(join(ROOT, 'tests/data/technion-hw3/map_mp.json'));
   await page.setInputFiles('#file', { name: 'map_mp.json', mimeType: 'application/json', buffer: text });
   await page.waitForFunction(() => /map_mp/.test(document.getElementById('scenario-name').textContent));
   await waitState('idle');
@@ -282,7 +282,7 @@ test('narrow screens stack the C-space view under the workspace', async () => {
 });
 
 test('open file: an ASV problem is drawn as a chain of vehicles; its solution downloads when the core writes one', async () => {
-  const text = readFileSync('/work/shared/data/asv/3ASV-easy.txt');
+  const text = readFileSync(join(ROOT, 'tests/data/asv/3ASV-easy.txt'));
   await page.setInputFiles('#file', { name: '3ASV-easy.txt', mimeType: 'text/plain', buffer: text });
   await page.waitForFunction(() => /3ASV/.test(document.getElementById('scenario-name').textContent));
   await waitState('idle');
