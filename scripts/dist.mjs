@@ -38,6 +38,13 @@ cpSync(www, out, {
   filter: (src) => src === www || !skip(src.split(sep).pop()),
 });
 
+// The licences: Planarium's own and the third-party notices (scripts/notices.mjs), for whoever copies
+// the folder onto a course site.
+for (const f of ['LICENSE-MIT', 'LICENSE-APACHE', 'THIRD_PARTY_NOTICES.md']) {
+  if (!existsSync(join(root, f))) fail(`${f} is missing`);
+  cpSync(join(root, f), join(out, f));
+}
+
 // Every URL relative: no "/…" (root of the host) and no "http(s)://" in src/href, imports, workers or fetches;
 // every page with the CSP <meta> and nothing inline.
 const problems = [];

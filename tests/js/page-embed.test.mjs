@@ -256,3 +256,19 @@ test('autoplay waits until the embed is scrolled into view, then runs from the s
   assert.ok((await look(p, '#below')).pixels[0] > 50, 'the tree is drawn');
   await p.close();
 });
+
+test('the static copy carries the licences and the third-party notices, served like the pages', async () => {
+  const dir = join(tmp, 'course', 'notes', 'planarium');
+  for (const f of ['LICENSE-MIT', 'LICENSE-APACHE', 'THIRD_PARTY_NOTICES.md']) {
+    assert.equal(readFileSync(join(dir, f), 'utf8'), readFileSync(join(root, f), 'utf8'), `${f} copied as it is`);
+  }
+  const res = await fetch(`${notes}planarium/THIRD_PARTY_NOTICES.md`);
+  assert.equal(res.status, 200);
+  const text = await res.text();
+  // the crates the wasm core is built on, each with its licence text
+  for (const crate of ['nalgebra', 'parry2d-f64', 'serde_json', 'wasm-bindgen', 'rand_xoshiro', 'png']) {
+    assert.match(text, new RegExp(`^\\| ${crate} \\| [^|]+ \\| [^|]+ \\| wasm`, 'm'), `${crate} listed as in the wasm core`);
+  }
+  assert.match(text, /Apache License\s+Version 2\.0/);
+  assert.match(text, /Permission is hereby granted, free of charge/);
+});
