@@ -24,6 +24,22 @@ function out(cmd) {
 const cargoBin = join(process.env.HOME || '/root', '.cargo', 'bin');
 if (!process.env.PATH.split(':').includes(cargoBin)) process.env.PATH = `${cargoBin}:${process.env.PATH}`;
 
+// rust-toolchain.toml pins the toolchain by version. A machine whose toolchain is that version
+// under another name (rustup's `stable`) gets the version's name linked to it, so nothing is
+// downloaded; else rustup installs it. Asked outside the clone, where the pin does not apply.
+const pinned = (readFileSync(join(root, 'rust-toolchain.toml'), 'utf8').match(/^channel\s*=\s*"([^"]+)"/m) || [])[1];
+if (pinned && out('rustup --version')) {
+  const outside = { cwd: dirname(root) === root ? '/' : dirname(root) };
+  const ask = (cmd) => { const r = spawnSync('sh', ['-c', cmd], { encoding: 'utf8', ...outside }); return r.status === 0 ? r.stdout.trim() : ''; };
+  const installed = ask('rustup toolchain list').split('\n').map((l) => l.split(' ')[0]);
+  if (!installed.some((t) => t === pinned || t.startsWith(`${pinned}-`))) {
+    const dflt = installed.find((t) => ask(`rustup run ${t} rustc --version`).startsWith(`rustc ${pinned} `));
+    const path = dflt && ask(`rustup run ${dflt} rustc --print sysroot`);
+    if (path) sh(`rustup toolchain link ${pinned} "${path}"`, outside);
+    else sh(`rustup toolchain install ${pinned} --profile minimal --component rustfmt clippy --target wasm32-unknown-unknown`, outside);
+  }
+}
+
 if (!out('cargo --version')) {
   console.error('[setup] cargo is missing: install the Rust toolchain with rustup first.');
   process.exit(1);
