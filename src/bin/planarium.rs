@@ -33,11 +33,7 @@ fn with_param_flags(mut cmd: Command) -> Command {
     for p in all_param_specs() {
         let id: &'static str = p.name;
         cmd = cmd.arg(
-            Arg::new(id)
-                .long(&*Box::leak(param_flag(p.name).into_boxed_str()))
-                .value_name("VALUE")
-                .help(p.doc)
-                .help_heading("Planner parameters"),
+            Arg::new(id).long(param_flag(p.name)).value_name("VALUE").help(p.doc).help_heading("Planner parameters"),
         );
     }
     cmd
@@ -48,6 +44,7 @@ fn cli() -> Command {
         .required(true)
         .help("Scenario JSON file, a course file (Technion map JSON, ASV problem text), an occupancy map (map_server's map.yaml naming its image, or a plain .pgm/.png image: dark is occupied), or the id of a built-in scenario (see `list`)");
     Command::new("planarium")
+        .version(env!("CARGO_PKG_VERSION"))
         .about("Motion-planning playground core: plan, benchmark and validate scenarios")
         .subcommand_required(true)
         .subcommand(with_param_flags(
