@@ -1,0 +1,56 @@
+// The repository's own promises, checked by `npm test` before anything is built:
+// - nothing the tests, scripts, benchmarks or fuzz targets run reads outside the clone (a public
+//   clone has nothing beside it: course files the tests use live in tests/data/);
+// - THIRD_PARTY_NOTICES.md is what Cargo.lock and package.json give now (scripts/notices.mjs);
+// - CHANGELOG.md names every golden fingerprint pinned in tests/golden/runs.json (a figure in
+//   someone's course notes changes when one does, so each change is written down).
+import { execFileSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { notices, NOTICES } from './notices.mjs';
+
+const root = join(dirname(fileURLToPath(import.meta.url)), '..');
+const problems = [];
+
+// 1. Paths outside the clone: the developers' ../shared, absolute paths of this workplace, or a
+//    join that climbs out of the root.
+const OUTSIDE = [
+  [/\.\.\/shared\b|\bshared\/(data|seeds|docs)\b/, 'names ../shared (copy what it needs into tests/data/)'],
+  [/['"`]\/work\//, 'names an absolute path of this machine'],
+  [/['"]\.\.['"]\s*,\s*['"]shared['"]/, 'joins a path to ../shared'],
+  [/CARGO_MANIFEST_DIR"\),\s*"\/\.\.\//, 'climbs out of the crate root'],
+];
+const tracked = execFileSync('git', ['ls-files', '--', 'tests', 'scripts', 'benches', 'bench', 'fuzz', '.ci', 'package.json', 'www'],
+  { cwd: root, encoding: 'utf8' }).split('\n').filter((f) => f && /\.(rs|m?js|sh|json|toml|cpp|h|py)$|^\.ci\//.test(f));
+const self = 'scripts/check-repo.mjs';
+for (const file of tracked) {
+  if (file === self || file.startsWith('www/pkg/')) continue;
+  const lines = readFileSync(join(root, file), 'utf8').split('\n');
+  lines.forEach((line, i) => {
+    for (const [re, why] of OUTSIDE) if (re.test(line)) problems.push(`${file}:${i + 1}: ${why}: ${line.trim().slice(0, 120)}`);
+  });
+}
+
+// 2. The notices.
+if (readFileSync(NOTICES, 'utf8') !== notices()) {
+  problems.push('THIRD_PARTY_NOTICES.md is out of date: run node scripts/notices.mjs and commit it');
+}
+
+// 3. Every golden fingerprint named in the changelog.
+const changelog = readFileSync(join(root, 'CHANGELOG.md'), 'utf8');
+const cases = JSON.parse(readFileSync(join(root, 'tests', 'golden', 'cases.json'), 'utf8'));
+const runs = JSON.parse(readFileSync(join(root, 'tests', 'golden', 'runs.json'), 'utf8'));
+runs.forEach((r, i) => {
+  if (!changelog.includes(r.events)) {
+    const c = cases[i] || {};
+    problems.push(`CHANGELOG.md does not name the golden run ${c.scenario} ${c.planner} seed ${c.seed} (events ${r.events}): `
+      + 'say in its "Golden runs" section what changed it');
+  }
+});
+
+if (problems.length) {
+  console.error(`[check-repo] ${problems.length} problem(s):\n${problems.map((p) => `  ${p}`).join('\n')}`);
+  process.exit(1);
+}
+console.log(`[check-repo] ${tracked.length} files read nothing outside the clone; notices current; ${runs.length} golden runs named in CHANGELOG.md`);
