@@ -378,6 +378,11 @@ fn rrt_connect_threads_the_long_gap_in_valid_primitive_steps() {
 fn solve_within_a_minute(sc: &Scenario, mut p: Params, seed: u64) -> Vec<(bool, Vec<Vec<f64>>)> {
     let spec = planners::find("rrt-connect").unwrap();
     p.set_text(spec, "time_limit", "60").unwrap();
+    solve_and_recheck(sc, p, seed)
+}
+
+/// [`solve_within_a_minute`] within `p`'s own limits.
+fn solve_and_recheck(sc: &Scenario, p: Params, seed: u64) -> Vec<(bool, Vec<Vec<f64>>)> {
     let problem = Problem::from_scenario(sc).unwrap();
     let mut s =
         Session::new(problem, RunConfig { planner: "rrt-connect".into(), params: p, seed, record_events: false })
@@ -439,4 +444,36 @@ fn rrt_connect_with_ladder_steps_solves_fifteen_vehicles() {
         ladders += 1;
     }
     assert!(ladders > 20, "{ladders} ladder steps in 3000 iterations");
+}
+
+/// A course file as a student of the top band writes one (`tests/data/asv-large/15ASV-7map.txt`:
+/// 15 vehicles in the 7ASV map, in the course's format) gets the long chain's settings when it is
+/// opened, the notes say so, and those settings solve it; the official files keep the short chain's.
+/// The runs are bounded by iterations, not time, so a busy machine cannot change the outcome: seeds
+/// 2 and 9 solve in 27,193 and 13,371 iterations (about 3 s each natively).
+#[test]
+fn a_fifteen_vehicle_course_file_gets_the_settings_that_solve_it() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/asv-large/15ASV-7map.txt");
+    let sc = planarium::io::import(&std::fs::read_to_string(path).unwrap(), "15ASV-7map").unwrap();
+    let block = sc.planner.as_ref().unwrap();
+    assert_eq!(block.name, "rrt-connect");
+    assert_eq!((block.params["range"].as_f64(), block.params["ladder"].as_f64()), (Some(0.05), Some(8.0)));
+    assert!(
+        sc.notes.contains("range 0.05 and 8 ladder steps") && sc.notes.contains("this one has 15"),
+        "the notes say which settings were used: {}",
+        sc.notes
+    );
+    for file in official_files() {
+        let official = import(&file);
+        let p = &official.planner.as_ref().unwrap().params;
+        assert_eq!((p["range"].as_f64(), p.get("ladder")), (Some(0.1), None), "{file}");
+        assert!(official.notes.contains("Planner: RRT-Connect with range 0.1,"), "{file}: {}", official.notes);
+    }
+    let spec = planners::find("rrt-connect").unwrap();
+    for seed in [2, 9] {
+        let mut params = Params::from_json(spec, &serde_json::Value::Object(block.params.clone())).unwrap();
+        params.set_text(spec, "max_iterations", "60000").unwrap();
+        params.set_text(spec, "time_limit", "3600").unwrap();
+        solve_and_recheck(&sc, params, seed);
+    }
 }

@@ -308,6 +308,25 @@ test('open file: an ASV problem is drawn as a chain of vehicles; its solution do
   assert.deepEqual(lines[1].trim().split(/\s+/).map(Number), problemStart);
 });
 
+test('open file: a 15-vehicle course file gets the long chain\'s settings, and the page says which', async () => {
+  const text = readFileSync(join(ROOT, 'tests/data/asv-large/15ASV-7map.txt'));
+  await page.setInputFiles('#file', { name: '15ASV-7map.txt', mimeType: 'text/plain', buffer: text });
+  await page.waitForFunction(() => /15ASV-7map/.test(document.getElementById('scenario-name').textContent));
+  await waitState('idle');
+  assert.equal(await page.$eval('#planner', (s) => s.value), 'rrt-connect');
+  assert.equal(await page.inputValue('#param-ladder'), '8');
+  assert.equal(await page.inputValue('#param-range'), '0.05');
+  const notes = await page.textContent('#scenario-notes');
+  assert.match(notes, /Planner: RRT-Connect with range 0\.05 and 8 ladder steps, the settings for a chain of 8 vehicles or more \(this one has 15\)/);
+  // the official 7-vehicle file keeps the short chain's settings
+  await page.setInputFiles('#file', { name: '7ASV.txt', mimeType: 'text/plain', buffer: readFileSync(join(ROOT, 'tests/data/asv/7ASV.txt')) });
+  await page.waitForFunction(() => /7ASV/.test(document.getElementById('scenario-name').textContent));
+  await waitState('idle');
+  assert.equal(await page.inputValue('#param-range'), '0.1');
+  assert.equal(await page.inputValue('#param-ladder'), '0');
+  assert.match(await page.textContent('#scenario-notes'), /Planner: RRT-Connect with range 0\.1, the settings for a chain of fewer than 8 vehicles \(this one has 7\)/);
+});
+
 test('asv-15: the scenario\'s ladder steps are in the panel, the run solves in the worker as natively, and the explain panel captions a ladder step', async () => {
   await pickScenario('asv-15', 'Fifteen vehicles in the 7ASV map (ASV 15)');
   assert.equal(await page.inputValue('#param-ladder'), '8', 'the scenario\'s planner block sets 8 ladder steps');

@@ -151,8 +151,12 @@ pub fn import_problem(text: &str, name: &str) -> Result<Scenario, ScenarioError>
     }
     let title = if name.trim().is_empty() { "ASV problem".to_string() } else { crate::limits::cut(name, 100) };
     let area = min_area(n);
+    let defaults = CourseDefaults::for_chain(n);
     let mut params = serde_json::Map::new();
-    params.insert("range".into(), serde_json::json!(DEFAULT_RANGE));
+    params.insert("range".into(), serde_json::json!(defaults.range));
+    if defaults.ladder > 0 {
+        params.insert("ladder".into(), serde_json::json!(defaults.ladder));
+    }
     Ok(Scenario {
         format: FORMAT.to_string(),
         name: title.clone(),
@@ -160,7 +164,8 @@ pub fn import_problem(text: &str, name: &str) -> Result<Scenario, ScenarioError>
             "{title}: {n} vehicles in a chain joined by brooms {BROOM} long, from an ASV problem file (UQ COMP3702). \
              The chain must stay convex with an area of at least {area:.6}, keep its brooms off the obstacles \
              (touching allowed), and move no vehicle more than {MAX_STEP} per step. The planner searches the \
-             centroid, the first broom's heading and the chain's turns; the tree is drawn at the centroid."
+             centroid, the first broom's heading and the chain's turns; the tree is drawn at the centroid. {}",
+            defaults.sentence(n)
         ),
         bounds: [0.0, 0.0, 1.0, 1.0],
         obstacles,
@@ -177,8 +182,56 @@ pub fn import_problem(text: &str, name: &str) -> Result<Scenario, ScenarioError>
     })
 }
 
-/// RRT-Connect's step range for imported problems (in the chain's metric; see `robot::AsvRobot`).
+/// RRT-Connect's step range for imported problems of up to [`LONG_CHAIN`]` - 1` vehicles (in the
+/// chain's metric; see `robot::AsvRobot`).
 pub const DEFAULT_RANGE: Real = 0.1;
+
+/// From this many vehicles an imported problem gets [`LONG_CHAIN_RANGE`] and [`LONG_CHAIN_LADDER`].
+/// The official files have 3 and 7 vehicles, and solve fastest with [`DEFAULT_RANGE`] and no ladder
+/// (7ASV, seeds 1-30: median 111 ms against 200 ms); a 15-vehicle chain in the 7ASV map solves
+/// in seconds with the shorter step and the ladder, and often not in a minute without them
+/// (`docs/performance.md`, "The ladder move and a shorter step").
+pub const LONG_CHAIN: usize = 8;
+/// RRT-Connect's range for a chain of [`LONG_CHAIN`] vehicles or more.
+pub const LONG_CHAIN_RANGE: Real = 0.05;
+/// Ladder steps for a chain of [`LONG_CHAIN`] vehicles or more.
+pub const LONG_CHAIN_LADDER: u32 = 8;
+
+/// The planner settings an imported problem file starts with, chosen from its chain's length.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CourseDefaults {
+    /// RRT-Connect's step range.
+    pub range: Real,
+    /// Ladder steps after a blocked step (0: none).
+    pub ladder: u32,
+}
+
+impl CourseDefaults {
+    /// The settings for a chain of `n` vehicles.
+    pub fn for_chain(n: usize) -> CourseDefaults {
+        if n >= LONG_CHAIN {
+            CourseDefaults { range: LONG_CHAIN_RANGE, ladder: LONG_CHAIN_LADDER }
+        } else {
+            CourseDefaults { range: DEFAULT_RANGE, ladder: 0 }
+        }
+    }
+    /// What the scenario's notes say of them, so the page shows which were used and why.
+    fn sentence(&self, n: usize) -> String {
+        if self.ladder > 0 {
+            format!(
+                "Planner: RRT-Connect with range {} and {} ladder steps, the settings for a chain of {LONG_CHAIN} \
+                 vehicles or more (this one has {n}), which solve long chains in the course's cluttered maps.",
+                self.range, self.ladder
+            )
+        } else {
+            format!(
+                "Planner: RRT-Connect with range {}, the settings for a chain of fewer than {LONG_CHAIN} vehicles \
+                 (this one has {n}).",
+                self.range
+            )
+        }
+    }
+}
 
 /// The course's solution file for `path`, a path of planning states from `problem`'s start to its
 /// goal (as `Session::planning_path` returns it). Every motion is cut into the primitive steps the
