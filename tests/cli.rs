@@ -39,3 +39,32 @@ fn every_registry_parameter_is_a_flag_of_plan_and_bench() {
     assert_eq!(r["params"]["goal_bias"], 0.3);
     assert_eq!(r["seed"], 2);
 }
+
+#[test]
+fn a_reader_that_closes_the_pipe_ends_the_command_quietly() {
+    use std::io::Read;
+    use std::process::Stdio;
+    // `planarium validate big.json | head -c 100`: the scenario printed back is far more than a
+    // pipe holds, so the command is still writing when the reader closes the pipe.
+    let obstacles: Vec<serde_json::Value> = (0..20_000)
+        .map(|i| serde_json::json!({"rect": [0.3 + (i % 100) as f64 * 0.004, 0.3 + (i / 100) as f64 * 0.002, 0.3 + (i % 100) as f64 * 0.004 + 0.001, 0.3 + (i / 100) as f64 * 0.002 + 0.001]}))
+        .collect();
+    let doc = serde_json::json!({"bounds": [0, 0, 1, 1], "obstacles": obstacles, "robot": {"kind": "point"},
+        "start": [0.1, 0.1], "goal": [0.9, 0.9], "resolution": 0.01});
+    let file = std::env::temp_dir().join(format!("planarium-cli-pipe-{}.json", std::process::id()));
+    std::fs::write(&file, doc.to_string()).unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_planarium"))
+        .args(["validate", file.to_str().unwrap()])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = [0u8; 100];
+    child.stdout.as_mut().unwrap().read_exact(&mut first).unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    std::fs::remove_file(&file).ok();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!err.contains("panicked"), "a panic on the closed pipe: {err}");
+    assert!(first.starts_with(b"{"), "{}", String::from_utf8_lossy(&first));
+}

@@ -482,6 +482,13 @@ fn export_map(m: &ArgMatches) -> Result<(), String> {
 }
 
 fn main() -> ExitCode {
+    // A closed pipe ends the process as it ends other command-line tools (the shell sees SIGPIPE),
+    // instead of a panic on the next write: Rust starts programs with SIGPIPE ignored.
+    #[cfg(unix)]
+    // SAFETY: called once, first thing, before any other thread exists; SIG_DFL is a valid handler.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
     let m = cli().get_matches();
     let r = match m.subcommand() {
         Some(("plan", m)) => plan(m),
