@@ -119,7 +119,7 @@ fn cli() -> Command {
         ))
         .subcommand(
             Command::new("scaling")
-                .about("Time one state check among 10 to 100,000 obstacles, for the point, a rectangle and an arm (issue 15)")
+                .about("Time one state check among 10 to 100,000 obstacles, for the point, a rectangle and an arm")
                 .arg(Arg::new("robots").long("robots").default_value("").help("Comma-separated robots (point, rectangle, arm; default: all)"))
                 .arg(Arg::new("sizes").long("sizes").default_value("10,100,1000,10000,100000").help("Comma-separated obstacle counts"))
                 .arg(Arg::new("checks").long("checks").default_value("200000").value_parser(clap::value_parser!(u64)).help("State checks per robot and size"))
@@ -280,7 +280,7 @@ fn plan(m: &ArgMatches) -> Result<(), String> {
     Ok(())
 }
 
-/// For a point robot or a round rigid one (issue 17): the visibility graph's optimum, and how far
+/// For a point robot or a round rigid one: the visibility graph's optimum, and how far
 /// above it the path is. Nothing for other robots, maps of more than 5,000 obstacles, or a graph
 /// that takes more than 5 s.
 fn print_optimum(sc: &Scenario, planner: &str, cost: Option<f64>, smoothed: Option<f64>) {

@@ -34,7 +34,7 @@ pub fn course_of(id: &str) -> &'static str {
     match id {
         "slot" | "arm-3" => "Polygon robot and chain (report 003)",
         "arm-2" => "Configuration space",
-        _ if id.starts_with("horn-") || id.starts_with("ompl-") => "OMPL benchmarks (issue 7)",
+        _ if id.starts_with("horn-") || id.starts_with("ompl-") => "OMPL benchmarks",
         _ if id.starts_with("technion-") => "Technion manipulator and inspection (report 004)",
         _ if id.starts_with("asv-") => "Vehicles joined by brooms (report 000)",
         _ if id.starts_with("apf-") || id.starts_with("hex-") => "Hexagons and potential fields (report 002)",

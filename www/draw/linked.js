@@ -1,4 +1,4 @@
-// Linked views (issue 14): what the pointer is over in one view, shown in the other.
+// Linked views: what the pointer is over in one view, shown in the other.
 //   c-space → workspace: hovering (q1, q2) on the configuration-space canvas of a 2-joint arm
 //     draws a ghost arm in that pose on the workspace canvas, red where the c-space grid (the
 //     core's answer, as drawn) says the pose collides, purple where it is free, and a small label
