@@ -197,8 +197,8 @@ test('a WebM at the chosen width with a real duration: it seeks', async () => {
   await solve('narrow', 'Narrow passage');
   await page.fill('#video-width', '640');
   await watchCanvas();
-  await page.click('#record');
-  assert.match(await page.textContent('#export-status'), /Recording 640 × 640/);
+  await page.click('#record'); // the run so far is drawn first (in steps), then recording starts
+  await page.waitForFunction(() => /Recording 640 × 640/.test(document.getElementById('export-status').textContent));
   await page.waitForTimeout(1500); // a clip of about 1.5 s (no assertion rests on how long)
   const webm = await download(() => page.click('#record'));
   assert.match(webm.name, /-640\.webm$/);
