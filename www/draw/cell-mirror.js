@@ -34,7 +34,7 @@ export class CellMirror {
       case EventKind.CELL: {
         const n = d[o + 8] | 0;
         this.cells.set(id, { id, level: d[o + 1], parent: d[o + 3], x: d[o + 4], y: d[o + 5], label: d[o + 6],
-          radius: d[o + 7], n, pts: [], done: false, state: -1, why: 0, from: -1, attempt: -1, terms: null });
+          radius: d[o + 7], n, pts: [], done: false, state: -1, why: 0, from: -1, attempt: -1, terms: null, box: null, rect: false, k: -1 });
         if (d[o + 3] >= 0) this.split.add(d[o + 3]);
         return;
       }
