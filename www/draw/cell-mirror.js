@@ -12,6 +12,11 @@ export class CellMirror {
     this.cells = new Map(); // id → {id, level, parent, x, y, label, radius, n, pts, done, state, why, from, terms, ...}
     this.split = new Set(); // ids of cells refined into children (a child's CELL has come)
     this.order = [];        // ids of complete cells, in arrival order
+    this.orderCells = [];   // the same cells (drawn without a lookup each)
+    // the same cells as a table, row k for orderCells[k]: what drawing a million small ones reads,
+    // in typed arrays (one object each would be a cache miss each): box [x0, y0, x1, y1], drawing
+    // level (0–3), label, state, and whether an axis-aligned rectangle
+    this.table = { box: new Float64Array(0), level: new Int8Array(0), label: new Int8Array(0), state: new Int8Array(0), rect: new Uint8Array(0) };
     this.changed = [];      // ids whose verdict changed since the latest REGION, in order
     this.regions = [];      // [{attempt, x, y, radius, limit, inside, t}]
     this.field = [];        // the current field: [{id, x, y, v, a, b, dx, dy, half}]
@@ -59,6 +64,8 @@ export class CellMirror {
             || (p[1] === p[3] && p[5] === p[7] && p[0] === p[6] && p[2] === p[4]));
           c.k = this.order.length;
           this.order.push(id);
+          this.orderCells.push(c);
+          this.tableRow(c);
         }
         return;
       }
@@ -69,6 +76,7 @@ export class CellMirror {
         // the cell stays open (closed); the blocked step is in the explain panel's caption.
         if (d[o + 6] === 1 && (c.state === 0 || c.state === 2)) return;
         c.state = d[o + 6];
+        if (c.k >= 0) this.table.state[c.k] = c.state;
         c.why = d[o + 7];
         c.from = d[o + 3];
         c.attempt = this.attempt;
@@ -84,7 +92,11 @@ export class CellMirror {
       }
       case EventKind.REGION:
         // a new attempt: the search starts again from the start, its verdicts and field with it
-        for (const k of this.changed) { const c = this.cells.get(k); if (c) c.state = -1; }
+        for (const k of this.changed) {
+          const c = this.cells.get(k);
+          if (c) c.state = -1;
+          if (c?.k >= 0) this.table.state[c.k] = -1;
+        }
         this.changed = [];
         this.field = [];
         this.regions.push({ attempt: id, x: d[o + 4], y: d[o + 5], radius: d[o + 6], limit: d[o + 7], inside: d[o + 8], t: d[o + 9] });
@@ -100,6 +112,22 @@ export class CellMirror {
         return;
       default:
     }
+  }
+
+  /** Row c.k of the table: complete cell `c` (the arrays grow by doubling). */
+  tableRow(c) {
+    const t = this.table, k = c.k;
+    if (k >= t.level.length) {
+      const cap = Math.max(1024, 2 * t.level.length);
+      const grow = (a, n) => { const b = new a.constructor(n); b.set(a); return b; };
+      t.box = grow(t.box, 4 * cap);
+      t.level = grow(t.level, cap); t.label = grow(t.label, cap); t.state = grow(t.state, cap); t.rect = grow(t.rect, cap);
+    }
+    t.box.set(c.box, 4 * k);
+    t.level[k] = Math.min(3, Math.max(0, c.level | 0));
+    t.label[k] = c.label;
+    t.state[k] = c.state;
+    t.rect[k] = c.rect ? 1 : 0;
   }
 
   /**

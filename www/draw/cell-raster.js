@@ -28,8 +28,8 @@ function pixelOf(css) {
 
 /** Whether complete cell `c` (a CellMirror cell, with its `box`) is small at layout `L`. */
 export function smallCell(c, L) {
-  const [x0, y0, x1, y1] = c.box;
-  return (x1 - x0) * L.scale < SMALL_CELL_PX && (y1 - y0) * L.scale < SMALL_CELL_PX;
+  const b = c.box;
+  return (b[2] - b[0]) * L.scale < SMALL_CELL_PX && (b[3] - b[1]) * L.scale < SMALL_CELL_PX;
 }
 
 /** The small cells' pixels of one cells layer. */
@@ -42,6 +42,8 @@ export class CellRaster {
     this.canvas = null;
     this.dirty = null;  // [x0, y0, x1, y1) of pixels changed since the last flush
     this.blank = true;  // no pixel set since the last clear
+    this.fill = null;   // the last colour painted, and its pixel
+    this.px = null;
   }
 
   /** Forget every pixel; the layer is `L.width` × `L.height` from now on. */
@@ -63,14 +65,16 @@ export class CellRaster {
    * done) when the colour is not an opaque '#rrggbb', so the caller draws the cell as a path.
    */
   paint(c, L, fill) {
-    const px = pixelOf(fill);
+    if (c.rect) return this.paintBox(c.box[0], c.box[1], c.box[2], c.box[3], fill, L);
+    if (fill !== this.fill) { this.fill = fill; this.px = pixelOf(fill); }
+    const px = this.px;
     if (px === null) return false;
     if (L.width !== this.width || L.height !== this.height) this.clear(L);
     const W = this.width, H = this.height;
-    const [x0, y0, x1, y1] = c.box;
+    const b = c.box, s = L.scale;
     // pixels i whose centre i + 0.5 lies in [sx(x0), sx(x1)), rows likewise from the top
-    const i0 = Math.max(0, Math.ceil(L.sx(x0) - 0.5)), i1 = Math.min(W, Math.ceil(L.sx(x1) - 0.5));
-    const j0 = Math.max(0, Math.ceil(L.sy(y1) - 0.5)), j1 = Math.min(H, Math.ceil(L.sy(y0) - 0.5));
+    const i0 = Math.max(0, Math.ceil(L.ox + b[0] * s - 0.5)), i1 = Math.min(W, Math.ceil(L.ox + b[2] * s - 0.5));
+    const j0 = Math.max(0, Math.ceil(L.oy - b[3] * s - 0.5)), j1 = Math.min(H, Math.ceil(L.oy - b[1] * s - 0.5));
     if (i0 >= i1 || j0 >= j1) return true;
     if (!this.pixels) {
       this.image = new ImageData(W, H);
@@ -84,7 +88,44 @@ export class CellRaster {
     }
     this.blank = false;
     const d = this.dirty;
-    this.dirty = d ? [Math.min(d[0], i0), Math.min(d[1], j0), Math.max(d[2], i1), Math.max(d[3], j1)] : [i0, j0, i1, j1];
+    if (!d) this.dirty = [i0, j0, i1, j1];
+    else {
+      if (i0 < d[0]) d[0] = i0;
+      if (j0 < d[1]) d[1] = j0;
+      if (i1 > d[2]) d[2] = i1;
+      if (j1 > d[3]) d[3] = j1;
+    }
+    return true;
+  }
+
+  /**
+   * Paint the axis-aligned rectangle [x0, y0, x1, y1] (world) in `fill`: every pixel whose centre
+   * lies in it. False when the colour is not an opaque '#rrggbb'.
+   */
+  paintBox(x0, y0, x1, y1, fill, L) {
+    if (fill !== this.fill) { this.fill = fill; this.px = pixelOf(fill); }
+    const px = this.px;
+    if (px === null) return false;
+    if (L.width !== this.width || L.height !== this.height) this.clear(L);
+    const W = this.width, s = L.scale;
+    const i0 = Math.max(0, Math.ceil(L.ox + x0 * s - 0.5)), i1 = Math.min(W, Math.ceil(L.ox + x1 * s - 0.5));
+    const j0 = Math.max(0, Math.ceil(L.oy - y1 * s - 0.5)), j1 = Math.min(this.height, Math.ceil(L.oy - y0 * s - 0.5));
+    if (i0 >= i1 || j0 >= j1) return true;
+    if (!this.pixels) {
+      this.image = new ImageData(W, this.height);
+      this.pixels = new Uint32Array(this.image.data.buffer);
+    }
+    const p = this.pixels;
+    for (let j = j0; j < j1; j++) p.fill(px, j * W + i0, j * W + i1);
+    this.blank = false;
+    const d = this.dirty;
+    if (!d) this.dirty = [i0, j0, i1, j1];
+    else {
+      if (i0 < d[0]) d[0] = i0;
+      if (j0 < d[1]) d[1] = j0;
+      if (i1 > d[2]) d[2] = i1;
+      if (j1 > d[3]) d[3] = j1;
+    }
     return true;
   }
 

@@ -20,7 +20,7 @@
 import { EventKind } from '../run/events.js';
 import { PALETTE, STYLE } from './palette.js';
 import { drawObstacle, pointInPolygon } from './transform.js';
-import { CellRaster, smallCell } from './cell-raster.js';
+import { CellRaster, SMALL_CELL_PX, smallCell } from './cell-raster.js';
 
 export { CellMirror } from './cell-mirror.js';
 
@@ -115,12 +115,12 @@ export class CellsDrawing {
     let drew = false;
     const { ctx } = this.layer;
     if (this.drawn < m.order.length) {
-      if (o.showCells) this.drawCells(ctx, L, o, m.order, this.drawn, m.order.length);
+      if (o.showCells) this.drawCells(ctx, L, o, m.orderCells, this.drawn, m.order.length);
       this.drawn = m.order.length;
       drew = true;
     }
     if (this.statesDrawn < m.changed.length) {
-      if (o.showCells) this.drawCells(ctx, L, o, m.changed, this.statesDrawn, m.changed.length);
+      if (o.showCells) this.drawCells(ctx, L, o, cellsOf(m, m.changed, this.statesDrawn), 0, m.changed.length - this.statesDrawn);
       this.statesDrawn = m.changed.length;
       drew = true;
     }
@@ -140,31 +140,44 @@ export class CellsDrawing {
     this.fieldSeen = m.fieldVersion;
     this.drawn = m.order.length;
     this.statesDrawn = m.changed.length;
-    if (o.showCells) this.drawCells(ctx, L, o, m.order, 0, m.order.length);
+    if (o.showCells) this.drawCells(ctx, L, o, m.orderCells, 0, m.order.length);
     if (o.showHeat && m.field.length) {
       this.drawHeat(ctx, L);
-      if (o.showCells) this.drawCells(ctx, L, o, m.changed, 0, m.changed.length, true); // the × marks
+      if (o.showCells) this.drawCells(ctx, L, o, cellsOf(m, m.changed, 0), 0, m.changed.length, true); // the × marks
     }
     if (o.showArrows && m.field.length) this.drawArrows(ctx, L);
   }
 
   /**
-   * Cells ids[from, to) filled by label and level, or by verdict (× on step-blocked cells);
+   * Cells cells[from, to) (CellMirror cells) filled by label and level, or by verdict (× on step-blocked cells);
    * `overHeat`: outlines and marks only, over the heat map. A few paths, not one a cell: the cells
    * of a level are filled one colour at a time, then outlined at once, level by level (a refined
    * cell's children, a level down, cover it); cells under SMALL_CELL_PX are painted as pixels.
    */
-  drawCells(ctx, L, o, ids, from, to, overHeat = false) {
-    const m = this.mirror;
+  drawCells(ctx, L, o, cells, from, to, overHeat = false) {
     const st = STYLE[EventKind.CELL];
     const marks = [];
     const levels = new Map(); // level → Map(fill → [cell])
+    const raster = this.raster;
+    // the mirror's own list: its small rectangles are read from its table (no object each)
+    const m = this.mirror;
+    const t = cells === m?.orderCells && !overHeat ? m.table : null;
+    const small = SMALL_CELL_PX / L.scale;
     for (let k = from; k < to; k++) {
-      const c = m.cells.get(ids[k]);
+      if (t && t.rect[k]) {
+        const b = 4 * k;
+        const x0 = t.box[b], y0 = t.box[b + 1], x1 = t.box[b + 2], y1 = t.box[b + 3];
+        if (x1 - x0 < small && y1 - y0 < small
+          && raster.paintBox(x0, y0, x1, y1, fillOf(t.state[k], t.label[k], t.level[k], o.showHeat), L)) {
+          if (t.state[k] === 1) marks.push(cells[k]);
+          continue;
+        }
+      }
+      const c = cells[k];
       if (!c || !c.done) continue;
       if (c.state === 1) marks.push(c);
       const fill = cellFill(c, o.showHeat);
-      if (smallCell(c, L) && (overHeat || this.raster.paint(c, L, fill))) continue;
+      if (smallCell(c, L) && (overHeat || raster.paint(c, L, fill))) continue;
       let byFill = levels.get(c.level);
       if (!byFill) levels.set(c.level, byFill = new Map());
       const list = byFill.get(fill);
@@ -330,6 +343,9 @@ export class CellsDrawing {
   }
 }
 
+/** The cells of mirror `m` whose ids are ids[from…]. */
+const cellsOf = (m, ids, from) => ids.slice(from).map((id) => m.cells.get(id));
+
 /** A cell's centre as drawn: the record's, or its outline's mean when that lies outside. */
 function centreOf(c) {
   if (pointInPolygon(c.x, c.y, c.pts)) return [c.x, c.y];
@@ -429,10 +445,15 @@ export const cellLevel = (c) => Math.min(3, Math.max(0, c.level | 0));
  * step-blocked).
  */
 export function cellFill(c, showHeat) {
-  if (!showHeat && c.state === 0) return PALETTE.cellOpen;
-  if (!showHeat && c.state === 2) return PALETTE.cellVisited;
-  if (!showHeat && c.state === 1) return PALETTE.cellBlocked;
-  return c.label === 1 ? PALETTE.cellMixed : c.label === 2 || c.state === 4 ? PALETTE.cellFull : PALETTE.cellFree[cellLevel(c)];
+  return fillOf(c.state, c.label, cellLevel(c), showHeat);
+}
+
+/** cellFill from a cell's state, label and drawing level. */
+function fillOf(state, label, level, showHeat) {
+  if (!showHeat && state === 0) return PALETTE.cellOpen;
+  if (!showHeat && state === 2) return PALETTE.cellVisited;
+  if (!showHeat && state === 1) return PALETTE.cellBlocked;
+  return label === 1 ? PALETTE.cellMixed : label === 2 || state === 4 ? PALETTE.cellFull : PALETTE.cellFree[level];
 }
 
 /** Legend items for the planner `name` (marks the overlay box does not show). */
