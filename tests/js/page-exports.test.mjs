@@ -341,7 +341,8 @@ test('odd sizes typed into the export fields are bounded, and the status says so
   assert.match(said, /GIF width: not a number, 480 used/);
   assert.match(said, /GIF frames is 2 to 150: 2 used/);
   await page.fill('#video-width', '12');
-  await page.click('#record');
+  await page.click('#record'); // the run is drawn first, then recording starts
+  await page.waitForFunction(() => /^Recording/.test(document.getElementById('export-status').textContent));
   assert.match(await page.textContent('#export-status'), /Recording 320 × 320.*Video width is 320 to 3840: 320 used/);
   // let the recorder write its first cluster: stopped at once, a recording can hold only the EBML
   // header (the page then saves it raw and says so; this test is about the size)

@@ -34,7 +34,7 @@ async function routeCrashingWorker(page) {
   await page.context().route('**/worker.js', async (route) => {
     const res = await route.fetch();
     const body = (await res.text()).replace('function ensureRun() {',
-      "function ensureRun() {\n  if (scenarioText && scenarioText.includes('crash-on-run')) debug_panic('the test scenario crashes the core');");
+      "function ensureRun() {\n  if (scene && scene.scenario_json().includes('crash-on-run')) debug_panic('the test scenario crashes the core');");
     assert.ok(body.includes('crash-on-run'), 'worker.js still has ensureRun()');
     await route.fulfill({ response: res, body });
   });
