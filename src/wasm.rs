@@ -103,7 +103,13 @@ pub fn event_kinds() -> String {
 #[wasm_bindgen]
 pub fn import_file(text: &str, name: &str) -> Result<String, JsError> {
     let sc = crate::io::import(text, name).map_err(|e| error_json(&e))?;
-    Ok(sc.to_json())
+    Ok(compact(&sc))
+}
+
+/// A scenario as compact JSON: what the core hands back to the page is read by the page, not by a
+/// person, and pretty-printing made a file within the 16 MiB limit nearly three times its size.
+fn compact(sc: &Scenario) -> String {
+    serde_json::to_string(sc).expect("a scenario always serialises")
 }
 
 /// Read an occupancy map (`io::occupancy`): `bytes` the image (PGM or PNG) named `name`, `yaml`
@@ -118,7 +124,7 @@ pub fn import_map(
 ) -> Result<String, JsError> {
     let y = yaml.as_deref().map(|t| (t, yaml_name.as_deref().unwrap_or("map.yaml")));
     let sc = crate::io::occupancy::import_image(bytes, name, y).map_err(|e| error_json(&e))?;
-    Ok(sc.to_json())
+    Ok(compact(&sc))
 }
 
 /// The image a map_server YAML names (its `image` key), so the page can ask for it; errors as
@@ -165,12 +171,39 @@ impl Scene {
     #[wasm_bindgen(constructor)]
     pub fn new(text: &str) -> Result<Scene, JsError> {
         let sc = Scenario::from_json(text).map_err(|e| error_json(&e))?;
-        let inner = Problem::from_scenario(&sc).map_err(|e| error_json(&e))?;
+        Scene::of(&sc)
+    }
+    /// Read any supported file (as [`import_file`]) straight into a scene: the text limit applies to
+    /// `text`, what the user opened, and the scenario is not written out and read again (its JSON
+    /// can be longer than the file: a Technion map's numbers, a compact file pretty-printed).
+    pub fn from_file(text: &str, name: &str) -> Result<Scene, JsError> {
+        let sc = crate::io::import(text, name).map_err(|e| error_json(&e))?;
+        Scene::of(&sc)
+    }
+    /// An occupancy map (as [`import_map`]) straight into a scene.
+    pub fn from_map(
+        bytes: &[u8],
+        name: &str,
+        yaml: Option<String>,
+        yaml_name: Option<String>,
+    ) -> Result<Scene, JsError> {
+        let y = yaml.as_deref().map(|t| (t, yaml_name.as_deref().unwrap_or("map.yaml")));
+        let sc = crate::io::occupancy::import_image(bytes, name, y).map_err(|e| error_json(&e))?;
+        Scene::of(&sc)
+    }
+    fn of(sc: &Scenario) -> Result<Scene, JsError> {
+        let inner = Problem::from_scenario(sc).map_err(|e| error_json(&e))?;
         Ok(Scene { inner })
     }
-    /// The scenario in the contract's normalised form.
+    /// The scenario in the contract's normalised form (compact JSON).
     pub fn scenario_json(&self) -> String {
-        self.inner.scenario.to_json()
+        compact(&self.inner.scenario)
+    }
+    /// A run of `planner` with parameters `params` (a JSON object) and `seed` on this scene, as
+    /// [`Run::new`] on its scenario's text, without writing the scenario out and reading it again.
+    pub fn run(&self, planner: &str, params: &str, seed: f64) -> Result<Run, JsError> {
+        let problem = Problem::from_scenario(&self.inner.scenario).map_err(|e| error_json(&e))?;
+        Run::on(problem, planner, params, seed)
     }
     /// For a two-dimensional planning space (a 2-joint arm, a point): whether each cell centre of an
     /// `n × n` grid over the space is valid (1) or not (0), row by row from the lowest second
@@ -256,16 +289,26 @@ impl Run {
     pub fn new(scenario: &str, planner: &str, params: &str, seed: f64) -> Result<Run, JsError> {
         let sc = Scenario::from_json(scenario).map_err(|e| error_json(&e))?;
         let problem = Problem::from_scenario(&sc).map_err(|e| error_json(&e))?;
+        Run::on(problem, planner, params, seed)
+    }
+}
+
+impl Run {
+    fn on(problem: Problem, planner: &str, params: &str, seed: f64) -> Result<Run, JsError> {
         let spec = planners::find(planner).ok_or_else(|| JsError::new(&format!("unknown planner \"{planner}\"")))?;
         let value: serde_json::Value =
             serde_json::from_str(params).map_err(|e| JsError::new(&format!("parameters: {e}")))?;
         let params = Params::from_json(spec, &value).map_err(|(k, m)| JsError::new(&format!("{k}: {m}")))?;
         if !(seed >= 0.0 && seed.fract() == 0.0 && seed < 9007199254740992.0) {
-            return Err(JsError::new("seed: must be a whole number from 0 to 2^53"));
+            return Err(JsError::new("seed: must be a whole number from 0 to 2^53 - 1 (9007199254740991)"));
         }
         let config = RunConfig { planner: planner.to_string(), params, seed: seed as u64, record_events: true };
         Ok(Run { inner: Session::new(problem, config).map_err(|e| JsError::new(&e))? })
     }
+}
+
+#[wasm_bindgen]
+impl Run {
     /// Run at most `iterations` iterations for at most `max_ms` ms; returns the status name.
     pub fn step(&mut self, iterations: f64, max_ms: f64) -> String {
         self.inner.step(iterations as u64, max_ms).name().to_string()

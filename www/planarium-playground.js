@@ -23,8 +23,10 @@ import { View } from './draw/view.js';
 import { Player } from './run/player.js';
 import { fitViews } from './draw/stage.js';
 import { speedRate, animFps, describeSpeed } from './ui/controls.js';
-import { readShare, setupFor, configOf, overlayOptions, boundedProblems, DEFAULT_CONTROLS, VIEW_DEFAULTS } from './ui/links.js';
+import { readShare, setupFor, configOf, overlayOptions, boundedProblems, DEFAULT_CONTROLS, VIEW_DEFAULTS, MAX_PAIRS, MAX_HASH_CHARS } from './ui/links.js';
 import { applyPageLimits } from './run/limits.js';
+import { shown } from './ui/text.js';
+import { readSeed } from './ui/seed.js';
 
 const KEYS = ['scenario', 'planner', 'seed', 'speed', 'anim', 'overlays', 'step-size', 'raw-path', 'autoplay', 'click', 'controls'];
 const FLAGS = ['raw-path', 'autoplay', 'click'];
@@ -168,20 +170,45 @@ export class PlanariumPlayground extends HTMLElement {
     this.pending = setTimeout(() => this.restore(), 0);
   }
 
-  /** The element's attributes as a share link's hash. */
+  /**
+   * The element's attributes as a share link's hash {text, problems}: `link`, then `params`, then
+   * the explicit attributes (which win over the same keys in the other two). `link` and `params`
+   * are read within the link limits left once the explicit attributes have their room (links.js
+   * MAX_PAIRS pairs, MAX_HASH_CHARS characters), so an oversized `params` is cut, and said so, but
+   * never pushes `scenario`, `planner` or `seed` out of the link.
+   */
   linkText() {
-    const parts = [];
-    const link = this.getAttribute('link');
-    if (link) parts.push(link.replace(/^#/, ''));
-    const params = this.getAttribute('params');
-    if (params) parts.push(params.replace(/^[#?&]/, ''));
+    const own = [];
     for (const key of KEYS) {
       if (!this.hasAttribute(key)) continue;
       const v = this.getAttribute(key);
-      if (FLAGS.includes(key) && v === '') parts.push(key);
-      else parts.push(`${key}=${encodeURIComponent(wellFormed(v))}`);
+      if (FLAGS.includes(key) && v === '') own.push(key);
+      else own.push(`${key}=${encodeURIComponent(wellFormed(v))}`);
     }
-    return parts.join('&');
+    const problems = [];
+    let pairs = MAX_PAIRS - own.length;
+    let chars = MAX_HASH_CHARS - own.join('&').length - 2;
+    const parts = [];
+    for (const name of ['link', 'params']) {
+      const text = (this.getAttribute(name) || '').replace(/^[#?&]/, '');
+      if (!text) continue;
+      const all = text.split('&').filter(Boolean);
+      let kept = all.slice(0, Math.max(0, pairs));
+      let joined = kept.join('&');
+      while (kept.length && joined.length > chars) { // whole pairs only
+        kept = kept.slice(0, Math.max(0, Math.min(kept.length - 1, Math.floor((kept.length * chars) / joined.length))));
+        joined = kept.join('&');
+      }
+      if (kept.length < all.length) {
+        problems.push(`The ${name} attribute has ${all.length.toLocaleString('en')} parts (${text.length.toLocaleString('en')} characters), `
+          + `more than an embed reads; only the first ${kept.length.toLocaleString('en')} were read (the other attributes still apply).`);
+      }
+      if (!kept.length) continue;
+      parts.push(joined);
+      pairs -= kept.length;
+      chars -= joined.length + 1;
+    }
+    return { text: [...parts, ...own].join('&'), problems };
   }
 
   // The worker's answers
@@ -217,9 +244,10 @@ export class PlanariumPlayground extends HTMLElement {
   }
 
   async restore() {
-    const share = await readShare(this.linkText(), { builtins: this.builtins });
+    const link = this.linkText();
+    const share = await readShare(link.text, { builtins: this.builtins });
     this.share = share;
-    this.problems = [...share.problems];
+    this.problems = [...link.problems, ...share.problems];
     this.crashNote = '';
     this.started = false;
     this.buildControls(share.controls ?? DEFAULT_CONTROLS);
@@ -242,7 +270,7 @@ export class PlanariumPlayground extends HTMLElement {
     this.scenario = msg.scenario;
     const [x0, y0, x1, y1] = msg.scenario.bounds;
     this.aspect = (x1 - x0) / (y1 - y0) || 1;
-    this.canvas.setAttribute('aria-label', `${msg.scenario.name || 'Scenario'}: the planner's trees and the path`);
+    this.canvas.setAttribute('aria-label', shown(`${msg.scenario.name || 'Scenario'}: the planner's trees and the path`));
     this.view.setScenario(msg.scenario, msg.start, msg.goal);
     this.sizeStage();
     this.resize();
@@ -289,7 +317,7 @@ export class PlanariumPlayground extends HTMLElement {
   }
 
   say(text) {
-    this.message.textContent = text;
+    this.message.textContent = shown(text);
     this.message.hidden = !text;
   }
 
@@ -321,10 +349,15 @@ export class PlanariumPlayground extends HTMLElement {
       } else if (name === 'seed') {
         const input = el('input', { type: 'number', min: '0', step: '1', value: String(this.config?.seed ?? this.share.seed ?? 1), inputMode: 'numeric' });
         input.addEventListener('change', () => {
-          const v = Number(input.value);
-          if (!Number.isSafeInteger(v) || v < 0 || !this.config) { input.setAttribute('aria-invalid', 'true'); return; }
-          input.removeAttribute('aria-invalid');
-          this.config = { ...this.config, seed: v };
+          if (!this.config) return;
+          const r = readSeed(input.value);
+          if (r.why) { // refused: the field shows the seed that runs, the message why
+            input.value = String(this.config.seed);
+            this.say([this.notes(), `Seed: ${r.why}; the seed stays ${this.config.seed}.`].filter(Boolean).join('\n'));
+            return;
+          }
+          this.say(this.notes());
+          this.config = { ...this.config, seed: r.seed };
           this.player.configure(this.config);
         });
         const label = el('label', { title: 'Random seed: the same seed replays the same run' });

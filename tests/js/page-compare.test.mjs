@@ -136,12 +136,19 @@ test('compare keeps scenario, both set-ups and the seed in the URL: a reload res
   const b = await page.evaluate(() => window.planarium.config('b'));
   assert.equal(b.planner, 'rrt-star');
   assert.equal(b.seed, 9);
+  // a seed above 2^53 − 1: refused by name, the field shows the seed both lanes and Run 20 seeds use
+  await page.fill('#seed', '9007199254740993');
+  await page.dispatchEvent('#seed', 'change');
+  assert.equal(await page.inputValue('#seed'), '9');
+  assert.equal(await page.textContent('#seed-hint'), 'Seed: 9007199254740993 is larger than 9007199254740991 (2^53 − 1), the largest seed the page carries exactly; the seed stays 9.');
+  assert.equal((await page.evaluate(() => window.planarium.config('b'))).seed, 9);
+  assert.equal(await page.textContent('#seeds-range'), '9 … 28');
   assert.equal((await page.evaluate(() => window.planarium.config('a'))).params.goal_bias, 0.3);
   assert.equal((await page.evaluate(() => window.planarium.scenario())).name, 'Turn to pass the slot');
   // bad values: each named, defaults used
   await openCompare('#scenario=narrow&a=nope&b=rrt%20--range%20-1&seed=abc');
   const error = await page.textContent('#error-text');
-  assert.match(error, /seed=abc: the seed must be a whole number ≥ 0/);
+  assert.match(error, /seed=abc: the seed is not a whole number from 0 to 9007199254740991; the scenario's seed is used/);
   assert.match(error, /a=nope: set-up line 1: unknown planner "nope".*set-up A keeps its default/);
   assert.match(error, /b=rrt --range -1: set-up line 1: range: must be between 0 and 1000000; set-up B keeps its default/);
   assert.deepEqual(await page.evaluate(() => [window.planarium.config('a').planner, window.planarium.config('b').params]), ['rrt-connect', {}]);

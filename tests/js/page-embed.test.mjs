@@ -50,6 +50,11 @@ ${body}
   writeFileSync(join(dir, 'below.html'), page('autoplay below the fold', 480, `<p id="spacer" style="height: 2400px">Read this first.</p>
 <script type="module" src="planarium/planarium-playground.js"></script>
 <planarium-playground id="below" scenario="narrow" planner="rrt-connect" seed="7" autoplay speed="100"></planarium-playground>`));
+  // Oversized `params` (3,000 pairs: more than a link's 1,000) beside an explicit scenario, planner
+  // and seed; and a seed above 2^53 − 1.
+  writeFileSync(join(dir, 'params.html'), page('oversized params', 480, `<script type="module" src="planarium/planarium-playground.js"></script>
+<planarium-playground id="big" scenario="slot" planner="rrt" seed="4" speed="100" params="${'goal_bias=0.1&'.repeat(3000)}" controls="run,seed"></planarium-playground>
+<planarium-playground id="huge" scenario="narrow" seed="9007199254740993" controls="run,seed"></planarium-playground>`));
   site = await serve({ port: 0, dir: tmp });
   notes = `http://127.0.0.1:${site.address().port}/course/notes/`;
 });
@@ -206,6 +211,34 @@ test('click to start, the speed and seed controls, and attributes changed later'
     await p.evaluate(() => document.querySelector('#lazy').setAttribute('scenario', 'narrow'));
     await p.waitForFunction(() => /Narrow passage/.test(document.querySelector('#lazy').shadowRoot.querySelector('canvas').getAttribute('aria-label')));
     await waitEl(p, 'idle', '#lazy');
+  } finally {
+    await p.close();
+  }
+});
+
+test('an oversized params attribute is cut and said so, and never drops the explicit scenario; a seed above 2^53 − 1 is refused by name', async () => {
+  const p = await open(`${notes}params.html`, { width: 1000, height: 1400 });
+  try {
+    await waitEl(p, 'idle', '#big');
+    await p.waitForFunction(() => /Turn to pass the slot/.test(document.querySelector('#big').shadowRoot.querySelector('canvas').getAttribute('aria-label')));
+    let s = await look(p, '#big');
+    assert.match(s.message, /The params attribute has 3,000 parts .*only the first 995 were read/);
+    assert.doesNotMatch(s.message, /No scenario given/);
+    await p.locator('#big button[data-control="run"]').click();
+    await p.waitForFunction(() => document.querySelector('#big').state === 'finished', null, { timeout: 120000 });
+    const r = await p.evaluate(() => document.querySelector('#big').result());
+    assert.deepEqual([r.planner, r.seed], ['rrt', 4], 'the explicit planner and seed');
+    // seed="9007199254740993": named, with the largest seed; the scenario's seed runs
+    await waitEl(p, 'idle', '#huge');
+    s = await look(p, '#huge');
+    assert.match(s.message, /seed=9007199254740993: the seed is larger than 9007199254740991 \(2\^53 − 1\)/);
+    // the seed field: 2^53 + 1 typed is refused with a message; the field shows the seed that runs
+    const field = p.locator('#huge input[type="number"]');
+    const before = await field.inputValue();
+    await field.fill('9007199254740993');
+    await field.press('Tab');
+    await p.waitForFunction(() => /Seed: 9007199254740993 is larger than 9007199254740991/.test(document.querySelector('#huge').shadowRoot.querySelector('.message').textContent));
+    assert.equal(await field.inputValue(), before);
   } finally {
     await p.close();
   }

@@ -1,5 +1,5 @@
 // Cells and potential fields: what the hex-potential and potential-field planners record, mirrored
-// (CellMirror, fed by playback.js's RunModel) and drawn (CellsDrawing, owned by view.js: its
+// (CellMirror, cell-mirror.js, fed by playback.js's RunModel) and drawn (CellsDrawing, owned by view.js: its
 // offscreen 'cells' layer lies between the scene and the samples; the region of influence, the
 // local minima and the robot's t/2 circle are drawn on the top layer every frame).
 //
@@ -20,6 +20,9 @@
 import { EventKind } from '../run/events.js';
 import { PALETTE, STYLE } from './palette.js';
 import { drawObstacle, pointInPolygon } from './transform.js';
+import { CellRaster, SMALL_CELL_PX, smallCell } from './cell-raster.js';
+
+export { CellMirror } from './cell-mirror.js';
 
 const BIG = 20000;     // above this many cells, full redraws happen at most every…
 const BIG_MS = 250;    // …this many ms
@@ -34,120 +37,6 @@ const WHY = {
   4: "the map's edge is within t/2",
 };
 
-/** What the cell and field records say so far (one per run; RunModel.cells). */
-export class CellMirror {
-  constructor() {
-    this.cells = new Map(); // id → {id, level, parent, x, y, label, radius, n, pts, done, state, why, from, terms, ...}
-    this.split = new Set(); // ids of cells refined into children (a child's CELL has come)
-    this.order = [];        // ids of complete cells, in arrival order
-    this.changed = [];      // ids whose verdict changed since the latest REGION, in order
-    this.regions = [];      // [{attempt, x, y, radius, limit, inside, t}]
-    this.field = [];        // the current field: [{id, x, y, v, a, b, dx, dy, half}]
-    this.minima = [];       // [{escapes, x, y, u, dist}]
-    this.fieldVersion = 0;  // bumped by every FIELD and REGION: the layer is redrawn
-    this.regionVersion = 0;
-  }
-
-  /** The robot's diagonal t from the latest REGION (0 when there is none). */
-  get t() { return this.regions.length ? this.regions[this.regions.length - 1].t : 0; }
-  /** The latest attempt (REGION id), or -1. */
-  get attempt() { return this.regions.length ? this.regions[this.regions.length - 1].attempt : -1; }
-  get empty() { return !this.cells.size && !this.field.length && !this.regions.length && !this.minima.length; }
-
-  /** The record at offset `o` of `d` was revealed (kinds CELL to MINIMUM). */
-  apply(d, o) {
-    const id = d[o + 2];
-    switch (d[o]) {
-      case EventKind.CELL: {
-        const n = d[o + 8] | 0;
-        this.cells.set(id, { id, level: d[o + 1], parent: d[o + 3], x: d[o + 4], y: d[o + 5], label: d[o + 6],
-          radius: d[o + 7], n, pts: [], done: false, state: -1, why: 0, from: -1, attempt: -1, terms: null });
-        if (d[o + 3] >= 0) this.split.add(d[o + 3]);
-        return;
-      }
-      case EventKind.CELL_SHAPE: {
-        const c = this.cells.get(id);
-        if (!c || c.done) return;
-        for (let j = 0; j < 4 && c.pts.length < 2 * c.n; j++) {
-          const x = d[o + 4 + 2 * j], y = d[o + 5 + 2 * j];
-          if (Number.isNaN(x) || Number.isNaN(y)) break;
-          c.pts.push(x, y);
-        }
-        if (c.pts.length >= 2 * c.n && c.n >= 3) {
-          c.done = true;
-          let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
-          for (let i = 0; i < c.pts.length; i += 2) {
-            x0 = Math.min(x0, c.pts[i]); x1 = Math.max(x1, c.pts[i]);
-            y0 = Math.min(y0, c.pts[i + 1]); y1 = Math.max(y1, c.pts[i + 1]);
-          }
-          c.box = [x0, y0, x1, y1];
-          this.order.push(id);
-        }
-        return;
-      }
-      case EventKind.CELL_STATE: {
-        const c = this.cells.get(id);
-        if (!c) return;
-        // A* and Dijkstra may find a step into an open or closed cell blocked from another cell:
-        // the cell stays open (closed); the blocked step is in the explain panel's caption.
-        if (d[o + 6] === 1 && (c.state === 0 || c.state === 2)) return;
-        c.state = d[o + 6];
-        c.why = d[o + 7];
-        c.from = d[o + 3];
-        c.attempt = this.attempt;
-        this.changed.push(id);
-        return;
-      }
-      case EventKind.POTENTIAL: {
-        const c = this.cells.get(id);
-        if (!c) return;
-        c.terms = { from: d[o + 3], repulsion: d[o + 6], trap: d[o + 7], goal: d[o + 8], total: d[o + 9],
-          alpha: d[o + 10], chosen: d[o + 11] > 0, attempt: this.attempt };
-        return;
-      }
-      case EventKind.REGION:
-        // a new attempt: the search starts again from the start, its verdicts and field with it
-        for (const k of this.changed) { const c = this.cells.get(k); if (c) c.state = -1; }
-        this.changed = [];
-        this.field = [];
-        this.regions.push({ attempt: id, x: d[o + 4], y: d[o + 5], radius: d[o + 6], limit: d[o + 7], inside: d[o + 8], t: d[o + 9] });
-        this.fieldVersion++;
-        this.regionVersion++;
-        return;
-      case EventKind.FIELD:
-        this.field.push({ id, x: d[o + 4], y: d[o + 5], v: d[o + 6], a: d[o + 7], b: d[o + 8], dx: d[o + 9], dy: d[o + 10], half: d[o + 11] });
-        this.fieldVersion++;
-        return;
-      case EventKind.MINIMUM:
-        this.minima.push({ escapes: id, x: d[o + 4], y: d[o + 5], u: d[o + 6], dist: d[o + 7] });
-        return;
-      default:
-    }
-  }
-
-  /** The complete cell holding (x, y): the latest made (a child comes after its parent), or null. */
-  cellAt(x, y) {
-    for (let k = this.order.length - 1; k >= 0; k--) {
-      const c = this.cells.get(this.order[k]);
-      const [x0, y0, x1, y1] = c.box;
-      if (x < x0 || x > x1 || y < y0 || y > y1) continue;
-      if (pointInPolygon(x, y, c.pts)) return c;
-    }
-    return null;
-  }
-
-  /** The field sample nearest (x, y) whose tile holds it, or null. */
-  sampleAt(x, y) {
-    let best = null, bd = Infinity;
-    for (const s of this.field) {
-      const dd = (s.x - x) ** 2 + (s.y - y) ** 2;
-      if (dd < bd && Math.abs(s.x - x) <= s.half * 1.01 && Math.abs(s.y - y) <= s.half * 1.01) { best = s; bd = dd; }
-    }
-    return best;
-  }
-}
-
-/** Even-odd point-in-polygon over flat [x, y, ...]. */
 
 /** A number for the hover text. */
 export function fmt(v) {
@@ -183,6 +72,7 @@ export class CellsDrawing {
   constructor(layer, model) {
     this.layer = layer;
     this.model = model;
+    this.raster = new CellRaster(); // the small cells' pixels (cell-raster.js)
     this.reset();
   }
 
@@ -196,6 +86,7 @@ export class CellsDrawing {
     this.stale = false;    // a full redraw is owed
     this.drawnAt = 0;
     this.mirrorSeen = null;
+    this.raster?.clear();
   }
 
   /** Whether there is anything to draw (the view then veils the obstacles over the layer). */
@@ -224,12 +115,12 @@ export class CellsDrawing {
     let drew = false;
     const { ctx } = this.layer;
     if (this.drawn < m.order.length) {
-      if (o.showCells) this.drawCells(ctx, L, o, m.order, this.drawn, m.order.length);
+      if (o.showCells) this.drawCells(ctx, L, o, m.orderCells, this.drawn, m.order.length);
       this.drawn = m.order.length;
       drew = true;
     }
     if (this.statesDrawn < m.changed.length) {
-      if (o.showCells) this.drawCells(ctx, L, o, m.changed, this.statesDrawn, m.changed.length);
+      if (o.showCells) this.drawCells(ctx, L, o, cellsOf(m, m.changed, this.statesDrawn), 0, m.changed.length - this.statesDrawn);
       this.statesDrawn = m.changed.length;
       drew = true;
     }
@@ -241,6 +132,7 @@ export class CellsDrawing {
     const m = this.mirror;
     const { ctx } = this.layer;
     ctx.clearRect(0, 0, L.width, L.height);
+    this.raster.clear(L);
     this.stale = false;
     this.drawnAt = performance.now();
     if (!m) return;
@@ -248,34 +140,66 @@ export class CellsDrawing {
     this.fieldSeen = m.fieldVersion;
     this.drawn = m.order.length;
     this.statesDrawn = m.changed.length;
-    if (o.showCells) this.drawCells(ctx, L, o, m.order, 0, m.order.length);
+    if (o.showCells) this.drawCells(ctx, L, o, m.orderCells, 0, m.order.length);
     if (o.showHeat && m.field.length) {
       this.drawHeat(ctx, L);
-      if (o.showCells) this.drawCells(ctx, L, o, m.changed, 0, m.changed.length, true); // the × marks
+      if (o.showCells) this.drawCells(ctx, L, o, cellsOf(m, m.changed, 0), 0, m.changed.length, true); // the × marks
     }
     if (o.showArrows && m.field.length) this.drawArrows(ctx, L);
   }
 
   /**
-   * Cells ids[from, to) filled by label and level, or by verdict (× on step-blocked cells);
-   * `overHeat`: outlines and marks only, over the heat map.
+   * Cells cells[from, to) (CellMirror cells) filled by label and level, or by verdict (× on step-blocked cells);
+   * `overHeat`: outlines and marks only, over the heat map. A few paths, not one a cell: the cells
+   * of a level are filled one colour at a time, then outlined at once, level by level (a refined
+   * cell's children, a level down, cover it); cells under SMALL_CELL_PX are painted as pixels.
    */
-  drawCells(ctx, L, o, ids, from, to, overHeat = false) {
-    const m = this.mirror;
+  drawCells(ctx, L, o, cells, from, to, overHeat = false) {
     const st = STYLE[EventKind.CELL];
     const marks = [];
+    const levels = new Map(); // level → Map(fill → [cell])
+    const raster = this.raster;
+    // the mirror's own list: its small rectangles are read from its table (no object each)
+    const m = this.mirror;
+    const t = cells === m?.orderCells && !overHeat ? m.table : null;
+    const small = SMALL_CELL_PX / L.scale;
     for (let k = from; k < to; k++) {
-      const c = m.cells.get(ids[k]);
+      if (t && t.rect[k]) {
+        const b = 4 * k;
+        const x0 = t.box[b], y0 = t.box[b + 1], x1 = t.box[b + 2], y1 = t.box[b + 3];
+        if (x1 - x0 < small && y1 - y0 < small
+          && raster.paintBox(x0, y0, x1, y1, fillOf(t.state[k], t.label[k], t.level[k], o.showHeat), L)) {
+          if (t.state[k] === 1) marks.push(cells[k]);
+          continue;
+        }
+      }
+      const c = cells[k];
       if (!c || !c.done) continue;
-      const level = cellLevel(c);
-      const fill = cellFill(c, o.showHeat);
-      trace(ctx, L, c.pts);
-      if (!overHeat) { ctx.fillStyle = fill; ctx.fill(); }
-      ctx.strokeStyle = PALETTE.cellEdge;
-      ctx.lineWidth = L.px(st.widths[level]);
-      ctx.stroke();
       if (c.state === 1) marks.push(c);
+      const fill = cellFill(c, o.showHeat);
+      if (smallCell(c, L) && (overHeat || raster.paint(c, L, fill))) continue;
+      let byFill = levels.get(c.level);
+      if (!byFill) levels.set(c.level, byFill = new Map());
+      const list = byFill.get(fill);
+      if (list) list.push(c); else byFill.set(fill, [c]);
     }
+    for (const level of [...levels.keys()].sort((a, b) => a - b)) {
+      const byFill = levels.get(level);
+      if (!overHeat) {
+        for (const [fill, list] of byFill) {
+          ctx.beginPath();
+          for (const c of list) traceInto(ctx, L, c.pts);
+          ctx.fillStyle = fill;
+          ctx.fill();
+        }
+      }
+      ctx.beginPath();
+      for (const list of byFill.values()) for (const c of list) traceInto(ctx, L, c.pts);
+      ctx.strokeStyle = PALETTE.cellEdge;
+      ctx.lineWidth = L.px(st.widths[cellLevel({ level })]);
+      ctx.stroke();
+    }
+    this.raster.flush(ctx);
     if (!marks.length) return;
     ctx.beginPath();
     for (const c of marks) {
@@ -419,6 +343,9 @@ export class CellsDrawing {
   }
 }
 
+/** The cells of mirror `m` whose ids are ids[from…]. */
+const cellsOf = (m, ids, from) => ids.slice(from).map((id) => m.cells.get(id));
+
 /** A cell's centre as drawn: the record's, or its outline's mean when that lies outside. */
 function centreOf(c) {
   if (pointInPolygon(c.x, c.y, c.pts)) return [c.x, c.y];
@@ -509,11 +436,6 @@ function traceInto(ctx, L, p) {
   ctx.closePath();
 }
 
-function trace(ctx, L, p) {
-  ctx.beginPath();
-  traceInto(ctx, L, p);
-}
-
 /** A cell's drawing level (0–3: coarser levels get lighter fills and thicker outlines). */
 export const cellLevel = (c) => Math.min(3, Math.max(0, c.level | 0));
 
@@ -523,10 +445,15 @@ export const cellLevel = (c) => Math.min(3, Math.max(0, c.level | 0));
  * step-blocked).
  */
 export function cellFill(c, showHeat) {
-  if (!showHeat && c.state === 0) return PALETTE.cellOpen;
-  if (!showHeat && c.state === 2) return PALETTE.cellVisited;
-  if (!showHeat && c.state === 1) return PALETTE.cellBlocked;
-  return c.label === 1 ? PALETTE.cellMixed : c.label === 2 || c.state === 4 ? PALETTE.cellFull : PALETTE.cellFree[cellLevel(c)];
+  return fillOf(c.state, c.label, cellLevel(c), showHeat);
+}
+
+/** cellFill from a cell's state, label and drawing level. */
+function fillOf(state, label, level, showHeat) {
+  if (!showHeat && state === 0) return PALETTE.cellOpen;
+  if (!showHeat && state === 2) return PALETTE.cellVisited;
+  if (!showHeat && state === 1) return PALETTE.cellBlocked;
+  return label === 1 ? PALETTE.cellMixed : label === 2 || state === 4 ? PALETTE.cellFull : PALETTE.cellFree[level];
 }
 
 /** Legend items for the planner `name` (marks the overlay box does not show). */

@@ -25,6 +25,7 @@ import { Layout, parseOutline, parseFrames, makeLayer, drawExhausted, drawObstac
 import { CellsDrawing } from './cells.js';
 import { drawDensity } from './density.js';
 import { addQueryEdge, drawGraphEdges, drawRoadmap, drawQueryAnswer } from './graphs.js';
+import { drawAll, redrawSteps, treeLayerSteps } from './redraw.js';
 import { drawFlashes, drawSensor, drawHandle } from './marks.js';
 
 const MAX_FLASHES = 80;      // the most flashes shown at once (a burst keeps only the latest)
@@ -177,6 +178,11 @@ export class View {
   }
 
   drawScene() {
+    this.paintScene(this.scenario?.obstacles ?? []);
+  }
+
+  /** The scene layer: background, free space, `obstacles`, bounds. */
+  paintScene(obstacles) {
     const { ctx } = this.sceneLayer;
     const L = this.layout;
     ctx.fillStyle = PALETTE.background;
@@ -185,10 +191,32 @@ export class View {
     const [x0, y0, x1, y1] = this.scenario.bounds;
     ctx.fillStyle = PALETTE.free;
     ctx.fillRect(L.sx(x0), L.sy(y1), (x1 - x0) * L.scale, (y1 - y0) * L.scale);
-    for (const ob of this.scenario.obstacles) drawObstacle(ctx, L, ob);
+    for (const ob of obstacles) drawObstacle(ctx, L, ob);
     ctx.strokeStyle = PALETTE.bounds;
     ctx.lineWidth = L.px(1.5);
     ctx.strokeRect(L.sx(x0), L.sy(y1), (x1 - x0) * L.scale, (y1 - y0) * L.scale);
+  }
+
+  /**
+   * The scene layer again inside world box `box` only (and 2 px around it), with `obstacles`: all
+   * that reach into it, in drawing order. An edit in progress (the Cells tool) redraws what it
+   * changed, not a map of 100,000 obstacles at every pointer move.
+   */
+  drawSceneIn(box, obstacles) {
+    const L = this.layout;
+    if (!L || !this.scenario) return;
+    const { ctx } = this.sceneLayer;
+    const pad = Math.ceil(L.px(2));
+    const x0 = Math.max(0, Math.floor(L.sx(box[0])) - pad), x1 = Math.min(L.width, Math.ceil(L.sx(box[2])) + pad);
+    const y0 = Math.max(0, Math.floor(L.sy(box[3])) - pad), y1 = Math.min(L.height, Math.ceil(L.sy(box[1])) + pad);
+    if (x1 <= x0 || y1 <= y0) return;
+    ctx.save();
+    ctx.beginPath();
+    ctx.rect(x0, y0, x1 - x0, y1 - y0);
+    ctx.clip();
+    this.paintScene(obstacles);
+    ctx.restore();
+    this.dirty = true;
   }
 
   /** Draw stored records [from, to) onto the layers; remember markers. */
@@ -252,43 +280,7 @@ export class View {
 
   /** The whole tree layer from the model's mirror (after a rewire, a toggle or a resize). */
   redrawTreeLayer() {
-    if (!this.layout) return;
-    const { ctx } = this.treeLayer;
-    const L = this.layout;
-    ctx.clearRect(0, 0, L.width, L.height);
-    const edge = STYLE[EventKind.NODE_ADDED];
-    const node = Math.max(1, Math.round(L.px(edge.size)));
-    const trees = this.model ? this.model.trees : [];
-    this.attemptSeen = this.model ? this.model.cells.attempt : -1;
-    trees.forEach((t, k) => {
-      const color = edge.colors[this.treeGroup(k)];
-      ctx.globalAlpha = this.attemptSeen > k ? 0.3 : 1; // an earlier attempt of hex-potential
-      ctx.beginPath();
-      ctx.fillStyle = color;
-      for (let i = 0; i < t.n; i++) {
-        if (!t.known(i)) continue;
-        const x = L.sx(t.x[i]), y = L.sy(t.y[i]);
-        const p = t.parent[i];
-        if (p >= 0 && t.known(p)) {
-          ctx.moveTo(L.sx(t.x[p]), L.sy(t.y[p]));
-          ctx.lineTo(x, y);
-        }
-        if (p >= 0) ctx.fillRect(Math.round(x - node / 2), Math.round(y - node / 2), node, node);
-      }
-      ctx.strokeStyle = color;
-      ctx.lineWidth = L.px(edge.width);
-      ctx.stroke();
-      if (this.options.showExhausted && t.exhausted) {
-        const pts = [];
-        for (let i = 0; i < t.n; i++) if (t.known(i) && t.isExhausted(i)) pts.push(t.x[i], t.y[i]);
-        drawExhausted(ctx, L, pts);
-      }
-    });
-    ctx.globalAlpha = 1;
-    if (this.roadmap) drawRoadmap(this.treeLayer.ctx, this.layout, this.store, 0, this.store.length, true);
-    this.treeSeen = this.model ? this.model.treeVersion : 0;
-    this.treeDrawnAt = performance.now();
-    this.dirty = true;
+    if (this.layout) drawAll(treeLayerSteps(this));
   }
 
   /** The colour of tree `k`'s records: 0 or 1 (hex-potential's trees are its attempts: all 0). */
@@ -403,22 +395,9 @@ export class View {
     this.dirty = true;
   }
 
-  /** Every run layer again, from the records and the model. */
+  /** Every run layer again, from the records and the model (redraw.js: an export does it in steps). */
   redrawTree() {
-    if (!this.layout) return;
-    this.markers = [];
-    this.flashes = [];
-    this.queryPath = null;
-    this.redrawTreeLayer();
-    this.redrawUnder();
-    this.redrawOver();
-    this.redrawDomains();
-    this.cells.redraw(this.layout, this.options);
-    for (const [d, o0, o1] of this.store.spans(0, this.store.length)) for (let o = o0; o < o1; o += STRIDE) {
-      if (d[o] === EventKind.TREES_CONNECTED || d[o] === EventKind.SOLVED) this.markers.push([d[o], d[o + 4], d[o + 5]]);
-      else if (d[o] === EventKind.QUERY_PATH) this.queryPath = addQueryEdge(this.queryPath, d, o);
-    }
-    this.dirty = true;
+    if (this.layout) drawAll(redrawSteps(this));
   }
 
   /** Bring the model-drawn layers up to date (at most once a frame; big trees less often). */

@@ -18,6 +18,7 @@ import { boxPlot, successBars, scatter, stepLines, hitDot } from '../draw/plots.
 import { downloadText } from '../draw/stage.js';
 import { el } from '../ui/dom.js';
 import { setupLine, setupLines, readPageState, wholeIn, checkSetups, coreError, pageHash, playgroundLink, readChosenFile, differingParams, MAX_SETUPS } from '../ui/setups.js';
+import { shown } from '../ui/text.js';
 
 /**
  * The page's element `id`. Its kind is the HTML's (input, select, button, canvas, dialog…), so it
@@ -55,7 +56,7 @@ let dotRows = [];          // per set-up, the solved rows, in the order the dots
 const encoded = new Map(); // scenario text → its link encoding
 
 function showError(text) {
-  ui.error.textContent = text;
+  ui.error.textContent = shown(text);
   ui.error.hidden = !text;
 }
 
@@ -224,7 +225,7 @@ function show(r) {
   }));
   const ran = seedsRun(r);
   const partial = asked && asked.done < asked.total ? ` (stopped after ${asked.done} of ${asked.total} runs)` : '';
-  ui.caption.textContent = `${r.scenario}: ${ran}${partial}; medians over all runs, costs over solved runs`;
+  ui.caption.textContent = shown(`${r.scenario}: ${ran}${partial}; medians over all runs, costs over solved runs`);
   ui.table.hidden = false;
   ui.plots.hidden = false;
   ui.plotOptions.hidden = false;
@@ -382,7 +383,7 @@ function addSetup() {
   try {
     parseSetups(line);
   } catch (e) {
-    ui.buildNote.textContent = String(e?.message ?? e);
+    ui.buildNote.textContent = shown(String(e?.message ?? e));
     ui.buildNote.classList.add('bad');
     return;
   }

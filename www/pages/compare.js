@@ -28,6 +28,8 @@ import { quartiles } from '../draw/plots.js';
 import { el } from '../ui/dom.js';
 import { runPool } from '../ui/seed-pool.js';
 import { setupLine, readPageState, checkSetups, pageHash, playgroundLink, readChosenFile, differingParams } from '../ui/setups.js';
+import { shown } from '../ui/text.js';
+import { MAX_SEED, readSeed, blockSeedProblem } from '../ui/seed.js';
 
 /**
  * The page's element `id`. Its kind is the HTML's (input, select, button, canvas, dialog…), so it
@@ -167,17 +169,20 @@ function onLoaded(side, msg) {
   if (!sides.every((s) => s.loadedGen === loadGen)) return;
   scenario = msg.scenario;
   scenarioText = JSON.stringify(scenario);
-  ui.name.textContent = scenario.name || 'Untitled scenario';
-  ui.notes.textContent = scenario.notes || '';
+  ui.name.textContent = shown(scenario.name || 'Untitled scenario');
+  ui.notes.textContent = shown(scenario.notes || '');
   ui.course.textContent = builtins.find((b) => b.id === ui.scenario.value)?.course || '';
   for (const s of sides) {
     s.view.setScenario(s.loaded.scenario, s.loaded.start, s.loaded.goal);
     s.panel.setTask(taskOf(scenario));
     if (applyDefaults) s.panel.apply(scenario.planner);
   }
-  if (applyDefaults && Number.isSafeInteger(scenario.planner?.seed)) {
+  if (applyDefaults && blockSeedProblem(scenario.planner?.seed)) {
+    ui.seedHint.textContent = `${blockSeedProblem(scenario.planner.seed)}; the seed stays ${seed}.`;
+  } else if (applyDefaults && Number.isSafeInteger(scenario.planner?.seed)) {
     seed = scenario.planner.seed;
     ui.seed.value = String(seed);
+    ui.seedHint.textContent = '';
   }
   applyDefaults = false;
   loadingFile = null;
@@ -279,7 +284,10 @@ function showSeedRange() {
 function runSeeds() {
   if (seedJob || !scenarioText || sides.some((s) => !s.panel)) return;
   clearError();
-  if (seed > Number.MAX_SAFE_INTEGER - SEEDS) { showError(`The seed is too large to run ${SEEDS} seeds from it.`); return; }
+  if (seed > MAX_SEED - (SEEDS - 1)) {
+    showError(`Seeds ${seed} … ${seed} + ${SEEDS - 1} would pass ${MAX_SEED} (2^53 − 1), the largest seed the page carries exactly: choose a seed of at most ${MAX_SEED - (SEEDS - 1)}.`);
+    return;
+  }
   const setups = sides.map((s) => s.panel.config());
   const jobs = [];
   for (let k = 0; k < SEEDS; k++) setups.forEach((st, i) => jobs.push({ i, text: scenarioText, planner: st.planner, params: st.params, seed: seed + k }));
@@ -324,7 +332,7 @@ function stopSeeds(why) {
   seedJob.pool?.stop();
   seedJob = null;
   ui.seedsProgress.hidden = true;
-  ui.seedsStatus.textContent = why;
+  ui.seedsStatus.textContent = shown(why);
   syncSeedButtons();
 }
 
@@ -525,15 +533,15 @@ for (const tab of [ui.tabA, ui.tabB]) {
 }
 
 ui.seed.addEventListener('change', () => {
-  const v = Number(ui.seed.value);
-  if (ui.seed.value.trim() === '' || !Number.isSafeInteger(v) || v < 0) {
-    ui.seed.setAttribute('aria-invalid', 'true');
-    ui.seedHint.textContent = 'The seed must be a whole number ≥ 0.';
+  const r = readSeed(ui.seed.value);
+  if (r.why) { // refused: the field shows the seed the runs use (Run 20 seeds too), the hint why
+    ui.seedHint.textContent = `Seed: ${r.why}; the seed stays ${seed}.`;
+    ui.seed.value = String(seed);
     return;
   }
   ui.seed.removeAttribute('aria-invalid');
   ui.seedHint.textContent = '';
-  seed = v;
+  seed = r.seed;
   configure(sides);
 });
 

@@ -37,6 +37,7 @@ import { wireShareHash } from '../ui/share-hash.js';
 import { wireOpenFile } from '../ui/open-file.js';
 import { OVERLAYS } from '../draw/palette.js';
 import { applyPageLimits } from '../run/limits.js';
+import { shown } from '../ui/text.js';
 
 /**
  * The page's element `id`. Its kind is the HTML's (input, select, button, canvas, dialog…), so it
@@ -308,8 +309,8 @@ function showScenario({ scenario, start, goal, space, cspace: grid, optimum: bes
   loaded = scenario;
   optimum = best && best.exact && Number.isFinite(best.cost) ? best.cost : null;
   ui.course.textContent = course;
-  ui.name.textContent = scenario.name || 'Untitled scenario';
-  ui.notes.textContent = scenario.notes || '';
+  ui.name.textContent = shown(scenario.name || 'Untitled scenario');
+  ui.notes.textContent = shown(scenario.notes || '');
   view.setScenario(scenario, start, goal);
   cspace.setSpace(grid || null, scenario.start, scenario.goal);
   editor.setScenario(scenario, space, sentEdit);

@@ -46,6 +46,16 @@ export const PAGE_MAX_NODES = 1000000;
 export const STORE_CHUNK_RECORDS = 16384;
 
 /**
+ * The most records the playback reveals (and the views draw) in one animation frame, at any speed:
+ * at "all at once" a frame shows everything queued up to this many, the rest in the next frames.
+ * When the worker sends records faster than the page draws them (grid search on a 998×998 map
+ * sends two million cell records in a few seconds), an unbounded frame grew with the queue and
+ * froze the tab for seconds; 50,000 records take some tens of milliseconds to store, mirror and
+ * draw, and at 60 frames a second that is 3 million records a second, more than any planner sends.
+ */
+export const REVEAL_PER_FRAME = 50000;
+
+/**
  * The registry the worker posted, with the page's ceilings applied to the run parameters (the
  * panel and share links then refuse larger values with the parameter's range in words).
  */

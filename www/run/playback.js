@@ -7,12 +7,12 @@
 // moves a node's edge, so the tree layer is redrawn from the mirror, not from the records), the
 // dynamic-domain radius and exhausted flag of each node, the best solution's node with the cost or
 // coverage series, and the inspection points seen; and the cells and potential fields of the
-// hex-potential and potential-field planners (cells.js CellMirror).
+// hex-potential and potential-field planners (cell-mirror.js CellMirror).
 
 import { EventKind, STRIDE } from './events.js';
-import { CellMirror } from '../draw/cells.js';
+import { CellMirror } from '../draw/cell-mirror.js';
 import { DensityMirror } from '../draw/density.js';
-import { STORE_CHUNK_RECORDS } from './limits.js';
+import { REVEAL_PER_FRAME, STORE_CHUNK_RECORDS } from './limits.js';
 
 /**
  * The revealed records, in chunks of STORE_CHUNK_RECORDS (limits.js): growing adds a chunk and
@@ -313,11 +313,14 @@ export class Playback {
     };
   }
 
-  /** Reveal what `rate` records per second owes after `dt` seconds (Infinity: everything). */
+  /**
+   * Reveal what `rate` records per second owes after `dt` seconds (Infinity: everything queued),
+   * at most REVEAL_PER_FRAME (limits.js) in one call: the page calls it once a frame.
+   */
   tick(rate, dt) {
-    if (!Number.isFinite(rate)) { this.budget = 0; return this.revealAll(); }
+    if (!Number.isFinite(rate)) { this.budget = 0; return this.reveal(REVEAL_PER_FRAME); }
     this.budget = Math.min(this.budget + rate * dt, Math.max(1, rate)); // no burst after a stall
-    const n = Math.floor(this.budget);
+    const n = Math.min(REVEAL_PER_FRAME, Math.floor(this.budget));
     this.budget -= n;
     return this.reveal(n);
   }

@@ -9,8 +9,15 @@
 // the canvas shows the cells as they are painted. A drag paints at most MAX_DRAG_CELLS cells, and
 // the map keeps at most MAX_OBSTACLES obstacles and MAX_TOTAL_VERTICES vertices (a rect counts 4:
 // the core's limits, src/limits.rs).
+//
+// A pointer move costs the same on a map of 10 obstacles or 100,000: the press files the
+// obstacles by cell (painted cells' pieces in a map by cell, the others in a CellIndex,
+// cell-index.js), each cell crossed asks only about the obstacles filed near it, and the picture
+// is redrawn around the cells that changed (the view's drawSceneIn), not as a whole. The
+// scenario's list of obstacles is rebuilt once, on release.
 
 import { lattice, gridLattice, cellAt, cellBox, cellsOnSegment, grow, meets, rectMinus, wallPieces, pieceCell } from './cell-grid.js';
+import { CellIndex, obstacleBox } from './cell-index.js';
 import { inside } from './obstacle-shapes.js';
 
 export const MAX_DRAG_CELLS = 10000;
@@ -50,22 +57,42 @@ export class CellPainter {
     const lat = this.lattice();
     const c = cellAt(lat, x, y);
     if (!c) return false;
-    // The obstacles split: other obstacles, and each cell's pieces (rects within one cell).
+    // The obstacles split: each cell's pieces (rects within one cell), and the others, filed by
+    // cell; an other a cut replaces keeps its place, and its pieces (`repl`) take it.
     const pieces = new Map();
     const others = [];
+    const index = new CellIndex(lat);
     for (const ob of s.obstacles) {
       const p = ob.rect ? pieceCell(lat, ob.rect) : null;
       if (p) {
         const k = key(...p);
         if (!pieces.has(k)) pieces.set(k, []);
         pieces.get(k).push(ob.rect);
-      } else others.push(ob);
+      } else {
+        index.insert(others.length, obstacleBox(ob));
+        others.push({ ob, id: others.length, repl: null, cut: false });
+      }
     }
-    this.drag = { lat, pieces, others, base: s.obstacles.length, baseVerts: s.obstacles.reduce((n, ob) => n + (ob.polygon ? ob.polygon.length : 4), 0), count: 0, added: 0, changed: false, notes: new Set(), last: [x, y], wallCache: new Map() };
+    this.drag = { lat, pieces, others, index, base: s.obstacles.length, baseVerts: s.obstacles.reduce((n, ob) => n + (ob.polygon ? ob.polygon.length : 4), 0), count: 0, added: 0, changed: false, notes: new Set(), last: [x, y], redraw: [] };
     this.drag.mode = this.isWall(...c) ? 'erase' : 'paint';
     this.visit(c);
     this.flush();
     return true;
+  }
+
+  /** The other obstacles (not painted cells' pieces) that may meet world box `b`: [{ob, repl}] in order, none replaced. */
+  othersNear(b) {
+    const d = this.drag;
+    return d.index.query(b).map((id) => d.others[id]).filter((e) => !e.repl);
+  }
+
+  /** Every obstacle as drag `d` left them: the others in their places (a cut one by its pieces), then the painted cells' pieces. */
+  obstacles(d = this.drag) {
+    const out = [];
+    const put = (e) => { if (e.repl) e.repl.forEach((id) => put(d.others[id])); else out.push(e.ob); };
+    for (const e of d.others) if (!e.cut) put(e);
+    for (const list of d.pieces.values()) for (const rect of list) out.push({ rect });
+    return out;
   }
 
   /** The pointer moved to (x, y): every cell crossed since the last sample. */
@@ -86,7 +113,9 @@ export class CellPainter {
     const d = this.drag;
     if (!d) return;
     this.drag = null;
-    if (d.changed) this.host.commit();
+    if (!d.changed) return;
+    this.host.scenario.obstacles = this.obstacles(d);
+    this.host.commit();
   }
 
   /** Escape or a lost pointer: the map as it was before the drag. */
@@ -105,13 +134,9 @@ export class CellPainter {
     const d = this.drag;
     const { lat } = d;
     if (i < 0 || j < 0 || i >= lat.nx || j >= lat.ny) return true; // past the map: walls touch its edge
-    const k = key(i, j);
-    if (d.pieces.has(k)) return true;
-    if (!d.wallCache.has(k)) {
-      const cx = lat.ox + (i + 0.5) * lat.side, cy = lat.oy + (j + 0.5) * lat.side;
-      d.wallCache.set(k, d.others.some((ob) => inside(ob, cx, cy, 0)));
-    }
-    return d.wallCache.get(k);
+    if (d.pieces.has(key(i, j))) return true;
+    const cx = lat.ox + (i + 0.5) * lat.side, cy = lat.oy + (j + 0.5) * lat.side;
+    return this.othersNear([cx, cy, cx, cy]).some((e) => inside(e.ob, cx, cy, 0));
   }
 
   /** @param {number[]} c a cell [i, j] */
@@ -137,6 +162,7 @@ export class CellPainter {
     d.pieces.set(key(i, j), []); // a wall now, for its neighbours' pieces
     for (let dj = -1; dj <= 1; dj++) for (let di = -1; di <= 1; di++) this.rebuild(i + di, j + dj);
     d.changed = true;
+    d.redraw.push([i, j]);
   }
 
   erase(i, j) {
@@ -146,20 +172,27 @@ export class CellPainter {
     const box = cellBox(lat, i, j);
     const g = grow(box, lat.margin);
     const tiny = lat.margin / 100;
-    if (!this.room(3 * d.others.filter((ob) => ob.rect && meets(norm(ob.rect), g)).length + 8)) return; // splits; neighbours' corners
+    const near = this.othersNear(g);
+    const cut = near.filter((e) => e.ob.rect && meets(norm(e.ob.rect), g));
+    if (!this.room(3 * cut.length + 8)) return; // splits; neighbours' corners
     let changed = d.pieces.delete(k);
-    // rectangles over the cell lose it (their pieces around it stay); circles and polygons stay
-    d.others = d.others.flatMap((ob) => {
-      if (!ob.rect || !meets(norm(ob.rect), g)) return [ob];
+    // rectangles over the cell lose it (their pieces around it stay, in their place); circles and polygons stay
+    for (const e of cut) {
       changed = true;
-      return rectMinus(ob.rect, g, tiny).map((rect) => ({ rect }));
-    });
-    if (d.others.some((ob) => !ob.rect && touches(ob, box))) d.notes.add('Cells under a circle or polygon are not erased: select it and delete it.');
+      e.repl = rectMinus(e.ob.rect, g, tiny).map((rect) => {
+        const id = d.others.length;
+        d.others.push({ ob: { rect }, id, repl: null, cut: true });
+        d.index.insert(id, obstacleBox({ rect }));
+        return id;
+      });
+      d.index.remove(e.id);
+    }
+    if (near.some((e) => !e.ob.rect && touches(e.ob, box))) d.notes.add('Cells under a circle or polygon are not erased: select it and delete it.');
     if (!changed) return;
-    d.wallCache.clear();
     // the painted neighbours draw back from it (their sides facing it were exact)
     for (let dj = -1; dj <= 1; dj++) for (let di = -1; di <= 1; di++) if (di || dj) this.rebuild(i + di, j + dj);
     d.changed = true;
+    d.redraw.push([i, j]);
   }
 
   /**
@@ -190,13 +223,25 @@ export class CellPainter {
     d.pieces.set(k, wallPieces(d.lat, i, j, (a, b) => this.isWall(a, b)));
   }
 
-  /** The drag so far into the scenario, drawn at once (not yet committed). */
+  /**
+   * The drag so far, drawn at once (not yet committed): the picture around each cell it changed
+   * (the cell and its neighbours, whose pieces it rebuilt), with the obstacles that reach there.
+   */
   flush() {
     const d = this.drag;
-    const s = this.host.scenario;
-    s.obstacles = [...d.others, ...[...d.pieces.values()].flat().map((rect) => ({ rect }))];
+    const L = this.host.view.layout;
     this.host.selected = -1;
-    this.host.preview();
+    for (const [i, j] of d.redraw.splice(0)) {
+      if (!L) break;
+      const area = [...cellBox(d.lat, i - 1, j - 1).slice(0, 2), ...cellBox(d.lat, i + 1, j + 1).slice(2)];
+      const near = grow(area, L.px(4) / L.scale); // obstacle edges reaching into it
+      const [i0, j0, i1, j1] = d.index.cells(near);
+      const obstacles = this.othersNear(near).map((e) => e.ob);
+      for (let cj = j0; cj <= j1; cj++) {
+        for (let ci = i0; ci <= i1; ci++) for (const rect of d.pieces.get(key(ci, cj)) ?? []) obstacles.push({ rect });
+      }
+      this.host.view.drawSceneIn(area, obstacles);
+    }
     this.host.say([...d.notes].join(' '));
   }
 

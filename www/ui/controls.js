@@ -2,6 +2,7 @@
 // playback-speed and animation sliders, and which live chart a planner gets.
 
 import { EventKind } from '../run/events.js';
+import { shown } from './text.js';
 
 /** Events per second for the playback slider `input` (its maximum: Infinity, all at once). */
 export function speedRate(input) {
@@ -85,11 +86,14 @@ export function fillLegend(ul, items) {
   }));
 }
 
-/** The page's error box: `show(text)` (as text, never HTML) and `clear()`. */
+/**
+ * The page's error box: `show(text)` (as text, never HTML, bidirectional controls written out:
+ * text.js shown) and `clear()`.
+ */
 export function errorBox(box, textEl) {
   return {
     show(text) {
-      textEl.textContent = text;
+      textEl.textContent = shown(text);
       box.hidden = false;
     },
     clear() {
@@ -107,7 +111,7 @@ export function removeCustomScenarios(select) {
 /** Show `label` in scenario picker `select`, chosen, for a scenario that is not a built-in. */
 export function markCustomScenario(select, label) {
   removeCustomScenarios(select);
-  const opt = new Option(label, '', true, true);
+  const opt = new Option(shown(label), '', true, true);
   opt.dataset.file = 'yes';
   opt.disabled = true;
   select.append(opt);

@@ -1,14 +1,36 @@
 // The SVG export (exports.js): the canvas's drawing, element by element, built with DOM calls and
-// serialised (no HTML from data).
+// serialised (no HTML from data). It is built by a generator (sceneSvgSteps) that yields after
+// every EXPORT_BATCH records, nodes or cells, so the page can draw it in steps between frames.
+// Cells beyond SVG_MAX_CELLS (grid search's million on a large map) are one embedded PNG image of
+// the cells layer, drawn by the canvas's own code: a polygon a cell made a 145 MB file.
 
 import { PALETTE, STYLE } from '../draw/palette.js';
 import { EventKind, STRIDE } from '../run/events.js';
-import { Layout, pointInPolygon } from '../draw/transform.js';
+import { Layout, makeLayer, pointInPolygon } from '../draw/transform.js';
 import { robotStyle, outlineOf } from '../draw/robots.js';
-import { heatScale, cellFill, cellLevel } from '../draw/cells.js';
+import { CellsDrawing, heatScale, cellFill, cellLevel } from '../draw/cells.js';
+import { EXPORT_BATCH } from '../draw/redraw.js';
 import { LEGEND_TEXT, frameShown, legendLayout, measure } from './export-legend.js';
 
 const SVG_NS = 'http://www.w3.org/2000/svg';
+const XLINK_NS = 'http://www.w3.org/1999/xlink';
+/** Cells and heat-map tiles drawn as SVG elements; more are one embedded image of the layer. */
+export const SVG_MAX_CELLS = 20000;
+/** The embedded cells image: device px per css px, and its longest side. */
+const CELLS_IMAGE_SCALE = 2;
+const CELLS_IMAGE_MAX = 4096;
+
+/** Work counted in units (records, nodes, cells): add() says when a step of `batch` units ended. */
+class Work {
+  constructor(total, batch) { this.total = Math.max(1, total); this.batch = batch; this.done = 0; this.next = batch; }
+  add(n = 1) {
+    this.done += n;
+    if (this.done < this.next) return false;
+    this.next = this.done + this.batch;
+    return true;
+  }
+  get share() { return Math.min(1, this.done / this.total); }
+}
 
 // ---------------------------------------------------------------------------------------------
 // SVG: the canvas's drawing, element by element (css px, the canvas at a device pixel ratio of 1)
@@ -122,7 +144,7 @@ function robotSvg(parent, L, robot, polys, state, st, cls) {
 }
 
 /** Samples and raw tries (view.js drawUnder), when their overlays are on. */
-function samplesSvg(svg, view, L) {
+function* samplesSvg(svg, view, L, work) {
   const { showAccepted, showRejected, showTries } = view.options;
   if (!showAccepted && !showRejected && !showTries) return;
   const acc = [], rej = [], tries = [[], []];
@@ -139,6 +161,7 @@ function samplesSvg(svg, view, L) {
       pending = null;
       if (showRejected) sq(rej, d[o + 4], d[o + 5], rs);
     } else if (kind === EventKind.SAMPLE_TRY && showTries) sq(tries[d[o + 2] > 0 ? 1 : 0], d[o + 4], d[o + 5], ts);
+    if (work.add()) yield work.share;
   }
   if (pending && showAccepted && view.showResult) sq(acc, ...pending, as);
   const g = node('g', { id: 'samples' }, svg);
@@ -151,10 +174,11 @@ function samplesSvg(svg, view, L) {
 }
 
 /** The visibility graph's clear edges (view.js drawUnder), one path. */
-function graphSvg(svg, view, L) {
+function* graphSvg(svg, view, L, work) {
   let d = '';
   for (const [r, o0, o1] of view.store.spans(0, view.store.length)) for (let o = o0; o < o1; o += STRIDE) {
     if (r[o] === EventKind.GRAPH_EDGE && r[o + 9] > 0) d += `M${fmt(L.sx(r[o + 4]))} ${fmt(L.sy(r[o + 5]))}L${fmt(L.sx(r[o + 6]))} ${fmt(L.sy(r[o + 7]))}`;
+    if (work.add()) yield work.share;
   }
   const st = STYLE[EventKind.GRAPH_EDGE];
   if (d) node('path', { id: 'graph', d, fill: 'none', ...stroke(st.color, st.width) }, svg);
@@ -179,15 +203,55 @@ function cellMarksD(L, list) {
 
 const cellPoints = (L, c) => pairs(c.pts).map(([x, y]) => `${fmt(L.sx(x))},${fmt(L.sy(y))}`).join(' ');
 
+/** How many cells and tiles the cells layer draws for options `o` (one element each in the SVG). */
+function cellElements(m, o) {
+  return (o.showCells ? m.order.length : 0) + (o.showHeat ? m.field.length + (o.showCells ? m.changed.length : 0) : 0)
+    + (o.showArrows ? m.field.length : 0);
+}
+
+/**
+ * The cells layer as one embedded PNG image, drawn by the canvas's own code (cells.js) at
+ * CELLS_IMAGE_SCALE device px per css px (its longest side at most CELLS_IMAGE_MAX).
+ */
+function cellsImage(svg, view) {
+  const [w, h] = view.css;
+  const scale = Math.min(CELLS_IMAGE_SCALE, CELLS_IMAGE_MAX / Math.max(w, h));
+  const L2 = new Layout(view.scenario.bounds, w, h, scale);
+  const layer = makeLayer();
+  layer.canvas.width = L2.width;
+  layer.canvas.height = L2.height;
+  new CellsDrawing(layer, view.model).redraw(L2, view.options);
+  const url = layer.canvas.toDataURL('image/png');
+  layer.canvas.width = 0;
+  layer.canvas.height = 0;
+  const img = node('image', { id: 'cells', x: 0, y: 0, width: w, height: h, preserveAspectRatio: 'none', href: url }, svg);
+  img.setAttributeNS(XLINK_NS, 'xlink:href', url); // SVG 1.1 readers
+}
+
 /**
  * The cells layer (cells.js redraw): cells filled by label and level or verdict, × marks; the
  * heat map over them, then the judged cells' outlines and marks again; descent arrows; then the
- * obstacles veiled over it all.
+ * obstacles veiled over it all. More than SVG_MAX_CELLS elements: one image (`notes` says so).
  */
-function cellsSvg(svg, view, L) {
+function* cellsSvg(svg, view, L, work, notes) {
   const m = view.model?.cells;
   const o = view.options;
   if (!m || !view.cells.active(o)) return;
+  const elements = cellElements(m, o);
+  if (elements > SVG_MAX_CELLS) {
+    cellsImage(svg, view);
+    notes.push(`the cells as an image (${m.order.length.toLocaleString('en')} cells${m.field.length ? `, ${m.field.length.toLocaleString('en')} heat-map tiles` : ''})`);
+    work.add(elements);
+    yield work.share;
+  } else yield* cellElementsSvg(svg, view, L, work);
+  const veil = node('g', { id: 'veil', 'fill-opacity': 0.6, 'stroke-opacity': 0.6 }, svg);
+  for (const ob of view.scenario.obstacles) obstacleSvg(veil, L, ob);
+}
+
+/** The cells layer, an element a cell or tile (cellsSvg). */
+function* cellElementsSvg(svg, view, L, work) {
+  const m = view.model.cells;
+  const o = view.options;
   const st = STYLE[EventKind.CELL];
   const marks = (ids, id) => {
     const d = cellMarksD(L, ids.map((k) => m.cells.get(k)).filter((c) => c?.done && c.state === 1));
@@ -202,6 +266,7 @@ function cellsSvg(svg, view, L) {
       const c = m.cells.get(id);
       if (!c || !c.done) continue;
       node('polygon', { points: cellPoints(L, c), ...fill(cellFill(c, o.showHeat)), ...stroke(PALETTE.cellEdge, st.widths[cellLevel(c)]) }, g);
+      if (work.add()) yield work.share;
     }
     marks(m.order, 'cell-marks');
   }
@@ -251,17 +316,17 @@ function cellsSvg(svg, view, L) {
     }
     if (d) node('path', { id: 'arrows', d, fill: 'none', ...stroke(PALETTE.arrow, 1.1) }, svg);
   }
-  const veil = node('g', { id: 'veil', 'fill-opacity': 0.6, 'stroke-opacity': 0.6 }, svg);
-  for (const ob of view.scenario.obstacles) obstacleSvg(veil, L, ob);
 }
 
+
 /** The trees (view.js redrawTreeLayer): edges, node squares, exhausted nodes. */
-function treesSvg(svg, view, L) {
+function* treesSvg(svg, view, L, work) {
   const trees = view.model?.trees ?? [];
   const edge = STYLE[EventKind.NODE_ADDED];
   const size = Math.max(1, Math.round(edge.size));
   const attempt = view.model ? view.model.cells.attempt : -1;
-  trees.forEach((t, k) => {
+  for (let k = 0; k < trees.length; k++) {
+    const t = trees[k];
     const colour = edge.colors[view.treeGroup(k)];
     const opacity = attempt > k ? 0.3 : undefined;
     let edges = '', nodes = '';
@@ -271,6 +336,7 @@ function treesSvg(svg, view, L) {
       const x = L.sx(t.x[i]), y = L.sy(t.y[i]);
       if (p >= 0 && t.known(p)) edges += `M${fmt(L.sx(t.x[p]))} ${fmt(L.sy(t.y[p]))}L${fmt(x)} ${fmt(y)}`;
       if (p >= 0) nodes += squareD(Math.round(x - size / 2), Math.round(y - size / 2), size);
+      if (work.add()) yield work.share;
     }
     // the canvas fills the node squares as it goes and strokes the edges last: nodes under edges
     if (nodes) node('path', { class: 'nodes', d: nodes, opacity, ...fill(colour) }, svg);
@@ -284,11 +350,11 @@ function treesSvg(svg, view, L) {
       }
       if (d) node('path', { class: 'exhausted', d, ...fill(PALETTE.exhausted), ...stroke(PALETTE.exhaustedEdge, 1) }, svg);
     }
-  });
+  }
 }
 
 /** Dynamic-domain circles (one path: overlapping discs do not darken), clipped to the bounds. */
-function domainsSvg(svg, view, L) {
+function* domainsSvg(svg, view, L, work) {
   if (!view.options.showDomains || !view.model) return;
   let d = '';
   for (const t of view.model.trees) {
@@ -296,18 +362,20 @@ function domainsSvg(svg, view, L) {
     for (let i = 0; i < t.n; i++) {
       const r = t.radius[i];
       if (Number.isFinite(r) && t.known(i)) d += circleD(L.sx(t.x[i]), L.sy(t.y[i]), r * L.scale);
+      if (work.add()) yield work.share;
     }
   }
   if (d) node('path', { id: 'domains', d, 'clip-path': 'url(#bounds-clip)', ...fill('rgba(140, 81, 10, 0.06)'), ...stroke(STYLE[EventKind.DOMAIN].color, STYLE[EventKind.DOMAIN].width) }, svg);
 }
 
 /** Blocked motions (crosses), when their overlay is on. */
-function collisionsSvg(svg, view, L) {
+function* collisionsSvg(svg, view, L, work) {
   if (!view.options.showCollisions) return;
   const col = STYLE[EventKind.COLLISION];
   const cs = col.size;
   let d = '';
   for (const [dd, o0, o1] of view.store.spans(0, view.store.length)) for (let o = o0; o < o1; o += STRIDE) {
+    if (work.add()) yield work.share;
     if (dd[o] !== EventKind.COLLISION) continue;
     const x = L.sx(dd[o + 4]), y = L.sy(dd[o + 5]);
     d += `M${fmt(x - cs)} ${fmt(y - cs)}L${fmt(x + cs)} ${fmt(y + cs)}M${fmt(x - cs)} ${fmt(y + cs)}L${fmt(x + cs)} ${fmt(y - cs)}`;
@@ -377,7 +445,9 @@ function legendSvg(svg, items, width, top) {
 }
 
 /**
- * The current picture as an SVG document (a string), drawn as the canvas draws it: background,
+ * The current picture as an SVG document: a generator yielding the share of the work done after
+ * every `batch` records, nodes or cells, and returning {text, notes} (notes: what was drawn
+ * otherwise than element by element). Drawn as the canvas draws it: background,
  * free space, obstacles and bounds; cells (with the obstacles veiled over them); samples and
  * tries, dynamic domains, trees, blocked motions (each when its overlay is on); inspection
  * points, start and goal, markers, the best branch, the region of influence and local minima,
@@ -386,9 +456,13 @@ function legendSvg(svg, items, width, top) {
  * the sensor's wedge. `legend`: items under the picture; `transparent`: no background or
  * free-space fill.
  */
-export function sceneSvg(view, { legend = null, transparent = false } = {}) {
+export function* sceneSvgSteps(view, { legend = null, transparent = false } = {}, batch = EXPORT_BATCH) {
   const sc = view.scenario;
   if (!view.layout || !sc) throw new Error('nothing to export yet: load a scenario first');
+  const nodes = (view.model?.trees ?? []).reduce((n, t) => n + t.n, 0);
+  const m = view.model?.cells;
+  const work = new Work(3 * view.store.length + 2 * nodes + (m ? cellElements(m, view.options) : 0), batch);
+  const notes = [];
   const [w, h] = view.css;
   const L = new Layout(sc.bounds, w, h, 1);
   const legendHeight = legend?.length ? legendLayout(legend, w, measure).height : 0;
@@ -406,12 +480,12 @@ export function sceneSvg(view, { legend = null, transparent = false } = {}) {
   const obs = node('g', { id: 'obstacles' }, svg);
   for (const ob of sc.obstacles ?? []) obstacleSvg(obs, L, ob);
   node('rect', { id: 'bounds', ...boundsBox, fill: 'none', ...stroke(PALETTE.bounds, 1.5) }, svg);
-  cellsSvg(svg, view, L);
-  samplesSvg(svg, view, L);
-  graphSvg(svg, view, L);
-  domainsSvg(svg, view, L);
-  treesSvg(svg, view, L);
-  collisionsSvg(svg, view, L);
+  yield* cellsSvg(svg, view, L, work, notes);
+  yield* samplesSvg(svg, view, L, work);
+  yield* graphSvg(svg, view, L, work);
+  yield* domainsSvg(svg, view, L, work);
+  yield* treesSvg(svg, view, L, work);
+  yield* collisionsSvg(svg, view, L, work);
   inspectionSvg(svg, view, L);
   for (const which of ['start', 'goal']) {
     const state = view.stateOf(which);
@@ -450,5 +524,14 @@ export function sceneSvg(view, { legend = null, transparent = false } = {}) {
     }
   }
   if (legendHeight) legendSvg(svg, legend, w, h);
-  return `<?xml version="1.0" encoding="UTF-8"?>\n${new XMLSerializer().serializeToString(svg)}\n`;
+  return { text: `<?xml version="1.0" encoding="UTF-8"?>\n${new XMLSerializer().serializeToString(svg)}\n`, notes };
+}
+
+/** The current picture as an SVG document (a string), built at once (sceneSvgSteps). */
+export function sceneSvg(view, options = {}) {
+  const steps = sceneSvgSteps(view, options, Infinity);
+  for (;;) {
+    const s = steps.next();
+    if (s.done) return s.value.text;
+  }
 }

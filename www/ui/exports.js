@@ -4,6 +4,12 @@
 // export's size, so the visible canvas is never resized or redrawn for an export. Options: a
 // legend under the picture (PNG, SVG, GIF) and a transparent background (PNG, SVG; a GIF has no
 // alpha, a WebM neither). No HTML from data: the SVG is built with DOM calls and serialised.
+//
+// A run of a million nodes takes seconds to draw, so an export never draws it in one go: the
+// ExportView owes a full redraw and catchUp() draws it in steps of EXPORT_BATCH records or nodes
+// (draw/redraw.js), the SVG likewise (export-svg.js sceneSvgSteps), yielding to the page between
+// steps: the page keeps drawing frames, the status shows how far it got, and pressing the export's
+// button again cancels it.
 
 import { PALETTE } from '../draw/palette.js';
 import { View } from '../draw/view.js';
@@ -12,7 +18,32 @@ import { downloadBlob } from '../draw/stage.js';
 import { fixWebm } from './webm.js';
 import { GifWriter, hexRgb } from './gif.js';
 import { LEGEND_TEXT, frameShown, legendLayout, measure } from './export-legend.js';
-import { sceneSvg } from './export-svg.js';
+import { sceneSvgSteps } from './export-svg.js';
+import { EXPORT_BATCH, redrawSteps } from '../draw/redraw.js';
+import { shown } from './text.js';
+
+/** Thrown when the user cancelled an export in progress. */
+export class ExportCancelled extends Error {
+  constructor(what) { super(`${what} cancelled`); this.name = 'ExportCancelled'; }
+}
+
+/** Let the page run (draw a frame, read a click) before the next step of an export. */
+const breathe = () => new Promise((resolve) => { setTimeout(resolve, 0); });
+
+/**
+ * Run drawing `steps` (a generator yielding the share done), pausing for the page after each:
+ * `progress(share)` is told; `cancelled()` true stops with ExportCancelled(`what`). Returns the
+ * generator's value.
+ */
+export async function runSteps(steps, { what = 'The export', progress = null, cancelled = () => false } = {}) {
+  for (;;) {
+    const s = steps.next();
+    if (s.done) return s.value;
+    progress?.(s.value);
+    await breathe();
+    if (cancelled()) throw new ExportCancelled(what);
+  }
+}
 
 /** Bounds of what a user may ask for (the fields say so too). */
 export const LIMITS = Object.freeze({
@@ -33,6 +64,23 @@ export class ExportView extends View {
     this.transparent = transparent;
     this.drawnTo = 0;
     this.seenMarkers = null;
+    this.owed = false; // a full redraw of the run's layers, which catchUp() draws in steps
+  }
+
+  /** A full redraw is owed, not drawn: catchUp() draws it in steps. */
+  redrawTree() {
+    if (this.layout) this.owed = true;
+  }
+
+  /**
+   * Draw the redraw follow() left owed, EXPORT_BATCH records or nodes a step, yielding to the page
+   * between steps (runSteps: `progress`, `cancelled`, `what`).
+   */
+  async catchUp(options = {}) {
+    if (!this.owed) return;
+    this.owed = false;
+    this.drawnTo = this.store.length; // later records are drawn by the next follow()
+    await runSteps(redrawSteps(this, EXPORT_BATCH, this.drawnTo), options);
   }
 
   drawScene() {
@@ -61,8 +109,8 @@ export class ExportView extends View {
 
   /**
    * Catch up with the source: laid out `width` px wide on the first call (the box is kept after
-   * that, so a recording keeps its size when the page is resized), new records drawn, a cleared
-   * or redrawn run redrawn from the store.
+   * that, so a recording keeps its size when the page is resized), new records drawn; a cleared
+   * or redrawn run is owed (catchUp() draws it).
    */
   follow(width) {
     const s = this.source;
@@ -93,7 +141,7 @@ export class ExportView extends View {
       this.drawnTo = this.store.length;
       return;
     }
-    if (this.store.length > this.drawnTo) {
+    if (this.store.length > this.drawnTo && !this.owed) {
       this.drawRecords(this.drawnTo, this.store.length);
       this.drawnTo = this.store.length;
     }
@@ -204,10 +252,13 @@ function capArea(view, width, pixels) {
  * an ExportView (the visible canvas is untouched). `legend`: items [{label, color, shape}] drawn
  * under it; `transparent`: no background.
  */
-export async function pngBlob(view, width, { legend = null, transparent = false } = {}) {
+export async function pngBlob(view, width, { legend = null, transparent = false, progress = null, cancelled = () => false } = {}) {
   const ev = new ExportView(view, transparent);
   try {
     ev.follow(width);
+    await ev.catchUp({ what: 'The PNG', progress, cancelled });
+    ev.follow(width); // what came meanwhile (a run still going)
+    await ev.catchUp({ what: 'The PNG', progress, cancelled });
     ev.drawLikeSource();
     const out = withLegend(ev.canvas, legend, ev.dpr, transparent);
     return await new Promise((resolve, reject) => out.toBlob((b) => (b ? resolve(b) : reject(new Error('the PNG could not be made (too big for this browser?)'))), 'image/png'));
@@ -227,14 +278,20 @@ export function webmType() {
 /**
  * Record the picture as WebM `width` px wide (even; height by the scene) until `stop()`: an
  * ExportView follows `view` and is drawn `fps` times a second, each drawing a frame of the
- * stream. `stop()` resolves to {blob, width, height, note}: the WebM made seekable (webm.js),
- * or as recorded with a note when that failed.
+ * stream. The run so far is drawn first, in steps (`progress`, `cancelled` as runSteps's); a
+ * redraw the source makes while recording (a new run) is drawn in steps too, the video holding
+ * its last frame meanwhile. Resolves, once recording, to {width, height, stop()}; `stop()`
+ * resolves to {blob, width, height, note}: the WebM made seekable (webm.js), or as recorded with
+ * a note when that failed.
  */
-export function recordWebm(view, { width, fps = 30, animFps = () => 10 }) {
+export async function recordWebm(view, { width, fps = 30, animFps = () => 10, progress = null, cancelled = () => false }) {
   const type = webmType();
   if (!type) throw new Error('this browser cannot record WebM (no MediaRecorder)');
   const ev = new ExportView(view);
-  ev.follow(width);
+  try {
+    ev.follow(width);
+    await ev.catchUp({ what: 'The recording', progress, cancelled });
+  } catch (e) { ev.dispose(); throw e; }
   ev.draw(performance.now(), animFps());
   const stream = ev.canvas.captureStream(0);
   const track = stream.getVideoTracks()[0];
@@ -242,13 +299,17 @@ export function recordWebm(view, { width, fps = 30, animFps = () => 10 }) {
   const rec = new MediaRecorder(stream, { mimeType: type, videoBitsPerSecond: Math.round(Math.min(25e6, Math.max(1e6, pixels * 2.5))) });
   const chunks = [];
   rec.ondataavailable = (e) => { if (e.data.size) chunks.push(e.data); };
-  let failed = null;
-  const frame = () => {
+  let failed = null, drawing = false, stopped = false;
+  const frame = async () => {
+    if (drawing) return; // a redraw in steps is under way: the video holds its last frame
+    drawing = true;
     try {
       ev.follow(width);
+      await ev.catchUp({ what: 'The recording', cancelled: () => stopped });
       ev.draw(performance.now(), animFps());
       track.requestFrame();
-    } catch (e) { failed ??= e; }
+    } catch (e) { if (!(e instanceof ExportCancelled)) failed ??= e; }
+    drawing = false;
   };
   rec.start(250);
   track.requestFrame();
@@ -258,6 +319,7 @@ export function recordWebm(view, { width, fps = 30, animFps = () => 10 }) {
     height: ev.canvas.height,
     stop: () => new Promise((resolve) => {
       clearInterval(timer);
+      stopped = true;
       rec.onstop = async () => {
         stream.getTracks().forEach((t) => t.stop());
         const size = { width: ev.canvas.width, height: ev.canvas.height };
@@ -270,7 +332,10 @@ export function recordWebm(view, { width, fps = 30, animFps = () => 10 }) {
           resolve({ blob: raw, ...size, note: `saved as recorded (no duration): ${e.message}` });
         }
       };
-      frame();
+      if (!drawing) {
+        ev.follow(width);
+        if (!ev.owed) { ev.draw(performance.now(), animFps()); track.requestFrame(); }
+      }
       rec.stop();
     }),
   };
@@ -286,13 +351,16 @@ export function paletteColours() {
 /**
  * An animated GIF of the playback: `frames` pictures `width` px wide taken `fps` times a second
  * (the robot's animation at the times they stand for, so a slow machine does not stutter it),
- * looping forever. `legend`: items drawn under each picture. `onFrame(k)` after each frame;
- * `cancelled()` stops early (what was taken is kept). Resolves to {blob, width, height, frames}.
+ * looping forever. `legend`: items drawn under each picture. The run so far is drawn first, in
+ * steps (`progress(share)` after each); `onFrame(k)` after each frame; `cancelled()` stops early
+ * (while drawing the run: ExportCancelled; while taking frames: what was taken is kept).
+ * Resolves to {blob, width, height, frames}.
  */
-export async function recordGif(view, { width, frames, fps = LIMITS.gif.fps, animFps = () => 10, legend = null, onFrame = null, cancelled = () => false }) {
+export async function recordGif(view, { width, frames, fps = LIMITS.gif.fps, animFps = () => 10, legend = null, onFrame = null, progress = null, cancelled = () => false }) {
   const ev = new ExportView(view);
   try {
     ev.follow(width);
+    await ev.catchUp({ what: 'The GIF', progress, cancelled });
     const t0 = performance.now(), step = 1000 / fps;
     let writer = null, taken = 0, reader = null, readCtx = null;
     for (let k = 0; k < frames && !cancelled(); k++) {
@@ -300,6 +368,9 @@ export async function recordGif(view, { width, frames, fps = LIMITS.gif.fps, ani
       const wait = due - performance.now();
       if (wait > 0) await new Promise((r) => setTimeout(r, wait));
       ev.follow(width);
+      if (ev.owed) { // the source redrew its run (a new run): drawn in steps, then the frame
+        try { await ev.catchUp({ what: 'The GIF', cancelled }); } catch (e) { if (e instanceof ExportCancelled) break; throw e; }
+      }
       ev.draw(due, animFps());
       const pic = withLegend(ev.canvas, legend, ev.dpr, false);
       if (!reader) {
@@ -332,7 +403,7 @@ export function wireExports({ view, stem, legend = () => [], animFps = () => 10 
   /** @param {string} id @returns {any} the page's element (an input or button) */
   const $ = (id) => document.getElementById(id);
   const status = $('export-status');
-  const say = (...parts) => { status.textContent = parts.filter(Boolean).join('. '); };
+  const say = (...parts) => { status.textContent = shown(parts.filter(Boolean).join('. ')); };
   const options = () => ({ legend: $('export-legend').checked ? legend() : null, transparent: $('export-transparent').checked });
   const field = (id, min, max, fallback, what) => {
     const r = bounded($(id).value, min, max, fallback, what);
@@ -341,23 +412,50 @@ export function wireExports({ view, stem, legend = () => [], animFps = () => 10 
   };
   const fail = (what, e) => say(`${what} failed: ${e?.message ?? e}`);
 
-  $('export-png').addEventListener('click', async () => {
+  const pct = (share) => `${Math.floor(share * 100)}%`;
+
+  /**
+   * A button whose export draws in steps: a click starts `run({progress, cancelled})` (the
+   * button then reads `busyText` and a second click cancels it); `run` resolves to the status
+   * line's parts. While it draws, the status says how far it got.
+   */
+  const stepped = (button, what, run) => {
+    const label = button.textContent;
+    let busy = false, cancel = false;
+    button.addEventListener('click', async () => {
+      if (busy) { cancel = true; return; }
+      busy = true;
+      cancel = false;
+      button.textContent = `Cancel ${label}`;
+      button.setAttribute('aria-pressed', 'true');
+      try {
+        say(...await run({
+          progress: (share) => { if (!cancel) say(`Drawing the ${what}: ${pct(share)}… (press Cancel ${label} to stop)`); },
+          cancelled: () => cancel,
+        }));
+      } catch (e) {
+        if (e instanceof ExportCancelled) say(`${e.message}: nothing was saved.`); else fail(what, e);
+      }
+      busy = false;
+      button.textContent = label;
+      button.setAttribute('aria-pressed', 'false');
+    });
+  };
+
+  stepped($('export-png'), 'PNG', async (ctl) => {
     const asked = field('png-width', LIMITS.png.min, LIMITS.png.max, 1600, 'PNG width');
-    try {
-      const width = capArea(view, asked.value, LIMITS.png.pixels);
-      const capped = width < asked.value ? `at most ${LIMITS.png.pixels / 1e6} million pixels: ${width} px wide` : '';
-      const o = options();
-      downloadBlob(await pngBlob(view, width, o), `${stem()}-${width}.png`);
-      say(`PNG, ${width} px wide${o.legend ? ', with legend' : ''}${o.transparent ? ', transparent' : ''}`, asked.note, capped);
-    } catch (e) { fail('PNG', e); }
+    const width = capArea(view, asked.value, LIMITS.png.pixels);
+    const capped = width < asked.value ? `at most ${LIMITS.png.pixels / 1e6} million pixels: ${width} px wide` : '';
+    const o = options();
+    downloadBlob(await pngBlob(view, width, { ...o, ...ctl }), `${stem()}-${width}.png`);
+    return [`PNG, ${width} px wide${o.legend ? ', with legend' : ''}${o.transparent ? ', transparent' : ''}`, asked.note, capped];
   });
 
-  $('export-svg').addEventListener('click', () => {
-    try {
-      const o = options();
-      downloadBlob(new Blob([sceneSvg(view, o)], { type: 'image/svg+xml' }), `${stem()}.svg`);
-      say(`SVG of the current picture${o.legend ? ', with legend' : ''}${o.transparent ? ', transparent' : ''}`);
-    } catch (e) { fail('SVG', e); }
+  stepped($('export-svg'), 'SVG', async (ctl) => {
+    const o = options();
+    const { text, notes } = await runSteps(sceneSvgSteps(view, o), { what: 'The SVG', ...ctl });
+    downloadBlob(new Blob([text], { type: 'image/svg+xml' }), `${stem()}.svg`);
+    return [`SVG of the current picture${o.legend ? ', with legend' : ''}${o.transparent ? ', transparent' : ''}${notes.length ? ` (${notes.join('; ')})` : ''}`];
   });
 
   const gif = $('export-gif');
@@ -369,23 +467,27 @@ export function wireExports({ view, stem, legend = () => [], animFps = () => 10 
     gifBusy = true;
     gifStop = false;
     gif.setAttribute('aria-pressed', 'true');
+    gif.textContent = 'Stop GIF';
     try {
       const o = options();
       const r = await recordGif(view, {
         width: w.value, frames: n.value, animFps, legend: o.legend, cancelled: () => gifStop,
+        progress: (share) => { if (!gifStop) say(`Drawing the run for the GIF: ${pct(share)}… (press Stop GIF to cancel)`); },
         onFrame: (k) => { gif.textContent = `Stop GIF (${k}/${n.value})`; },
       });
       downloadBlob(r.blob, `${stem()}.gif`);
       say(`GIF, ${r.width} × ${r.height}, ${r.frames} frames at ${LIMITS.gif.fps} fps, ${(r.blob.size / 1024).toFixed(0)} kB`, w.note, n.note,
         o.transparent ? 'a GIF has no transparent background' : '');
-    } catch (e) { fail('GIF', e); }
+    } catch (e) {
+      if (e instanceof ExportCancelled) say(`${e.message}: nothing was saved.`); else fail('GIF', e);
+    }
     gifBusy = false;
     gif.textContent = 'GIF';
     gif.setAttribute('aria-pressed', 'false');
   });
 
   const record = $('record');
-  let recording = null;
+  let recording = null, preparing = null; // preparing: {cancel} while the run is drawn before recording
   record.disabled = !webmType();
   if (!webmType()) record.title = 'This browser cannot record WebM';
   record.addEventListener('click', async () => {
@@ -402,15 +504,27 @@ export function wireExports({ view, stem, legend = () => [], animFps = () => 10 
       say(`WebM, ${out.width} × ${out.height}, ${(out.blob.size / 1024).toFixed(0)} kB`, out.note);
       return;
     }
+    if (preparing) { preparing.cancel = true; return; }
     const asked = field('video-width', LIMITS.video.min, LIMITS.video.max, 1280, 'Video width');
+    const prep = { cancel: false };
+    preparing = prep;
+    record.textContent = 'Cancel recording';
+    record.setAttribute('aria-pressed', 'true');
     try {
       let width = capArea(view, asked.value, LIMITS.video.pixels);
       width -= width % 2; // video encoders want even sizes
-      recording = recordWebm(view, { width, animFps });
+      recording = await recordWebm(view, {
+        width, animFps, cancelled: () => prep.cancel,
+        progress: (share) => { if (!prep.cancel) say(`Drawing the run before recording: ${pct(share)}… (press Cancel recording to stop)`); },
+      });
       record.textContent = 'Stop and save';
-      record.setAttribute('aria-pressed', 'true');
       say(`Recording ${recording.width} × ${recording.height}…`, asked.note,
         width < asked.value - 1 ? `at most ${(LIMITS.video.pixels / 1e6).toFixed(1)} million pixels` : '');
-    } catch (e) { fail('Recording', e); }
+    } catch (e) {
+      record.textContent = 'Record WebM';
+      record.setAttribute('aria-pressed', 'false');
+      if (e instanceof ExportCancelled) say(`${e.message}: nothing was saved.`); else fail('Recording', e);
+    }
+    preparing = null;
   });
 }

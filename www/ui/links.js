@@ -36,6 +36,8 @@
 
 import { parseParam, plannerFits, taskOf } from './panel.js';
 import { OVERLAYS } from '../draw/palette.js';
+import { shown } from './text.js';
+import { readSeed, blockSeedProblem } from './seed.js';
 
 export const VIEW_DEFAULTS = Object.freeze({ speed: 30, anim: 50, rawPath: false, stepSize: 1 });
 export const CONTROLS = Object.freeze(['run', 'pause', 'step', 'back', 'reset', 'speed', 'seed']);
@@ -61,16 +63,13 @@ export const MAX_PAIRS = 1000;
 export const MAX_PROBLEMS = 30;
 export const ECHO_CHARS = 60;
 
-/** Bidirectional controls: echoed, they would reverse the rest of the message's line. */
-const BIDI_CONTROLS = /[\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069]/g;
-
 /**
- * `text` as a message echoes it: bidirectional controls shown as [U+202E] (so an override in a
- * link cannot turn the message around), cut to `n` characters (code points kept whole) with an
- * ellipsis when cut.
+ * `text` as a message echoes it: bidirectional controls shown as [U+202E] (text.js shown: an
+ * override in a link cannot turn the message around), cut to `n` characters (code points kept
+ * whole) with an ellipsis when cut.
  */
 export function cut(text, n = ECHO_CHARS) {
-  const s = String(text).replace(BIDI_CONTROLS, (c) => `[U+${c.charCodeAt(0).toString(16).toUpperCase().padStart(4, '0')}]`);
+  const s = shown(text);
   if (s.length <= n) return s;
   let end = n - 1;
   if (/[\uD800-\uDBFF]/.test(s[end - 1])) end--; // never half a surrogate pair
@@ -312,9 +311,9 @@ export async function readShare(hash, { builtins = null } = {}) {
         break;
       case 'seed': {
         if (!needs(key, value)) break;
-        const v = wholeNumber(value, 0, Number.MAX_SAFE_INTEGER);
-        if (v === null) problems.push(`seed=${cut(value)}: the seed must be a whole number ≥ 0; the scenario's seed is used.`);
-        else share.seed = v;
+        const r = readSeed(value);
+        if (r.why) problems.push(`seed=${cut(value)}: the seed ${r.reason}; the scenario's seed is used.`);
+        else share.seed = r.seed;
         break;
       }
       case 'overlays':
@@ -428,6 +427,8 @@ export function setupFor(share, scenario, registry, fallback = null) {
   }
   const seedOf = (s) => (Number.isSafeInteger(s) && s >= 0 ? s : null);
   block.seed = share.seed ?? seedOf(scenario?.planner?.seed) ?? 1;
+  const unusable = share.seed === null ? blockSeedProblem(scenario?.planner?.seed) : '';
+  if (unusable) problems.push(`${unusable}; seed ${block.seed} is used.`);
   for (const [key, text] of share.params) {
     const spec = specs.find((s) => s.name === key);
     if (!spec) {

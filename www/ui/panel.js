@@ -14,6 +14,7 @@
 // planners only when it has inspection points (setTask); a note says what is left out and why.
 
 import { el } from './dom.js';
+import { readSeed, blockSeedProblem } from './seed.js';
 
 /** How many of a planner's own parameters the panel shows before "More parameters". */
 export const MAIN_PARAMS = 3;
@@ -253,15 +254,15 @@ export function createPanel(root, registry, onChange, { prefix = '', seed: withS
     emit();
   }
   seed.addEventListener('change', () => {
-    const v = Number(seed.value);
-    if (seed.value.trim() === '' || !Number.isSafeInteger(v) || v < 0) {
-      seed.setAttribute('aria-invalid', 'true');
-      seedHint.textContent = 'The seed must be a whole number ≥ 0.';
+    const r = readSeed(seed.value);
+    if (r.why) { // refused: the field shows the seed that runs, the hint why
+      seedHint.textContent = `Seed: ${r.why}; the seed stays ${state.seed}.`;
+      seed.value = String(state.seed);
       return;
     }
     seed.removeAttribute('aria-invalid');
     seedHint.textContent = '';
-    state.seed = v;
+    state.seed = r.seed;
     emit();
   });
 
@@ -297,7 +298,14 @@ export function createPanel(root, registry, onChange, { prefix = '', seed: withS
     for (const name of Object.keys(state.set)) state.set[name] = {};
     for (const name of Object.keys(state.groups)) state.groups[name] = {};
     state.run = {};
-    if (Number.isSafeInteger(block.seed) && block.seed >= 0) state.seed = block.seed;
+    const unusable = blockSeedProblem(block.seed);
+    if (unusable) {
+      seedHint.textContent = `${unusable}; the seed stays ${state.seed}.`;
+      seed.value = String(state.seed);
+    } else if (block.seed !== undefined && block.seed !== null) {
+      state.seed = block.seed;
+      seedHint.textContent = '';
+    }
     for (const [key, value] of Object.entries(block)) {
       if (key === 'name' || key === 'seed') continue;
       const spec = p.params.find((s) => s.name === key);

@@ -6,6 +6,7 @@
 // continuous coverage and the fk cost only in a finished result that has them).
 
 import { el } from './dom.js';
+import { shown } from './text.js';
 
 const fixed = (v, n) => (v === undefined || v === null || !Number.isFinite(v) ? undefined : v.toFixed(n));
 
@@ -77,7 +78,7 @@ export function createStats(dl, prefix = '') {
       let v;
       try { v = f.value(s); } catch { v = undefined; }
       const none = v === undefined || v === null || Number.isNaN(v);
-      dd.textContent = none ? '–' : String(v);
+      dd.textContent = none ? '–' : shown(String(v)); // a reason may echo the scenario
       if (f.optional) row.hidden = none;
     }
   };

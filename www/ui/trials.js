@@ -6,6 +6,7 @@
 
 import { el } from './dom.js';
 import { runPool } from './seed-pool.js';
+import { MAX_SEED } from './seed.js';
 
 export const SEEDS = 20;
 
@@ -78,6 +79,10 @@ export function createTrials({ button, cancel, status, table, dots, setup, open 
   button.addEventListener('click', () => {
     const s = setup();
     if (!s) { status.textContent = 'Load a valid scenario first.'; return; }
+    if (s.seed > MAX_SEED - (SEEDS - 1)) {
+      status.textContent = `Seeds ${s.seed} … ${s.seed} + ${SEEDS - 1} would pass ${MAX_SEED} (2^53 − 1), the largest seed the page carries exactly: choose a seed of at most ${MAX_SEED - (SEEDS - 1)}.`;
+      return;
+    }
     stop();
     const first = s.seed;
     const results = new Array(SEEDS).fill(null);

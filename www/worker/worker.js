@@ -51,7 +51,7 @@
 //   crashed   {message}                      the core panicked; the page must replace this worker
 // `run` is a counter bumped on every run/reset/load, so the page can drop stale replies.
 
-import init, { Scene, Run, builtins, import_file, import_map, map_image_name, planners, event_kinds, install_panic_hook, last_panic, debug_panic, fresh_seed }
+import init, { Scene, builtins, map_image_name, planners, event_kinds, install_panic_hook, last_panic, debug_panic, fresh_seed }
   from '../pkg/planarium.js';
 import { thinTries } from './thin.js';
 
@@ -61,8 +61,7 @@ const CSPACE_N = 128;         // cells per side of the configuration-space grid
 const OPTIMUM_S = 0.5;        // the visibility graph's time for the cost chart's reference line…
 const OPTIMUM_MAX = 500;      // …on maps of at most this many obstacles (its graph is quadratic: 1,000 rects take 1.3 s natively)
 
-let scene = null;       // current Scene
-let scenarioText = null;
+let scene = null;       // current Scene (runs are made from it: the scenario is never re-read as text)
 let setup = { planner: 'rrt-connect', params: {}, seed: 1 };
 let run = null;         // current Run
 let runId = 0;
@@ -90,8 +89,8 @@ function freeRun() {
 
 function ensureRun() {
   if (!run) {
-    if (!scenarioText) throw new Error('no scenario loaded');
-    run = new Run(scenarioText, setup.planner, JSON.stringify(setup.params), setup.seed);
+    if (!scene) throw new Error('no scenario loaded');
+    run = scene.run(setup.planner, JSON.stringify(setup.params), setup.seed);
   }
   return run;
 }
@@ -146,12 +145,17 @@ function parseError(e) {
   try { return JSON.parse(e.message); } catch { return { message: String(e.message || e), text: String(e.message || e) }; }
 }
 
-function load(text) {
+/**
+ * Make the scene `make()` returns current (a `load` or an `import`): the limit on a file's size is
+ * the core's, on the text the user gave; an imported file is read straight into a scene, never
+ * written out as JSON and read again (a pretty-printed copy was nearly three times the file).
+ */
+function load(make) {
   freeRun();
   runId++;
   let next;
   try {
-    next = new Scene(text);
+    next = make();
   } catch (e) {
     rethrowPanic(e);
     post({ type: 'invalid', run: runId, error: parseError(e) });
@@ -159,8 +163,7 @@ function load(text) {
   }
   if (scene) scene.free();
   scene = next;
-  scenarioText = scene.scenario_json();
-  const sc = JSON.parse(scenarioText);
+  const sc = JSON.parse(scene.scenario_json());
   const start = scene.outline(new Float64Array(sc.start));
   const goal = sc.goal ? scene.outline(new Float64Array(sc.goal)) : new Float64Array(0);
   const space = JSON.parse(scene.space_json());
@@ -181,7 +184,7 @@ function load(text) {
   post(msg, transfer);
 }
 
-/** An occupancy map's scenario JSON (see `import` above); throws what the core throws. */
+/** An occupancy map's scene (see `import` above); throws what the core throws. */
 function importMap(msg) {
   const yamlName = String(msg.yamlName || 'map.yaml');
   if (!msg.bytes) {
@@ -190,7 +193,7 @@ function importMap(msg) {
     throw new Error(JSON.stringify({ path: 'image', message, line: null, column: null, text: message }));
   }
   const yaml = msg.yaml == null ? undefined : String(msg.yaml);
-  return import_map(new Uint8Array(msg.bytes), String(msg.name || 'map'), yaml, yaml === undefined ? undefined : yamlName);
+  return Scene.from_map(new Uint8Array(msg.bytes), String(msg.name || 'map'), yaml, yaml === undefined ? undefined : yamlName);
 }
 
 function handle(msg) {
@@ -198,23 +201,11 @@ function handle(msg) {
   if (msg.type !== 'step' && msg.type !== 'asv-solution' && msg.type !== 'query' && msg.type !== 'ping' && msg.type !== 'fresh-seed') stepping = null;
   switch (msg.type) {
     case 'load':
-      load(msg.text);
+      load(() => new Scene(String(msg.text)));
       return;
-    case 'import': {
-      let text;
-      try {
-        if (msg.bytes || msg.yaml != null) text = importMap(msg);
-        else text = import_file(String(msg.text), String(msg.name || ''));
-      } catch (e) {
-        rethrowPanic(e);
-        freeRun();
-        runId++;
-        post({ type: 'invalid', run: runId, error: parseError(e) });
-        return;
-      }
-      load(text);
+    case 'import':
+      load(() => (msg.bytes || msg.yaml != null ? importMap(msg) : Scene.from_file(String(msg.text), String(msg.name || ''))));
       return;
-    }
     case 'configure':
       setup = { planner: msg.planner, params: msg.params || {}, seed: msg.seed };
       freeRun();
