@@ -31,7 +31,7 @@ export const CRASH_WINDOW_MS = 10000;
  * per node in the tree mirror: 336 bytes per node in use, 388 held (chunks are allocated whole),
  * and the JS heap grew by about 508 bytes per node. At 500 bytes per node, 1,000,000 nodes keep the
  * page's stores near 0.5 GB, what a laptop's renderer can hold beside the worker's own copy of the
- * trees; issue 13's 9.7 M nodes took 5.2 GB. The ceiling equals the core's own maximum for
+ * trees; a run of 9.7 M nodes once took 5.2 GB. The ceiling equals the core's own maximum for
  * `max_nodes`, and it stays here so that the figure, and a lower ceiling if the stores ever grow,
  * live in one place (panel fields and links are held to it: applyPageLimits).
  */

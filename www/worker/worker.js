@@ -4,7 +4,7 @@
 //   load      {text}                         validate a scenario (JSON text) and keep it
 //   import    {text, name}                   read any supported file (scenario, Technion map, ASV
 //                                            problem .txt) and proceed as `load` with the scenario
-//   import    {text: '', name, bytes, yaml, yamlName}   an occupancy map (issue 17): `bytes` (an
+//   import    {text: '', name, bytes, yaml, yamlName}   an occupancy map: `bytes` (an
 //                                            ArrayBuffer, transferred) the image (PGM or PNG) named
 //                                            `name`, `yaml` (text or null) its map_server YAML named
 //                                            `yamlName`; no YAML: a plain image (dark is occupied);
