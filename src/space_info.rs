@@ -34,10 +34,12 @@ impl Deadline {
     }
 }
 
-/// Most units of work (states checked, shortcuts tried) between two looks at the clock. When a
-/// unit is slow (a sight line across 100,000 obstacles), the clock is read more often: when looks
-/// are more than [`SLOW_LOOK_MS`] apart, the interval drops at once to the units that take about
-/// that long (at least halving), down to every unit; it doubles back while looks are quick.
+/// Most units of work (states checked, shortcuts tried) between two looks at the clock. A run
+/// looks first after one unit, and the interval doubles while looks are quick (less than an eighth
+/// of [`SLOW_LOOK_MS`] apart), up to this. When a unit is slow (a sight line across 100,000
+/// obstacles), the clock is read more often: when looks are more than [`SLOW_LOOK_MS`] apart, the
+/// interval drops at once to the units that take about that long (at least halving), down to
+/// every unit. So two looks are at most about `SLOW_LOOK_MS`, or one call's units, apart.
 pub const CLOCK_EVERY: u64 = 256;
 
 /// Looks at the clock further apart than this make the interval between them shorter.
@@ -89,7 +91,9 @@ impl SpaceInfo {
             deadline: Cell::new(Deadline::NONE),
             interrupted: Cell::new(false),
             ticks: Cell::new(0),
-            every: Cell::new(CLOCK_EVERY),
+            // From every unit, doubling while looks are quick: the first look comes after one
+            // unit however long a unit takes.
+            every: Cell::new(1),
             last_look: Cell::new(None),
             journal: RefCell::new(Journal::default()),
             journal_on: Cell::new(false),
@@ -132,6 +136,11 @@ impl SpaceInfo {
     /// whether work in progress must wind down ([`SpaceInfo::stopped`]).
     #[inline]
     pub fn tick(&self, units: u64) -> bool {
+        crate::clock::work(units);
+        self.count_units(units)
+    }
+    #[inline]
+    fn count_units(&self, units: u64) -> bool {
         let t = self.ticks.get() + units;
         if t >= self.every.get() {
             self.ticks.set(0);
@@ -148,7 +157,8 @@ impl SpaceInfo {
         // A query among many obstacles is more than one unit: one more per 16 exact tests.
         let units = units + crate::geometry::take_tests() / 16;
         self.fresh.set(self.fresh.get() + units);
-        self.tick(units)
+        crate::clock::work_new(units);
+        self.count_units(units)
     }
     /// Journal a unit of work that fills `out` (a sensor's look, a sweep): replayed when recorded,
     /// else computed by `compute` and kept as one entry in place of the answers it asked for.

@@ -63,6 +63,36 @@ fn runs_in_suspended_batches_match_the_pinned_fingerprints() {
     );
 }
 
+/// On a simulated clock (`planarium::clock::simulate`) the batches end at the same points on any
+/// machine, and the clock is all a simulation changes: every pinned run, in one go and in 0.5 ms
+/// batches, with units of work from cheap to dear, comes out the same, bit for bit.
+#[test]
+fn runs_on_a_simulated_clock_match_the_pinned_fingerprints() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/golden/runs.json");
+    let want: Vec<Value> =
+        serde_json::from_str(&std::fs::read_to_string(path).expect("tests/golden/runs.json")).unwrap();
+    for unit in [std::time::Duration::from_micros(1), std::time::Duration::from_micros(10)] {
+        let _sim = planarium::clock::simulate(unit, std::time::Duration::from_nanos(50));
+        let mut suspended = 0;
+        for (case, want) in cases().iter().zip(&want) {
+            assert_eq!(&serde_json::to_value(run(case)).unwrap(), want, "{case} in one go, units of {unit:?}");
+            let sc = builtin(case["scenario"].as_str().unwrap()).unwrap();
+            let (got, n) = fingerprint_in_batches(
+                &sc,
+                case["planner"].as_str().unwrap(),
+                &case["params"],
+                case["seed"].as_u64().unwrap(),
+                0.5,
+            )
+            .unwrap();
+            assert_eq!(&serde_json::to_value(&got).unwrap(), want, "{case}: {n} batches suspended, units of {unit:?}");
+            suspended += u64::from(n > 0);
+        }
+        eprintln!("units of {unit:?}: {suspended} of {} runs had a batch suspended", want.len());
+        assert!(suspended > 0, "units of {unit:?}: no batch was suspended");
+    }
+}
+
 /// The same, beyond the pinned runs: every robot's way of checking motions (the point's exact
 /// sweep, the arm's and the rigid body's clearances, the vehicle chain's own sampler), RRT*'s
 /// rewiring, inspection's sensor sweeps, the samplers that check states, and the tree variants,

@@ -21,6 +21,7 @@ mod workspace;
 pub use aabb::Aabb;
 pub use shape::Shape;
 pub use sight::SensorPose;
+pub(crate) use workspace::add_tests;
 pub use workspace::{take_tests, Workspace, BVH_FROM, GRID_FROM};
 
 #[cfg(test)]

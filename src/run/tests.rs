@@ -30,9 +30,15 @@ fn limits_are_honoured() {
         assert_eq!(s.run_to_end(), Status::NodeLimit, "{planner}");
         assert_eq!(s.stats().nodes, 37, "{planner}");
     }
+    // On a simulated clock (a unit of work costs 1 µs): the run stops at its limit, late by at most
+    // one look at the clock and one more call's units (tests/limits.rs tests this at length).
+    let sim = crate::clock::simulate(std::time::Duration::from_micros(1), std::time::Duration::from_nanos(50));
     let mut s = session("narrow", "rrt", 1, serde_json::json!({"time_limit": 0.05, "goal_bias": 0.0, "range": 0.001}));
+    sim.take_largest();
     assert_eq!(s.run_to_end(), Status::TimeLimit);
-    assert!(s.stats().time_ms < 200.0, "stopped near the limit: {}", s.stats().time_ms);
+    let delay = crate::space_info::SLOW_LOOK_MS + 2.0 * sim.take_largest() as f64 * 1e-3 + 0.2;
+    let ms = s.stats().time_ms;
+    assert!((50.0..=50.0 + delay).contains(&ms), "stopped at the limit: {ms} ms (simulated)");
 }
 
 #[test]

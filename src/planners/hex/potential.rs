@@ -160,16 +160,21 @@ pub fn angle_between(u: Vec2, v: Vec2) -> Real {
 /// obstacle `i` is in the region of influence.
 pub fn obstacle_terms(w: &Weights, obstacles: &[Shape], counted: &[bool], c: Vec2) -> (Real, Real) {
     let (mut rep, mut trap) = (0.0, 0.0);
+    let mut tests = 0;
     for (i, s) in obstacles.iter().enumerate() {
         if !counted[i] {
             continue;
         }
+        tests += 1;
         let r = s.distance_to_segment(c, c, Real::INFINITY).max(1e-9);
         match w.trap {
             Some((j, side)) if j == i && w.k3 > 0.0 && side.holds(&s.aabb(), c) => trap += w.k3 / (r * r),
             _ => rep += w.k1 / (r * r),
         }
     }
+    // Exact distances, counted as the workspace's queries count theirs (the work a run does),
+    // and the scan over every obstacle as one test per 16.
+    crate::geometry::add_tests(tests + obstacles.len() as u64 / 16);
     (rep, trap)
 }
 

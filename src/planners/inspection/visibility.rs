@@ -6,6 +6,9 @@ use crate::math::{Real, Vec2};
 use crate::planners::InspectionTask;
 use crate::space_info::SpaceInfo;
 
+/// Points looked at between two counts of the work done (see `SpaceInfo::tick`).
+const POINTS_PER_TICK: u64 = 64;
+
 /// What the robot's sensor must see for one task: the points, the field of view and the range.
 #[derive(Clone, Debug)]
 pub(super) struct Visibility {
@@ -36,11 +39,26 @@ impl Visibility {
             // A robot without a sensor sees nothing (the planner refuses it).
             let Some(sensor) = si.sensor() else { return };
             let pose = sensor.pose(q);
+            // A unit of work per point, counted as the points are looked at (a replayed look is
+            // not work: a simulated clock does not move on for it, nor does the interval between
+            // looks at the clock shrink).
+            let mut pending = 0;
             for (j, p) in self.points.iter().enumerate() {
+                // Winding down: the look is thrown away (the journal keeps finished ones).
+                if pending == POINTS_PER_TICK {
+                    pending = 0;
+                    if si.tick(POINTS_PER_TICK) {
+                        break;
+                    }
+                } else if j == 0 && si.stopped() {
+                    break;
+                }
+                pending += 1;
                 if !has(skip, j) && !has(out, j) && si.sees_by(&pose, *p, self.fov, self.range, self.touch_hides) {
                     set(out, j);
                 }
             }
+            si.tick(pending + 1);
         })
     }
 
@@ -58,8 +76,9 @@ impl Visibility {
         if count(skip) as usize == n {
             return;
         }
+        // Each look counts its work (see `look`); the sweep stops when the run must wind down.
         if self.at_vertices {
-            if !si.tick(n as u64 + 1) {
+            if !si.stopped() {
                 self.look(si, b, skip, out);
             }
             return;
@@ -71,7 +90,7 @@ impl Visibility {
             return;
         };
         for i in 1..=steps {
-            if si.tick(n as u64 + 1) {
+            if si.stopped() {
                 return;
             }
             if i == steps {

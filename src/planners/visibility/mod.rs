@@ -56,6 +56,7 @@ pub use grow::{body_of, grow, growth, Body, Grown, MARGIN};
 
 use crate::events::EventKind;
 use crate::geometry::segment::orient_sign;
+use crate::journal::Entry as Recorded;
 use crate::math::{angle_diff, wrap_angle, Real, Vec2};
 use crate::motion::MotionValidator;
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
@@ -255,7 +256,16 @@ impl VisibilityGraph {
             if self.points[i] != self.points[j] && self.tangent(i, j) {
                 tests += 1;
                 let (a, b) = (self.points[i], self.points[j]);
-                if self.grown.ws.sight_clear(a, b) {
+                // Through the batch journal, so a bounded batch can be suspended in the middle
+                // of a long build and replay its answers (see `crate::journal`).
+                let ws = &self.grown.ws;
+                let clear = cx.si.journalled(
+                    |e| if let Recorded::Sight(v) = e { Some(*v) } else { None },
+                    Recorded::Sight,
+                    false,
+                    || ws.sight_clear(a, b),
+                );
+                if clear {
                     let d = (b - a).norm();
                     self.adj[i].push((j as u32, d));
                     self.adj[j].push((i as u32, d));
@@ -268,7 +278,8 @@ impl VisibilityGraph {
                         [a.x, a.y, b.x, b.y, d, 1.0, 0.0, 0.0],
                     );
                 }
-                if cx.si.tick(1) {
+                // The answer counted its work (and looked at the clock when due).
+                if cx.si.stopped() {
                     break;
                 }
             }
