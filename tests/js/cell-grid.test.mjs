@@ -131,6 +131,8 @@ test('a painted cell\'s pieces: inside its cell, covering it up to a hair from f
 function painterOn(scenario, config = () => ({ planner: 'grid-search', params: { cell: 0.1 } })) {
   const host = {
     scenario, grid: { on: false, step: 0.05 }, selected: -1, said: '', commits: 0,
+    // no canvas here: the painter draws a drag's cells only once the view has a layout
+    view: { layout: null, drawSceneIn() { throw new Error('drawn without a layout'); } },
     preview() {}, say(text) { this.said = text; }, commit() { this.commits++; },
   };
   return [new CellPainter(host, config), host];
