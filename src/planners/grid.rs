@@ -386,6 +386,10 @@ impl Planner for GridSearch {
     fn node_count(&self) -> usize {
         self.nx * self.ny
     }
+    /// Its nodes are the grid's cells, all made when set up (which refuses more than `max_nodes`).
+    fn out_of_nodes(&self, _max_nodes: usize) -> bool {
+        false
+    }
     fn data(&self) -> PlannerData {
         PlannerData { trees: self.tree.iter().cloned().collect() }
     }

@@ -205,10 +205,13 @@ pub trait Planner {
     fn coverage(&self) -> Option<Real> {
         None
     }
-    /// Whether the next step would add more nodes than `Context::nodes_left` allows (a planner
-    /// that adds several at once): the session then stops at its node limit.
-    fn out_of_nodes(&self) -> bool {
-        false
+    /// Whether the run must stop at its node limit `max_nodes` before the next iteration, which
+    /// would need a node past it. By default, when the planner holds `max_nodes` nodes already:
+    /// it has no room for the next. A planner that makes all its nodes when it is set up (a
+    /// grid's cells, a visibility graph's vertices; the set-up refuses more than `max_nodes`)
+    /// needs no more, and one that adds several at once says so before it would pass the limit.
+    fn out_of_nodes(&self, max_nodes: usize) -> bool {
+        self.node_count() >= max_nodes
     }
     /// For planners that can conclude "no path" by their method (cell decomposition, potential
     /// fields): why they gave up. The session stops with [`Status::NoPath`](crate::status::Status)

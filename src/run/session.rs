@@ -190,7 +190,7 @@ impl Session {
             Some(Status::TimeLimit)
         } else if self.iterations >= l.iterations {
             Some(Status::IterationLimit)
-        } else if self.planner.node_count() >= l.nodes || self.planner.out_of_nodes() {
+        } else if self.planner.out_of_nodes(l.nodes) {
             Some(Status::NodeLimit)
         } else {
             None

@@ -558,8 +558,9 @@ impl Planner for HexPotential {
     fn gave_up(&self) -> Option<String> {
         self.failure.clone()
     }
-    fn out_of_nodes(&self) -> bool {
-        self.out_of_nodes
+    fn out_of_nodes(&self, max_nodes: usize) -> bool {
+        // A split that may not fit, or no room for the search's next step.
+        self.out_of_nodes || self.node_count() >= max_nodes
     }
 }
 

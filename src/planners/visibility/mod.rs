@@ -397,6 +397,11 @@ impl Planner for VisibilityGraph {
     fn node_count(&self) -> usize {
         self.points.len()
     }
+    /// Its nodes are the graph's vertices, all made when set up (which refuses more than
+    /// `max_nodes`); the search settles them, and adds none.
+    fn out_of_nodes(&self, _max_nodes: usize) -> bool {
+        false
+    }
     fn data(&self) -> PlannerData {
         PlannerData { trees: self.tree.iter().cloned().collect() }
     }
