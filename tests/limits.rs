@@ -12,6 +12,9 @@ use serde_json::{json, Value};
 #[path = "limits/time.rs"]
 mod time;
 
+#[path = "limits/hostile.rs"]
+mod hostile;
+
 fn builtin_value(id: &str) -> Value {
     serde_json::from_str(&scenario::builtin(id).unwrap().to_json()).unwrap()
 }

@@ -52,7 +52,7 @@
 
 mod grow;
 
-pub use grow::{body_of, grow, growth, Body, Grown, MARGIN};
+pub use grow::{body_of, grow, grown_vertices, growth, Body, GrowError, Grown, MARGIN};
 
 use crate::events::EventKind;
 use crate::geometry::segment::orient_sign;
@@ -159,7 +159,23 @@ impl VisibilityGraph {
     pub fn new(si: &SpaceInfo, task: &Task, params: &Params) -> Result<Self, String> {
         let body = body_of(si)?;
         let k = params.real("sides") as usize;
-        let grown = grow(si.workspace(), growth(si, body), k, body.radius > 0.0);
+        let max_nodes = params.real("max_nodes");
+        // The graph's vertices are the grown polygons' convex corners: refused before anything is
+        // grown when there could be more than max_nodes of them; growing (seconds on a big map)
+        // stops at the run's deadline.
+        let g = growth(si, body);
+        let grown = grow(si, si.workspace(), g, k, body.radius > 0.0, (max_nodes as u64).saturating_sub(2))
+            .map_err(|e| match e {
+                GrowError::TooMany(n) => format!(
+                    "growing the obstacles by the {} would make up to {n} vertices, more than max_nodes ({max_nodes}): lower sides (now {k}), simplify the obstacles, or raise max_nodes",
+                    if body.radius > 0.0 { format!("robot's disc (radius {:.3e}, a {k}-sided polygon)", body.radius) } else { "margin".to_string() },
+                ),
+                GrowError::Stopped { done, of } => format!(
+                    "the time limit ({} s) ran out while growing the obstacles ({}): raise time_limit, lower sides (now {k}) or simplify the obstacles",
+                    params.real("time_limit"),
+                    if done < of { format!("{done} of {of} grown") } else { format!("all {of} grown, their corners being tested") }
+                ),
+            })?;
         let (start, goal) = (task.start.clone(), task.goal().to_vec());
         let (s, g) = (si.project(&start), si.project(&goal));
         for (what, p) in [("start", s), ("goal", g)] {
@@ -179,7 +195,6 @@ impl VisibilityGraph {
             points.push(c[0]);
             sides.push([c[1], c[2]]);
         }
-        let max_nodes = params.real("max_nodes");
         if points.len() as Real > max_nodes {
             return Err(format!(
                 "the graph has {} vertices, more than max_nodes ({max_nodes}): raise max_nodes or lower sides",
