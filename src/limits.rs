@@ -61,6 +61,14 @@ pub const MAX_MOTION_STEPS: Real = 100_000.0;
 /// core and in the page's record store together; 1e8 took 5.2 GB and minutes.
 pub const MAX_NODES: f64 = 1e6;
 
+/// Bytes a run's planner may hold (its trees, roadmap, cells, counted from what they hold:
+/// [`Planner::stored_bytes`](crate::planners::Planner::stored_bytes)); past it the run stops with
+/// status `memory_limit` and a reason naming what to change. A million-node tree of a point robot
+/// holds about 80 MB; a roadmap's edge about 40 bytes, so a roadmap stops at some 6 million edges
+/// (the page keeps a 96-byte record for each); PRM with a huge radius held 772 MB in the page after
+/// 4 minutes at 4,011 nodes and kept growing.
+pub const MAX_RUN_BYTES: usize = 256 << 20;
+
 /// Cells of a hexagonal decomposition's coarse tiling (`cell_size` against the map's size).
 pub const MAX_COARSE_CELLS: usize = 100_000;
 
@@ -96,6 +104,7 @@ pub fn to_json() -> serde_json::Value {
         "max_notes_chars": MAX_NOTES_CHARS,
         "max_motion_steps": MAX_MOTION_STEPS,
         "max_nodes": MAX_NODES,
+        "max_run_bytes": MAX_RUN_BYTES,
         "max_coarse_cells": MAX_COARSE_CELLS,
         "max_solution_steps": MAX_SOLUTION_STEPS,
         "max_map_side": MAX_MAP_SIDE,

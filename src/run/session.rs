@@ -1,6 +1,7 @@
 use super::{PlanResult, SamplerSummary, Stats};
 use crate::clock::Instant;
 use crate::events::EventLog;
+use crate::limits::MAX_RUN_BYTES;
 use crate::math::Real;
 use crate::planners::{
     self, smoothing, Context, InspectionTask, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind,
@@ -192,9 +193,16 @@ impl Session {
             Some(Status::IterationLimit)
         } else if self.planner.out_of_nodes(l.nodes) {
             Some(Status::NodeLimit)
+        } else if self.planner.out_of_memory() || self.planner.stored_bytes() > MAX_RUN_BYTES {
+            Some(Status::MemoryLimit)
         } else {
             None
         }
+    }
+
+    /// The bytes the planner may still store (see [`Context::bytes_left`]).
+    fn bytes_left(&self) -> usize {
+        MAX_RUN_BYTES.saturating_sub(self.planner.stored_bytes())
     }
 
     /// Run at most `max_iterations` iterations, for at most about `max_ms` milliseconds, and return
@@ -284,11 +292,13 @@ impl Session {
                 break;
             }
             let nodes_left = self.limits.nodes.saturating_sub(self.planner.node_count());
+            let bytes_left = self.bytes_left();
             let mut cx = Context {
                 si: &self.problem.si,
                 rng: &mut self.rng,
                 events: &mut self.events,
                 nodes_left,
+                bytes_left,
                 sampler: &mut self.sampler,
                 iteration: self.iterations,
             };
@@ -360,8 +370,25 @@ impl Session {
     fn stop(&mut self, limit: Status) {
         match self.planner.best_so_far() {
             Some(path) => self.finish_solved(path),
-            None => self.status = limit,
+            None => {
+                self.status = limit;
+                if limit == Status::MemoryLimit {
+                    self.reason = Some(self.memory_reason());
+                }
+            }
         }
+    }
+
+    /// Why a run stopped at its memory limit, and what to change.
+    fn memory_reason(&self) -> String {
+        format!(
+            "the planner holds {:.0} MB for its {} nodes{}, as much as a run may hold ({:.0} MB): {}",
+            self.planner.stored_bytes() as f64 / 1e6,
+            self.planner.node_count(),
+            if self.planner.out_of_memory() { " and their edges" } else { "" },
+            MAX_RUN_BYTES as f64 / 1e6,
+            self.planner.memory_advice()
+        )
     }
 
     fn finish_solved(&mut self, path: Vec<Vec<Real>>) {
@@ -421,11 +448,13 @@ impl Session {
         let goal_q = self.problem.check_state("goal", goal).map_err(|e| e.to_string())?;
         self.problem.si.set_deadline(Deadline::in_ms(self.limits.time_ms));
         let nodes_left = self.limits.nodes.saturating_sub(self.planner.node_count());
+        let bytes_left = self.bytes_left();
         let mut cx = Context {
             si: &self.problem.si,
             rng: &mut self.rng,
             events: &mut self.events,
             nodes_left,
+            bytes_left,
             sampler: &mut self.sampler,
             iteration: self.iterations,
         };

@@ -91,3 +91,36 @@ fn the_visibility_graphs_set_up_and_build_keep_to_the_time_limit() {
     let bound = 50.0 + delay(sim.take_largest(), unit);
     assert!(took <= bound, "{took} ms (simulated), bound {bound:.3}");
 }
+
+/// A unit map whose goal sits in a closed ring (never reached), at a coarse resolution so motions
+/// are quick to check: a roadmap grows without end.
+fn ringed() -> Value {
+    let ring: Vec<Value> =
+        [[0.8, 0.8, 0.98, 0.82], [0.8, 0.98, 0.98, 1.0], [0.8, 0.8, 0.82, 1.0], [0.96, 0.8, 0.98, 1.0]]
+            .iter()
+            .map(|r| json!({ "rect": r }))
+            .collect();
+    json!({"bounds": [0, 0, 1, 1], "obstacles": ring, "robot": {"kind": "point"},
+           "start": [0.1, 0.1], "goal": [0.89, 0.9], "resolution": 0.5})
+}
+
+#[test]
+fn a_roadmaps_edges_stop_at_the_memory_limit() {
+    // Was: PRM with a huge radius joins every milestone to every vertex: 772 MB in the page after
+    // 4 minutes at 4,011 nodes, and growing (max_nodes counts only the vertices). Now the edges
+    // count against limits::MAX_RUN_BYTES where they are added, and the run stops with a reason.
+    for params in [
+        json!({"connect": "radius", "radius": 1e6, "time_limit": 3600}),
+        json!({"connect": "k-nearest", "k": 1000, "time_limit": 3600}),
+    ] {
+        let mut s = session(&ringed(), "prm", params.clone(), 1).unwrap();
+        s.run_to_end();
+        let r = s.result();
+        eprintln!("{params}: {} after {} nodes: {:?}", r.status, r.stats.nodes, r.reason);
+        assert_eq!(r.status, "memory_limit", "{params}");
+        let why = r.reason.as_deref().unwrap_or_default();
+        assert!(why.contains("MB") && (why.contains("radius") || why.contains("lower k")), "{why}");
+        // About 6.7 million edges (40 bytes each) among the milestones: a few thousand of them.
+        assert!(r.stats.nodes < 20_000, "{} nodes", r.stats.nodes);
+    }
+}

@@ -96,6 +96,9 @@ pub const PARAMS: &[ParamSpec] = &[
     ),
 ];
 
+/// The bytes one edge of the graph takes (an entry in each end's adjacency list).
+const EDGE_BYTES: usize = 2 * std::mem::size_of::<(u32, Real)>();
+
 /// Pairs visited (most skipped by the tangent test) per pair tested, in an iteration's budget.
 const VISITS: usize = 32;
 
@@ -151,6 +154,9 @@ pub struct VisibilityGraph {
     tree: Option<Tree>,
     edges: usize,
     reason: Option<String>,
+    /// The build stopped for want of bytes (`Context::bytes_left`): the run stops at its memory
+    /// limit.
+    out_of_memory: bool,
 }
 
 impl VisibilityGraph {
@@ -222,6 +228,7 @@ impl VisibilityGraph {
             tree: None,
             edges: 0,
             reason: None,
+            out_of_memory: false,
         })
     }
 
@@ -280,7 +287,13 @@ impl VisibilityGraph {
                     false,
                     || ws.sight_clear(a, b),
                 );
+                // The graph's edges count against the run's memory (two adjacency entries each).
+                if clear && cx.bytes_left < EDGE_BYTES {
+                    self.out_of_memory = true;
+                    break;
+                }
                 if clear {
+                    cx.bytes_left -= EDGE_BYTES;
                     let d = (b - a).norm();
                     self.adj[i].push((j as u32, d));
                     self.adj[j].push((i as u32, d));
@@ -411,6 +424,24 @@ impl Planner for VisibilityGraph {
     }
     fn node_count(&self) -> usize {
         self.points.len()
+    }
+    fn stored_bytes(&self) -> usize {
+        use crate::planners::{bytes_of, nested_bytes};
+        bytes_of(&self.points)
+            + bytes_of(&self.sides)
+            + nested_bytes::<(u32, Real)>(self.adj.len(), 2 * self.edges)
+            + bytes_of(&self.cost)
+            + bytes_of(&self.parent)
+            + bytes_of(&self.closed)
+            + bytes_of(&self.tree_id)
+            + self.open.len() * std::mem::size_of::<Entry>()
+            + self.tree.as_ref().map_or(0, Tree::bytes)
+    }
+    fn out_of_memory(&self) -> bool {
+        self.out_of_memory
+    }
+    fn memory_advice(&self) -> &'static str {
+        "lower sides, or simplify the obstacles (fewer vertices see fewer of each other)"
     }
     /// Its nodes are the graph's vertices, all made when set up (which refuses more than
     /// `max_nodes`); the search settles them, and adds none.

@@ -66,7 +66,7 @@ pub struct BenchReport {
 /// The formats [`render`] writes.
 pub const FORMATS: [&str; 4] = ["csv", "json", "ompl", "table"];
 
-const STATUSES: [Status; 7] = [
+const STATUSES: [Status; 8] = [
     Status::Running,
     Status::Solved,
     Status::TimeLimit,
@@ -74,6 +74,8 @@ const STATUSES: [Status; 7] = [
     Status::NodeLimit,
     Status::Cancelled,
     Status::NoPath,
+    // Last, so the OMPL export's enum values of the others stay what they were.
+    Status::MemoryLimit,
 ];
 
 fn parse_status(name: &str) -> Option<Status> {
