@@ -126,11 +126,53 @@ pub fn steps(x: Real, step: Real, max: Real) -> Option<usize> {
     (n.is_finite() && n <= max).then(|| (n as usize).max(1))
 }
 
-/// `text` cut to at most `max` characters (an ellipsis marks the cut): keys, names and words
-/// echoed in titles and error messages, so a hostile file cannot make an error megabytes long.
+/// Whether `c` is written as its code point (`[U+202E]`) when user text is echoed in a message:
+/// control characters (C0, DEL, C1), bidirectional controls (an override would turn the rest of
+/// the message's line around: the page's share links show them the same way) and the other
+/// invisible format characters (zero-width spaces and joiners, word joiners, the byte order mark,
+/// line and paragraph separators, interlinear annotations).
+pub fn hidden(c: char) -> bool {
+    matches!(
+        c,
+        '\u{0}'..='\u{1f}'
+            | '\u{7f}'..='\u{9f}'
+            | '\u{61c}'
+            | '\u{180e}'
+            | '\u{200b}'..='\u{200f}'
+            | '\u{2028}'..='\u{202e}'
+            | '\u{2060}'..='\u{2064}'
+            | '\u{2066}'..='\u{206f}'
+            | '\u{feff}'
+            | '\u{fff9}'..='\u{fffb}'
+    )
+}
+
+/// `text` as a message may echo it: every [`hidden`] character written as its code point,
+/// `[U+202E]`. Every error the core builds from user input (JSON paths and keys, YAML keys and
+/// values, the course files' words, parameter names) goes through this (through [`cut`], and
+/// [`ScenarioError`](crate::scenario::ScenarioError)'s constructors).
+pub fn echo(text: &str) -> String {
+    if !text.chars().any(hidden) {
+        return text.to_string();
+    }
+    let mut s = String::with_capacity(text.len() + 16);
+    for c in text.chars() {
+        if hidden(c) {
+            s.push_str(&format!("[U+{:04X}]", c as u32));
+        } else {
+            s.push(c);
+        }
+    }
+    s
+}
+
+/// `text` [`echo`]ed and cut to at most `max` characters (an ellipsis marks the cut): keys, names
+/// and words echoed in titles and error messages, so a hostile file cannot make an error
+/// megabytes long, nor turn it around.
 pub fn cut(text: &str, max: usize) -> String {
+    let text = echo(text);
     if text.chars().count() <= max {
-        text.to_string()
+        text
     } else {
         let mut s: String = text.chars().take(max.saturating_sub(1)).collect();
         s.push('…');

@@ -105,7 +105,11 @@ impl Session {
     /// A run of `config` on `problem`. Errors name an unknown planner or a task it cannot do.
     pub fn new(problem: Problem, mut config: RunConfig) -> Result<Session, String> {
         let spec = planners::find(&config.planner).ok_or_else(|| {
-            format!("unknown planner \"{}\" (known: {})", config.planner, planners::names().join(", "))
+            format!(
+                "unknown planner \"{}\" (known: {})",
+                crate::limits::cut(&config.planner, 100),
+                planners::names().join(", ")
+            )
         })?;
         // Re-check the values against this planner, so its own defaults apply.
         config.params = Params::from_json(spec, &serde_json::Value::Object(config.params.values().clone()))
