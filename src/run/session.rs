@@ -144,11 +144,14 @@ impl Session {
             iterations: p.real("max_iterations") as u64,
             nodes: p.real("max_nodes") as usize,
         };
-        // Setting a planner up may be long work too (a decomposition's tiling): the time limit holds.
+        // Setting a planner up may be long work too (a decomposition's tiling, a visibility graph's
+        // growth): it is planning time, under the same time limit, and counted in the run's time.
+        let setup = Instant::now();
         problem.si.set_deadline(Deadline::in_ms(limits.time_ms));
         let planner = (spec.make)(&problem.si, &task, &config.params).map_err(|e| format!("{}: {e}", spec.label))?;
         // The set-up's exact tests are its own work, not the first iteration's.
         crate::clock::work(crate::geometry::take_tests() / 16);
+        let setup_ms = setup.elapsed().as_secs_f64() * 1000.0;
         let sampler = Sampler::from_params(&problem.si, task.goal.as_deref(), &config.params);
         Ok(Session {
             limits,
@@ -162,7 +165,7 @@ impl Session {
             planner,
             status: Status::Running,
             iterations: 0,
-            elapsed_ms: 0.0,
+            elapsed_ms: setup_ms,
             smoothing_ms: 0.0,
             planning_checks: None,
             path: Vec::new(),
