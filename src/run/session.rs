@@ -147,10 +147,13 @@ impl Session {
         // Setting a planner up may be long work too (a decomposition's tiling, a visibility graph's
         // growth): it is planning time, under the same time limit, and counted in the run's time.
         let setup = Instant::now();
+        // Exact tests counted before (building the problem) are not this run's work.
+        crate::geometry::take_tests();
         problem.si.set_deadline(Deadline::in_ms(limits.time_ms));
         let planner = (spec.make)(&problem.si, &task, &config.params).map_err(|e| format!("{}: {e}", spec.label))?;
         // The set-up's exact tests are its own work, not the first iteration's.
         crate::clock::work(crate::geometry::take_tests() / 16);
+        problem.si.look_again_soon();
         let setup_ms = setup.elapsed().as_secs_f64() * 1000.0;
         let sampler = Sampler::from_params(&problem.si, task.goal.as_deref(), &config.params);
         Ok(Session {
