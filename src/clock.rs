@@ -90,7 +90,7 @@ pub struct Simulation {
 /// For tests of the time mechanisms (see the module's doc).
 pub fn simulate(per_unit: Duration, per_read: Duration) -> Simulation {
     let before = (SIMULATED.with(Cell::get), SIM.with(Cell::get));
-    let origin = Some(before.0.then(|| before.1.now()).unwrap_or_else(Instant::real_now));
+    let origin = Some(if before.0 { before.1.now() } else { Instant::real_now() });
     let sim = Sim { unit_ns: nanos(per_unit), read_ns: nanos(per_read), origin, ..Sim::OFF };
     SIM.with(|s| s.set(sim));
     SIMULATED.with(|s| s.set(true));

@@ -61,6 +61,14 @@ pub const MAX_MOTION_STEPS: Real = 100_000.0;
 /// core and in the page's record store together; 1e8 took 5.2 GB and minutes.
 pub const MAX_NODES: f64 = 1e6;
 
+/// Bytes a run's planner may hold (its trees, roadmap, cells, counted from what they hold:
+/// [`Planner::stored_bytes`](crate::planners::Planner::stored_bytes)); past it the run stops with
+/// status `memory_limit` and a reason naming what to change. A million-node tree of a point robot
+/// holds about 80 MB; a roadmap's edge about 40 bytes, so a roadmap stops at some 6 million edges
+/// (the page keeps a 96-byte record for each); PRM with a huge radius held 772 MB in the page after
+/// 4 minutes at 4,011 nodes and kept growing.
+pub const MAX_RUN_BYTES: usize = 256 << 20;
+
 /// Cells of a hexagonal decomposition's coarse tiling (`cell_size` against the map's size).
 pub const MAX_COARSE_CELLS: usize = 100_000;
 
@@ -96,6 +104,7 @@ pub fn to_json() -> serde_json::Value {
         "max_notes_chars": MAX_NOTES_CHARS,
         "max_motion_steps": MAX_MOTION_STEPS,
         "max_nodes": MAX_NODES,
+        "max_run_bytes": MAX_RUN_BYTES,
         "max_coarse_cells": MAX_COARSE_CELLS,
         "max_solution_steps": MAX_SOLUTION_STEPS,
         "max_map_side": MAX_MAP_SIDE,
@@ -117,11 +126,53 @@ pub fn steps(x: Real, step: Real, max: Real) -> Option<usize> {
     (n.is_finite() && n <= max).then(|| (n as usize).max(1))
 }
 
-/// `text` cut to at most `max` characters (an ellipsis marks the cut): keys, names and words
-/// echoed in titles and error messages, so a hostile file cannot make an error megabytes long.
+/// Whether `c` is written as its code point (`[U+202E]`) when user text is echoed in a message:
+/// control characters (C0, DEL, C1), bidirectional controls (an override would turn the rest of
+/// the message's line around: the page's share links show them the same way) and the other
+/// invisible format characters (zero-width spaces and joiners, word joiners, the byte order mark,
+/// line and paragraph separators, interlinear annotations).
+pub fn hidden(c: char) -> bool {
+    matches!(
+        c,
+        '\u{0}'..='\u{1f}'
+            | '\u{7f}'..='\u{9f}'
+            | '\u{61c}'
+            | '\u{180e}'
+            | '\u{200b}'..='\u{200f}'
+            | '\u{2028}'..='\u{202e}'
+            | '\u{2060}'..='\u{2064}'
+            | '\u{2066}'..='\u{206f}'
+            | '\u{feff}'
+            | '\u{fff9}'..='\u{fffb}'
+    )
+}
+
+/// `text` as a message may echo it: every [`hidden`] character written as its code point,
+/// `[U+202E]`. Every error the core builds from user input (JSON paths and keys, YAML keys and
+/// values, the course files' words, parameter names) goes through this (through [`cut`], and
+/// [`ScenarioError`](crate::scenario::ScenarioError)'s constructors).
+pub fn echo(text: &str) -> String {
+    if !text.chars().any(hidden) {
+        return text.to_string();
+    }
+    let mut s = String::with_capacity(text.len() + 16);
+    for c in text.chars() {
+        if hidden(c) {
+            s.push_str(&format!("[U+{:04X}]", c as u32));
+        } else {
+            s.push(c);
+        }
+    }
+    s
+}
+
+/// `text` [`echo`]ed and cut to at most `max` characters (an ellipsis marks the cut): keys, names
+/// and words echoed in titles and error messages, so a hostile file cannot make an error
+/// megabytes long, nor turn it around.
 pub fn cut(text: &str, max: usize) -> String {
+    let text = echo(text);
     if text.chars().count() <= max {
-        text.to_string()
+        text
     } else {
         let mut s: String = text.chars().take(max.saturating_sub(1)).collect();
         s.push('…');

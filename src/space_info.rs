@@ -35,11 +35,12 @@ impl Deadline {
 }
 
 /// Most units of work (states checked, shortcuts tried) between two looks at the clock. A run
-/// looks first after one unit, and the interval doubles while looks are quick (less than an eighth
-/// of [`SLOW_LOOK_MS`] apart), up to this. When a unit is slow (a sight line across 100,000
-/// obstacles), the clock is read more often: when looks are more than [`SLOW_LOOK_MS`] apart, the
-/// interval drops at once to the units that take about that long (at least halving), down to
-/// every unit. So two looks are at most about `SLOW_LOOK_MS`, or one call's units, apart.
+/// looks first after one unit (again after its set-up), and the interval doubles while looks are
+/// quick (less than an eighth of [`SLOW_LOOK_MS`] apart), up to this. When a unit is slow (a sight
+/// line across 100,000 obstacles), the clock is read more often: when looks are more than
+/// [`SLOW_LOOK_MS`] apart, the interval drops at once to the units that take about that long (at
+/// least halving), down to every unit. So two looks are at most about `SLOW_LOOK_MS`, or one
+/// call's units, apart.
 pub const CLOCK_EVERY: u64 = 256;
 
 /// Looks at the clock further apart than this make the interval between them shorter.
@@ -106,6 +107,13 @@ impl SpaceInfo {
     pub fn set_deadline(&self, deadline: Deadline) {
         self.deadline.set(deadline);
         self.interrupted.set(false);
+    }
+    /// Look at the clock again from the next unit of work on, and learn anew how often: what units
+    /// cost may have changed (a set-up's quick tests, then a run's slow ones).
+    pub fn look_again_soon(&self) {
+        self.ticks.set(0);
+        self.every.set(1);
+        self.last_look.set(None);
     }
     /// The current deadline.
     pub fn deadline(&self) -> Deadline {

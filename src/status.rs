@@ -16,6 +16,9 @@ pub enum Status {
     IterationLimit,
     /// The node limit was reached first.
     NodeLimit,
+    /// The planner holds as many bytes as a run may ([`crate::limits::MAX_RUN_BYTES`]): the run's
+    /// `reason` says what holds them and what to change.
+    MemoryLimit,
     /// The run was cancelled.
     Cancelled,
     /// The planner gave up: it can say no path exists by its method (a region of influence that
@@ -36,6 +39,7 @@ impl Status {
             Status::TimeLimit => "time_limit",
             Status::IterationLimit => "iteration_limit",
             Status::NodeLimit => "node_limit",
+            Status::MemoryLimit => "memory_limit",
             Status::Cancelled => "cancelled",
             Status::NoPath => "no_path",
         }

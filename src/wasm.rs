@@ -295,9 +295,10 @@ impl Run {
 
 impl Run {
     fn on(problem: Problem, planner: &str, params: &str, seed: f64) -> Result<Run, JsError> {
-        let spec = planners::find(planner).ok_or_else(|| JsError::new(&format!("unknown planner \"{planner}\"")))?;
-        let value: serde_json::Value =
-            serde_json::from_str(params).map_err(|e| JsError::new(&format!("parameters: {e}")))?;
+        let spec = planners::find(planner)
+            .ok_or_else(|| JsError::new(&format!("unknown planner \"{}\"", crate::limits::cut(planner, 100))))?;
+        let value: serde_json::Value = serde_json::from_str(params)
+            .map_err(|e| JsError::new(&format!("parameters: {}", crate::limits::echo(&e.to_string()))))?;
         let params = Params::from_json(spec, &value).map_err(|(k, m)| JsError::new(&format!("{k}: {m}")))?;
         if !(seed >= 0.0 && seed.fract() == 0.0 && seed < 9007199254740992.0) {
             return Err(JsError::new("seed: must be a whole number from 0 to 2^53 - 1 (9007199254740991)"));

@@ -115,3 +115,44 @@ fn what_cannot_be_searched_is_said() {
             .expect("a grid too fine is refused");
     assert!(e.contains("too small") && e.contains("cells"), "{e}");
 }
+
+#[test]
+fn max_nodes_equal_to_the_cells_or_vertices_is_enough() {
+    // The grid's cells and the visibility graph's vertices are all made when the planner is set
+    // up, which refuses more than max_nodes; a limit equal to their number used to stop the run
+    // before its first iteration (node limit, 0 iterations).
+    let cells = run("open-field", json!({})).0.stats.nodes;
+    let (r, _) = solved("open-field", json!({ "max_nodes": cells }));
+    assert_eq!(r.stats.nodes, cells);
+    let e = Session::new(
+        Problem::from_scenario(&builtin("open-field").unwrap()).unwrap(),
+        RunConfig {
+            planner: "grid-search".into(),
+            params: Params::from_json(planners::find("grid-search").unwrap(), &json!({ "max_nodes": cells - 1 }))
+                .unwrap(),
+            seed: 1,
+            record_events: false,
+        },
+    )
+    .err()
+    .expect("one cell more than max_nodes is refused");
+    assert!(e.contains("max_nodes"), "{e}");
+    let spec = planners::find("visibility-graph").unwrap();
+    let vis = |params: Value| {
+        let mut s = Session::new(
+            Problem::from_scenario(&builtin("zigzag").unwrap()).unwrap(),
+            RunConfig {
+                planner: spec.name.into(),
+                params: Params::from_json(spec, &params).unwrap(),
+                seed: 1,
+                record_events: false,
+            },
+        )
+        .unwrap();
+        s.run_to_end();
+        s.result()
+    };
+    let vertices = vis(json!({})).stats.nodes;
+    let r = vis(json!({ "max_nodes": vertices }));
+    assert!(r.solved, "{} after {} iterations", r.status, r.stats.iterations);
+}

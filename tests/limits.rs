@@ -12,6 +12,12 @@ use serde_json::{json, Value};
 #[path = "limits/time.rs"]
 mod time;
 
+#[path = "limits/hostile.rs"]
+mod hostile;
+
+#[path = "limits/bidi.rs"]
+mod bidi;
+
 fn builtin_value(id: &str) -> Value {
     serde_json::from_str(&scenario::builtin(id).unwrap().to_json()).unwrap()
 }

@@ -450,3 +450,22 @@ fn large_maps_open_with_rrt_connect_and_noisy_ones_past_the_obstacle_limit_are_r
     let e = err_of(occupancy::import_image(&p5(w, h, 255, &vals), "noise.pgm", None));
     assert!(e.starts_with("noise.pgm: the map's occupied pixels make 120000 rectangles; the limit is 100000"), "{e}");
 }
+
+#[test]
+fn a_map_of_a_million_pixels_is_solved_by_its_own_default_planner() {
+    // Was: the map opened with grid-search (a cell a pixel), whose 1,000,000 cells met the default
+    // max_nodes (1,000,000) before the first iteration: "node limit · 0 iterations".
+    let (w, h) = (1000, 1000);
+    let mut values = vec![255u16; w * h];
+    // A wall across the middle with a gap at its right end.
+    for x in 0..900 {
+        values[500 * w + x] = 0;
+    }
+    let sc = occupancy::import_image(&p5(w, h, 255, &values), "million.pgm", None).unwrap();
+    let block = sc.planner.as_ref().expect("the map names its planner");
+    assert_eq!(block.name, "grid-search");
+    let (r, _) = run(&sc, &block.name, Value::Object(block.params.clone()));
+    assert!(r.solved, "{} {:?} after {} iterations", r.status, r.reason, r.stats.iterations);
+    assert_eq!(r.stats.nodes, (w * h) as u64);
+    assert!(common::path_problem(&sc, &r.path).is_none());
+}

@@ -57,6 +57,7 @@ impl Rig {
             rng: &mut self.rng,
             events: &mut self.events,
             nodes_left: 1_000_000,
+            bytes_left: usize::MAX,
             sampler: &mut self.sampler,
             iteration: 0,
         };

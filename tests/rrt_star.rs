@@ -123,6 +123,7 @@ fn drive(
             rng: &mut rng,
             events: &mut events,
             nodes_left: nodes_left.unwrap_or(usize::MAX),
+            bytes_left: usize::MAX,
             sampler: &mut sampler,
             iteration,
         };

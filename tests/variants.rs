@@ -46,6 +46,7 @@ impl Rig {
             rng: &mut self.rng,
             events: &mut self.events,
             nodes_left: 1000,
+            bytes_left: usize::MAX,
             sampler: &mut self.sampler,
             iteration: 0,
         }

@@ -160,7 +160,9 @@ fn params_for(spec: &'static PlannerSpec, sc: &Scenario, m: &ArgMatches) -> Resu
 }
 
 fn find_planner(name: &str) -> Result<&'static PlannerSpec, String> {
-    planners::find(name).ok_or_else(|| format!("unknown planner \"{name}\" (known: {})", planners::names().join(", ")))
+    planners::find(name).ok_or_else(|| {
+        format!("unknown planner \"{}\" (known: {})", planarium::limits::cut(name, 100), planners::names().join(", "))
+    })
 }
 
 fn plan(m: &ArgMatches) -> Result<(), String> {
@@ -324,7 +326,7 @@ fn run_bench(m: &ArgMatches) -> Result<(), String> {
     };
     for text in &setups {
         let setup = bench::parse_setup(text, |spec| params_for(spec, &sc, m))
-            .map_err(|e| format!("--setup \"{text}\": {e}"))?;
+            .map_err(|e| format!("--setup \"{}\": {e}", planarium::limits::cut(text, 100)))?;
         let mut row = bench::bench_planner(&sc, setup.spec.name, &setup.params, runs)?;
         row.label = setup.label;
         eprintln!(
@@ -398,7 +400,8 @@ fn run_course_grade(m: &ArgMatches) -> Result<(), String> {
     for f in &files {
         let sc = load(f)?;
         let spec = match &sc.planner {
-            Some(d) => planners::find(&d.name).ok_or_else(|| format!("{f}: unknown planner \"{}\"", d.name))?,
+            Some(d) => planners::find(&d.name)
+                .ok_or_else(|| format!("{f}: unknown planner \"{}\"", planarium::limits::cut(&d.name, 100)))?,
             None => planners::find("rrt-connect").expect("rrt-connect is registered"),
         };
         let params = params_for(spec, &sc, m)?;

@@ -38,6 +38,18 @@ pub struct KdTree {
 }
 
 impl KdTree {
+    /// The bytes its points take (keys, ids, links and boxes; see
+    /// [`Planner::stored_bytes`](crate::planners::Planner::stored_bytes)).
+    pub fn bytes(&self) -> usize {
+        use crate::planners::bytes_of;
+        bytes_of(&self.keys)
+            + bytes_of(&self.ids)
+            + bytes_of(&self.split)
+            + bytes_of(&self.left)
+            + bytes_of(&self.right)
+            + bytes_of(&self.lo)
+            + bytes_of(&self.hi)
+    }
     /// An empty tree of `dims`-dimensional states.
     pub fn new(dims: usize) -> Self {
         KdTree { dims, root: NONE, next_rebuild: LEAF_SCAN, ..Default::default() }

@@ -506,6 +506,9 @@ impl Planner for PotentialField {
     fn node_count(&self) -> usize {
         self.tree.as_ref().map_or(0, Tree::len)
     }
+    fn stored_bytes(&self) -> usize {
+        self.tree.as_ref().map_or(0, Tree::bytes) + self.history.len() * std::mem::size_of::<Real>()
+    }
 
     fn data(&self) -> PlannerData {
         PlannerData { trees: self.tree.iter().cloned().collect() }

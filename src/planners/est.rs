@@ -282,6 +282,19 @@ impl Planner for Est {
     fn node_count(&self) -> usize {
         self.trees.iter().map(|g| g.tree.len()).sum()
     }
+    fn stored_bytes(&self) -> usize {
+        use crate::planners::{bytes_of, nested_bytes};
+        self.trees
+            .iter()
+            .map(|g| {
+                // The grid's cells hold each node once; the index a key, a cell and a hash.
+                g.tree.bytes()
+                    + nested_bytes::<u32>(g.cells.len(), g.tree.len())
+                    + bytes_of(&g.keys) * 2
+                    + g.index.len() * (std::mem::size_of::<((i64, i64), usize)>() + 8)
+            })
+            .sum()
+    }
 
     fn data(&self) -> PlannerData {
         PlannerData { trees: self.trees.iter().map(|g| g.tree.clone()).collect() }

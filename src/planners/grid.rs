@@ -386,6 +386,15 @@ impl Planner for GridSearch {
     fn node_count(&self) -> usize {
         self.nx * self.ny
     }
+    fn stored_bytes(&self) -> usize {
+        crate::planners::bytes_of(&self.free)
+            + self.frontier.as_ref().map_or(0, Frontier::bytes)
+            + self.tree.as_ref().map_or(0, Tree::bytes)
+    }
+    /// Its nodes are the grid's cells, all made when set up (which refuses more than `max_nodes`).
+    fn out_of_nodes(&self, _max_nodes: usize) -> bool {
+        false
+    }
     fn data(&self) -> PlannerData {
         PlannerData { trees: self.tree.iter().cloned().collect() }
     }

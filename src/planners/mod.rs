@@ -92,6 +92,10 @@ pub struct Context<'a> {
     pub events: &'a mut EventLog,
     /// Nodes the planner may still add (the run's node limit, honoured inside an iteration too).
     pub nodes_left: usize,
+    /// Bytes the planner may still store ([`crate::limits::MAX_RUN_BYTES`] less
+    /// [`Planner::stored_bytes`]): loops that add many things in one iteration (a roadmap's edges)
+    /// take from it, and stop when it is spent.
+    pub bytes_left: usize,
     /// The run's sampler.
     pub sampler: &'a mut Sampler,
     /// The iteration being run (0 first).
@@ -185,6 +189,19 @@ impl Context<'_> {
     }
 }
 
+/// The bytes `v`'s items take (its length, not its capacity: see [`Planner::stored_bytes`]).
+#[inline]
+pub fn bytes_of<T>(v: &[T]) -> usize {
+    std::mem::size_of_val(v)
+}
+
+/// The bytes a vector of vectors takes: each inner vector's header, and `items` items of `T` in
+/// all (counted by the caller, so this is quick).
+#[inline]
+pub fn nested_bytes<T>(outer: usize, items: usize) -> usize {
+    outer * std::mem::size_of::<Vec<T>>() + items * std::mem::size_of::<T>()
+}
+
 /// A planner, advanced one iteration at a time.
 pub trait Planner {
     /// Run one iteration; `Some(path)` when it found a solution (start first, goal last).
@@ -205,10 +222,27 @@ pub trait Planner {
     fn coverage(&self) -> Option<Real> {
         None
     }
-    /// Whether the next step would add more nodes than `Context::nodes_left` allows (a planner
-    /// that adds several at once): the session then stops at its node limit.
-    fn out_of_nodes(&self) -> bool {
+    /// Whether the run must stop at its node limit `max_nodes` before the next iteration, which
+    /// would need a node past it. By default, when the planner holds `max_nodes` nodes already:
+    /// it has no room for the next. A planner that makes all its nodes when it is set up (a
+    /// grid's cells, a visibility graph's vertices; the set-up refuses more than `max_nodes`)
+    /// needs no more, and one that adds several at once says so before it would pass the limit.
+    fn out_of_nodes(&self, max_nodes: usize) -> bool {
+        self.node_count() >= max_nodes
+    }
+    /// The bytes the planner holds: its trees, roadmap, cells, per-node data, counted from their
+    /// lengths (not capacities, so a snapshot holds the same and runs in batches stop where a run
+    /// in one go does). The session stops the run at [`crate::limits::MAX_RUN_BYTES`]. Called
+    /// before every iteration: it must be quick.
+    fn stored_bytes(&self) -> usize;
+    /// Whether an iteration stopped adding for want of [`Context::bytes_left`]: the run then stops
+    /// at its memory limit too.
+    fn out_of_memory(&self) -> bool {
         false
+    }
+    /// What to change when the run stops at its memory limit (the end of its reason).
+    fn memory_advice(&self) -> &'static str {
+        "lower max_nodes"
     }
     /// For planners that can conclude "no path" by their method (cell decomposition, potential
     /// fields): why they gave up. The session stops with [`Status::NoPath`](crate::status::Status)

@@ -127,6 +127,16 @@ impl Tree {
         cx.nodes_left = cx.nodes_left.saturating_sub(1);
         t
     }
+    /// The bytes its nodes take: states, parents, the nearest-neighbour index, per-node domains and
+    /// failure counts (see [`Planner::stored_bytes`](crate::planners::Planner::stored_bytes)).
+    pub fn bytes(&self) -> usize {
+        use crate::planners::bytes_of;
+        bytes_of(&self.states)
+            + bytes_of(&self.parents)
+            + self.nn.bytes()
+            + bytes_of(&self.radius)
+            + bytes_of(&self.fails)
+    }
     /// Number of nodes.
     pub fn len(&self) -> usize {
         self.parents.len()

@@ -137,7 +137,8 @@ pub fn grade(
         return Err(format!("course grading: a time limit of {limit_s} s (0 to 3600)"));
     }
     let mut params = params.clone();
-    let spec = crate::planners::find(planner).ok_or_else(|| format!("unknown planner \"{planner}\""))?;
+    let spec = crate::planners::find(planner)
+        .ok_or_else(|| format!("unknown planner \"{}\"", crate::limits::cut(planner, 100)))?;
     params.set_text(spec, "time_limit", &limit_s.to_string())?;
     let mut graded = Vec::new();
     for seed in 1..=runs {

@@ -99,7 +99,9 @@ pub struct PlanResult {
     pub smoothed: Vec<Vec<Real>>,
     /// The statistics.
     pub stats: Stats,
-    /// Why the planner gave up (status `no_path`); absent otherwise.
+    /// Why the run ended where the status alone does not say: why the planner gave up (status
+    /// `no_path`), or what holds the memory and what to change (status `memory_limit`); absent
+    /// otherwise.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub reason: Option<String>,
 }

@@ -1,6 +1,7 @@
 use super::{PlanResult, SamplerSummary, Stats};
 use crate::clock::Instant;
 use crate::events::EventLog;
+use crate::limits::MAX_RUN_BYTES;
 use crate::math::Real;
 use crate::planners::{
     self, smoothing, Context, InspectionTask, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind,
@@ -104,7 +105,11 @@ impl Session {
     /// A run of `config` on `problem`. Errors name an unknown planner or a task it cannot do.
     pub fn new(problem: Problem, mut config: RunConfig) -> Result<Session, String> {
         let spec = planners::find(&config.planner).ok_or_else(|| {
-            format!("unknown planner \"{}\" (known: {})", config.planner, planners::names().join(", "))
+            format!(
+                "unknown planner \"{}\" (known: {})",
+                crate::limits::cut(&config.planner, 100),
+                planners::names().join(", ")
+            )
         })?;
         // Re-check the values against this planner, so its own defaults apply.
         config.params = Params::from_json(spec, &serde_json::Value::Object(config.params.values().clone()))
@@ -139,11 +144,17 @@ impl Session {
             iterations: p.real("max_iterations") as u64,
             nodes: p.real("max_nodes") as usize,
         };
-        // Setting a planner up may be long work too (a decomposition's tiling): the time limit holds.
+        // Setting a planner up may be long work too (a decomposition's tiling, a visibility graph's
+        // growth): it is planning time, under the same time limit, and counted in the run's time.
+        let setup = Instant::now();
+        // Exact tests counted before (building the problem) are not this run's work.
+        crate::geometry::take_tests();
         problem.si.set_deadline(Deadline::in_ms(limits.time_ms));
         let planner = (spec.make)(&problem.si, &task, &config.params).map_err(|e| format!("{}: {e}", spec.label))?;
         // The set-up's exact tests are its own work, not the first iteration's.
         crate::clock::work(crate::geometry::take_tests() / 16);
+        problem.si.look_again_soon();
+        let setup_ms = setup.elapsed().as_secs_f64() * 1000.0;
         let sampler = Sampler::from_params(&problem.si, task.goal.as_deref(), &config.params);
         Ok(Session {
             limits,
@@ -157,7 +168,7 @@ impl Session {
             planner,
             status: Status::Running,
             iterations: 0,
-            elapsed_ms: 0.0,
+            elapsed_ms: setup_ms,
             smoothing_ms: 0.0,
             planning_checks: None,
             path: Vec::new(),
@@ -190,11 +201,18 @@ impl Session {
             Some(Status::TimeLimit)
         } else if self.iterations >= l.iterations {
             Some(Status::IterationLimit)
-        } else if self.planner.node_count() >= l.nodes || self.planner.out_of_nodes() {
+        } else if self.planner.out_of_nodes(l.nodes) {
             Some(Status::NodeLimit)
+        } else if self.planner.out_of_memory() || self.planner.stored_bytes() > MAX_RUN_BYTES {
+            Some(Status::MemoryLimit)
         } else {
             None
         }
+    }
+
+    /// The bytes the planner may still store (see [`Context::bytes_left`]).
+    fn bytes_left(&self) -> usize {
+        MAX_RUN_BYTES.saturating_sub(self.planner.stored_bytes())
     }
 
     /// Run at most `max_iterations` iterations, for at most about `max_ms` milliseconds, and return
@@ -284,11 +302,13 @@ impl Session {
                 break;
             }
             let nodes_left = self.limits.nodes.saturating_sub(self.planner.node_count());
+            let bytes_left = self.bytes_left();
             let mut cx = Context {
                 si: &self.problem.si,
                 rng: &mut self.rng,
                 events: &mut self.events,
                 nodes_left,
+                bytes_left,
                 sampler: &mut self.sampler,
                 iteration: self.iterations,
             };
@@ -360,8 +380,25 @@ impl Session {
     fn stop(&mut self, limit: Status) {
         match self.planner.best_so_far() {
             Some(path) => self.finish_solved(path),
-            None => self.status = limit,
+            None => {
+                self.status = limit;
+                if limit == Status::MemoryLimit {
+                    self.reason = Some(self.memory_reason());
+                }
+            }
         }
+    }
+
+    /// Why a run stopped at its memory limit, and what to change.
+    fn memory_reason(&self) -> String {
+        format!(
+            "the planner holds {:.0} MB for its {} nodes{}, as much as a run may hold ({:.0} MB): {}",
+            self.planner.stored_bytes() as f64 / 1e6,
+            self.planner.node_count(),
+            if self.planner.out_of_memory() { " and their edges" } else { "" },
+            MAX_RUN_BYTES as f64 / 1e6,
+            self.planner.memory_advice()
+        )
     }
 
     fn finish_solved(&mut self, path: Vec<Vec<Real>>) {
@@ -421,11 +458,13 @@ impl Session {
         let goal_q = self.problem.check_state("goal", goal).map_err(|e| e.to_string())?;
         self.problem.si.set_deadline(Deadline::in_ms(self.limits.time_ms));
         let nodes_left = self.limits.nodes.saturating_sub(self.planner.node_count());
+        let bytes_left = self.bytes_left();
         let mut cx = Context {
             si: &self.problem.si,
             rng: &mut self.rng,
             events: &mut self.events,
             nodes_left,
+            bytes_left,
             sampler: &mut self.sampler,
             iteration: self.iterations,
         };

@@ -48,7 +48,7 @@ pub struct RunRow {
     /// Whether a path was found (`status` is `"solved"`).
     pub solved: bool,
     /// How the run ended: a status name (`solved`, `time_limit`, `iteration_limit`, `node_limit`,
-    /// `cancelled`, `no_path`, `running`).
+    /// `memory_limit`, `cancelled`, `no_path`, `running`).
     pub status: String,
     /// Planning time, milliseconds (smoothing excluded).
     pub time_ms: f64,

@@ -14,22 +14,30 @@ pub struct ScenarioError {
 }
 
 impl ScenarioError {
+    /// An error at `path` (a JSON path, or a file's name) and, for a text's errors, a line and a
+    /// column. The path and the message are [`echo`](crate::limits::echo)ed: user text in them
+    /// (keys, values, words) shows its control and bidirectional characters as `[U+202E]`, so the
+    /// message cannot be turned around. Every constructor goes through this.
+    pub fn new(
+        path: impl Into<String>,
+        message: impl Into<String>,
+        line: Option<usize>,
+        column: Option<usize>,
+    ) -> Self {
+        let (path, message) = (path.into(), message.into());
+        ScenarioError { path: crate::limits::echo(&path), message: crate::limits::echo(&message), line, column }
+    }
     /// A JSON syntax error, with its line and column.
     pub fn syntax(e: &serde_json::Error) -> Self {
-        ScenarioError {
-            path: String::new(),
-            message: format!("invalid JSON: {e}"),
-            line: Some(e.line()),
-            column: Some(e.column()),
-        }
+        ScenarioError::new(String::new(), format!("invalid JSON: {e}"), Some(e.line()), Some(e.column()))
     }
     /// An error about the document as a whole (not an object, too large): at line 1, column 1.
     pub fn document(message: impl Into<String>) -> Self {
-        ScenarioError { path: String::new(), message: message.into(), line: Some(1), column: Some(1) }
+        ScenarioError::new(String::new(), message, Some(1), Some(1))
     }
     /// An error at a JSON path.
     pub fn at(path: impl Into<String>, message: impl Into<String>) -> Self {
-        ScenarioError { path: path.into(), message: message.into(), line: None, column: None }
+        ScenarioError::new(path, message, None, None)
     }
 }
 

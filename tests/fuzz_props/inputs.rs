@@ -207,6 +207,26 @@ pub(super) fn valid_scenario(rng: &mut Rng, kind: usize) -> Value {
         let names = h::planner_names();
         doc["planner"] = json!({"name": pick(rng, &names), "seed": rng.below(1000)});
     }
+    // The visibility graph's set-up (growing every obstacle by a polygon of up to 1024 sides, then
+    // O(n²) sight tests): its planner block with extreme sides and batches, and obstacles that grow
+    // into many vertices (a star of up to 1,000 points, up to 300 small circles).
+    if chance(rng, 0.15) && doc.get("planner").is_none() {
+        let sides = *pick(rng, &[4, 8, 32, 256, 1024]);
+        let batch = *pick(rng, &[1.0, 64.0, 1e6]);
+        doc["planner"] = json!({"name": "visibility-graph", "params": {"sides": sides, "batch": batch}});
+        let obstacles = doc["obstacles"].as_array_mut().expect("obstacles");
+        if chance(rng, 0.5) {
+            let k = 200 + rng.below(801);
+            let c = f.point(rng);
+            obstacles.push(json!({"polygon": star(rng, c, 0.1 * s, k)}));
+        }
+        if chance(rng, 0.5) {
+            for _ in 0..rng.below(300) {
+                let c = f.point(rng);
+                obstacles.push(json!({"circle": [c[0], c[1], rng.uniform(0.001, 0.01) * s]}));
+            }
+        }
+    }
     doc
 }
 

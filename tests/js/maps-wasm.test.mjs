@@ -40,6 +40,17 @@ test('errors are JSON with the line, column and key', () => {
   assert.throws(() => import_map(new Uint8Array([80, 53, 10, 52]), 't.pgm'), (e) => /t\.pgm: byte \d+: the file ends/.test(JSON.parse(e.message).text));
 });
 
+test('a bidirectional control in a YAML key or value is echoed as [U+202E], never raw', () => {
+  for (const yaml of ['image: a.pgm\nres\u202eolution: 0.05\n', 'image: a.pgm\nresolution: 0.0\u202e5\n']) {
+    assert.throws(() => map_image_name(yaml, 'm\u202e.yaml'), (e) => {
+      const err = JSON.parse(e.message);
+      assert.ok(err.text.includes('[U+202E]'), err.text);
+      assert.ok(!/[\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069]/.test(e.message), e.message);
+      return true;
+    });
+  }
+});
+
 test("the Cells tool paints on a map's pixels: its lattice is the image's (origin, one pixel a cell), as grid search's", () => {
   const yaml = data('sample.yaml').toString('utf8');
   const sc = JSON.parse(import_map(data('sample.pgm'), 'sample.pgm', yaml, 'sample.yaml'));

@@ -130,6 +130,23 @@ test('bad input is an error naming what and where, never a crash', () => {
   assert.ok(JSON.parse(planners()).planners.some((p) => p.name === 'rrt-connect'));
 });
 
+test('a bidirectional control in a scenario key, a parameter or a planner name is echoed as [U+202E], never raw', () => {
+  const bidi = /[\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069]/;
+  const scenario = JSON.parse(builtinText.narrow);
+  scenario['\u202eevil'] = 1;
+  assert.throws(() => new Scene(JSON.stringify(scenario)), (e) => {
+    assert.equal(JSON.parse(e.message).path, '[U+202E]evil');
+    assert.ok(!bidi.test(e.message), e.message);
+    return true;
+  });
+  for (const [planner, params] of [['rrt', '{"go\u202eal_bias": 0.1}'], ['r\u202ert', '{}']]) {
+    assert.throws(() => new Run(builtinText.narrow, planner, params, 1), (e) => {
+      assert.ok(e.message.includes('[U+202E]') && !bidi.test(e.message), e.message);
+      return true;
+    });
+  }
+});
+
 test('time and iteration limits are honoured in wasm', () => {
   const run = new Run(builtinText.narrow, 'rrt', JSON.stringify({ goal_bias: 0, range: 0.0005, time_limit: 0.2 }), 1);
   const t0 = performance.now();

@@ -21,7 +21,7 @@ const STATUS_TEXT = Object.freeze({ no_path: 'no path' });
 
 export const STAT_FIELDS = Object.freeze([
   { key: 'reason', label: 'Why', optional: true, className: 'reason', value: (s) => s.reason || undefined,
-    title: 'Why the planner gave up: it can tell, by its method, that it finds no path' },
+    title: 'Why the run ended: the planner can tell, by its method, that it finds no path (no path), or what holds the memory a run may use and what to change (memory_limit)' },
   { key: 'time', label: 'Time (ms)', value: (s) => fixed(s.time_ms, 1) },
   { key: 'iterations', label: 'Iterations', value: (s) => ofPlanner(s.iterations, s.planner_iterations),
     title: 'Iterations drawn (of the planner\'s, while the replay is behind it)' },

@@ -82,9 +82,13 @@ pub fn seed_arg(text: &str) -> Result<SeedArg, String> {
     if text == "random" {
         return Ok(SeedArg::Fresh);
     }
-    text.parse()
-        .map(SeedArg::Fixed)
-        .map_err(|_| format!("\"{text}\" is not a seed: a whole number from 0 to {}, or \"random\"", u64::MAX))
+    text.parse().map(SeedArg::Fixed).map_err(|_| {
+        format!(
+            "\"{}\" is not a seed: a whole number from 0 to {}, or \"random\"",
+            planarium::limits::cut(text, 100),
+            u64::MAX
+        )
+    })
 }
 
 /// Most numbers in a `--start` or `--goal` state.

@@ -31,7 +31,7 @@ pub fn min_area(n: usize) -> Real {
 
 /// An error at a line and column (both 1-based) of a text file.
 fn at(line: usize, column: usize, message: impl Into<String>) -> ScenarioError {
-    ScenarioError { path: String::new(), message: message.into(), line: Some(line), column: Some(column) }
+    ScenarioError::new(String::new(), message, Some(line), Some(column))
 }
 
 /// The whitespace-separated words of a line with their 1-based columns.

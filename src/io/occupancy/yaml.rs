@@ -16,12 +16,8 @@ struct YamlErr<'a> {
 impl YamlErr<'_> {
     fn at(&self, line: usize, column: usize, key: &str, message: impl std::fmt::Display) -> ScenarioError {
         let key = limits::cut(key, 40);
-        ScenarioError {
-            path: key.clone(),
-            message: format!("{}: {key}: {message}", limits::cut(self.file, 100)),
-            line: Some(line),
-            column: Some(column),
-        }
+        let message = format!("{}: {key}: {message}", limits::cut(self.file, 100));
+        ScenarioError::new(key, message, Some(line), Some(column))
     }
 }
 

@@ -552,14 +552,30 @@ impl Planner for HexPotential {
     fn node_count(&self) -> usize {
         self.dec.cells.len() + self.steps
     }
+    fn stored_bytes(&self) -> usize {
+        use crate::planners::{bytes_of, nested_bytes};
+        // A cell's outline has at most 7 vertices (a hexagon clipped to its parent), and a
+        // node at most 6 neighbours.
+        let cells = self.dec.cells.len() * (std::mem::size_of::<cells::Cell>() + 7 * std::mem::size_of::<Vec2>());
+        cells
+            + bytes_of(&self.nodes)
+            + bytes_of(&self.node_of)
+            + nested_bytes::<usize>(self.adj.len(), 6 * self.adj.len())
+            + bytes_of(&self.counted)
+            + bytes_of(&self.visited)
+            + bytes_of(&self.waypoints)
+            + self.trees.iter().map(Tree::bytes).sum::<usize>()
+            + self.frontier.as_ref().map_or(0, Frontier::bytes)
+    }
     fn data(&self) -> PlannerData {
         PlannerData { trees: self.trees.clone() }
     }
     fn gave_up(&self) -> Option<String> {
         self.failure.clone()
     }
-    fn out_of_nodes(&self) -> bool {
-        self.out_of_nodes
+    fn out_of_nodes(&self, max_nodes: usize) -> bool {
+        // A split that may not fit, or no room for the search's next step.
+        self.out_of_nodes || self.node_count() >= max_nodes
     }
 }
 

@@ -73,6 +73,14 @@ pub struct Frontier {
 }
 
 impl Frontier {
+    /// The bytes it holds per cell, and its queue (see [`Planner::stored_bytes`](crate::planners::Planner::stored_bytes)).
+    pub fn bytes(&self) -> usize {
+        use crate::planners::bytes_of;
+        bytes_of(&self.g)
+            + bytes_of(&self.parent)
+            + bytes_of(&self.closed)
+            + self.open.len() * std::mem::size_of::<Open>()
+    }
     /// A search over `n` graph nodes (and the goal point) from node `start`.
     pub fn new(kind: Search, n: usize, start: usize, start_point: Vec2, goal: Vec2) -> Frontier {
         let mut f = Frontier {

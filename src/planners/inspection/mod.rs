@@ -226,6 +226,24 @@ impl Planner for Inspection {
     fn node_count(&self) -> usize {
         self.tree.as_ref().map_or(0, Tree::len)
     }
+    /// Each node keeps the points its branch has seen (a bit a point) besides its state.
+    fn stored_bytes(&self) -> usize {
+        use crate::planners::{bytes_of, nested_bytes};
+        let n = self.node_count();
+        self.tree.as_ref().map_or(0, Tree::bytes)
+            + bytes_of(&self.seen)
+            + bytes_of(&self.edge)
+            + bytes_of(&self.counts)
+            + bytes_of(&self.cost)
+            + bytes_of(&self.len)
+            + nested_bytes::<u32>(self.children.len(), n.saturating_sub(1))
+            + bytes_of(&self.ever)
+            + bytes_of(&self.top)
+            + bytes_of(&self.in_top)
+    }
+    fn memory_advice(&self) -> &'static str {
+        "lower max_nodes, or inspect fewer points (each node keeps a bit per point)"
+    }
 
     fn data(&self) -> PlannerData {
         PlannerData { trees: self.tree.iter().cloned().collect() }

@@ -113,6 +113,9 @@ pub struct RoadmapPlanner {
     /// The last search's path had an invalid edge (Lazy PRM): the next iteration searches again
     /// without growing.
     search_again: bool,
+    /// A milestone's edges stopped for want of bytes (`Context::bytes_left`): the run stops at
+    /// its memory limit.
+    out_of_memory: bool,
 }
 
 /// A search whose path had an invalid edge, now removed: search again.
@@ -138,6 +141,7 @@ impl RoadmapPlanner {
             solved_at: None,
             best: None,
             search_again: false,
+            out_of_memory: false,
         }
     }
     /// Keep growing the roadmap for `iterations` after the first solution, searching it again
@@ -195,12 +199,20 @@ impl RoadmapPlanner {
     /// Add a vertex at the valid state `q` and connect it to its neighbours.
     fn add_vertex(&mut self, cx: &mut Context, q: &[Real]) -> u32 {
         let near = self.rule.find(&mut self.graph, &cx.si.space, q);
+        let before = self.graph.bytes();
         let v = self.graph.add_vertex(&cx.si.space, q);
         cx.nodes_left = cx.nodes_left.saturating_sub(1);
+        cx.bytes_left = cx.bytes_left.saturating_sub(self.graph.bytes() - before);
         let p = cx.si.project(q);
         cx.events.push(EventKind::NodeAdded, 0, v as i64, -1, p, p, q, q);
         for (u, d) in near {
             if cx.si.stopped() {
+                break;
+            }
+            // A huge radius or k joins a milestone to every vertex: the edges count against the
+            // run's memory, here where they are added.
+            if cx.bytes_left < Roadmap::EDGE_BYTES {
+                self.out_of_memory = true;
                 break;
             }
             self.connect(cx, u, v, d);
@@ -225,6 +237,7 @@ impl RoadmapPlanner {
             EdgeState::Valid
         };
         self.graph.add_edge(u, v, d, state);
+        cx.bytes_left -= Roadmap::EDGE_BYTES;
         self.note_edge(cx, EventKind::RoadmapEdge, (state == EdgeState::Unchecked) as usize, u, v);
     }
 
@@ -350,6 +363,20 @@ impl Planner for RoadmapPlanner {
     }
     fn node_count(&self) -> usize {
         self.graph.len()
+    }
+    fn stored_bytes(&self) -> usize {
+        self.graph.bytes()
+    }
+    fn out_of_memory(&self) -> bool {
+        self.out_of_memory
+    }
+    fn memory_advice(&self) -> &'static str {
+        match self.rule {
+            Neighbours::Nearest(_) | Neighbours::KStar(_) => {
+                "lower k (the neighbours each milestone is joined to), or max_nodes"
+            }
+            Neighbours::Radius(_) | Neighbours::RStar(_) => "lower the neighbour radius, or max_nodes",
+        }
     }
     fn query(&mut self, cx: &mut Context, start: &[Real], goal: &[Real]) -> Option<Option<Vec<Vec<Real>>>> {
         Some(RoadmapPlanner::query(self, cx, start, goal))

@@ -68,6 +68,18 @@ impl PartialOrd for Open {
 }
 
 impl Roadmap {
+    /// The bytes one more edge takes: the edge and its id at both ends.
+    pub const EDGE_BYTES: usize = std::mem::size_of::<Edge>() + 2 * std::mem::size_of::<u32>();
+    /// The bytes it holds: vertices (states, index, adjacency lists, components) and edges (see
+    /// [`Planner::stored_bytes`](crate::planners::Planner::stored_bytes)).
+    pub fn bytes(&self) -> usize {
+        use crate::planners::{bytes_of, nested_bytes};
+        bytes_of(&self.states)
+            + self.nn.bytes()
+            + nested_bytes::<u32>(self.adj.len(), 0)
+            + bytes_of(&self.comp)
+            + self.edges.len() * Self::EDGE_BYTES
+    }
     /// An empty roadmap of `dims`-number states.
     pub fn new(dims: usize) -> Roadmap {
         Roadmap {

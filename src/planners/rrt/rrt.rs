@@ -112,6 +112,9 @@ impl Planner for Rrt {
         None
     }
 
+    fn stored_bytes(&self) -> usize {
+        self.tree.as_ref().map_or(0, Tree::bytes)
+    }
     fn node_count(&self) -> usize {
         self.tree.as_ref().map_or(0, Tree::len)
     }

@@ -112,6 +112,9 @@ impl Planner for RrtConnect {
         }
     }
 
+    fn stored_bytes(&self) -> usize {
+        self.trees.iter().map(Tree::bytes).sum()
+    }
     fn node_count(&self) -> usize {
         self.trees.iter().map(Tree::len).sum()
     }

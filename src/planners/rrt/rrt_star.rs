@@ -338,6 +338,15 @@ impl Planner for RrtStar {
     fn node_count(&self) -> usize {
         self.tree.as_ref().map_or(0, Tree::len)
     }
+    fn stored_bytes(&self) -> usize {
+        use crate::planners::{bytes_of, nested_bytes};
+        let n = self.node_count();
+        self.tree.as_ref().map_or(0, Tree::bytes)
+            + bytes_of(&self.cost)
+            + bytes_of(&self.edge)
+            + nested_bytes::<u32>(self.children.len(), n.saturating_sub(1))
+            + bytes_of(&self.goals)
+    }
 
     fn data(&self) -> PlannerData {
         PlannerData { trees: self.tree.iter().cloned().collect() }

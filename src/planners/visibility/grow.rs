@@ -69,11 +69,68 @@ fn corners_of(poly: &[Vec2], out: &mut Vec<[Vec2; 3]>) {
     }
 }
 
+/// Why the obstacles were not grown.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GrowError {
+    /// The grown polygons could have this many vertices, more than allowed (see [`grown_vertices`]).
+    TooMany(u64),
+    /// The run's deadline passed (or its batch was suspended) after this many obstacles of all.
+    Stopped {
+        /// Obstacles grown.
+        done: usize,
+        /// Obstacles in all.
+        of: usize,
+    },
+}
+
+/// The sides of the polygon a vertex is grown by: the disc's `k` for a round growth, else the
+/// margin's square.
+fn sides_of(k: usize, round: bool) -> u64 {
+    if round {
+        k as u64
+    } else {
+        4
+    }
+}
+
+/// The most vertices [`grow`] can make from `ws` (known before anything is grown): a convex
+/// obstacle of `m` vertices grows to at most `m + s` (a Minkowski sum of convex polygons has at
+/// most the sum of their vertices; `s` the sides of the polygon a vertex is grown by), a circle to
+/// `k`, a segment to `2 + s`, and each edge of a non-convex polygon to `2 + s`.
+pub fn grown_vertices(ws: &Workspace, g: Real, k: usize, round: bool) -> u64 {
+    let s = if g > 0.0 { sides_of(k, round) } else { 0 };
+    ws.obstacles
+        .iter()
+        .map(|o| match o {
+            Shape::Rect(_) => 4 + s,
+            Shape::Circle(..) => k as u64,
+            Shape::Segment(..) => 2 + s,
+            Shape::Polygon(p) if g <= 0.0 || polygon::is_convex(p) => p.len() as u64 + s,
+            Shape::Polygon(p) => p.len() as u64 * (2 + s),
+        })
+        .sum()
+}
+
 /// Grow the obstacles of `ws` by `g` (see the module's doc), circles as `k`-gons; `round`: whether
 /// the growth is a disc's (vertices grown by a `k`-gon) or only the margin (by a square of apothem
 /// `g`: fewer vertices, and the path's cost moves by a few `g` all the same).
-pub fn grow(ws: &Workspace, g: Real, k: usize, round: bool) -> Grown {
-    let kv = if round { k } else { 4 };
+///
+/// Refused before anything is grown when the grown polygons could have more than `max_vertices`
+/// vertices ([`grown_vertices`]); the run's deadline is looked at as the obstacles are grown and
+/// their corners kept (`si.tick`: a unit per 16 vertices made, and per corner tested).
+pub fn grow(
+    si: &SpaceInfo,
+    ws: &Workspace,
+    g: Real,
+    k: usize,
+    round: bool,
+    max_vertices: u64,
+) -> Result<Grown, GrowError> {
+    let most = grown_vertices(ws, g, k, round);
+    if most > max_vertices {
+        return Err(GrowError::TooMany(most));
+    }
+    let kv = sides_of(k, round) as usize;
     let mut shapes = Vec::new();
     let mut corners = Vec::new();
     let convex = |pts: Vec<Vec2>, shapes: &mut Vec<Shape>, corners: &mut Vec<[Vec2; 3]>| {
@@ -81,7 +138,10 @@ pub fn grow(ws: &Workspace, g: Real, k: usize, round: bool) -> Grown {
         corners_of(&h, corners);
         shapes.push(Shape::Polygon(h));
     };
-    for o in &ws.obstacles {
+    let of = ws.obstacles.len();
+    let mut made = 0;
+    for (done, o) in ws.obstacles.iter().enumerate() {
+        let before = corners.len();
         match o {
             Shape::Rect(b) => convex(
                 vec![b.min, Vec2::new(b.max.x, b.min.y), b.max, Vec2::new(b.min.x, b.max.y)],
@@ -111,14 +171,28 @@ pub fn grow(ws: &Workspace, g: Real, k: usize, round: bool) -> Grown {
                 shapes.push(o.clone());
             }
         }
+        made += corners.len() - before + 1;
+        if made >= 16 {
+            if si.tick(made as u64 / 16) {
+                return Err(GrowError::Stopped { done, of });
+            }
+            made %= 16;
+        }
     }
     let mut grown = Workspace::new(ws.bounds, shapes);
     grown.touching_allowed = true;
     // Candidate vertices: in bounds, strictly inside no grown polygon.
     let b = ws.bounds;
-    corners.retain(|c| b.contains(c[0]) && grown.sight_clear(c[0], c[0]));
+    let mut stopped = false;
+    corners.retain(|c| {
+        stopped = stopped || si.tick(1 + crate::geometry::take_tests() / 16);
+        !stopped && b.contains(c[0]) && grown.sight_clear(c[0], c[0])
+    });
+    if stopped {
+        return Err(GrowError::Stopped { done: of, of });
+    }
     corners.dedup_by(|a, b| a[0] == b[0]);
-    Grown { ws: grown, growth: g, corners }
+    Ok(Grown { ws: grown, growth: g, corners })
 }
 
 /// How the robot is seen: a point or its bounding disc, and whether the result is its optimum.

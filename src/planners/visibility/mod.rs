@@ -52,7 +52,7 @@
 
 mod grow;
 
-pub use grow::{body_of, grow, growth, Body, Grown, MARGIN};
+pub use grow::{body_of, grow, grown_vertices, growth, Body, GrowError, Grown, MARGIN};
 
 use crate::events::EventKind;
 use crate::geometry::segment::orient_sign;
@@ -95,6 +95,9 @@ pub const PARAMS: &[ParamSpec] = &[
         "Vertex pairs tested (while building) or vertices settled (while searching) per iteration.",
     ),
 ];
+
+/// The bytes one edge of the graph takes (an entry in each end's adjacency list).
+const EDGE_BYTES: usize = 2 * std::mem::size_of::<(u32, Real)>();
 
 /// Pairs visited (most skipped by the tangent test) per pair tested, in an iteration's budget.
 const VISITS: usize = 32;
@@ -151,6 +154,9 @@ pub struct VisibilityGraph {
     tree: Option<Tree>,
     edges: usize,
     reason: Option<String>,
+    /// The build stopped for want of bytes (`Context::bytes_left`): the run stops at its memory
+    /// limit.
+    out_of_memory: bool,
 }
 
 impl VisibilityGraph {
@@ -159,7 +165,23 @@ impl VisibilityGraph {
     pub fn new(si: &SpaceInfo, task: &Task, params: &Params) -> Result<Self, String> {
         let body = body_of(si)?;
         let k = params.real("sides") as usize;
-        let grown = grow(si.workspace(), growth(si, body), k, body.radius > 0.0);
+        let max_nodes = params.real("max_nodes");
+        // The graph's vertices are the grown polygons' convex corners: refused before anything is
+        // grown when there could be more than max_nodes of them; growing (seconds on a big map)
+        // stops at the run's deadline.
+        let g = growth(si, body);
+        let grown = grow(si, si.workspace(), g, k, body.radius > 0.0, (max_nodes as u64).saturating_sub(2))
+            .map_err(|e| match e {
+                GrowError::TooMany(n) => format!(
+                    "growing the obstacles by the {} would make up to {n} vertices, more than max_nodes ({max_nodes}): lower sides (now {k}), simplify the obstacles, or raise max_nodes",
+                    if body.radius > 0.0 { format!("robot's disc (radius {:.3e}, a {k}-sided polygon)", body.radius) } else { "margin".to_string() },
+                ),
+                GrowError::Stopped { done, of } => format!(
+                    "the time limit ({} s) ran out while growing the obstacles ({}): raise time_limit, lower sides (now {k}) or simplify the obstacles",
+                    params.real("time_limit"),
+                    if done < of { format!("{done} of {of} grown") } else { format!("all {of} grown, their corners being tested") }
+                ),
+            })?;
         let (start, goal) = (task.start.clone(), task.goal().to_vec());
         let (s, g) = (si.project(&start), si.project(&goal));
         for (what, p) in [("start", s), ("goal", g)] {
@@ -179,7 +201,6 @@ impl VisibilityGraph {
             points.push(c[0]);
             sides.push([c[1], c[2]]);
         }
-        let max_nodes = params.real("max_nodes");
         if points.len() as Real > max_nodes {
             return Err(format!(
                 "the graph has {} vertices, more than max_nodes ({max_nodes}): raise max_nodes or lower sides",
@@ -207,6 +228,7 @@ impl VisibilityGraph {
             tree: None,
             edges: 0,
             reason: None,
+            out_of_memory: false,
         })
     }
 
@@ -265,7 +287,13 @@ impl VisibilityGraph {
                     false,
                     || ws.sight_clear(a, b),
                 );
+                // The graph's edges count against the run's memory (two adjacency entries each).
+                if clear && cx.bytes_left < EDGE_BYTES {
+                    self.out_of_memory = true;
+                    break;
+                }
                 if clear {
+                    cx.bytes_left -= EDGE_BYTES;
                     let d = (b - a).norm();
                     self.adj[i].push((j as u32, d));
                     self.adj[j].push((i as u32, d));
@@ -396,6 +424,29 @@ impl Planner for VisibilityGraph {
     }
     fn node_count(&self) -> usize {
         self.points.len()
+    }
+    fn stored_bytes(&self) -> usize {
+        use crate::planners::{bytes_of, nested_bytes};
+        bytes_of(&self.points)
+            + bytes_of(&self.sides)
+            + nested_bytes::<(u32, Real)>(self.adj.len(), 2 * self.edges)
+            + bytes_of(&self.cost)
+            + bytes_of(&self.parent)
+            + bytes_of(&self.closed)
+            + bytes_of(&self.tree_id)
+            + self.open.len() * std::mem::size_of::<Entry>()
+            + self.tree.as_ref().map_or(0, Tree::bytes)
+    }
+    fn out_of_memory(&self) -> bool {
+        self.out_of_memory
+    }
+    fn memory_advice(&self) -> &'static str {
+        "lower sides, or simplify the obstacles (fewer vertices see fewer of each other)"
+    }
+    /// Its nodes are the graph's vertices, all made when set up (which refuses more than
+    /// `max_nodes`); the search settles them, and adds none.
+    fn out_of_nodes(&self, _max_nodes: usize) -> bool {
+        false
     }
     fn data(&self) -> PlannerData {
         PlannerData { trees: self.tree.iter().cloned().collect() }

@@ -7,7 +7,8 @@ use serde::Serialize;
 /// Read a report (as [`to_json`] writes it, or as the page builds it; `summary` and other extra
 /// keys are ignored) and [check](BenchReport::check) it.
 pub fn from_json(text: &str) -> Result<BenchReport, String> {
-    let mut r: BenchReport = serde_json::from_str(text).map_err(|e| format!("bench report: {e}"))?;
+    let mut r: BenchReport = // serde's messages echo the values they refuse: cut, controls shown.
+        serde_json::from_str(text).map_err(|e| format!("bench report: {}", crate::limits::cut(&e.to_string(), 300)))?;
     if r.runs == 0 {
         r.runs = r.setups.iter().map(|s| s.rows.len()).max().unwrap_or(0);
     }

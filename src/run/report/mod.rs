@@ -66,7 +66,7 @@ pub struct BenchReport {
 /// The formats [`render`] writes.
 pub const FORMATS: [&str; 4] = ["csv", "json", "ompl", "table"];
 
-const STATUSES: [Status; 7] = [
+const STATUSES: [Status; 8] = [
     Status::Running,
     Status::Solved,
     Status::TimeLimit,
@@ -74,6 +74,8 @@ const STATUSES: [Status; 7] = [
     Status::NodeLimit,
     Status::Cancelled,
     Status::NoPath,
+    // Last, so the OMPL export's enum values of the others stay what they were.
+    Status::MemoryLimit,
 ];
 
 fn parse_status(name: &str) -> Option<Status> {
@@ -135,10 +137,18 @@ impl BenchReport {
                 let at = format!("setups[{i}].rows[{j}]");
                 let status = parse_status(&r.status).ok_or_else(|| {
                     let known: Vec<&str> = STATUSES.iter().map(|s| s.name()).collect();
-                    format!("{at}.status: unknown status \"{}\" (known: {})", r.status, known.join(", "))
+                    format!(
+                        "{at}.status: unknown status \"{}\" (known: {})",
+                        crate::limits::cut(&r.status, 100),
+                        known.join(", ")
+                    )
                 })?;
                 if r.solved != (status == Status::Solved) {
-                    return Err(format!("{at}: solved is {} but status is \"{}\"", r.solved, r.status));
+                    return Err(format!(
+                        "{at}: solved is {} but status is \"{}\"",
+                        r.solved,
+                        crate::limits::cut(&r.status, 100)
+                    ));
                 }
                 for (name, v) in [
                     ("time_ms", Some(r.time_ms)),
@@ -171,7 +181,11 @@ pub fn render(r: &BenchReport, format: &str) -> Result<String, String> {
         "json" => Ok(to_json(r)),
         "ompl" => Ok(to_ompl_log(r)),
         "table" => Ok(course_table(r)),
-        _ => Err(format!("unknown export format \"{format}\" (known: {})", FORMATS.join(", "))),
+        _ => Err(format!(
+            "unknown export format \"{}\" (known: {})",
+            crate::limits::cut(format, 100),
+            FORMATS.join(", ")
+        )),
     }
 }
 

@@ -79,7 +79,7 @@ const OMPL_STATUS: [&str; 10] = [
 fn ompl_status(s: Status) -> usize {
     match s {
         Status::Running => 0,
-        Status::TimeLimit | Status::IterationLimit | Status::NodeLimit => 4,
+        Status::TimeLimit | Status::IterationLimit | Status::NodeLimit | Status::MemoryLimit => 4,
         Status::Solved => 6,
         Status::Cancelled => 8,
         Status::NoPath => 9,
