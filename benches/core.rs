@@ -1,4 +1,4 @@
-//! Micro-benchmarks of the core's parts on issue 7's problems (`cargo bench --bench core`).
+//! Micro-benchmarks of the core's parts on the OMPL comparison's problems (`cargo bench --bench core`).
 //!
 //! `npm run bench` times whole seeded runs natively and in wasm; these time the parts the profiles
 //! name, one at a time, with criterion's statistics (useful on a noisy machine):
@@ -28,7 +28,7 @@ use planarium::run::{scaling, RunConfig, Session};
 use planarium::scenario;
 use std::time::Duration;
 
-/// The problems, with OMPL's step range for each (issue 7).
+/// The problems, with OMPL's step range for each.
 const PROBLEMS: [(&str, f64); 3] = [("narrow", 0.2828), ("ompl-rect", 0.597), ("horn-10", 1.0)];
 
 fn problem(id: &str) -> Problem {

@@ -1,7 +1,7 @@
-// The benchmark suite (`npm run bench`): issue 7's problems beside OMPL 1.5.2's figures, run
+// The benchmark suite (`npm run bench`): the OMPL comparison problems beside OMPL 1.5.2's figures, run
 // natively (the CLI's `bench`, seeds 1..N) and, for the problems OMPL was timed on, with the wasm
 // build in Node (the same set-ups and seeds; the counts must equal the native ones, bit for bit).
-// Then the scaling benchmark (issue 15): one state check among 10 to 100,000 obstacles for the
+// Then the scaling benchmark: one state check among 10 to 100,000 obstacles for the
 // point, a rectangle and an arm (the CLI's `scaling`, and `scaling_json` in wasm).
 // Writes bench/results/suite-<UTC stamp>.json (everything) and .md (the tables).
 //
@@ -30,7 +30,7 @@ const bestOf = (rounds) => rounds[0].map((_, j) => Math.min(...rounds.map((rows)
 const only = opt('--only', null)?.split(',');
 const ASV = join(root, 'tests', 'data', 'asv');
 
-// OMPL 1.5.2 (Debian's libompl-dev, -O3), medians over 20 seeds on this machine kind (issue 7).
+// OMPL 1.5.2 (Debian's libompl-dev, -O3), medians over 20 seeds on this machine kind.
 const SUITE = [
   { id: 'narrow', what: 'point, wall with a 0.02 gap', wasm: true,
     setups: ['rrt: rrt --range 0.2828', 'rrt-connect: rrt-connect --range 0.2828'],
@@ -147,7 +147,7 @@ const lines = [
   '',
   `Machine: ${host}, Node ${process.version}. Seeds 1..N per set-up; times are medians of planning time (smoothing excluded). `
   + `Where wasm is measured, both sides ran ${roundsArg} round(s) and each seed's time is its best round. `
-  + 'OMPL 1.5.2 figures are issue 7\'s (medians over 20 seeds, same machine kind). Made by `npm run bench`.',
+  + 'OMPL 1.5.2 figures: Debian\'s libompl-dev, -O3 (medians over 20 seeds, same machine kind). Made by `npm run bench`.',
   '',
   '| problem | set-up | solved | median ms (native) | mean ± std ms (native) | median ms (wasm, Node) | wasm / native | OMPL | median nodes | median checks | median cost |',
   '|---|---|---|---|---|---|---|---|---|---|---|',
@@ -168,7 +168,7 @@ for (const r of results) lines.push(`- **${r.problem}**: ${r.what}.`);
 if (scaling) {
   lines.push('', '## Scaling: one state check among n obstacles', '',
     `A 2 × 1 map whose right half holds n small blocks in a grid; ${scaling.checks} checks of uniform states per row, best of ${roundsArg} round(s). `
-    + '× 10: the time over the 10-obstacle time (issue 15 asks at most 3 at 100,000). Build: the broad phase (boxes, BVH, grid) from the obstacles.', '',
+    + '× 10: the time over the 10-obstacle time (the target: at most 3 at 100,000). Build: the broad phase (boxes, BVH, grid) from the obstacles.', '',
     '| robot | obstacles | ns / check (native) | × 10 | ns / check (wasm, Node) | × 10 (wasm) | valid | build ms | broad phase kB |',
     '|---|---|---|---|---|---|---|---|---|');
   scaling.native.forEach((r, i) => {

@@ -1,5 +1,5 @@
 #!/usr/bin/env node
-// The seed reports' tables, reproduced with Planarium beside the reports' own figures (issue 16):
+// The seed reports' tables, reproduced with Planarium beside the reports' own figures:
 // report 000 (time per official ASV file), report 001 (its samplers and tree variants table),
 // report 003 (standard and bidirectional RRT on a polygon and a 3-link chain) and report 004
 // (the Technion arm: E1/E2 × goal bias, and inspection at coverage 0.5 and 0.75).

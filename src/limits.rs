@@ -24,7 +24,7 @@ pub const MAX_MAGNITUDE: Real = 1e9;
 /// 1e-100 and 1e9 (the smallest difference of two such is about 1e-116).
 pub const MIN_MAGNITUDE: Real = 1e-100;
 
-/// Obstacles in one scenario (issue 15 makes state checks with this many fast).
+/// Obstacles in one scenario (the broad phase keeps state checks with this many fast).
 pub const MAX_OBSTACLES: usize = 100_000;
 
 /// Vertices of one polygon (an obstacle or a rigid robot's footprint). Checking that a polygon is
@@ -54,7 +54,7 @@ pub const MAX_NOTES_CHARS: usize = 20_000;
 /// extent, `StateSpace::max_extent`) divided by the scenario's `resolution` (a vehicle chain's
 /// `max_step`) must stay at or below this. The finest built-in needs 1,486 (the ASV chains); a
 /// point robot among a few obstacles checks 100,000 states in about 1 ms, among 20,000 (a linear
-/// scan until issue 15's broad phase) in about 3 s.
+/// scan before the broad phase) in about 3 s.
 pub const MAX_MOTION_STEPS: Real = 100_000.0;
 
 /// The largest `max_nodes` a run accepts: a tree of a million nodes holds about 200 MB in the

@@ -47,7 +47,7 @@ pub fn place(pose: &Pose2, p: Vec2) -> Vec2 {
 ///
 /// std's `f64::min`/`max` must return the other operand when one is NaN. WebAssembly has no
 /// instruction for that (its `f64.min` propagates NaN), so in wasm they become calls to `fmin` and
-/// `fmax`, which took a third of the time of the arm's collision checks there (issue 7's profile).
+/// `fmax`, which took a third of the time of the arm's collision checks there (the OMPL comparison's profile).
 /// These compare and select; when `self` is NaN they return `other`, as std does.
 pub trait MinMax: Copy {
     /// The smaller of `self` and `other` (`self.min(other)`).

@@ -238,7 +238,7 @@ impl Scene {
             .collect();
         serde_json::Value::Array(dims).to_string()
     }
-    /// The shortest path's cost by the visibility graph (issue 17: the reference line of the cost
+    /// The shortest path's cost by the visibility graph (the reference line of the cost
     /// chart), as JSON `{"cost": c | null, "exact": bool}` (`cost` null: no path; `exact`: the
     /// robot's optimum, a point or a round footprint), or `{"error": why}` for robots it does not
     /// apply to or a graph that takes more than `seconds`.

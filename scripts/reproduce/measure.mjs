@@ -1,4 +1,4 @@
-// Statistics and the report 004 cost unit, recomputed from paths outside the core (issue 16).
+// Statistics and the report 004 cost unit, recomputed from paths outside the core.
 
 /** The mean of `xs` (NaN when empty). */
 export const mean = (xs) => (xs.length ? xs.reduce((a, b) => a + b, 0) / xs.length : NaN);

@@ -1,7 +1,7 @@
 //! A uniform grid of candidate lists in front of the obstacle hierarchy (see [`super::Workspace`]).
 //!
 //! Among many obstacles, a query of parry's `Bvh` descends some twenty levels, testing two boxes at
-//! each, before it reaches the one or two obstacles near a point (issue 15). The grid answers a
+//! each, before it reaches the one or two obstacles near a point. The grid answers a
 //! small query in one or a few steps instead: it covers the union of the obstacles' boxes with
 //! about as many cells as obstacles, and each cell lists, in scenario order, the obstacles whose
 //! boxes meet it. A query walks the cells its shape may meet, row by row, and hands each listed

@@ -103,14 +103,14 @@ fn segment_distance_to_shapes() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Exactness (issue 13): the predicates against exact integer arithmetic.
+// Exactness: the predicates against exact integer arithmetic.
 
 use super::circle::{point_disc_cmp, segment_disc_cmp};
 use super::exact::{orient_sign_exact, segment_disc_cmp_exact};
 use crate::rng::Rng;
 use std::cmp::Ordering;
 
-/// The formula `orient` used before issue 13, kept to measure what it got wrong.
+/// The formula `orient` used before the predicates were made exact, kept to measure what it got wrong.
 fn naive_orient(a: Vec2, b: Vec2, c: Vec2) -> f64 {
     (b - a).perp(&(c - a))
 }
@@ -227,7 +227,7 @@ fn locate_exact(poly: &[Vec2], p: Vec2) -> Location {
     }
 }
 
-/// `contains_polygon_point` before issue 13 (naive orientation, constructed crossings).
+/// `contains_polygon_point` before it was exact (naive orientation, constructed crossings).
 fn old_contains_polygon_point(poly: &[Vec2], p: Vec2) -> bool {
     let n = poly.len();
     let mut inside = false;
@@ -284,7 +284,7 @@ fn point_in_polygon_is_exact_near_edges() {
             Location::Outside => outside += 1,
         }
     }
-    println!("points near edges: {boundary} on the boundary, {inside} in, {outside} out; the code before issue 13 was wrong on {old_wrong}");
+    println!("points near edges: {boundary} on the boundary, {inside} in, {outside} out; the inexact code was wrong on {old_wrong}");
     assert!(boundary >= 400 && inside > 2000 && outside > 2000, "{boundary} on, {inside} in, {outside} out");
 }
 

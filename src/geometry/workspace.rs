@@ -151,7 +151,7 @@ impl Probe {
     /// Whether the box `lo .. hi` lies inside the shape, a convex polygon: never `true` for one that
     /// does not (the same margin, the other way). An obstacle has a point in its box (a corner, a
     /// vertex, an end, the centre), so one whose box the polygon holds meets the polygon: what the
-    /// exact test would answer, without its cost (issue 15: among many small obstacles, a body
+    /// exact test would answer, without its cost (among many small obstacles, a body
     /// often covers some whole).
     #[inline]
     fn holds(&self, lo: Vec2, hi: Vec2) -> bool {

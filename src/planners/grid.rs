@@ -1,4 +1,4 @@
-//! Grid search for a point robot (issue 17): A*, Dijkstra, breadth-first search and the wavefront
+//! Grid search for a point robot: A*, Dijkstra, breadth-first search and the wavefront
 //! planner on an occupancy grid made from the scenario, with PathFinding.js's choices.
 //!
 //! **The grid.** Square cells of side `cell` over the map (0: a fortieth of its shorter side); a

@@ -1,4 +1,4 @@
-//! The suite's scaling benchmark (issue 15): the cost of one state check among 10 to 100,000
+//! The suite's scaling benchmark: the cost of one state check among 10 to 100,000
 //! obstacles, for the point, a rigid rectangle and a 3-link arm. The map is a 2 × 1 box whose right
 //! half holds `n` small blocks in a grid; the states are uniform (valid or not), drawn from a fixed
 //! seed, so every run checks the same states and counts the same valid ones (native and wasm alike).

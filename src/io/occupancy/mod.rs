@@ -1,4 +1,4 @@
-//! Occupancy maps as people have them (issue 17): ROS map_server's form (a PGM or PNG image and its
+//! Occupancy maps as people have them: ROS map_server's form (a PGM or PNG image and its
 //! YAML: `image`, `resolution`, `origin`, `negate`, `occupied_thresh`, `free_thresh`, `mode`) and a
 //! plain image (dark = occupied), read into an [`OccupancyGrid`] and from there into a scenario;
 //! and back: a scenario rasterised at a cell size, written as PGM (P5) + YAML or PNG.

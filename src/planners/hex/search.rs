@@ -1,4 +1,4 @@
-//! A complete search over the hexagonal cells (issue 17): A* or Dijkstra on the decomposition's
+//! A complete search over the hexagonal cells: A* or Dijkstra on the decomposition's
 //! adjacency, beside report 002's greedy descent.
 //!
 //! The graph is the descent's: the free leaves (and the start's and goal's leaves), each stood for

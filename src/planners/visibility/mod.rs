@@ -2,7 +2,7 @@
 //!
 //! T. Lozano-Pérez and M. A. Wesley, "An algorithm for planning collision-free paths among
 //! polyhedral obstacles", CACM 22(10), 1979; M. de Berg et al., *Computational Geometry*, ch. 15.
-//! Issue 17: the reference line on RRT*'s cost chart.
+//! It draws the reference line on RRT*'s cost chart.
 //!
 //! # The method
 //!
