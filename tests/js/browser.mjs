@@ -145,3 +145,25 @@ export async function pageFixture() {
   });
   return fx;
 }
+
+/**
+ * A scenario whose goal sits in a closed box, so RRT grows until its node limit: `planner` sets
+ * the node and time limits.
+ */
+export function walledIn(planner) {
+  return {
+    format: 'planarium-scenario/1',
+    name: 'Walled-in goal',
+    notes: 'The goal sits in a closed box: RRT grows until its node limit.',
+    bounds: [0, 0, 1, 1],
+    obstacles: [
+      { rect: [0.8, 0.8, 0.98, 0.82] }, { rect: [0.8, 0.96, 0.98, 0.98] },
+      { rect: [0.8, 0.8, 0.82, 0.98] }, { rect: [0.96, 0.8, 0.98, 0.98] },
+    ],
+    robot: { kind: 'point' },
+    start: [0.1, 0.1],
+    goal: [0.89, 0.89],
+    resolution: 0.002,
+    planner: { name: 'rrt', seed: 1, goal_bias: 0.05, ...planner },
+  };
+}

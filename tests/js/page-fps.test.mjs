@@ -8,26 +8,12 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { pageFixture, SHOTS } from './browser.mjs';
+import { pageFixture, SHOTS, walledIn } from './browser.mjs';
 import { REVEAL_PER_FRAME } from '../../www/run/limits.js';
 
 const fx = await pageFixture();
 
-const WALLED = {
-  format: 'planarium-scenario/1',
-  name: 'Walled-in goal',
-  notes: 'The goal sits in a closed box: RRT grows until its node limit.',
-  bounds: [0, 0, 1, 1],
-  obstacles: [
-    { rect: [0.8, 0.8, 0.98, 0.82] }, { rect: [0.8, 0.96, 0.98, 0.98] },
-    { rect: [0.8, 0.8, 0.82, 0.98] }, { rect: [0.96, 0.8, 0.98, 0.98] },
-  ],
-  robot: { kind: 'point' },
-  start: [0.1, 0.1],
-  goal: [0.89, 0.89],
-  resolution: 0.002,
-  planner: { name: 'rrt', seed: 1, max_nodes: 100000, goal_bias: 0.05, time_limit: 120 },
-};
+const WALLED = walledIn({ max_nodes: 100000, time_limit: 120 });
 
 /** Record, every animation frame, its time, the records shown and the nodes shown (window.__frames). */
 const recordFrames = (page) => page.evaluate(() => {

@@ -9,7 +9,7 @@
 import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync, statSync } from 'node:fs';
-import { pageFixture } from './browser.mjs';
+import { pageFixture, walledIn } from './browser.mjs';
 
 const fx = await pageFixture();
 let page;
@@ -136,20 +136,7 @@ test('grid search on a 998×998 map: its million cells redraw in a handful of ca
 });
 
 // RRT grows until its node limit: the goal is walled in.
-const WALLED = {
-  format: 'planarium-scenario/1',
-  name: 'Walled-in goal',
-  bounds: [0, 0, 1, 1],
-  obstacles: [
-    { rect: [0.8, 0.8, 0.98, 0.82] }, { rect: [0.8, 0.96, 0.98, 0.98] },
-    { rect: [0.8, 0.8, 0.82, 0.98] }, { rect: [0.96, 0.8, 0.98, 0.98] },
-  ],
-  robot: { kind: 'point' },
-  start: [0.1, 0.1],
-  goal: [0.89, 0.89],
-  resolution: 0.002,
-  planner: { name: 'rrt', seed: 1, max_nodes: 150000, goal_bias: 0.05, time_limit: 600 },
-};
+const WALLED = walledIn({ max_nodes: 150000, time_limit: 600 });
 
 /** Count animation frames from now on (window.__frames()). */
 const countFrames = () => page.evaluate(() => {

@@ -86,15 +86,7 @@ export class CellRaster {
         if (c.rect || pointInPolygon(L.wx(i + 0.5), L.wy(j + 0.5), c.pts)) p[j * W + i] = px;
       }
     }
-    this.blank = false;
-    const d = this.dirty;
-    if (!d) this.dirty = [i0, j0, i1, j1];
-    else {
-      if (i0 < d[0]) d[0] = i0;
-      if (j0 < d[1]) d[1] = j0;
-      if (i1 > d[2]) d[2] = i1;
-      if (j1 > d[3]) d[3] = j1;
-    }
+    this.touched(i0, j0, i1, j1);
     return true;
   }
 
@@ -117,6 +109,12 @@ export class CellRaster {
     }
     const p = this.pixels;
     for (let j = j0; j < j1; j++) p.fill(px, j * W + i0, j * W + i1);
+    this.touched(i0, j0, i1, j1);
+    return true;
+  }
+
+  /** Pixels [i0, i1) × [j0, j1) were painted: the image is not blank, and they join the dirty box. */
+  touched(i0, j0, i1, j1) {
     this.blank = false;
     const d = this.dirty;
     if (!d) this.dirty = [i0, j0, i1, j1];
@@ -126,7 +124,6 @@ export class CellRaster {
       if (i1 > d[2]) d[2] = i1;
       if (j1 > d[3]) d[3] = j1;
     }
-    return true;
   }
 
   /** Draw the pixels changed since the last flush onto `ctx` (the cells layer). */
