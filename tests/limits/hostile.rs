@@ -52,6 +52,11 @@ fn the_visibility_graph_refuses_a_growth_past_max_nodes_before_growing() {
     let mut s = session(&stars(3, 40), "visibility-graph", json!({"sides": 8}), 1).unwrap();
     s.run_to_end();
     assert!(s.result().solved, "{}", s.result().status);
+    // The vertices kept are held to max_nodes exactly, after growing: one fewer is refused.
+    let n = s.result().stats.nodes;
+    let e =
+        session(&stars(3, 40), "visibility-graph", json!({"sides": 8, "max_nodes": n - 1}), 1).err().expect("refused");
+    assert!(e.contains(&format!("the graph has {n} vertices, more than max_nodes")), "{e}");
 }
 
 #[test]

@@ -166,14 +166,18 @@ impl VisibilityGraph {
         let body = body_of(si)?;
         let k = params.real("sides") as usize;
         let max_nodes = params.real("max_nodes");
-        // The graph's vertices are the grown polygons' convex corners: refused before anything is
-        // grown when there could be more than max_nodes of them; growing (seconds on a big map)
-        // stops at the run's deadline.
+        // The graph's vertices are the grown polygons' convex corners outside every other grown
+        // polygon. Growing is refused before anything is grown when it could make more corners
+        // than any run may hold (the cap on max_nodes); growing (seconds on a big map) stops at
+        // the run's deadline; the corners kept are then held to max_nodes itself, exactly (corners
+        // inside other obstacles are dropped, so a bound made before growing would refuse graphs
+        // within max_nodes).
         let g = growth(si, body);
-        let grown = grow(si, si.workspace(), g, k, body.radius > 0.0, (max_nodes as u64).saturating_sub(2))
+        let cap = crate::limits::MAX_NODES as u64;
+        let grown = grow(si, si.workspace(), g, k, body.radius > 0.0, cap - 2)
             .map_err(|e| match e {
                 GrowError::TooMany(n) => format!(
-                    "growing the obstacles by the {} would make up to {n} vertices, more than max_nodes ({max_nodes}): lower sides (now {k}), simplify the obstacles, or raise max_nodes",
+                    "growing the obstacles by the {} would make up to {n} corners, more than the {cap} any run's max_nodes allows: lower sides (now {k}) or simplify the obstacles",
                     if body.radius > 0.0 { format!("robot's disc (radius {:.3e}, a {k}-sided polygon)", body.radius) } else { "margin".to_string() },
                 ),
                 GrowError::Stopped { done, of } => format!(
