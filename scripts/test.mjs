@@ -28,7 +28,8 @@ const STAGES = [
   { name: 'rustfmt', cmd: 'cargo fmt --check', needs: ['set-up'] },
   { name: 'rustfmt (fuzz)', cmd: 'cargo fmt --check --manifest-path fuzz/Cargo.toml', needs: ['set-up'] },
   { name: 'clippy', cmd: 'cargo clippy --all-targets --release -- -D warnings', needs: ['set-up'] },
-  { name: 'cargo test', cmd: 'cargo test --release', needs: ['set-up'] },
+  // --no-fail-fast: every test binary runs even after one fails, so one failure hides no other.
+  { name: 'cargo test', cmd: 'cargo test --release --no-fail-fast', needs: ['set-up'] },
   // The micro-benchmarks once each, untimed (criterion's --test): they must keep working.
   { name: 'benchmarks, untimed', cmd: 'cargo bench --bench core -- --test', needs: ['set-up'] },
   { name: 'wasm tests in Node', cmd: 'wasm-pack test --node --release -- --no-default-features', needs: ['set-up'] },
