@@ -1,4 +1,4 @@
-//! The broom-joined vehicle chain (courses.md §1): each validity rule on hand-made configurations,
+//! The broom-joined vehicle chain (the vehicle-chain course, `docs/sources.md`): each validity rule on hand-made configurations,
 //! checked by both the planner's robot and the independent re-check `io::asv::check_configuration`;
 //! every official problem file imported, planned, written as a solution file, read back and
 //! re-checked; broken solutions rejected; problem-file errors named by line and column.

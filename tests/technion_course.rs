@@ -1,4 +1,4 @@
-//! The Technion course's definitions (courses.md §5, report 004), recomputed here apart from the
+//! The Technion course's definitions (report 004, `docs/sources.md`), recomputed here apart from the
 //! crate: its own forward kinematics of the links 80, 70, 40, 40 from (0, 0), its own angle wrap,
 //! its own segment-meets-segment predicate (touching counts as meeting, as the course's
 //! `LineString.intersects`), and the course's count of what a path sees: at its vertices only.

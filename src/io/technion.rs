@@ -1,4 +1,4 @@
-//! The Technion "Algorithmic Motion Planning" HW3 maps (courses.md §5): `map_mp.json` (motion
+//! The Technion "Algorithmic Motion Planning" HW3 maps (`docs/sources.md`): `map_mp.json` (motion
 //! planning, with a `GOAL`) and `map_ip.json` (inspection, with `INSPECTION_POINTS`).
 //!
 //! Later offerings give maps with only `WIDTH`, `HEIGHT` and `OBSTACLES` and a point robot

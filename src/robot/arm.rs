@@ -1,4 +1,4 @@
-//! A fixed-base planar arm (courses.md §4–§6): `n` revolute links, joint angles relative to the
+//! A fixed-base planar arm (reports 003 and 004 and OMPL's horn, `docs/sources.md`): `n` revolute links, joint angles relative to the
 //! previous link, each joint limited or wrapping around.
 //!
 //! Valid when every joint is within its limits, every joint point (base and tip included) lies in

@@ -1,4 +1,4 @@
-//! The ASV course's grading protocol (courses.md §1): every problem is run 10 times
+//! The ASV course's grading protocol (`docs/sources.md`): every problem is run 10 times
 //! (seeds 1..=10); a run counts when the planner solves it within the problem's time limit **and**
 //! its path, cut into the solution file's primitive steps, passes the independent re-check of the
 //! course's Tester rules ([`crate::io::asv::check_solution`]); a problem passes when at least 5

@@ -139,7 +139,7 @@ fn spec(sc: &Scenario) -> Result<(usize, Real, Real, bool), String> {
 }
 
 /// Why configuration `c` (`[x1, y1, ..., xn, yn]`) breaks the course's rules in scenario `sc`, if
-/// it does: broom lengths, convexity, area, bounds, obstacles (the rules of courses.md §1).
+/// it does: broom lengths, convexity, area, bounds, obstacles (the vehicle-chain course's rules, `docs/sources.md`).
 pub fn check_configuration(sc: &Scenario, c: &[Real]) -> Result<(), String> {
     let (n, broom, min_area, is_convex) = spec(sc)?;
     if c.len() != 2 * n {

@@ -1,4 +1,4 @@
-//! The ASV course's problem and solution files (courses.md §1).
+//! The ASV course's problem and solution files (the vehicle-chain course, `docs/sources.md`).
 //!
 //! - [`import_problem`] reads a problem file (vehicle count, initial and goal positions, obstacle
 //!   rectangles as four corners each) into a scenario with the course's settings.

@@ -1,8 +1,8 @@
 //! Hierarchical hexagonal decomposition with artificial potential fields (report 002).
 //!
 //! The method of "Mobile Robot Path Planning Based on Hierarchical Hexagonal Decomposition and
-//! Artificial Potential Fields" (J. Robotic Systems, 1994), as the report and
-//! `courses.md` §3 describe it. No public implementation existed; where the paper's numbers are
+//! Artificial Potential Fields" (J. Robotic Systems, 1994), as report 002 describes it
+//! (`docs/sources.md`). No public implementation existed; where the paper's numbers are
 //! unknown (cell sizes, level count), they are parameters with the defaults documented below.
 //!
 //! 1. **Decompose** ([`cells`]): tile the map with hexagons (half hexagons at the borders) and

@@ -1,6 +1,6 @@
 //! Inspection planning: a tree that grows until one branch has seen enough points of interest.
 //!
-//! The Technion course's inspection RRT (courses.md §5, report 004; cf. G. Papadopoulos,
+//! The Technion course's inspection RRT (report 004, `docs/sources.md`; cf. G. Papadopoulos,
 //! H. Kurniawati, N. M. Patrikalakis, "Asymptotically optimal inspection planning using systems with
 //! differential constraints", ICRA 2013, whose tree nodes also carry what their branch has seen). One
 //! tree from the start. Every node carries the set of points seen **along its branch**: its parent's

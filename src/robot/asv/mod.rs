@@ -1,4 +1,4 @@
-//! The broom-joined vehicle chain (courses.md §1, UQ COMP3702's "ASV" problems).
+//! The broom-joined vehicle chain (UQ COMP3702's "ASV" problems, `docs/sources.md`).
 //!
 //! `n` vehicles (points) in chain order, each joined to the next by a broom of fixed length `L`.
 //! A scenario state is `[x1, y1, ..., xn, yn]`. The planner works in

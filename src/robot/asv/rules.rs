@@ -1,4 +1,4 @@
-//! The chain's validity rules on vehicle positions (courses.md §1), with the planner's margin.
+//! The chain's validity rules on vehicle positions (the vehicle-chain course, `docs/sources.md`), with the planner's margin.
 
 use super::{AsvRobot, MARGIN};
 use crate::geometry::segment::distance2_point_segment;
