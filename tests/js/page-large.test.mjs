@@ -10,6 +10,7 @@ import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync, statSync } from 'node:fs';
 import { pageFixture, walledIn } from './browser.mjs';
+import { smallQuads } from './seeded.mjs';
 
 const fx = await pageFixture();
 let page;
@@ -54,13 +55,7 @@ const longest = async () => Math.max(0, ...(await page.evaluate(() => window.__l
 test('Open file: a scenario of 8.3 MB within every limit opens and runs (the limit is on the file, not on a re-serialised copy)', async () => {
   // 70,000 small quadrilaterals whose corners have 12 digits: compact, 8.3 MB; pretty-printed
   // (as the core wrote its copy: serde's two-space indent, a number a line), 21 MB.
-  const obstacles = [];
-  const d = (v) => Number(v.toFixed(10));
-  for (let k = 0; obstacles.length < 70000; k++) {
-    const x = 0.05 + 0.0034 * (k % 265) + 1.23e-7, y = 0.05 + 0.0034 * Math.floor(k / 265) + 4.56e-7;
-    if (x > 0.85 && y > 0.85) continue;
-    obstacles.push({ polygon: [[d(x), d(y + 0.0011)], [d(x + 0.0011), d(y)], [d(x + 0.0022), d(y + 0.0011)], [d(x + 0.0011), d(y + 0.0022)]] });
-  }
+  const obstacles = smallQuads(70000);
   const sc = { format: 'planarium-scenario/1', name: 'Large file', bounds: [0, 0, 1, 1], obstacles, robot: { kind: 'point' },
     start: [0.01, 0.01], goal: [0.99, 0.99], resolution: 0.001, planner: { name: 'rrt-connect', seed: 1 } };
   const text = JSON.stringify(sc);

@@ -9,6 +9,7 @@ import { fileURLToPath } from 'node:url';
 import { dirname, join } from 'node:path';
 import { initSync, Run, Scene, builtins, planners, event_kinds } from '../../www/pkg/planarium.js';
 import { EventKind, STRIDE } from '../../www/run/events.js';
+import { smallQuads } from './seeded.mjs';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
 initSync({ module: readFileSync(join(root, 'www/pkg/planarium_bg.wasm')) });
@@ -94,13 +95,7 @@ test('events stream what the page needs: nodes with parents, collisions, a solut
 
 test('a file is read into a Scene as the user gave it: the text limit is on the file, and runs are made from the Scene', () => {
   // 70,000 quadrilaterals with 12-digit corners: 8.3 MB as written, 21 MB pretty-printed
-  const obstacles = [];
-  const d = (v) => Number(v.toFixed(10));
-  for (let k = 0; obstacles.length < 70000; k++) {
-    const x = 0.05 + 0.0034 * (k % 265) + 1.23e-7, y = 0.05 + 0.0034 * Math.floor(k / 265) + 4.56e-7;
-    if (x > 0.85 && y > 0.85) continue;
-    obstacles.push({ polygon: [[d(x), d(y + 0.0011)], [d(x + 0.0011), d(y)], [d(x + 0.0022), d(y + 0.0011)], [d(x + 0.0011), d(y + 0.0022)]] });
-  }
+  const obstacles = smallQuads(70000);
   const sc = { bounds: [0, 0, 1, 1], obstacles, robot: { kind: 'point' }, start: [0.01, 0.01], goal: [0.99, 0.99] };
   const text = JSON.stringify(sc);
   assert.ok(text.length < 16 * 1024 * 1024 && JSON.stringify(sc, null, 2).length > 16 * 1024 * 1024);
