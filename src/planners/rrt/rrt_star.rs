@@ -183,9 +183,9 @@ impl RrtStar {
         }
     }
 
-    /// One RRT* step: sample, steer, choose a parent, insert, rewire.
-    fn grow(&mut self, cx: &mut Context) {
-        if !cx.sample(0, &mut self.sample) {
+    /// One RRT* step: sample (by `draw`), steer, choose a parent, insert, rewire.
+    fn grow(&mut self, cx: &mut Context, draw: impl FnOnce(&mut Context, &mut [Real]) -> bool) {
+        if !draw(cx, &mut self.sample) {
             return;
         }
         // The near set's size, for a tree of n nodes once the new one is in.
@@ -312,11 +312,15 @@ impl RrtStar {
     }
 }
 
-impl Planner for RrtStar {
-    fn snapshot(&self) -> Box<dyn Planner> {
-        Box::new(self.clone())
-    }
-    fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
+impl RrtStar {
+    /// One iteration whose sample is drawn by `draw` (which writes a state and returns `false`
+    /// when it gave up): the run's sampler for RRT*, another rule for its variants (Informed
+    /// RRT*).
+    pub fn iterate_with(
+        &mut self,
+        cx: &mut Context,
+        draw: impl FnOnce(&mut Context, &mut [Real]) -> bool,
+    ) -> Option<Vec<Vec<Real>>> {
         if self.tree.is_none() {
             let tree = Tree::new(cx, &self.task.start, 0);
             self.tree = Some(tree);
@@ -324,7 +328,7 @@ impl Planner for RrtStar {
         }
         let iteration = self.iterations;
         self.iterations += 1;
-        self.grow(cx);
+        self.grow(cx, draw);
         self.update_best(cx, iteration);
         let first = self.solved_at?;
         if iteration - first < self.improve_for {
@@ -333,6 +337,15 @@ impl Planner for RrtStar {
         let goal = self.task.goal();
         cx.events.at(EventKind::Solved, 0, cx.si.project(goal), goal);
         self.best_path()
+    }
+}
+
+impl Planner for RrtStar {
+    fn snapshot(&self) -> Box<dyn Planner> {
+        Box::new(self.clone())
+    }
+    fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
+        self.iterate_with(cx, |cx, out| cx.sample(0, out))
     }
 
     fn node_count(&self) -> usize {
