@@ -107,11 +107,18 @@ pub enum EventKind {
     /// A graph edge was found (visibility graph): between vertices `id` (at `x, y`) and `parent`
     /// (at `px, py`); `c0` its length; `c1` 1 when the segment is clear (kept), 0 when blocked.
     GraphEdge = 26,
+    /// The informed set shrank (Informed RRT*, after each better solution): the states that could
+    /// still lie on a shorter path, `d(start, q) + d(q, goal) < c`, drawn in the plane as the
+    /// ellipse with foci the start's and the goal's points: `x, y` its centre; `px, py` its
+    /// semi-axes (major, minor); `c0, c1` the major axis's direction (unit); `pc0` the best cost
+    /// `c`; `pc1` the distance between the foci. `id` the iteration. For robots whose states are
+    /// not points of the plane the ellipse bounds the positions the set allows.
+    Informed = 27,
 }
 
 impl EventKind {
     /// Every kind with its name, for the JS constant check.
-    pub const ALL: [(EventKind, &'static str); 27] = [
+    pub const ALL: [(EventKind, &'static str); 28] = [
         (EventKind::Sample, "SAMPLE"),
         (EventKind::SampleRejected, "SAMPLE_REJECTED"),
         (EventKind::NodeAdded, "NODE_ADDED"),
@@ -139,6 +146,7 @@ impl EventKind {
         (EventKind::QueryPath, "QUERY_PATH"),
         (EventKind::Select, "SELECT"),
         (EventKind::GraphEdge, "GRAPH_EDGE"),
+        (EventKind::Informed, "INFORMED"),
     ];
 }
 

@@ -34,4 +34,5 @@ export const EventKind = Object.freeze({
   SELECT: 25, // EST: id: node picked, x y: its point, px: nodes in its cell, py: the cell's probability, c0: cells, c1 pc0: column, row, pc1: grid
   // The visibility graph: an edge between two graph vertices.
   GRAPH_EDGE: 26, // id, parent: the vertices, x y / px py: their points, c0: length, c1: 1 clear (kept), 0 blocked
+  INFORMED: 27, // x y: the ellipse's centre, px py: its semi-axes, c0 c1: the major axis (unit), pc0: best cost, pc1: the foci's distance
 });
