@@ -297,6 +297,7 @@ pub static REGISTRY: &[PlannerSpec] = &[
     rrt::rrt::SPEC,
     rrt::rrt_connect::SPEC,
     rrt::rrt_star::SPEC,
+    rrt::informed_rrt_star::SPEC,
     roadmap::prm::SPEC,
     roadmap::prm_star::SPEC,
     roadmap::lazy_prm::SPEC,

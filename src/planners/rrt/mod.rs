@@ -1,6 +1,7 @@
 //! The RRT family: [`rrt`] (single tree, goal bias, extend or connect growth),
 //! [`rrt_connect`] (two trees, alternating) and [`rrt_star`] (rewiring toward shorter paths).
 
+pub mod informed_rrt_star;
 #[allow(clippy::module_inception)] // planners/rrt/rrt.rs, one planner per file
 pub mod rrt;
 pub mod rrt_connect;
