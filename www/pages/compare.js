@@ -24,7 +24,7 @@ import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenari
 import { applyPageLimits } from '../run/limits.js';
 import init, { parse_setups as parseSetups } from '../pkg/planarium.js';
 import { setupFor } from '../ui/links.js';
-import { quartiles } from '../draw/plots.js';
+import { summarise } from '../run/summary.js';
 import { el } from '../ui/dom.js';
 import { runPool } from '../ui/seed-pool.js';
 import { setupLine, readPageState, checkSetups, pageHash, playgroundLink, readChosenFile, differingParams } from '../ui/setups.js';
@@ -336,12 +336,6 @@ function stopSeeds(why) {
   syncSeedButtons();
 }
 
-/** A median of finite values, or null. */
-function median(values) {
-  const v = values.filter(Number.isFinite);
-  return v.length ? quartiles(v).median : null;
-}
-
 /** A number for the table: whole numbers as they are, else 4 significant digits. */
 function num(v) {
   if (v === null || !Number.isFinite(v)) return '—';
@@ -354,15 +348,11 @@ function finishSeeds() {
   seedJob = null;
   ui.seedsProgress.hidden = true;
   syncSeedButtons();
-  const per = j.rows.map((rows) => ({
-    runs: rows.length,
-    solved: rows.filter((r) => r.solved).length,
-    success: rows.length ? rows.filter((r) => r.solved).length / rows.length : 0,
-    time_ms: median(rows.map((r) => r.time_ms)),
-    nodes: median(rows.map((r) => r.nodes)),
-    checks: median(rows.map((r) => r.checks)),
-    length: median(rows.filter((r) => r.solved).map((r) => r.cost)),
-  }));
+  // medians of time, nodes and checks over every run, of the path's length over the solved ones
+  const per = j.rows.map((rows) => {
+    const s = summarise(rows.map((r) => ({ ...r, length: r.cost })), { overAll: ['time_ms', 'nodes', 'checks'], overSolved: ['length'] });
+    return { runs: s.runs, solved: s.solved, success: s.success, ...s.medians };
+  });
   // the better set-up per metric: higher success, lower medians; none on a tie or without values
   /** @type {Array<[string, string, (p: any) => string, number]>} key, label, shown as, sign (1: higher is better) */
   const METRICS = [
