@@ -47,8 +47,8 @@
 
 /**
  * The visibility graph's shortest path (the core's `optimum_json`): its cost (null: no path) and
- * whether that is the robot's optimum (a point, a round footprint); or why there is none.
- * @typedef {{cost: number | null, exact: boolean} | {error: string}} Optimum
+ * whether that is the robot's optimum (a point, a round footprint); or, alone, why there is none.
+ * @typedef {{cost?: number | null, exact?: boolean, error?: string}} Optimum
  */
 
 /**
