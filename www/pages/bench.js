@@ -21,6 +21,7 @@ import { el } from '../ui/dom.js';
 import { runPool } from '../ui/seed-pool.js';
 import { setupLine, setupLines, readPageState, wholeIn, checkSetups, coreError, pageHash, playgroundLink, readChosenFile, differingParams, MAX_SETUPS } from '../ui/setups.js';
 import { shown } from '../ui/text.js';
+import { ScenarioSource } from '../run/scenario-source.js';
 
 /**
  * The page's element `id`. Its kind is the HTML's (input, select, button, canvas, dialog…), so it
@@ -48,8 +49,11 @@ let job = null;   // the benchmark being run: {text, scenario, setups, runs, row
 let report = null; // the last finished (or cancelled) report
 let curves = [];   // per set-up, RRT*'s best cost against time per run: [[[ms, cost], ...], ...]
 let asked = null;  // the last report's {runs: seeds asked per set-up, total: runs asked, done: runs done}
-// The scenario benchmarked: {id, name, text (its JSON), scenario (parsed), source: {id} for a
-// built-in as shipped, {text} for an opened or linked one (what a link carries)}.
+// The scenario and why it was chosen (a built-in, a file, a link): run/scenario-source.js, as the
+// other pages; read on this thread, so it is loaded as soon as it is sent.
+const src = new ScenarioSource();
+// The scenario benchmarked, as a report names it: {id, name, text (its JSON), scenario (parsed),
+// source: what a link carries ({id} for a built-in as shipped, else {text})}.
 let current = null;
 let reportScenario = null; // `current` as the last report ran it (its dots open on it)
 let builder = null;        // the set-up builder's planner panel
@@ -295,16 +299,20 @@ function exportAs(format, ext) {
 function useBuiltin(b) {
   removeCustom();
   ui.scenario.value = b.id;
-  current = { id: b.id, name: b.name, text: JSON.stringify(b.scenario), scenario: b.scenario, source: { id: b.id } };
+  src.sent('builtin', { id: b.id });
+  src.loaded(b.scenario);
+  current = { id: b.id, name: b.name, text: src.text, scenario: src.scenario, source: src.linkSource() };
   builder?.setTask(taskOf(current.scenario));
 }
 
 /**
- * Benchmark a scenario given as text (an opened file, or a link's JSON): read by the core's
- * import_file, as the playground reads files. `name`: the file's name (its extension picks the
- * format). Returns the problem in words, or null.
+ * Benchmark a scenario given as text (an opened file, or a link's JSON: `reason`): read by the
+ * core's import_file, as the playground reads files. `name`: the file's name (its extension picks
+ * the format). Returns the problem in words, or null.
+ * @param {string} text @param {string} name @param {string} label
+ * @param {import('../run/scenario-source.js').LoadReason} reason
  */
-function useText(text, name, label) {
+function useText(text, name, label, reason) {
   let json;
   try {
     json = importFile(text, name);
@@ -313,7 +321,9 @@ function useText(text, name, label) {
   }
   const scenario = JSON.parse(json);
   const id = (scenario.name || name).replace(/\.[a-z]+$/i, '').replace(/[^\w.-]+/g, '-').toLowerCase().slice(0, 60) || 'scenario';
-  current = { id, name: scenario.name || name, text: json, scenario, source: { text: json } };
+  src.sent(reason, { file: name });
+  src.loaded(scenario, json);
+  current = { id, name: scenario.name || name, text: src.text, scenario: src.scenario, source: src.linkSource() };
   markCustom(label);
   builder?.setTask(taskOf(scenario));
   return null;
@@ -408,7 +418,7 @@ async function restoreHash(hash) {
   const { share, own } = await readPageState(hash, { builtins, keys: ['setups', 'runs'] });
   const problems = [...share.problems];
   if (share.scenario?.text) {
-    const why = useText(share.scenario.text, 'link.json', 'Scenario from a link');
+    const why = useText(share.scenario.text, 'link.json', 'Scenario from a link', 'link');
     if (why) { problems.push(`The link's scenario: ${why.replace(/^link\.json: /, '')}; the first built-in is used.`); useBuiltin(builtins[0]); }
   } else {
     const b = builtins.find((x) => x.id === share.scenario?.id) || builtins.find((x) => x.id === ui.scenario.value) || builtins[0];
@@ -466,7 +476,7 @@ ui.file.addEventListener('change', async () => {
   showError('');
   let text;
   try { text = await readChosenFile(file); } catch (e) { showError(e.message); return; }
-  const why = useText(text, file.name, `File: ${file.name}`);
+  const why = useText(text, file.name, `File: ${file.name}`, 'file');
   if (why) { showError(`This file is not a scenario the core reads: ${why}`); return; }
   writeHash();
 });
