@@ -83,7 +83,12 @@ export class CSpaceView {
     this.dirty = true;
   }
 
-  /** A new scenario: `cspace` {n, grid, dims} or null (no view), its start and goal states. */
+  /**
+   * A new scenario: `cspace` {n, grid, dims} (the worker's `loaded` reply) or null (no view), its
+   * start and goal states.
+   * @param {import('../run/messages.js').LoadedReply['cspace'] | null} cspace
+   * @param {number[]} [start] @param {number[]} [goal]
+   */
   setSpace(cspace, start, goal) {
     this.space = cspace || null;
     this.setStartGoal(start, goal);

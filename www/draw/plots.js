@@ -8,19 +8,9 @@
 // is kept in the canvas's data-y-scale / data-x-scale. scatter() returns the dots' screen
 // positions, so the page can open the run under a click.
 
-export const SERIES = ['#0072b2', '#e69f00', '#009e73', '#cc79a7', '#56b4e9', '#d55e00', '#f0e442', '#000000'];
+import { quartiles } from '../run/summary.js';
 
-/** Quartiles by linear interpolation (as numpy's default). */
-export function quartiles(values) {
-  const v = [...values].sort((a, b) => a - b);
-  const q = (p) => {
-    if (!v.length) return NaN;
-    const i = (v.length - 1) * p;
-    const lo = Math.floor(i), hi = Math.ceil(i);
-    return v[lo] + (v[hi] - v[lo]) * (i - lo);
-  };
-  return { min: v[0], q1: q(0.25), median: q(0.5), q3: q(0.75), max: v[v.length - 1], n: v.length };
-}
+export const SERIES = ['#0072b2', '#e69f00', '#009e73', '#cc79a7', '#56b4e9', '#d55e00', '#f0e442', '#000000'];
 
 function setup(canvas, title) {
   const dpr = window.devicePixelRatio || 1;

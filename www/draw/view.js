@@ -97,7 +97,11 @@ export class View {
     this.dirty = true;
   }
 
-  /** A new scenario (or null: nothing valid to show). */
+  /**
+   * A new scenario (or null: nothing valid to show); `start` and `goal` the robot's outlines there,
+   * flat (the worker's `loaded` reply; the goal's empty without a goal).
+   * @param {any} scenario @param {Float64Array | number[]} [start] @param {Float64Array | number[]} [goal]
+   */
   setScenario(scenario, start, goal) {
     this.scenario = scenario;
     this.start = scenario ? parseOutline(start).polys : [];

@@ -1,5 +1,6 @@
 // The benchmark page: several planner set-ups × seeds 1..N on one scenario, spread over a pool of
-// workers (bench-worker.js, one per core), with progress, an estimate of the time left and cancel.
+// workers (bench-worker.js, one per core; the pages' one pool, ui/seed-pool.js), with progress, an
+// estimate of the time left and cancel.
 // The results go through the core's own report code (bench_export: the same code as the CLI's
 // `bench --csv/--json-file/--ompl-log`), so the table and the exports match the CLI's numbers.
 // Set-ups are built from menus (the playground's planner panel, ui/panel.js) or typed as the CLI's
@@ -17,8 +18,10 @@ import { applyPageLimits } from '../run/limits.js';
 import { boxPlot, successBars, scatter, stepLines, hitDot } from '../draw/plots.js';
 import { downloadText } from '../draw/stage.js';
 import { el } from '../ui/dom.js';
+import { runPool } from '../ui/seed-pool.js';
 import { setupLine, setupLines, readPageState, wholeIn, checkSetups, coreError, pageHash, playgroundLink, readChosenFile, differingParams, MAX_SETUPS } from '../ui/setups.js';
 import { shown } from '../ui/text.js';
+import { ScenarioSource } from '../run/scenario-source.js';
 
 /**
  * The page's element `id`. Its kind is the HTML's (input, select, button, canvas, dialog…), so it
@@ -41,13 +44,16 @@ const MAX_RUNS = 10000;
 
 let builtins = [];
 let registry = null;
-let pool = [];
-let job = null;   // the benchmark being run: {report, queue, done, total, started}
+let pool = null;  // the benchmark's workers (ui/seed-pool.js): {stop}
+let job = null;   // the benchmark being run: {text, scenario, setups, runs, rows, curves, done, total, started}
 let report = null; // the last finished (or cancelled) report
 let curves = [];   // per set-up, RRT*'s best cost against time per run: [[[ms, cost], ...], ...]
 let asked = null;  // the last report's {runs: seeds asked per set-up, total: runs asked, done: runs done}
-// The scenario benchmarked: {id, name, text (its JSON), scenario (parsed), source: {id} for a
-// built-in as shipped, {text} for an opened or linked one (what a link carries)}.
+// The scenario and why it was chosen (a built-in, a file, a link): run/scenario-source.js, as the
+// other pages; read on this thread, so it is loaded as soon as it is sent.
+const src = new ScenarioSource();
+// The scenario benchmarked, as a report names it: {id, name, text (its JSON), scenario (parsed),
+// source: what a link carries ({id} for a built-in as shipped, else {text})}.
 let current = null;
 let reportScenario = null; // `current` as the last report ran it (its dots open on it)
 let builder = null;        // the set-up builder's planner panel
@@ -60,42 +66,23 @@ function showError(text) {
   ui.error.hidden = !text;
 }
 
-function newWorker() {
-  /** @type {Worker & {busy: any}} */
-  const w = Object.assign(new Worker(new URL('../worker/bench-worker.js', import.meta.url), { type: 'module' }), { busy: null });
-  w.onmessage = (e) => onWorkerMessage(w, e.data);
-  w.onerror = (e) => { e.preventDefault(); onWorkerMessage(w, { type: 'crashed', id: w.busy?.id, message: e.message || 'worker error' }); };
-  return w;
-}
-
-function stopPool() {
-  for (const w of pool) w.terminate();
-  pool = [];
-}
-
-function dispatch() {
-  for (const w of pool) {
-    if (w.busy || !job.queue.length) continue;
-    const j = job.queue.shift();
-    w.busy = j;
-    w.postMessage({ id: j.id, text: job.text, planner: j.setup.planner, params: j.setup.params, seed: j.seed });
-  }
-}
-
 function rowOf(seed, result) {
   const s = result.stats;
   return { seed, solved: result.solved, status: result.status, time_ms: s.time_ms, iterations: s.iterations, nodes: s.nodes,
     checks: s.checks, cost: s.cost, smoothed_cost: s.smoothed_cost, smoothing_ms: s.smoothing_ms };
 }
 
-function onWorkerMessage(w, msg) {
-  if (!job || msg.type === 'ready') return;
-  const j = w.busy;
-  w.busy = null;
-  if (msg.type === 'done' && j) {
+/**
+ * A run's answer from the pool (ui/seed-pool.js): `j` the job {k, setup, seed, …}.
+ * @param {{k: number, setup: {label: string}, seed: number}} j
+ * @param {Exclude<import('../run/messages.js').BenchReply, {type: 'ready'}>} msg
+ */
+function onRunAnswer(j, msg) {
+  if (!job) return;
+  if (msg.type === 'done') {
     job.rows[j.k].push(rowOf(j.seed, msg.result));
     if (msg.curve) job.curves[j.k].push(msg.curve);
-  } else if (j) {
+  } else {
     // A bad set-up or a crash: stop, say which run, keep the page usable.
     const what = msg.type === 'crashed' ? 'the core crashed' : 'the run was refused';
     finish(`Stopped: ${what} on "${j.setup.label}", seed ${j.seed}: ${msg.message}`);
@@ -104,7 +91,6 @@ function onWorkerMessage(w, msg) {
   job.done++;
   progress();
   if (job.done === job.total) finish(null);
-  else dispatch();
 }
 
 function progress() {
@@ -138,23 +124,29 @@ function start() {
   const runs = Math.max(1, Math.min(10000, Math.floor(Number(ui.runs.value) || 1)));
   if (setups.length > MAX_SETUPS) { showError(`${setups.length} set-ups: at most ${MAX_SETUPS} run at once.`); return; }
   const b = current;
-  const queue = [];
+  const jobs = [];
   // Seed-major order, so every set-up's first seeds finish early and partial results are fair.
-  for (let seed = 1; seed <= runs; seed++) setups.forEach((setup, k) => queue.push({ id: queue.length, k, setup, seed }));
-  job = { text: b.text, scenario: b, setups, runs, rows: setups.map(() => []), curves: setups.map(() => []), queue, done: 0, total: queue.length, started: performance.now() };
-  stopPool();
-  const n = Math.max(1, Math.min(64, Math.floor(Number(ui.workers.value) || navigator.hardwareConcurrency || 2)));
-  for (let i = 0; i < n; i++) pool.push(newWorker());
+  for (let seed = 1; seed <= runs; seed++) {
+    setups.forEach((setup, k) => jobs.push({ k, setup, seed, text: b.text, planner: setup.planner, params: setup.params }));
+  }
+  job = { text: b.text, scenario: b, setups, runs, rows: setups.map(() => []), curves: setups.map(() => []), done: 0, total: jobs.length, started: performance.now() };
+  pool?.stop();
+  const size = Math.max(1, Math.min(64, Math.floor(Number(ui.workers.value) || navigator.hardwareConcurrency || 2)));
   report = null;
   reportScenario = b;
   writeHash();
   setRunning(true);
   progress();
-  dispatch();
+  pool = runPool(jobs, {
+    size,
+    onResult: onRunAnswer,
+    onEnd(why) { if (why !== 'done' && job) finish('Stopped: the benchmark workers stopped.'); },
+  });
 }
 
 function finish(problem) {
-  stopPool();
+  pool?.stop();
+  pool = null;
   const j = job;
   job = null;
   setRunning(false);
@@ -307,16 +299,20 @@ function exportAs(format, ext) {
 function useBuiltin(b) {
   removeCustom();
   ui.scenario.value = b.id;
-  current = { id: b.id, name: b.name, text: JSON.stringify(b.scenario), scenario: b.scenario, source: { id: b.id } };
+  src.sent('builtin', { id: b.id });
+  src.loaded(b.scenario);
+  current = { id: b.id, name: b.name, text: src.text, scenario: src.scenario, source: src.linkSource() };
   builder?.setTask(taskOf(current.scenario));
 }
 
 /**
- * Benchmark a scenario given as text (an opened file, or a link's JSON): read by the core's
- * import_file, as the playground reads files. `name`: the file's name (its extension picks the
- * format). Returns the problem in words, or null.
+ * Benchmark a scenario given as text (an opened file, or a link's JSON: `reason`): read by the
+ * core's import_file, as the playground reads files. `name`: the file's name (its extension picks
+ * the format). Returns the problem in words, or null.
+ * @param {string} text @param {string} name @param {string} label
+ * @param {import('../run/scenario-source.js').LoadReason} reason
  */
-function useText(text, name, label) {
+function useText(text, name, label, reason) {
   let json;
   try {
     json = importFile(text, name);
@@ -325,7 +321,9 @@ function useText(text, name, label) {
   }
   const scenario = JSON.parse(json);
   const id = (scenario.name || name).replace(/\.[a-z]+$/i, '').replace(/[^\w.-]+/g, '-').toLowerCase().slice(0, 60) || 'scenario';
-  current = { id, name: scenario.name || name, text: json, scenario, source: { text: json } };
+  src.sent(reason, { file: name });
+  src.loaded(scenario, json);
+  current = { id, name: scenario.name || name, text: src.text, scenario: src.scenario, source: src.linkSource() };
   markCustom(label);
   builder?.setTask(taskOf(scenario));
   return null;
@@ -420,7 +418,7 @@ async function restoreHash(hash) {
   const { share, own } = await readPageState(hash, { builtins, keys: ['setups', 'runs'] });
   const problems = [...share.problems];
   if (share.scenario?.text) {
-    const why = useText(share.scenario.text, 'link.json', 'Scenario from a link');
+    const why = useText(share.scenario.text, 'link.json', 'Scenario from a link', 'link');
     if (why) { problems.push(`The link's scenario: ${why.replace(/^link\.json: /, '')}; the first built-in is used.`); useBuiltin(builtins[0]); }
   } else {
     const b = builtins.find((x) => x.id === share.scenario?.id) || builtins.find((x) => x.id === ui.scenario.value) || builtins[0];
@@ -478,7 +476,7 @@ ui.file.addEventListener('change', async () => {
   showError('');
   let text;
   try { text = await readChosenFile(file); } catch (e) { showError(e.message); return; }
-  const why = useText(text, file.name, `File: ${file.name}`);
+  const why = useText(text, file.name, `File: ${file.name}`, 'file');
   if (why) { showError(`This file is not a scenario the core reads: ${why}`); return; }
   writeHash();
 });

@@ -24,12 +24,13 @@ import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenari
 import { applyPageLimits } from '../run/limits.js';
 import init, { parse_setups as parseSetups } from '../pkg/planarium.js';
 import { setupFor } from '../ui/links.js';
-import { quartiles } from '../draw/plots.js';
+import { summarise } from '../run/summary.js';
 import { el } from '../ui/dom.js';
 import { runPool } from '../ui/seed-pool.js';
 import { setupLine, readPageState, checkSetups, pageHash, playgroundLink, readChosenFile, differingParams } from '../ui/setups.js';
 import { shown } from '../ui/text.js';
 import { MAX_SEED, readSeed, blockSeedProblem } from '../ui/seed.js';
+import { ScenarioSource } from '../run/scenario-source.js';
 
 /**
  * The page's element `id`. Its kind is the HTML's (input, select, button, canvas, dialog…), so it
@@ -55,16 +56,13 @@ const BUTTONS = { run: 'run', pause: 'pause', reset: 'reset' };
 const controller = new Controller('loading');
 let registry = null;
 let builtins = [];
-let scenario = null;     // the scenario both lanes show
-let scenarioText = null;
+// The scenario both lanes show, why it was loaded and where it came from, and the hash's state
+// {share, own} waiting for its scenario (run/scenario-source.js). A lane is loaded when its
+// answer is for the latest load (`src.generation`).
+const src = new ScenarioSource();
 let seed = 1;
-let loadGen = 0;         // bumped by every load; a lane is loaded when its answer is for the latest
-let applyDefaults = false;
 let lastFrame = 0;
-let sourceId = null;     // the built-in's id while the scenario is one as shipped; null: opened or linked
-let loadingFile = null;  // the name of the file being loaded (for its errors)
-let restoring = null;    // the hash's state {share, own}, applied once its scenario has loaded
-let hashRead = null;     // the promise of reading it
+let hashRead = null;     // the promise of reading the hash's state
 const encoded = new Map();
 
 /** One side of the page: a lane, its panel, its stats, its chart. */
@@ -125,8 +123,9 @@ function onReady(side, msg) {
         { prefix: `${s.key}-`, seed: false, title: 'Planner' });
     }
     fillScenarioPicker(ui.scenario, builtins);
+    src.read();
     hashRead = wasm.then(() => readPageState(location.hash, { builtins, keys: ['a', 'b'] }))
-      .then((state) => { restoring = state; }, (e) => { showError(`The link could not be read: ${e?.message ?? e}`); });
+      .then((state) => { src.restore(state); }, (e) => { src.restore(null); showError(`The link could not be read: ${e?.message ?? e}`); });
   }
   // load once every worker is ready (again, after a crash: same scenario, same set-ups)
   if (!sides.every((s) => s.ready)) return;
@@ -137,25 +136,26 @@ function onReady(side, msg) {
 /** Load the scenario shown (after a crash), else the link's, else the picker's built-in. */
 function loadFirst() {
   if (sides.some((s) => s.lane.session.loadsPending > 0)) return;
-  if (scenarioText) { load(scenarioText, false); return; }
-  const sc = restoring?.share.scenario;
+  if (src.text) { load('reload', src.text); return; }
+  const sc = src.pending?.share.scenario;
   if (sc?.text) {
     markCustom('Scenario from a link');
-    sourceId = null;
-    load(sc.text, true);
+    load('link', sc.text, { defaults: true });
     return;
   }
   const b = builtins.find((x) => x.id === sc?.id) || builtins.find((x) => x.id === ui.scenario.value) || builtins[0];
   ui.scenario.value = b.id;
-  sourceId = b.id;
-  load(JSON.stringify(b.scenario), true);
+  load('builtin', JSON.stringify(b.scenario), { id: b.id, defaults: true });
 }
 
-/** Send a scenario (or, with `file`, any file the core imports) to both lanes. */
-function load(text, defaults, file = null) {
-  applyDefaults = defaults;
-  loadingFile = file;
-  loadGen++;
+/**
+ * Send a scenario (or, with `file`, any file the core imports) to both lanes, saying why
+ * (run/scenario-source.js). `defaults`: apply the scenario's planner block and seed.
+ * @param {import('../run/scenario-source.js').LoadReason} reason @param {string} text
+ * @param {{id?: string, defaults?: boolean, file?: string | null}} [options]
+ */
+function load(reason, text, { id, defaults = false, file = null } = {}) {
+  src.sent(reason, { id, defaults, file });
   for (const s of sides) s.lane.load(text, file);
   controller.fire('load');
 }
@@ -163,12 +163,13 @@ function load(text, defaults, file = null) {
 const removeCustom = () => removeCustomScenarios(ui.scenario);
 const markCustom = (label) => markCustomScenario(ui.scenario, label);
 
+/** @param {any} side @param {import('../run/messages.js').LoadedReply} msg */
 function onLoaded(side, msg) {
-  side.loadedGen = loadGen;
+  side.loadedGen = src.generation;
   side.loaded = msg;
-  if (!sides.every((s) => s.loadedGen === loadGen)) return;
-  scenario = msg.scenario;
-  scenarioText = JSON.stringify(scenario);
+  if (!sides.every((s) => s.loadedGen === src.generation)) return;
+  const scenario = msg.scenario;
+  const { restore, defaults: applyDefaults } = src.loaded(scenario);
   ui.name.textContent = shown(scenario.name || 'Untitled scenario');
   ui.notes.textContent = shown(scenario.notes || '');
   ui.course.textContent = builtins.find((b) => b.id === ui.scenario.value)?.course || '';
@@ -184,9 +185,7 @@ function onLoaded(side, msg) {
     ui.seed.value = String(seed);
     ui.seedHint.textContent = '';
   }
-  applyDefaults = false;
-  loadingFile = null;
-  if (restoring) applyRestore();
+  if (restore) applyRestore(restore, scenario);
   buildLegend();
   configure(sides);
   controller.fire('loaded');
@@ -197,9 +196,7 @@ function onLoaded(side, msg) {
  * by the core's parser), else a playground link's planner set-up for A; bad values are named and
  * the scenario's defaults kept.
  */
-function applyRestore() {
-  const { share, own } = restoring;
-  restoring = null;
+function applyRestore({ share, own }, scenario) {
   const problems = [...share.problems];
   for (const s of sides) {
     const K = s.key.toUpperCase();
@@ -225,7 +222,7 @@ function applyRestore() {
 }
 
 function onInvalid(side, error) {
-  const what = loadingFile ? `${loadingFile}: this file has an error` : 'This scenario has an error';
+  const what = src.file ? `${src.file}: this file has an error` : 'This scenario has an error';
   showError(`${what}${error.path ? ` at ${error.path}` : ''}: ${error.message || error.text}`);
   for (const s of sides) s.lane.clearRun();
   controller.fire('invalid');
@@ -259,13 +256,13 @@ function lineOf(s) {
 
 let hashGen = 0;
 async function writeHash() {
-  if (!registry || !scenarioText || restoring || sides.some((s) => !s.panel)) return;
+  if (!registry || !src.text || src.pending || sides.some((s) => !s.panel)) return;
   const gen = ++hashGen;
-  const src = sourceId ? { id: sourceId } : { text: scenarioText };
+  const from = src.linkSource();
   const [a, b] = sides.map(lineOf);
-  const hash = await pageHash(src, [['a', a], ['b', b], ['seed', seed]], registry, encoded);
-  const bench = await pageHash(src, [['setups', `A: ${a}\nB: ${b}`], ['runs', SEEDS]], registry, encoded);
-  const play = await playgroundLink(src, setupOf(sides[0]), registry, encoded);
+  const hash = await pageHash(from, [['a', a], ['b', b], ['seed', seed]], registry, encoded);
+  const bench = await pageHash(from, [['setups', `A: ${a}\nB: ${b}`], ['runs', SEEDS]], registry, encoded);
+  const play = await playgroundLink(from, setupOf(sides[0]), registry, encoded);
   if (gen !== hashGen) return;
   if (location.hash !== `#${hash}`) history.replaceState(history.state, '', `${location.pathname}${location.search}#${hash}`);
   ui.toBench.href = `bench.html#${bench}`;
@@ -282,7 +279,7 @@ function showSeedRange() {
 }
 
 function runSeeds() {
-  if (seedJob || !scenarioText || sides.some((s) => !s.panel)) return;
+  if (seedJob || !src.text || sides.some((s) => !s.panel)) return;
   clearError();
   if (seed > MAX_SEED - (SEEDS - 1)) {
     showError(`Seeds ${seed} … ${seed} + ${SEEDS - 1} would pass ${MAX_SEED} (2^53 − 1), the largest seed the page carries exactly: choose a seed of at most ${MAX_SEED - (SEEDS - 1)}.`);
@@ -290,7 +287,7 @@ function runSeeds() {
   }
   const setups = sides.map((s) => s.panel.config());
   const jobs = [];
-  for (let k = 0; k < SEEDS; k++) setups.forEach((st, i) => jobs.push({ i, text: scenarioText, planner: st.planner, params: st.params, seed: seed + k }));
+  for (let k = 0; k < SEEDS; k++) setups.forEach((st, i) => jobs.push({ i, text: src.text, planner: st.planner, params: st.params, seed: seed + k }));
   seedJob = { lines: sides.map(lineOf), first: seed, rows: [[], []], done: 0, total: jobs.length, pool: null };
   const job = seedJob;
   seedJob.pool = runPool(jobs, {
@@ -323,7 +320,7 @@ function seedProgress() {
 }
 
 function syncSeedButtons() {
-  ui.runSeeds.disabled = !!seedJob || !scenarioText;
+  ui.runSeeds.disabled = !!seedJob || !src.text;
   ui.seedsCancel.disabled = !seedJob;
 }
 
@@ -334,12 +331,6 @@ function stopSeeds(why) {
   ui.seedsProgress.hidden = true;
   ui.seedsStatus.textContent = shown(why);
   syncSeedButtons();
-}
-
-/** A median of finite values, or null. */
-function median(values) {
-  const v = values.filter(Number.isFinite);
-  return v.length ? quartiles(v).median : null;
 }
 
 /** A number for the table: whole numbers as they are, else 4 significant digits. */
@@ -354,15 +345,11 @@ function finishSeeds() {
   seedJob = null;
   ui.seedsProgress.hidden = true;
   syncSeedButtons();
-  const per = j.rows.map((rows) => ({
-    runs: rows.length,
-    solved: rows.filter((r) => r.solved).length,
-    success: rows.length ? rows.filter((r) => r.solved).length / rows.length : 0,
-    time_ms: median(rows.map((r) => r.time_ms)),
-    nodes: median(rows.map((r) => r.nodes)),
-    checks: median(rows.map((r) => r.checks)),
-    length: median(rows.filter((r) => r.solved).map((r) => r.cost)),
-  }));
+  // medians of time, nodes and checks over every run, of the path's length over the solved ones
+  const per = j.rows.map((rows) => {
+    const s = summarise(rows.map((r) => ({ ...r, length: r.cost })), { overAll: ['time_ms', 'nodes', 'checks'], overSolved: ['length'] });
+    return { runs: s.runs, solved: s.solved, success: s.success, ...s.medians };
+  });
   // the better set-up per metric: higher success, lower medians; none on a tie or without values
   /** @type {Array<[string, string, (p: any) => string, number]>} key, label, shown as, sign (1: higher is better) */
   const METRICS = [
@@ -446,7 +433,7 @@ function syncSide(s) {
   const kind = chartKind(p, s.playback.model);
   const best = s.loaded?.optimum;
   const optimum = best && best.exact && Number.isFinite(best.cost) ? best.cost : null;
-  s.chart.setKind(kind, { target: scenario?.inspection?.coverage ?? null, optimum });
+  s.chart.setKind(kind, { target: src.scenario?.inspection?.coverage ?? null, optimum });
   s.chartBox.hidden = !kind;
   s.chartTitle.textContent = kind === 'cost' ? 'Best cost against iterations'
     : kind === 'coverage' ? 'Coverage of the best branch against iterations' : '';
@@ -490,9 +477,8 @@ ui.scenario.addEventListener('change', () => {
   if (!b) return;
   clearError();
   removeCustom();
-  scenarioText = null;
-  sourceId = b.id;
-  load(JSON.stringify(b.scenario), true);
+  src.clear();
+  load('builtin', JSON.stringify(b.scenario), { id: b.id, defaults: true });
 });
 
 ui.file.addEventListener('change', async () => {
@@ -503,9 +489,8 @@ ui.file.addEventListener('change', async () => {
   let text;
   try { text = await readChosenFile(file); } catch (e) { showError(e.message); return; }
   markCustom(`File: ${file.name}`);
-  scenarioText = null;
-  sourceId = null;
-  load(text, true, file.name);
+  src.clear();
+  load('file', text, { defaults: true, file: file.name });
 });
 
 // another link pasted into this tab's address bar (the page's own writes use replaceState, which
@@ -580,7 +565,7 @@ Object.defineProperty(window, 'planarium', {
     result: (key = 'a') => (laneOf(key).lane.result ? structuredClone(laneOf(key).lane.result) : null),
     model: (key = 'a') => modelSummary(laneOf(key).playback.model, laneOf(key).chart),
     config: (key = 'a') => (laneOf(key).panel ? structuredClone(setupOf(laneOf(key))) : null),
-    scenario: () => (scenario ? structuredClone(scenario) : null),
+    scenario: () => (src.scenario ? structuredClone(src.scenario) : null),
     seed: () => seed,
     /** The last "Run 20 seeds": {first, last, lines, a, b (success, medians), better: {metric: 'a' | 'b' | null}, rows}. */
     seeds: () => (seedSummary ? structuredClone(seedSummary) : null),

@@ -38,6 +38,7 @@ import { wireOpenFile } from '../ui/open-file.js';
 import { OVERLAYS } from '../draw/palette.js';
 import { applyPageLimits } from '../run/limits.js';
 import { shown } from '../ui/text.js';
+import { ScenarioSource } from '../run/scenario-source.js';
 
 /**
  * The page's element `id`. Its kind is the HTML's (input, select, button, canvas, dialog…), so it
@@ -70,20 +71,11 @@ const explain = new ExplainPanel($('explain'), playback.store, view);
 let registry = null;     // {planners, run_params} from the first `ready`
 let panel = null;
 let builtins = [];
-let scenarioText = null; // the last valid scenario (reloaded after a crash)
-let sentEdit = false;    // the latest `load` is a start/goal edit
-let course = '';         // the course of the scenario being loaded
+// The scenario and why it was loaded (built-in, edit, file, link, reload), where it came from (a
+// link carries a built-in's id, else its text) and a link's state waiting for its scenario.
+const src = new ScenarioSource({ matchBuiltins: true });
 let loaded = null;       // the latest `loaded` message's scenario
 let optimum = null;      // its shortest path's cost when that is the robot's optimum (the cost chart's line)
-let applyDefaults = false;
-// Share links: where the scenario came from ({id}: a built-in as shipped; {custom}: edited or
-// opened), the share being restored (applied when its scenario has loaded), and the hash writer.
-/** @type {{id?: string, custom?: boolean} | null} */
-let source = null;
-let restoring = null;    // a readShare() result waiting for its scenario
-let restoreNotes = [];   // its problems, shown once the scenario has loaded
-let shareReady = false;  // the hash is written only once the first state is in place
-const builtinNormal = new Map(); // built-in id → its scenario as the worker normalised it
 
 const player = new Player({
   playback,
@@ -93,40 +85,36 @@ const player = new Player({
   fps: () => animFps(ui.animSpeed),
   hooks: {
     ready: onReady,
+    /** @param {import('../run/messages.js').LoadedReply} msg */
     loaded(msg) {
-      scenarioText = JSON.stringify(msg.scenario);
-      if (source?.id && !sentEdit) builtinNormal.set(source.id, scenarioText);
       // an edit that gives back a built-in exactly (say, "Restore start and goal") is that built-in again
-      if (source?.custom) for (const [id, text] of builtinNormal) if (text === scenarioText) source = { id };
+      const { restore, defaults } = src.loaded(msg.scenario);
       showScenario(msg);
       panel.setTask(taskOf(msg.scenario));
-      if (restoring) {
-        const { block, problems } = setupFor(restoring, msg.scenario, registry, panel.planner().name);
+      if (restore) {
+        const { block, problems } = setupFor(restore, msg.scenario, registry, panel.planner().name);
         panel.apply(block);
-        restoreNotes.push(...problems);
-        restoring = null;
-        if (restoreNotes.length) {
-          share.showProblems(restoreNotes);
+        const notes = [...src.takeNotes(), ...problems];
+        if (notes.length) {
+          share.showProblems(notes);
           if (share.pasted) share.pasted.state = share.stateHash(); // the state the link restored: the pasted link stays until it changes
         } else share.pasted = null;
-        restoreNotes = [];
-        shareReady = true;
-      } else if (applyDefaults) {
+      } else if (defaults) {
         panel.apply(msg.scenario.planner);
       }
-      applyDefaults = false;
       configure(); // fires 'configure' only from states that allow it; then 'loaded' below
       controller.fire('loaded');
     },
     invalid(error) {
-      if (restoring) { // a link's scenario the core refuses: say why, show the first built-in instead
+      const link = src.refused();
+      if (link) { // a link's scenario the core refuses: say why, show the first built-in instead
         const where = error.path ? ` at ${error.path}` : error.line != null ? ` at line ${error.line}` : '';
-        restoreNotes.push(`The link's scenario is not valid${where}: ${error.message || error.text}. The first built-in is shown instead.`);
-        restoring.scenario = null;
-        restoreScenario(restoring);
+        src.notes.push(`The link's scenario is not valid${where}: ${error.message || error.text}. The first built-in is shown instead.`);
+        link.scenario = null;
+        restoreScenario(link);
         return;
       }
-      showInvalid(error, sentEdit);
+      showInvalid(error, src.edit);
     },
     error(message) { showError(message); },
     seed(seed) { panel?.setSeed(seed); },
@@ -154,13 +142,10 @@ function onReady(msg) {
       { freshSeed: () => lane.session.send({ type: 'fresh-seed' }) });
     const first = fillScenarioPicker(ui.scenario, builtins);
     if (location.hash.length > 1) restoreHash(location.hash);
-    else {
-      load(JSON.stringify(first.scenario), true, { course: first.course, source: { id: first.id } });
-      shareReady = true;
-    }
+    else send('builtin', JSON.stringify(first.scenario), { id: first.id, course: first.course, defaults: true });
   } else if (!lane.session.loadsPending) { // after a crash (unless the user's load is on its way)
-    if (scenarioText) load(scenarioText, false, { course }); // same scenario, same configuration
-    else if (restoring) restoreScenario(restoring); // a link's scenario crashed on load: again (a crash
+    if (src.text) send('reload', src.text); // same scenario, same configuration
+    else if (src.pending) restoreScenario(src.pending); // a link's scenario crashed on load: again (a crash
     // each time ends in `stopped`, where the picker and "Open the default scenario instead" work)
   }
 }
@@ -182,34 +167,30 @@ function showStopped(message, fatal, why) {
 function openDefaultScenario() {
   history.replaceState(history.state, '', `${location.pathname}${location.search}`);
   share.lastHash = null;
-  restoring = null;
-  restoreNotes = [];
+  src.forget();
   clearError();
   removeCustomOptions();
   const b = builtins[0];
   ui.scenario.value = b.id;
-  load(JSON.stringify(b.scenario), true, { course: b.course, source: { id: b.id } });
-  shareReady = true;
+  send('builtin', JSON.stringify(b.scenario), { id: b.id, course: b.course, defaults: true });
 }
 
 // Requests
 
 /**
- * Send a scenario (or, with `file`, any file the core imports) to the worker. `source`: {id} for
- * a built-in as shipped, {custom: true} for anything else (an edit, a file, a link's JSON: the
- * default for an edit or a file); left out otherwise, it stays (a reload after a crash). `map`: an
- * occupancy map's image bytes and YAML text (the worker's `import` message).
+ * Send a scenario (or, with `file`, any file the core imports) to the worker, saying why
+ * (run/scenario-source.js: a built-in `id` as shipped, an edit, a file, a link's JSON, a reload
+ * after a crash). `course`: shown above the name (kept when left out); `defaults`: apply the
+ * scenario's planner block; `map`: an occupancy map's image bytes and YAML text (the worker's
+ * `import` message).
+ * @param {import('../run/scenario-source.js').LoadReason} reason
  * @param {string} text
- * @param {boolean} defaults
- * @param {{course?: string, edit?: boolean, file?: string | null, source?: {id?: string, custom?: boolean},
+ * @param {{id?: string, course?: string, defaults?: boolean, file?: string | null,
  *   map?: {bytes: ArrayBuffer | null, yaml?: string | null, yamlName?: string | null} | null}} [options]
  */
-function load(text, defaults, { course: c = course, edit = false, file = null, map = null, source: s = edit || file ? { custom: true } : undefined } = {}) {
-  sentEdit = edit;
-  course = c;
-  applyDefaults = defaults;
-  if (s !== undefined) source = s;
-  if (!edit) editor.loading();
+function send(reason, text, { id, course, defaults = false, file = null, map = null } = {}) {
+  src.sent(reason, { id, course, file, defaults });
+  if (reason !== 'edit') editor.loading();
   player.load(text, file, map);
 }
 
@@ -242,12 +223,11 @@ const actions = {
 
 /** Restore the state a link's hash describes (bad values are reported and left at defaults). */
 async function restoreHash(hash) {
-  shareReady = false;
+  src.read();
   share.cancel();
   const read = await readShare(hash, { builtins });
   share.pasted = { hash, state: null };
-  restoring = read;
-  restoreNotes = [...read.problems];
+  src.restore(read, read.problems);
   applyView(read);
   restoreScenario(read);
 }
@@ -258,12 +238,12 @@ function restoreScenario(share) {
   clearError();
   if (share.scenario?.text) {
     markCustom('Scenario from a link');
-    load(share.scenario.text, false, { course: 'Shared link', source: { custom: true } });
+    send('link', share.scenario.text, { course: 'Shared link' });
     return;
   }
   const b = builtins.find((x) => x.id === share.scenario?.id) || builtins.find((x) => x.id === ui.scenario.value) || builtins[0];
   ui.scenario.value = b.id;
-  load(JSON.stringify(b.scenario), false, { course: b.course, source: { id: b.id } });
+  send('builtin', JSON.stringify(b.scenario), { id: b.id, course: b.course });
 }
 
 /** The view options of a share (overlays, sliders, step size): its values, else the defaults. */
@@ -279,9 +259,9 @@ function applyView(share) {
 }
 
 const share = wireShareHash({
-  ui, bench: $('to-bench'), ready: () => shareReady,
-  writable: () => !!(shareReady && panel && scenarioText && source) && controller.state !== 'invalid' && controller.state !== 'loading',
-  source: () => source, scenarioText: () => scenarioText, registry: () => registry,
+  ui, bench: $('to-bench'), ready: () => src.settled,
+  writable: () => !!(src.settled && panel && src.text && src.source) && controller.state !== 'invalid' && controller.state !== 'loading',
+  source: () => src.source, scenarioText: () => src.text, registry: () => registry,
   state: () => ({
     config: panel.config(),
     overlays: overlayOptions(),
@@ -305,16 +285,17 @@ const markCustom = (label) => markCustomScenario(ui.scenario, label);
 
 // Display
 
+/** @param {import('../run/messages.js').LoadedReply} msg */
 function showScenario({ scenario, start, goal, space, cspace: grid, optimum: best }) {
   loaded = scenario;
   optimum = best && best.exact && Number.isFinite(best.cost) ? best.cost : null;
-  ui.course.textContent = course;
+  ui.course.textContent = src.course;
   ui.name.textContent = shown(scenario.name || 'Untitled scenario');
   ui.notes.textContent = shown(scenario.notes || '');
   view.setScenario(scenario, start, goal);
   cspace.setSpace(grid || null, scenario.start, scenario.goal);
-  editor.setScenario(scenario, space, sentEdit);
-  obstacleEditor.loaded(sentEdit);
+  editor.setScenario(scenario, space, src.edit);
+  obstacleEditor.loaded(src.edit);
   ui.cspace.hidden = !cspace.active;
   ui.stage.classList.toggle('dual', cspace.active);
   buildLegend();
@@ -405,7 +386,7 @@ const editor = new Editor({
   },
   onCommit(scenario) {
     clearError();
-    load(JSON.stringify(scenario), false, { edit: true, source: { custom: true } });
+    send('edit', JSON.stringify(scenario));
   },
 });
 
@@ -447,11 +428,12 @@ ui.scenario.addEventListener('change', () => {
   if (!b) return;
   clearError();
   removeCustomOptions();
-  load(JSON.stringify(b.scenario), true, { course: b.course, source: { id: b.id } });
+  send('builtin', JSON.stringify(b.scenario), { id: b.id, course: b.course, defaults: true });
 });
 
 // Open file (open-file.js): a scenario, or an occupancy map's YAML and image; read here, decoded in the worker.
-wireOpenFile({ input: ui.file, clearError, showError, markCustom, load });
+wireOpenFile({ input: ui.file, clearError, showError, markCustom,
+  load: (text, defaults, { course, file, map }) => send('file', text, { course, file, map, defaults }) });
 
 // Slow / Normal / Instant: presets of the events-per-second slider (Playback details).
 const SPEEDS = Object.freeze({ 'speed-slow': 0, 'speed-normal': 30, 'speed-instant': 100 });
@@ -494,7 +476,7 @@ wireCellTip({ canvas: ui.canvas, stage: ui.stage, tip: ui.tip, view });
 // Run 20 seeds (trials.js): this set-up on seeds s … s+19, in background workers; a dot opens its seed.
 createTrials({
   button: $('run-seeds'), cancel: $('cancel-seeds'), status: $('trials-status'), table: $('trials'), dots: $('trial-dots'),
-  setup: () => (panel && scenarioText && controller.state !== 'invalid' ? { text: scenarioText, ...panel.config() } : null),
+  setup: () => (panel && src.text && controller.state !== 'invalid' ? { text: src.text, ...panel.config() } : null),
   open: (seed) => {
     panel.apply({ ...panel.config().params, name: panel.config().planner, seed });
     configure();

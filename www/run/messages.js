@@ -1,11 +1,25 @@
-// The planning worker's messages, as JSDoc types (www/worker/worker.js describes each): checked by
-// `tsc --checkJs` in npm test where the page sends and reads them (session.js) and where the worker
-// reads them (worker.js). No code: types only.
+// The workers' protocol, both directions, as JSDoc types: the planning worker's (www/worker/worker.js
+// describes each message in its header) and the benchmark worker's (www/worker/bench-worker.js).
+// Both sides import these types, so `tsc --checkJs` (npm test) checks what the page sends and reads
+// (run/session.js, ui/seed-pool.js, the pages' hooks) against what the workers read and post.
+// No code: types only.
 
 /**
+ * One dimension of the planning space (src/space: the core's `space_json`).
+ * @typedef {{lo: number, hi: number, wraps: boolean}} SpaceDim
+ */
+
+/**
+ * A planner set-up's parameters as the page sends them (the registry's names; numbers, or a
+ * choice's name).
+ * @typedef {Record<string, number | string | boolean>} SetupParams
+ */
+
+/**
+ * The planning worker's requests (the page → worker.js).
  * @typedef {{type: 'load', text: string}
  *   | {type: 'import', text: string, name: string, bytes?: ArrayBuffer | null, yaml?: string | null, yamlName?: string | null}
- *   | {type: 'configure', planner: string, params: Record<string, number | string>, seed: number}
+ *   | {type: 'configure', planner: string, params: SetupParams, seed: number}
  *   | {type: 'run' | 'pause' | 'reset' | 'cancel' | 'asv-solution' | 'ping' | 'fresh-seed'}
  *   | {type: 'step', iterations: number}
  *   | {type: 'query', start: number[], goal: number[]}
@@ -17,7 +31,13 @@
 /**
  * The run's statistics as the core reports them (src/run/result.rs; a few of the fields).
  * @typedef {{time_ms: number, iterations: number, nodes: number, checks: number, cost?: number | null,
- *   smoothed_cost?: number | null, sampler?: {name: string, used?: boolean, draws_per_sample: number, checks_per_sample: number}}} RunStats
+ *   smoothed_cost?: number | null, smoothing_ms?: number,
+ *   sampler?: {name: string, used?: boolean, draws_per_sample: number, checks_per_sample: number}}} RunStats
+ */
+
+/**
+ * A run's result, the contract's result JSON (src/run/result.rs; a few of the fields).
+ * @typedef {{solved: boolean, status: string, stats: RunStats, reason?: string}} RunResult
  */
 
 /**
@@ -26,12 +46,33 @@
  */
 
 /**
+ * The visibility graph's shortest path (the core's `optimum_json`): its cost (null: no path) and
+ * whether that is the robot's optimum (a point, a round footprint); or, alone, why there is none.
+ * @typedef {{cost?: number | null, exact?: boolean, error?: string}} Optimum
+ */
+
+/**
+ * A scenario the worker validated: the normalised scenario; the robot's outlines at start and goal,
+ * flat (the core's `Scene::outline`: `[n_polygons, n_1, x, y, …]`; the goal's empty without a
+ * goal); the planning space; for a 2-joint arm the configuration-space validity grid (n × n, rows
+ * from the lowest second coordinate, over the space's two dimensions); for a point or rigid robot
+ * the visibility graph's optimum.
+ * @typedef {{type: 'loaded', scenario: any, start: Float64Array, goal: Float64Array, space: SpaceDim[],
+ *   cspace?: {n: number, grid: Uint8Array, dims: SpaceDim[]}, optimum?: Optimum}} LoadedReply
+ */
+
+/**
+ * Why a scenario was refused: a JSON path or a line and column, and the message.
+ * @typedef {{path?: string | null, message?: string, line?: number | null, column?: number | null, text?: string}} ScenarioError
+ */
+
+/**
+ * The planning worker's replies (worker.js → the page).
  * @typedef {{type: 'ready', builtins: any[], planners: any, eventKinds: Record<string, number>}
- *   | {type: 'loaded', scenario: any, start: number[], goal: number[], space: Array<{lo: number, hi: number, wraps: boolean}>,
- *      cspace?: {n: number, grid: Uint8Array, dims: number}}
- *   | {type: 'invalid', error: {path?: string, message?: string, line?: number, column?: number, text?: string}}
+ *   | LoadedReply
+ *   | {type: 'invalid', error: ScenarioError}
  *   | {type: 'events', data: Float64Array, stats: RunStats, status: string, tries?: {seen: number, sent: number}}
- *   | {type: 'result', result: {solved: boolean, status: string, stats: RunStats, reason?: string}, frames: Float64Array, rawFrames: Float64Array}
+ *   | {type: 'result', result: RunResult, frames: Float64Array, rawFrames: Float64Array}
  *   | {type: 'status', status: string}
  *   | {type: 'ack', ack: number}
  *   | {type: 'asv-solution', text: string}
@@ -39,6 +80,21 @@
  *   | {type: 'seed', seed: number}
  *   | {type: 'error' | 'crashed', message: string}} WorkerReply
  * @typedef {WorkerReply & {run?: number}} WorkerOut
+ */
+
+/**
+ * A benchmark worker's job (the page's pool, ui/seed-pool.js → bench-worker.js): one seeded run
+ * of a set-up on a scenario's JSON text, to its end.
+ * @typedef {{id: number, text: string, planner: string, params: SetupParams, seed: number}} BenchJob
+ */
+
+/**
+ * The benchmark worker's replies: ready once its core is loaded; per job its result (for RRT*,
+ * `curve`: the best cost against planning time, [[ms, cost], …]; else null), or why it failed (a
+ * bad set-up: the worker stays usable) or crashed (the core panicked: the pool drops the worker).
+ * @typedef {{type: 'ready'}
+ *   | {type: 'done', id: number, result: RunResult, curve: Array<[number, number]> | null}
+ *   | {type: 'failed' | 'crashed', id: number, message: string}} BenchReply
  */
 
 export {};

@@ -1,6 +1,6 @@
 // One planning worker as the page sees it: starts it, sends requests, keeps the bookkeeping that
 // decides which replies are current, and replaces the worker when it crashes. The page's run state
-// lives in lane.js; the worker's protocol is in worker.js's header.
+// lives in lane.js; the worker's protocol is in worker.js's header, its types in messages.js.
 //
 // Staleness: `run` in a reply is the worker's counter (bumped on every load/configure/reset). The
 // session remembers the latest counter it saw in a status/loaded/invalid reply, and how many
@@ -61,12 +61,12 @@ export class WorkerSession {
 
   get alive() { return !!this.worker; }
 
-  /** @param {any} msg @param {Transferable[]} [transfer] */
+  /** @param {import('./messages.js').WorkerIn} msg @param {Transferable[]} [transfer] */
   send(msg, transfer = []) { this.worker?.postMessage(msg, transfer); }
 
   /**
    * Send `msg` and expect the worker to acknowledge it within WATCHDOG_MS.
-   * @param {any} msg @param {Transferable[]} [transfer]
+   * @param {import('./messages.js').WorkerRequest} msg @param {Transferable[]} [transfer]
    */
   sendWatched(msg, transfer = []) {
     if (!this.worker) return;

@@ -1,38 +1,28 @@
 // "Run 20 seeds": the playground's set-up run on 20 consecutive seeds in background benchmark
 // workers (ui/seed-pool.js), so a student sees how much one seed
-// says: the share solved and the medians (time, iterations, nodes, checks, path cost), and one dot
+// says: the share solved and the medians (time, iterations, nodes, checks, path cost; run/summary.js), and one dot
 // per seed, coloured by outcome, that opens that seed in the playground when clicked. The page's own
 // run is not touched. Built with DOM calls and textContent.
 
 import { el } from './dom.js';
 import { runPool } from './seed-pool.js';
 import { MAX_SEED } from './seed.js';
+import { summarise } from '../run/summary.js';
 
 export const SEEDS = 20;
 
-/** The median of the finite numbers in `xs` (null when there are none). */
-export function median(xs) {
-  const v = xs.filter(Number.isFinite).sort((a, b) => a - b);
-  if (!v.length) return null;
-  const m = v.length >> 1;
-  return v.length % 2 ? v[m] : (v[m - 1] + v[m]) / 2;
-}
+const METRICS = ['time_ms', 'iterations', 'nodes', 'checks', 'cost'];
 
-/** {solved, runs, medians: {time_ms, iterations, nodes, checks, cost}} of result JSONs. */
-export function summarise(results) {
-  const ok = results.filter((r) => r.solved);
-  const of = (f) => median(ok.map(f));
-  return {
-    solved: ok.length,
-    runs: results.length,
-    medians: {
-      time_ms: of((r) => r.stats?.time_ms),
-      iterations: of((r) => r.stats?.iterations),
-      nodes: of((r) => r.stats?.nodes),
-      checks: of((r) => r.stats?.checks),
-      cost: of((r) => r.stats?.smoothed_cost ?? r.stats?.cost),
-    },
-  };
+/**
+ * {runs, solved, success, medians: {time_ms, iterations, nodes, checks, cost}} of result JSONs:
+ * the medians over the solved runs (run/summary.js), the cost the smoothed path's when there is one.
+ */
+export function summariseResults(results) {
+  const rows = results.map((r) => ({
+    solved: !!r.solved, time_ms: r.stats?.time_ms, iterations: r.stats?.iterations, nodes: r.stats?.nodes,
+    checks: r.stats?.checks, cost: r.stats?.smoothed_cost ?? r.stats?.cost,
+  }));
+  return summarise(rows, { overSolved: METRICS });
 }
 
 const fmt = (v, d = 0) => (v === null || v === undefined ? '–' : Number(v).toLocaleString('en', { maximumFractionDigits: d }));
@@ -96,11 +86,11 @@ export function createTrials({ button, cancel, status, table, dots, setup, open 
         results[j.id] = m.type === 'done' ? m.result : { solved: false, status: m.type === 'failed' ? `failed: ${m.message}` : 'crashed', stats: {} };
         done++;
         status.textContent = `Running seeds: ${done} of ${SEEDS} done…`;
-        show(summarise(results.filter(Boolean)), results, first);
+        show(summariseResults(results.filter(Boolean)), results, first);
       },
       onEnd() {
         stop();
-        const sum = summarise(results.filter(Boolean));
+        const sum = summariseResults(results.filter(Boolean));
         status.textContent = `${s.planner}, seeds ${first}–${first + SEEDS - 1}: solved ${sum.solved} of ${sum.runs}. Click a seed to open it.`;
         show(sum, results, first);
       },

@@ -7,6 +7,7 @@
 //              from its COST events after each 10 ms batch)
 //              {type: 'failed', id, message}: a bad set-up (the worker stays usable);
 //              {type: 'crashed', id, message}: the core panicked; the page replaces this worker.
+// Their types, BenchJob and BenchReply, are in ../run/messages.js (checked by tsc --checkJs).
 
 import init, { Run, install_panic_hook, last_panic } from '../pkg/planarium.js';
 import { EventKind, STRIDE } from '../run/events.js';
@@ -15,11 +16,15 @@ import { EventKind, STRIDE } from '../run/events.js';
 // many ms only bound each wasm call. An RRT* cost curve reads its COST events every 10 ms instead.
 const BATCH_MS = 50;
 
+/** @param {import('../run/messages.js').BenchReply} msg */
+const post = (msg) => self.postMessage(msg);
+
 const ready = init().then(() => {
   install_panic_hook();
-  self.postMessage({ type: 'ready' });
+  post({ type: 'ready' });
 });
 
+/** @param {MessageEvent<import('../run/messages.js').BenchJob>} e */
 self.onmessage = async (e) => {
   await ready;
   const { id, text, planner, params, seed } = e.data;
@@ -27,6 +32,7 @@ self.onmessage = async (e) => {
   try {
     run = new Run(text, planner, JSON.stringify(params), seed);
     // An anytime planner's cost curve needs its COST events; other runs record nothing.
+    /** @type {Array<[number, number]> | null} */
     const curve = planner === 'rrt-star' ? [] : null;
     run.record_events(!!curve);
     let status;
@@ -40,11 +46,11 @@ self.onmessage = async (e) => {
       }
     } while (status === 'running');
     const result = JSON.parse(run.result_json());
-    self.postMessage({ type: 'done', id, result, curve });
+    post({ type: 'done', id, result, curve });
   } catch (err) {
     const panic = last_panic();
-    if (panic) self.postMessage({ type: 'crashed', id, message: panic });
-    else self.postMessage({ type: 'failed', id, message: String(err?.message ?? err) });
+    if (panic) post({ type: 'crashed', id, message: panic });
+    else post({ type: 'failed', id, message: String(err?.message ?? err) });
   } finally {
     try { run?.free(); } catch { /* a poisoned module: the page replaces the worker */ }
   }

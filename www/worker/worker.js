@@ -30,9 +30,11 @@
 // Messages out {type, run, ...}:
 //   ready     {builtins, planners, eventKinds}
 //   loaded    {scenario, start, goal, space, cspace?, optimum?}  normalised scenario; start/goal outlines
-//                                            (flat); space: the planning space [{lo, hi, wraps}];
-//                                            cspace {n, grid: Uint8Array (transferred), dims} for a
-//                                            2-D arm: n×n validity, rows from the lowest 2nd coordinate
+//                                            (flat Float64Arrays); space: the planning space [{lo, hi, wraps}];
+//                                            cspace {n, grid: Uint8Array (transferred), dims: the space} for a
+//                                            2-D arm: n×n validity, rows from the lowest 2nd coordinate;
+//                                            optimum {cost, exact} | {error}: the visibility graph's, for
+//                                            a point or rigid robot
 //   invalid   {error: {path, message, line, column, text}}
 //   events    {data: Float64Array, stats, status, tries: {seen, sent}}   transferred, once per batch;
 //                                            the sampler's raw tries (SAMPLE_TRY) are all sent up to
@@ -50,10 +52,14 @@
 //   error     {message}                      a bad request; the worker stays usable
 //   crashed   {message}                      the core panicked; the page must replace this worker
 // `run` is a counter bumped on every run/reset/load, so the page can drop stale replies.
+// The messages' types, both directions, are in ../run/messages.js (checked by tsc --checkJs).
 
 import init, { Scene, builtins, map_image_name, planners, event_kinds, install_panic_hook, last_panic, debug_panic, fresh_seed }
   from '../pkg/planarium.js';
 import { thinTries } from './thin.js';
+
+/** @typedef {import('../run/messages.js').WorkerIn} WorkerIn */
+/** @typedef {import('../run/messages.js').WorkerOut} WorkerOut */
 
 const BATCH_MS = 12;          // one batch of planning, then yield to the message queue
 const FRAME_SPACING = 0.004;  // animation frames along the path, in the robot's metric
@@ -77,6 +83,7 @@ const ready = init().then(() => {
          eventKinds: JSON.parse(event_kinds()) });
 });
 
+/** @param {WorkerOut} msg @param {Transferable[]} [transfer] */
 function post(msg, transfer = []) {
   self.postMessage(msg, transfer);
 }
@@ -167,6 +174,7 @@ function load(make) {
   const start = scene.outline(new Float64Array(sc.start));
   const goal = sc.goal ? scene.outline(new Float64Array(sc.goal)) : new Float64Array(0);
   const space = JSON.parse(scene.space_json());
+  /** @type {import('../run/messages.js').LoadedReply & {run: number}} */
   const msg = { type: 'loaded', run: runId, scenario: sc, start, goal, space };
   const transfer = [];
   if (space.length === 2 && sc.robot && sc.robot.kind === 'arm') {
@@ -184,7 +192,10 @@ function load(make) {
   post(msg, transfer);
 }
 
-/** An occupancy map's scene (see `import` above); throws what the core throws. */
+/**
+ * An occupancy map's scene (see `import` above); throws what the core throws.
+ * @param {Extract<WorkerIn, {type: 'import'}>} msg
+ */
 function importMap(msg) {
   const yamlName = String(msg.yamlName || 'map.yaml');
   if (!msg.bytes) {
@@ -196,6 +207,7 @@ function importMap(msg) {
   return Scene.from_map(new Uint8Array(msg.bytes), String(msg.name || 'map'), yaml, yaml === undefined ? undefined : yamlName);
 }
 
+/** @param {WorkerIn} msg */
 function handle(msg) {
   // Any request but another step ends a step in progress.
   if (msg.type !== 'step' && msg.type !== 'asv-solution' && msg.type !== 'query' && msg.type !== 'ping' && msg.type !== 'fresh-seed') stepping = null;
@@ -274,7 +286,7 @@ function handle(msg) {
       post({ type: 'seed', seed: fresh_seed() });
       return;
     default:
-      post({ type: 'error', run: runId, message: `unknown message type ${msg.type}` });
+      post({ type: 'error', run: runId, message: `unknown message type ${/** @type {any} */ (msg).type}` });
   }
 }
 
@@ -293,7 +305,7 @@ function guarded(fn) {
   }
 }
 
-/** @param {MessageEvent<import('../run/messages.js').WorkerIn>} e */
+/** @param {MessageEvent<WorkerIn>} e */
 self.onmessage = async (e) => {
   if (e.data?.ack != null) post({ type: 'ack', ack: e.data.ack }); // read, even before the core is ready
   try {
