@@ -3,9 +3,11 @@
 //   clone has nothing beside it: course files the tests use live in tests/data/);
 // - THIRD_PARTY_NOTICES.md is what Cargo.lock and package.json give now (scripts/notices.mjs);
 // - CHANGELOG.md names every golden fingerprint pinned in tests/golden/runs.json (a figure in
-//   someone's course notes changes when one does, so each change is written down).
+//   someone's course notes changes when one does, so each change is written down);
+// - every file of the repository the README, the docs, Cargo.toml, the code's comments and the
+//   scenarios name exists (a statement about a moved file is stale).
 import { execFileSync } from 'node:child_process';
-import { readFileSync } from 'node:fs';
+import { existsSync, readFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { notices, NOTICES } from './notices.mjs';
@@ -49,8 +51,24 @@ runs.forEach((r, i) => {
   }
 });
 
+// 4. Files named in prose exist. CHANGELOG.md is history and may name files since moved; the
+//    paths below are other projects' files (OMPL's sources, a book's pages in an example).
+const ELSEWHERE = new Set(['docs/notes/rrt.md', 'docs/index.md', 'src/ompl/tools/benchmark/src/Benchmark.cpp',
+  'src/ompl/base/src/PlannerStatus.cpp']);
+const PATH = /(?<![\w./-])((?:src|www|tests|scripts|benches|bench|fuzz|docs|scenarios)\/[\w./-]*\w\.(?:rs|js|mjs|md|json|toml|html|css|cpp|sh))\b/g;
+const prose = execFileSync('git', ['ls-files', '--', 'README.md', 'docs', 'Cargo.toml', 'src', 'www', 'scenarios'],
+  { cwd: root, encoding: 'utf8' }).split('\n').filter((f) => /\.(md|toml|rs|m?js|json)$/.test(f) && !f.startsWith('www/pkg/'));
+for (const file of prose) {
+  readFileSync(join(root, file), 'utf8').split('\n').forEach((line, i) => {
+    for (const m of line.matchAll(PATH)) {
+      if (!ELSEWHERE.has(m[1]) && !existsSync(join(root, m[1]))) problems.push(`${file}:${i + 1}: names ${m[1]}, which is not in the repository`);
+    }
+  });
+}
+
 if (problems.length) {
   console.error(`[check-repo] ${problems.length} problem(s):\n${problems.map((p) => `  ${p}`).join('\n')}`);
   process.exit(1);
 }
-console.log(`[check-repo] ${tracked.length} files read nothing outside the clone; notices current; ${runs.length} golden runs named in CHANGELOG.md`);
+console.log(`[check-repo] ${tracked.length} files read nothing outside the clone; notices current; ${runs.length} golden runs named in CHANGELOG.md; `
+  + `the files ${prose.length} docs and sources name exist`);
