@@ -303,7 +303,7 @@ fn every_planner_solves_every_asv_builtin_in_valid_primitive_steps() {
         ("rrt-connect", serde_json::json!({})),
         ("rrt-connect", serde_json::json!({"range": 0.05})),
     ];
-    // The official four; issue 16's hard ones are solved by RRT-Connect below.
+    // The official four; the hard built-ins (asv-15, asv-7-long-gap) are solved by RRT-Connect below.
     let hard = ["asv-15", "asv-7-long-gap"];
     let names: Vec<&str> = planarium::scenario::builtin_names()
         .into_iter()
@@ -345,7 +345,7 @@ fn every_planner_solves_every_asv_builtin_in_valid_primitive_steps() {
     }
 }
 
-/// Issue 16's hard built-ins: their start and goal pass the course's rules, checked independently.
+/// The hard built-ins (asv-15, asv-7-long-gap): their start and goal pass the course's rules, checked independently.
 #[test]
 fn hard_builtins_start_and_goal_pass_the_course_rules() {
     for id in ["asv-15", "asv-7-long-gap"] {
