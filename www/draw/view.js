@@ -15,7 +15,9 @@
 //          the sensor's field of view, start/goal, markers, the best path so far, rewire flashes,
 //          the result's paths and the robot, the region of influence, local minima and the robot's
 //          t/2 circle, which are cheap to draw every frame.
-// The tables (colours, styles, overlays) are in palette.js; the transform and primitives in transform.js;
+// The order, and what the top layer draws, is picture.js's list of layers (the SVG export draws the
+// same list); the run layers' drawing functions are in layers.js. The tables (colours, styles,
+// overlays) are in palette.js; the transform and primitives in transform.js;
 // the rewire flashes, the sensor's wedge and the rotation handles in marks.js.
 
 import { EventKind, STRIDE } from '../run/events.js';
