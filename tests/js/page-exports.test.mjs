@@ -77,7 +77,9 @@ test('SVG of a hexagon run has its cells', async () => {
   const cells = await page.evaluate((t) => [...new DOMParser().parseFromString(t, 'image/svg+xml').querySelectorAll('#cells path:not([fill="none"])')]
     .reduce((n, p) => n + (p.getAttribute('d').match(/M/g) || []).length, 0), svg);
   const want = await page.evaluate(() => window.planarium.cells().cells);
-  assert.ok(cells > 100 && cells === want, `${cells} cells in the SVG, ${want} in the run`);
+  // cells under 4 px on screen are painted as pixels (draw/cell-raster.js): an embedded image
+  const images = await page.evaluate((t) => new DOMParser().parseFromString(t, 'image/svg+xml').querySelectorAll('[id="cells"] image, image#cells').length, svg);
+  assert.ok(cells > 100 && cells <= want && (cells === want || (images > 0 && cells >= 0.95 * want)), `${cells} cells as paths in the SVG (and ${images} images), ${want} in the run`);
 });
 
 test('SVG of a visibility-graph run has its graph edges', async () => {
