@@ -6,9 +6,8 @@
 // the tab keeps drawing frames, shows progress and can cancel.
 
 import { EventKind, STRIDE } from '../run/events.js';
-import { STYLE } from './palette.js';
-import { drawExhausted } from './transform.js';
 import { addQueryEdge, drawRoadmap } from './graphs.js';
+import { ranges, treeSteps } from './layers.js';
 
 /**
  * Nodes or records an export draws between two yields to the page: about 30–60 ms of drawing on a
@@ -21,11 +20,6 @@ export function drawAll(steps) {
   for (let s = steps.next(); !s.done; s = steps.next()) { /* each step draws */ }
 }
 
-/** [from, to) ranges of at most `batch` covering [0, n). */
-function* ranges(n, batch) {
-  for (let from = 0; from < n; from += batch) yield [from, Math.min(n, from + batch)];
-}
-
 /**
  * The tree layer from the model's mirror (edges and nodes, exhausted nodes greyed, an earlier
  * attempt of hex-potential faint) and the roadmap from records [0, `to`). Yields the nodes or
@@ -35,40 +29,8 @@ export function* treeLayerSteps(view, batch = Infinity, to = view.store.length) 
   const { ctx } = view.treeLayer;
   const L = view.layout;
   ctx.clearRect(0, 0, L.width, L.height);
-  const edge = STYLE[EventKind.NODE_ADDED];
-  const node = Math.max(1, Math.round(L.px(edge.size)));
-  const trees = view.model ? view.model.trees : [];
   view.attemptSeen = view.model ? view.model.cells.attempt : -1;
-  for (let k = 0; k < trees.length; k++) {
-    const t = trees[k];
-    const color = edge.colors[view.treeGroup(k)];
-    const alpha = view.attemptSeen > k ? 0.3 : 1; // an earlier attempt of hex-potential
-    for (const [i0, i1] of ranges(Math.max(t.n, 1), batch)) {
-      ctx.globalAlpha = alpha;
-      ctx.beginPath();
-      ctx.fillStyle = color;
-      for (let i = i0; i < i1 && i < t.n; i++) {
-        if (!t.known(i)) continue;
-        const x = L.sx(t.x[i]), y = L.sy(t.y[i]);
-        const p = t.parent[i];
-        if (p >= 0 && t.known(p)) {
-          ctx.moveTo(L.sx(t.x[p]), L.sy(t.y[p]));
-          ctx.lineTo(x, y);
-        }
-        if (p >= 0) ctx.fillRect(Math.round(x - node / 2), Math.round(y - node / 2), node, node);
-      }
-      ctx.strokeStyle = color;
-      ctx.lineWidth = L.px(edge.width);
-      ctx.stroke();
-      if (view.options.showExhausted && t.exhausted) {
-        const pts = [];
-        for (let i = i0; i < i1 && i < t.n; i++) if (t.known(i) && t.isExhausted(i)) pts.push(t.x[i], t.y[i]);
-        drawExhausted(ctx, L, pts);
-      }
-      ctx.globalAlpha = 1;
-      yield i1 - i0;
-    }
-  }
+  yield* treeSteps(ctx, L, view, batch);
   if (view.roadmap) {
     for (const [r0, r1] of ranges(to, batch)) {
       drawRoadmap(ctx, L, view.store, r0, r1, true);

@@ -15,18 +15,20 @@
 //          the sensor's field of view, start/goal, markers, the best path so far, rewire flashes,
 //          the result's paths and the robot, the region of influence, local minima and the robot's
 //          t/2 circle, which are cheap to draw every frame.
-// The tables (colours, styles, overlays) are in palette.js; the transform and primitives in transform.js;
+// The order, and what the top layer draws, is picture.js's list of layers (the SVG export draws the
+// same list); the run layers' drawing functions are in layers.js. The tables (colours, styles,
+// overlays) are in palette.js; the transform and primitives in transform.js;
 // the rewire flashes, the sensor's wedge and the rotation handles in marks.js.
 
 import { EventKind, STRIDE } from '../run/events.js';
-import { drawRobotShape, drawInspection, robotStyle, outlineOf, footprintRadius } from './robots.js';
+import { footprintRadius } from './robots.js';
 import { PALETTE, STYLE, OVERLAY_DEFAULTS, TREE_LEGEND } from './palette.js';
-import { Layout, parseOutline, parseFrames, makeLayer, drawExhausted, drawObstacle, drawMarker, drawPolyline } from './transform.js';
+import { Layout, parseOutline, parseFrames, makeLayer, drawExhausted } from './transform.js';
 import { CellsDrawing } from './cells.js';
-import { drawDensity } from './density.js';
-import { addQueryEdge, drawGraphEdges, drawRoadmap, drawQueryAnswer } from './graphs.js';
+import { addQueryEdge, drawGraphEdges, drawRoadmap } from './graphs.js';
 import { drawAll, redrawSteps, treeLayerSteps } from './redraw.js';
-import { drawFlashes, drawSensor, drawHandle } from './marks.js';
+import { drawAccepted, drawCollisions, drawDomains, drawSamples } from './layers.js';
+import { PICTURE, bestOf } from './picture.js';
 
 const MAX_FLASHES = 80;      // the most flashes shown at once (a burst keeps only the latest)
 const BIG_TREE = 20000;      // above this many nodes, a rewired tree is redrawn at most every…
@@ -49,6 +51,9 @@ export class View {
     this.domainLayer = makeLayer();
     this.treeLayer = makeLayer();
     this.overLayer = makeLayer();
+    /** The offscreen layers by the names picture.js gives them. */
+    this.layers = { scene: this.sceneLayer, cells: this.cellsLayer, under: this.underLayer, domain: this.domainLayer,
+      tree: this.treeLayer, over: this.overLayer };
     this.layout = null;
     this.css = [300, 300];
     this.dpr = 1;
@@ -185,20 +190,13 @@ export class View {
     this.paintScene(this.scenario?.obstacles ?? []);
   }
 
-  /** The scene layer: background, free space, `obstacles`, bounds. */
+  /** The scene layer: background, free space, `obstacles`, bounds (picture.js's 'scene' layers). */
   paintScene(obstacles) {
     const { ctx } = this.sceneLayer;
     const L = this.layout;
-    ctx.fillStyle = PALETTE.background;
-    ctx.fillRect(0, 0, L.width, L.height);
-    if (!this.scenario) return;
-    const [x0, y0, x1, y1] = this.scenario.bounds;
-    ctx.fillStyle = PALETTE.free;
-    ctx.fillRect(L.sx(x0), L.sy(y1), (x1 - x0) * L.scale, (y1 - y0) * L.scale);
-    for (const ob of obstacles) drawObstacle(ctx, L, ob);
-    ctx.strokeStyle = PALETTE.bounds;
-    ctx.lineWidth = L.px(1.5);
-    ctx.strokeRect(L.sx(x0), L.sy(y1), (x1 - x0) * L.scale, (y1 - y0) * L.scale);
+    for (const e of PICTURE) {
+      if (e.layer === 'scene' && (this.scenario || e.id === 'background')) e.draw(ctx, L, this, { obstacles });
+    }
   }
 
   /**
@@ -291,43 +289,15 @@ export class View {
   treeGroup(k) { return k > 0 && !(this.model?.cells.regions.length) ? 1 : 0; }
 
   /** @param {CanvasRenderingContext2D} ctx @param {number[]} at the sample's point */
-  drawAccepted(ctx, [x, y]) {
-    const L = this.layout;
-    const s = Math.max(2, Math.round(L.px(2.5)));
-    ctx.fillStyle = PALETTE.accepted;
-    ctx.fillRect(Math.round(L.sx(x) - s / 2), Math.round(L.sy(y) - s / 2), s, s);
-  }
+  drawAccepted(ctx, at) { drawAccepted(ctx, this.layout, at); }
 
   /**
-   * Samples and raw tries of records [from, to). A SAMPLE is accepted when no SAMPLE_REJECTED
-   * follows it before the next SAMPLE (the rejection is drawn at the same point), so it is drawn
-   * once the next sample or its rejection is revealed, or when the run is over.
+   * Samples and raw tries of records [from, to) (layers.js drawSamples: a sample is drawn once the
+   * next one or its rejection is revealed, or when the run is over), and the visibility graph's edges.
    */
   drawUnder(from, to) {
-    const { ctx } = this.underLayer;
-    const L = this.layout;
-    const { showAccepted, showRejected, showTries } = this.options;
-    const rej = STYLE[EventKind.SAMPLE_REJECTED];
-    const tries = STYLE[EventKind.SAMPLE_TRY];
-    const rs = Math.max(1, Math.round(L.px(rej.size)));
-    const ts = Math.max(1, Math.round(L.px(tries.size)));
-    for (const [d, o0, o1] of this.store.spans(from, to)) for (let o = o0; o < o1; o += STRIDE) {
-      const kind = d[o];
-      if (kind === EventKind.SAMPLE) {
-        if (this.pendingSample && showAccepted) this.drawAccepted(ctx, this.pendingSample);
-        this.pendingSample = [d[o + 4], d[o + 5]];
-      } else if (kind === EventKind.SAMPLE_REJECTED) {
-        this.pendingSample = null;
-        if (showRejected) {
-          ctx.fillStyle = rej.color;
-          ctx.fillRect(Math.round(L.sx(d[o + 4]) - rs / 2), Math.round(L.sy(d[o + 5]) - rs / 2), rs, rs);
-        }
-      } else if (kind === EventKind.SAMPLE_TRY && showTries) {
-        ctx.fillStyle = tries.colors[d[o + 2] > 0 ? 1 : 0];
-        ctx.fillRect(Math.round(L.sx(d[o + 4]) - ts / 2), Math.round(L.sy(d[o + 5]) - ts / 2), ts, ts);
-      }
-    }
-    drawGraphEdges(ctx, L, this.store, from, to);
+    drawSamples(this.underLayer.ctx, this.layout, this.store, from, to, this.options, this);
+    drawGraphEdges(this.underLayer.ctx, this.layout, this.store, from, to);
   }
 
   redrawUnder() {
@@ -341,21 +311,7 @@ export class View {
 
   /** Blocked motions of records [from, to). */
   drawOver(from, to) {
-    if (!this.options.showCollisions) return;
-    const { ctx } = this.overLayer;
-    const L = this.layout;
-    const col = STYLE[EventKind.COLLISION];
-    const cs = L.px(col.size);
-    ctx.beginPath();
-    for (const [d, o0, o1] of this.store.spans(from, to)) for (let o = o0; o < o1; o += STRIDE) {
-      if (d[o] !== EventKind.COLLISION) continue;
-      const x = L.sx(d[o + 4]), y = L.sy(d[o + 5]);
-      ctx.moveTo(x - cs, y - cs); ctx.lineTo(x + cs, y + cs);
-      ctx.moveTo(x - cs, y + cs); ctx.lineTo(x + cs, y - cs);
-    }
-    ctx.strokeStyle = col.color;
-    ctx.lineWidth = L.px(col.width);
-    ctx.stroke();
+    if (this.options.showCollisions) drawCollisions(this.overLayer.ctx, this.layout, this.store, from, to);
   }
 
   redrawOver() {
@@ -372,30 +328,7 @@ export class View {
     const L = this.layout;
     ctx.clearRect(0, 0, L.width, L.height);
     this.domainSeen = this.model ? this.model.domainVersion : 0;
-    if (!this.options.showDomains || !this.model) return;
-    const st = STYLE[EventKind.DOMAIN];
-    const [x0, y0, x1, y1] = this.scenario ? this.scenario.bounds : [0, 0, 0, 0];
-    ctx.save();
-    ctx.beginPath();
-    ctx.rect(L.sx(x0), L.sy(y1), (x1 - x0) * L.scale, (y1 - y0) * L.scale);
-    ctx.clip();
-    ctx.beginPath();
-    for (const t of this.model.trees) {
-      if (!t.domains) continue;
-      for (let i = 0; i < t.n; i++) {
-        const r = t.radius[i];
-        if (!Number.isFinite(r) || !t.known(i)) continue;
-        const x = L.sx(t.x[i]), y = L.sy(t.y[i]), rr = r * L.scale;
-        ctx.moveTo(x + rr, y);
-        ctx.arc(x, y, rr, 0, 2 * Math.PI);
-      }
-    }
-    ctx.fillStyle = 'rgba(140, 81, 10, 0.06)';
-    ctx.fill(); // one fill of the union: overlapping discs do not darken
-    ctx.strokeStyle = st.color;
-    ctx.lineWidth = L.px(st.width);
-    ctx.stroke();
-    ctx.restore();
+    if (this.options.showDomains && this.model && this.scenario) drawDomains(ctx, L, this.model, this.scenario.bounds);
     this.dirty = true;
   }
 
@@ -431,57 +364,21 @@ export class View {
     const { ctx } = this;
     const L = this.layout;
     ctx.clearRect(0, 0, L.width, L.height);
-    ctx.drawImage(this.sceneLayer.canvas, 0, 0);
-    const o = this.options;
-    for (const l of this.runLayers) {
-      ctx.drawImage(l.canvas, 0, 0);
-      if (l === this.cellsLayer && this.cells.active(o)) this.cells.veil(ctx, L, this.scenario);
-      if (l === this.cellsLayer && o.showDensity && this.scenario && !this.showResult) drawDensity(ctx, L, this.model?.density, this.scenario.bounds);
-    }
-    if (!this.scenario) { this.drawTopHooks(ctx, L); return; }
-    const inspection = this.scenario.inspection;
-    const seen = o.showSeen && this.model ? this.model.seen : null;
-    drawInspection(ctx, L, inspection?.points, PALETTE.inspection, PALETTE.robotEdge, seen, PALETTE.seen);
-    for (const which of ['start', 'goal']) {
-      const state = this.stateOf(which);
-      if (!state) continue;
-      const polys = this.preview[which] ? outlineOf(this.scenario.robot, state) : this[which];
-      drawRobotShape(ctx, L, this.scenario.robot, polys, state, robotStyle(PALETTE[which], which, PALETTE));
-      if (this.editable) drawHandle(ctx, L, this.handlePoint(which), PALETTE[which]);
-    }
-    for (const [kind, x, y] of this.markers) drawMarker(ctx, L, STYLE[kind], x, y);
-    if (flashing) this.flashes = drawFlashes(ctx, L, this.flashes, time);
-    const best = o.showBest && this.model ? this.model.bestBranch() : [];
-    if (best.length >= 2) {
-      drawPolyline(ctx, L, best, PALETTE.bestCasing, L.px(6));
-      drawPolyline(ctx, L, best, PALETTE.best, L.px(3.5));
-    }
-    if (!this.showResult && this.queryPath) {
-      const q = STYLE[EventKind.QUERY_PATH];
-      drawPolyline(ctx, L, this.queryPath, q.color, L.px(q.width), q.dash.map((v) => L.px(v)));
-    }
-    if (!this.showResult && this.lastSample) drawMarker(ctx, L, STYLE[EventKind.SAMPLE], ...this.lastSample);
-    this.cells.drawTop(ctx, L, o, this.scenario.bounds);
-    for (const hook of this.overlayHooks) hook(ctx, L); // e.g. the obstacle editor's selection
-    if (this.showResult && this.path) {
-      drawPolyline(ctx, L, this.path, PALETTE.rawPath, L.px(2), [L.px(6), L.px(4)]);
-    }
-    if (this.showResult && this.smoothed) {
-      drawPolyline(ctx, L, this.smoothed, PALETTE.pathCasing, L.px(6));
-      drawPolyline(ctx, L, this.smoothed, PALETTE.smoothPath, L.px(4));
-    }
-    drawQueryAnswer(ctx, L, this.query);
     let frame = null;
     if (animating) {
       const frames = this.options.animateRaw && this.rawFrames.length ? this.rawFrames : this.frames;
       frame = frames[Math.floor((time / 1000) * animFps) % frames.length];
     }
-    if (inspection && o.showFov) drawSensor(ctx, L, this, frame ? frame.state : this.stateOf('start'), best);
-    if (frame) {
-      drawRobotShape(ctx, L, this.scenario.robot, frame.polys, frame.state, robotStyle(null, 'robot', PALETTE));
-      this.robotState = frame.state;
-      this.cells.drawRobotT(ctx, L, o, frame.state);
+    // picture.js's layers in order: the offscreen ones composited, the others drawn now
+    const f = { frame, best: bestOf(this), time, ui: true };
+    let composited = null;
+    for (const e of PICTURE) {
+      if (e.layer) {
+        if (e.layer !== composited) ctx.drawImage(this.layers[e.layer].canvas, 0, 0);
+        composited = e.layer;
+      } else if (this.scenario) e.draw(ctx, L, this, f);
     }
+    if (frame) this.robotState = frame.state;
     this.drawTopHooks(ctx, L);
   }
 
