@@ -22,7 +22,7 @@ import { createPanel, taskOf } from '../ui/panel.js';
 import { Playback } from '../run/playback.js';
 import { Chart } from '../draw/chart.js';
 import { Player } from '../run/player.js';
-import { wireRoadmapQuery, ROADMAP_PLANNERS } from '../ui/roadmap-query.js';
+import { wireRoadmapQuery, answersQueries } from '../ui/roadmap-query.js';
 import { createStats } from '../ui/stats.js';
 import { createOverlays } from '../draw/overlays.js';
 import { cellLegend, cellSummary } from '../draw/cells.js';
@@ -38,6 +38,7 @@ import { wireOpenFile } from '../ui/open-file.js';
 import { OVERLAYS } from '../draw/palette.js';
 import { applyPageLimits } from '../run/limits.js';
 import { shown } from '../ui/text.js';
+import { dragsPosition } from '../draw/capabilities.js';
 
 /**
  * The page's element `id`. Its kind is the HTML's (input, select, button, canvas, dialog…), so it
@@ -74,6 +75,7 @@ let scenarioText = null; // the last valid scenario (reloaded after a crash)
 let sentEdit = false;    // the latest `load` is a start/goal edit
 let course = '';         // the course of the scenario being loaded
 let loaded = null;       // the latest `loaded` message's scenario
+let loadedCaps = null;   // and what the core decided for it (scene_caps: solution file, c-space view, pose)
 let optimum = null;      // its shortest path's cost when that is the robot's optimum (the cost chart's line)
 let applyDefaults = false;
 // Share links: where the scenario came from ({id}: a built-in as shipped; {custom}: edited or
@@ -305,8 +307,9 @@ const markCustom = (label) => markCustomScenario(ui.scenario, label);
 
 // Display
 
-function showScenario({ scenario, start, goal, space, cspace: grid, optimum: best }) {
+function showScenario({ scenario, start, goal, space, cspace: grid, optimum: best, caps }) {
   loaded = scenario;
+  loadedCaps = caps || null;
   optimum = best && best.exact && Number.isFinite(best.cost) ? best.cost : null;
   ui.course.textContent = course;
   ui.name.textContent = shown(scenario.name || 'Untitled scenario');
@@ -326,6 +329,7 @@ function showInvalid(error, edit) {
   lane.clearRun();
   if (!edit) { // an edit keeps the scene on screen, so the start or goal can be dragged back
     loaded = null;
+    loadedCaps = null;
     optimum = null;
     ui.course.textContent = '';
     ui.name.textContent = 'No valid scenario';
@@ -422,15 +426,15 @@ wireExports({
 });
 
 function syncDownload() {
-  ui.download.hidden = !(loaded?.robot?.kind === 'asv' && lane.result?.solved && controller.state === 'finished');
+  ui.download.hidden = !(loadedCaps?.solution_file && lane.result?.solved && controller.state === 'finished');
   roadmapQuery.sync();
 }
 
 // More queries on a finished roadmap run (roadmap-query.js): two clicks, the same roadmap
 const roadmapQuery = wireRoadmapQuery({
   button: $('query-button'), status: $('query-status'), canvas: ui.canvas, view, lane, scenario: () => loaded,
-  applies: () => ROADMAP_PLANNERS.has(panel?.planner()?.name) && controller.state === 'finished' && !!lane.result
-    && (loaded?.robot?.kind === 'point' || loaded?.robot?.kind === 'rigid'),
+  applies: () => answersQueries(panel?.planner()?.name) && controller.state === 'finished' && !!lane.result
+    && dragsPosition(loaded?.robot),
 });
 
 ui.download.addEventListener('click', () => { if (lane.session.alive && lane.result?.solved) lane.session.send({ type: 'asv-solution' }); });

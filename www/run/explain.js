@@ -7,6 +7,7 @@
 // each planner and check line and caption against the events.
 
 import { EventKind as K, STRIDE } from './events.js';
+import { plannerCaps, planeIsWorkspace } from '../draw/capabilities.js';
 
 /**
  * @typedef {{id: string, text: string, indent?: number, when?: (o: Options) => boolean}} Line
@@ -39,7 +40,7 @@ const VARIANT_LINES = /** @type {Line[]} */ ([
 
 /** @type {Record<string, Pseudocode>} */
 export const PSEUDOCODE = {
-  rrt: {
+  'tree-rrt': {
     title: 'RRT (LaValle 1998)',
     lines: [
       { id: 'init', text: 'T ← {q_start}' },
@@ -56,7 +57,7 @@ export const PSEUDOCODE = {
       { id: 'goal-check', text: 'if dist(q_new, q_goal) ≤ tolerance: return PATH(q_new)', indent: 1 },
     ],
   },
-  'rrt-connect': {
+  'tree-rrt-connect': {
     title: 'RRT-Connect (Kuffner & LaValle 2000)',
     lines: [
       { id: 'init', text: 'T_a ← {q_start}, T_b ← {q_goal}' },
@@ -78,8 +79,9 @@ export const PSEUDOCODE = {
       { id: 'swap', text: 'swap T_a and T_b', indent: 1 },
     ],
   },
-  'rrt-star': {
+  'tree-rrt-star': {
     title: 'RRT* (Karaman & Frazzoli 2011)',
+    choosesParent: true, // a node's parent is the cheapest of its neighbours, not always the nearest
     lines: [
       { id: 'init', text: 'T ← {q_start}' },
       { id: 'loop', text: 'repeat' },
@@ -94,7 +96,7 @@ export const PSEUDOCODE = {
       { id: 'goal-check', text: 'return the best path when time or iterations run out', indent: 1 },
     ],
   },
-  inspection: {
+  'tree-inspection': {
     title: 'Inspection planning (IRIS-style tree, Technion course)',
     lines: [
       { id: 'init', text: 'T ← {q_start}, seen(q_start) ← S(q_start)' },
@@ -112,7 +114,7 @@ export const PSEUDOCODE = {
       { id: 'goal-check', text: 'when coverage ≥ target: return PATH(best)', indent: 1 },
     ],
   },
-  'hex-potential': {
+  'cells-hex-potential': {
     title: 'Hexagonal decomposition + potential fields (report 002)',
     lines: [
       { id: 'cells', text: 'tile the map with hexagons; split mixed cells, level by level' },
@@ -131,7 +133,7 @@ export const PSEUDOCODE = {
       { id: 'add', text: 'goal closed: step along its shortest way (none open: no path at this resolution)', when: complete },
     ],
   },
-  'grid-search': {
+  'cells-grid-search': {
     title: 'Grid search: A*, Dijkstra, breadth-first, wavefront (PathFinding.js\'s choices)',
     lines: [
       { id: 'cells', text: 'cut the map into square cells; a cell an obstacle touches is blocked' },
@@ -143,7 +145,7 @@ export const PSEUDOCODE = {
       { id: 'add', text: 'far end closed: walk its way (the wave: down the numbers from the start)' },
     ],
   },
-  est: {
+  'tree-est': {
     title: 'EST: expansive-space tree (Hsu, Latombe & Motwani 1997; the grid form of OMPL)',
     lines: [
       { id: 'init', text: 'T ← {q_start}; each node filed in a cell of a grid over the map' },
@@ -156,7 +158,7 @@ export const PSEUDOCODE = {
       { id: 'goal-check', text: 'q_goal within range and the motion to it is free: done', indent: 1 },
     ],
   },
-  'bi-est': {
+  'tree-bi-est': {
     title: 'Bidirectional EST (two ESTs taking turns, as OMPL\'s BiEST)',
     lines: [
       { id: 'init', text: 'T_a ← {q_start}, T_b ← {q_goal}; nodes filed in grid cells' },
@@ -168,7 +170,7 @@ export const PSEUDOCODE = {
       { id: 'met', text: 'T_b\'s nearest node within range and the motion free: the trees meet, done', indent: 1 },
     ],
   },
-  'visibility-graph': {
+  'exact-visibility-graph': {
     title: 'Visibility graph + A* (Lozano-Pérez & Wesley 1979)',
     lines: [
       { id: 'init', text: 'grow the obstacles by the robot\'s disc (and a margin); V ← {q_start, q_goal} ∪ convex corners' },
@@ -179,7 +181,7 @@ export const PSEUDOCODE = {
       { id: 'goal-check', text: 'check the path with MOTION_FREE and return it' },
     ],
   },
-  'potential-field': {
+  'field-potential': {
     title: 'Artificial potential field (Khatib 1986; escapes: Barraquand & Latombe 1991)',
     lines: [
       { id: 'field', text: 'U(q) = U_att(q) + U_rep(q) (heat map)' },
@@ -205,18 +207,18 @@ const EAGER_TAIL = /** @type {Line[]} */ ([
   { id: 'check', text: "if MOTION_FREE(q, q'): E ← E ∪ {(q, q')}", indent: 2 },
   { id: 'query', text: 'if q_start and q_goal share a component: return A*(q_start, q_goal) over (V, E)', indent: 1 },
 ]);
-PSEUDOCODE.prm = {
+PSEUDOCODE['roadmap-prm'] = {
   title: 'PRM (Kavraki, Švestka, Latombe & Overmars 1996)',
   lines: [...ROADMAP_HEAD, { id: 'near', text: "for q' in the k nearest of q (or those within the radius):", indent: 1 }, ...EAGER_TAIL],
 };
-PSEUDOCODE['prm-star'] = {
+PSEUDOCODE['roadmap-prm-star'] = {
   title: 'PRM* (Karaman & Frazzoli 2011)',
   lines: [...ROADMAP_HEAD, { id: 'near', text: "for q' in the k(n) = ⌈e(1 + 1/d)·ln n⌉ nearest of q (or within r(n)):", indent: 1 },
     EAGER_TAIL[0],
     { id: 'query', text: 'if q_start and q_goal share a component: path ← A*(q_start, q_goal) over (V, E)', indent: 1 },
     { id: 'cost', text: 'if cost(path) < best: best ← path; improve_for milestones after the first, return best', indent: 2 }],
 };
-PSEUDOCODE['lazy-prm'] = {
+PSEUDOCODE['roadmap-lazy-prm'] = {
   title: 'Lazy PRM (Bohlin & Kavraki 2000)',
   lines: [
     ...ROADMAP_HEAD,
@@ -227,11 +229,10 @@ PSEUDOCODE['lazy-prm'] = {
     { id: 'goal-check', text: 'every edge free: return path', indent: 2 },
   ],
 };
-const ROADMAPS = new Set(['prm', 'prm-star', 'lazy-prm']);
 
-/** The pseudocode of `planner` with only the lines `options` apply (null for an unknown planner). */
+/** The pseudocode of `planner` (by its registry's `caps.pseudocode` key) with only the lines `options` apply (null for an unknown planner). */
 export function pseudocode(planner, options = {}) {
-  const p = PSEUDOCODE[planner];
+  const p = PSEUDOCODE[plannerCaps(planner).pseudocode];
   if (!p) return null;
   return { title: p.title, lines: p.lines.filter((l) => !l.when || l.when(options)) };
 }
@@ -275,9 +276,7 @@ export function blockerText(id) {
 }
 
 const HEX_WHY = ['', 'an obstacle vertex in the t/2 circle', 'a vertex in the swept rectangle', 'an obstacle edge crossing the region', 'the map\'s edge'];
-const TWO_TREES = new Set(['rrt-connect', 'bi-est']);
-const TREE_NAME = (planner, tree) => (TWO_TREES.has(planner) ? (tree === 0 ? 'start tree' : 'goal tree') : 'tree');
-const EST = new Set(['est', 'bi-est']);
+const TREE_NAME = (planner, tree) => (plannerCaps(planner).trees === 2 ? (tree === 0 ? 'start tree' : 'goal tree') : 'tree');
 
 /**
  * Reads records one at a time and keeps what the current step has said: the line, the caption
@@ -286,13 +285,31 @@ const EST = new Set(['est', 'bi-est']);
  */
 export class Explainer {
   /**
-   * `planner`: the registry name; `robot`: the scenario's robot kind ('point' draws the range);
-   * `options`: what `optionsOf` reads from the set-up (hex-potential's search).
+   * `planner`: the registry name; `robot`: the scenario's robot kind (one whose planning space is
+   * the plane has its range drawn); `options`: what `optionsOf` reads from the set-up (hex-potential's
+   * search). What the planner does is read from its capabilities (capabilities.js) and the lines of
+   * its pseudocode, never from its name.
    */
-  constructor(planner = 'rrt', robot = 'point', options = /** @type {Options} */ ({})) {
+  constructor(planner = '', robot = '', options = /** @type {Options} */ ({})) {
     this.planner = planner;
     this.robot = robot;
-    this.complete = (planner === 'hex-potential' && complete(options)) || planner === 'grid-search';
+    const caps = plannerCaps(planner);
+    const code = PSEUDOCODE[caps.pseudocode];
+    const has = (id) => !!code?.lines.some((l) => l.id === id);
+    this.twoTrees = caps.trees === 2;
+    this.roadmap = caps.draws === 'roadmap';
+    this.density = caps.events.includes('SELECT');      // EST: a step starts by picking a node
+    this.connects = has('c-nearest');                    // RRT-Connect's CONNECT
+    this.extendConnects = has('connect');                // RRT's extend = connect
+    this.lazy = has('lazy-check');                       // Lazy PRM: edges checked on the path
+    this.choosesParent = !!code?.choosesParent;          // RRT*: the cheapest neighbour is the parent
+    this.grid = caps.draws === 'grid';
+    this.cells = caps.family === 'cells';
+    this.exact = caps.draws === 'exact-graph';
+    this.field = caps.family === 'field';
+    this.stepStart = caps.samples || this.density;       // readStore: steps begin at a SAMPLE or SELECT
+    this.rangeDrawn = planeIsWorkspace(robot);
+    this.complete = (caps.draws === 'cells' && complete(options)) || this.grid;
     this.reset();
   }
 
@@ -341,7 +358,7 @@ export class Explainer {
         this.line = 'select';
         break;
       case K.SAMPLE: {
-        if (EST.has(this.planner)) {
+        if (this.density) {
           this.then(id === 1 ? `sample q_goal ${pt(x, y)} (goal bias)` : `sample ${pt(x, y)} within range of it`);
           A.sample = [x, y];
           this.line = id === 1 ? 'goal' : 'sample';
@@ -353,12 +370,12 @@ export class Explainer {
         if (tries) this.actors.tries = tries;
         this.actors.sample = [x, y];
         this.line = id === 1 ? 'goal' : id === 2 ? 'share' : 'sample';
-        if (this.planner === 'rrt-connect') this.parts[0] += ` for the ${TREE_NAME(this.planner, tree)}`;
+        if (this.connects) this.parts[0] += ` for the ${TREE_NAME(this.planner, tree)}`;
         break;
       }
       case K.NEAREST: {
         const toSample = pc0 === 1;
-        if (!toSample && this.planner === 'rrt-connect') {
+        if (!toSample && this.connects) {
           if (!this.connecting) {
             const sample = A.sample;
             this.begin(`CONNECT the ${TREE_NAME(this.planner, tree)} toward ${pt(px, py)}`);
@@ -377,7 +394,7 @@ export class Explainer {
         N.collision = undefined;
         N.blocked = false;
         if (!toSample) N.sample ||= [px, py];
-        this.line = this.connecting ? 'c-nearest' : toSample || this.planner !== 'rrt' ? 'nearest' : 'connect';
+        this.line = this.connecting ? 'c-nearest' : toSample || !this.extendConnects ? 'nearest' : 'connect';
         break;
       }
       case K.STEER:
@@ -391,18 +408,18 @@ export class Explainer {
         }
         this.then(`step ${num(c0)}${pc0 === 1 ? ' (reaches it)' : ''}`);
         A.edge = [px, py, x, y];
-        if (this.robot === 'point') A.range = [px, py, c1];
+        if (this.rangeDrawn) A.range = [px, py, c1];
         this.line = this.connecting ? 'c-steer' : 'steer';
         break;
       case K.COLLISION:
         this.then(`${blockerText(id)} at ${pt(x, y)}`);
         A.collision = [x, y];
         A.blocked = true;
-        this.line = this.planner === 'lazy-prm' ? 'lazy-check' : this.connecting ? 'c-check' : 'check';
-        if (this.planner === 'bi-est' && this.line === 'check' && A.added) this.line = 'met'; // the join was blocked
+        this.line = this.lazy ? 'lazy-check' : this.connecting ? 'c-check' : 'check';
+        if (this.twoTrees && this.density && this.line === 'check' && A.added) this.line = 'met'; // the join was blocked
         break;
       case K.NODE_ADDED:
-        if (parent < 0 && ROADMAPS.has(this.planner)) {
+        if (parent < 0 && this.roadmap) {
           if (this.line === 'init' && id <= 1) {
             this.begin(`${id === 0 ? 'q_start' : 'q_goal'} ${pt(x, y)} is vertex #${id}`);
             this.line = 'init';
@@ -414,25 +431,25 @@ export class Explainer {
           break;
         }
         if (parent < 0) { this.begin(`the ${TREE_NAME(this.planner, tree)} starts at ${pt(x, y)}`); this.line = 'init'; break; }
-        if (this.planner === 'hex-potential' || this.planner === 'grid-search') {
+        if (this.cells) {
           this.begin(`${this.complete ? 'along the shortest way: step to' : 'step to cell centre'} ${pt(x, y)} (node #${id})`);
           A.edge = [px, py, x, y];
           this.line = 'add';
           break;
         }
-        if (this.planner === 'visibility-graph') {
+        if (this.exact) {
           this.begin(`A* settles ${pt(x, y)} (node #${id}, parent #${parent})`);
           A.edge = [px, py, x, y];
           this.line = 'add';
           break;
         }
-        if (this.planner === 'potential-field') {
+        if (this.field) {
           this.begin(`${tree === 1 ? 'random-walk step' : 'step down the gradient'} to ${pt(x, y)} (node #${id})`);
           A.edge = [px, py, x, y];
           this.line = tree === 1 ? 'walk' : 'add';
           break;
         }
-        if (this.planner === 'rrt-star' && A.nearId !== undefined && parent !== A.nearId) {
+        if (this.choosesParent && A.nearId !== undefined && parent !== A.nearId) {
           this.then(`add #${id} under #${parent} (cheaper than #${A.nearId})`);
         } else {
           this.then(`add #${id} under #${parent}`);
@@ -445,7 +462,7 @@ export class Explainer {
         if (this.line === 'nearest' && A.domain !== null && A.domain !== undefined) {
           this.then(`outside its domain r = ${num(A.domain)}: rejected unchecked`);
           this.line = 'domain';
-        } else if (ROADMAPS.has(this.planner)) {
+        } else if (this.roadmap) {
           this.then('invalid: rejected');
           this.line = 'valid';
         } else {
@@ -459,14 +476,14 @@ export class Explainer {
         this.line = tree === 1 ? 'edge' : 'check';
         break;
       case K.QUERY_PATH:
-        if (tree === 0 || this.line !== (this.planner === 'lazy-prm' ? 'search' : 'query')) {
+        if (tree === 0 || this.line !== (this.lazy ? 'search' : 'query')) {
           this.begin('A* over the roadmap: a path of 1 edge');
           this.pathEdges = 0;
         }
         this.pathEdges++;
         this.parts[0] = `A* over the roadmap: a path of ${this.pathEdges} edge${this.pathEdges > 1 ? 's' : ''}`;
         A.edge = [x, y, px, py];
-        this.line = this.planner === 'lazy-prm' ? 'search' : 'query';
+        this.line = this.lazy ? 'search' : 'query';
         break;
       case K.EDGE_CHECKED:
         this.then(`edge #${id}–#${parent} ${tree === 1 ? 'blocked: removed' : 'checked: free'}`);
@@ -488,7 +505,7 @@ export class Explainer {
         break;
       case K.SOLVED:
         this.then('solved: the path is returned');
-        this.line = TWO_TREES.has(this.planner) ? 'met' : ROADMAPS.has(this.planner) && this.planner !== 'lazy-prm' ? 'query' : 'goal-check';
+        this.line = this.twoTrees ? 'met' : this.roadmap && !this.lazy ? 'query' : 'goal-check';
         break;
       case K.GRAPH_EDGE:
         this.begin(`edge ${pt(x, y)} – ${pt(px, py)}: ${c1 > 0 ? 'clear' : 'blocked'}, length ${num(c0)}`);
@@ -513,7 +530,7 @@ export class Explainer {
         this.line = 'seen';
         break;
       case K.CELL:
-        if (this.planner === 'grid-search') this.begin(`cell #${id} at ${pt(x, y)}: ${px === 0 ? 'free' : 'blocked (an obstacle touches it)'}`);
+        if (this.grid) this.begin(`cell #${id} at ${pt(x, y)}: ${px === 0 ? 'free' : 'blocked (an obstacle touches it)'}`);
         else this.begin(`cell #${id} at level ${tree}: ${['free', 'mixed', 'full'][px] || 'cell'}`);
         A.cell = [x, y];
         this.line = 'cells';
@@ -536,7 +553,7 @@ export class Explainer {
           this.line = 'close';
           break;
         }
-        const verdict = [this.complete ? 'opened (a shorter way)' : 'passable', `blocked: ${this.planner === 'grid-search' ? 'the motion collides' : HEX_WHY[py] || 'the step test failed'}`, 'visited already', 'outside the region', 'an obstacle cell'][px] || 'judged';
+        const verdict = [this.complete ? 'opened (a shorter way)' : 'passable', `blocked: ${this.grid ? 'the motion collides' : HEX_WHY[py] || 'the step test failed'}`, 'visited already', 'outside the region', 'an obstacle cell'][px] || 'judged';
         if (this.line !== 'judge') this.begin(`from cell #${parent}: cell #${id} ${verdict}`);
         else this.then(`#${id} ${verdict}`);
         A.cell = [x, y];
@@ -573,8 +590,8 @@ export class Explainer {
     let start = from;
     if (to - from > LONG_REVEAL) {
       start = Math.max(from, to - LONG_REVEAL);
-      if (SAMPLING.has(this.planner) || EST.has(this.planner)) {
-        const first = EST.has(this.planner) ? K.SELECT : K.SAMPLE;
+      if (this.stepStart) {
+        const first = this.density ? K.SELECT : K.SAMPLE;
         for (let i = to - 1, n = 0; i >= from && n < MAX_LOOK_BACK; i--, n++) {
           if (store.record(i)[0] === first) { start = i; break; }
         }
@@ -593,4 +610,3 @@ export class Explainer {
 const LONG_REVEAL = 256;
 /** How far back readStore looks for the last step's SAMPLE. */
 const MAX_LOOK_BACK = 1 << 17;
-const SAMPLING = new Set(['rrt', 'rrt-connect', 'rrt-star', 'inspection', 'prm', 'prm-star', 'lazy-prm']);

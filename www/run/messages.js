@@ -26,9 +26,13 @@
  */
 
 /**
- * @typedef {{type: 'ready', builtins: any[], planners: any, eventKinds: Record<string, number>}
+ * @typedef {{robot: any, cspace: boolean, optimum: boolean, solution_file: boolean, pose: string}} SceneCaps
+ */
+
+/**
+ * @typedef {{type: 'ready', builtins: any[], planners: any, eventKinds: Record<string, number>, robotKinds?: any[]}
  *   | {type: 'loaded', scenario: any, start: number[], goal: number[], space: Array<{lo: number, hi: number, wraps: boolean}>,
- *      cspace?: {n: number, grid: Uint8Array, dims: number}}
+ *      caps?: SceneCaps, cspace?: {n: number, grid: Uint8Array, dims: number}}
  *   | {type: 'invalid', error: {path?: string, message?: string, line?: number, column?: number, text?: string}}
  *   | {type: 'events', data: Float64Array, stats: RunStats, status: string, tries?: {seen: number, sent: number}}
  *   | {type: 'result', result: {solved: boolean, status: string, stats: RunStats, reason?: string}, frames: Float64Array, rawFrames: Float64Array}

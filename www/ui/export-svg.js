@@ -11,6 +11,7 @@ import { robotStyle, outlineOf } from '../draw/robots.js';
 import { CellsDrawing, heatScale, cellFill, cellLevel } from '../draw/cells.js';
 import { EXPORT_BATCH } from '../draw/redraw.js';
 import { LEGEND_TEXT, frameShown, legendLayout, measure } from './export-legend.js';
+import { robotDrawing } from '../draw/capabilities.js';
 
 const SVG_NS = 'http://www.w3.org/2000/svg';
 const XLINK_NS = 'http://www.w3.org/1999/xlink';
@@ -112,7 +113,7 @@ function polylineSvg(parent, L, pts, colour, width, dash = null, attrs = {}) {
 
 /** A robot (robots.js drawRobotShape) at `state` with outline `polys` in style `st`. */
 function robotSvg(parent, L, robot, polys, state, st, cls) {
-  const kind = robot ? robot.kind : 'point';
+  const drawing = robotDrawing(robot);
   const g = node('g', { class: cls }, parent);
   if (!polys || !polys.length) {
     if (!state || state.length < 2) return;
@@ -120,7 +121,7 @@ function robotSvg(parent, L, robot, polys, state, st, cls) {
     return;
   }
   const p = polys[0];
-  if (kind === 'arm') {
+  if (drawing === 'linkage') {
     if (p.length < 4) return;
     node('path', { d: polyD(L, p, false), fill: 'none', ...stroke(st.line, st.width, null, true) }, g);
     let len = 0;
@@ -131,7 +132,7 @@ function robotSvg(parent, L, robot, polys, state, st, cls) {
     for (let i = 2; i < p.length; i += 2) d += circleD(L.sx(p[i]), L.sy(p[i + 1]), r);
     node('path', { d, ...fill(st.edge) }, g);
     node('rect', { x: fmt(L.sx(p[0]) - 4.5), y: fmt(L.sy(p[1]) - 4.5), width: 9, height: 9, ...fill(st.edge) }, g);
-  } else if (kind === 'asv') {
+  } else if (drawing === 'chain') {
     const n = p.length / 2;
     if (n >= 2) node('path', { d: polyD(L, p, false), fill: 'none', ...stroke(st.stroke, 2.5), 'stroke-linecap': 'round' }, g);
     if (n >= 3) node('path', { d: polyD(L, [[p[2 * n - 2], p[2 * n - 1]], [p[0], p[1]]], false), fill: 'none', ...stroke(st.stroke, 1.5, [4, 3]), 'stroke-linecap': 'round' }, g);

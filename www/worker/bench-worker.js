@@ -8,15 +8,19 @@
 //              {type: 'failed', id, message}: a bad set-up (the worker stays usable);
 //              {type: 'crashed', id, message}: the core panicked; the page replaces this worker.
 
-import init, { Run, install_panic_hook, last_panic } from '../pkg/planarium.js';
+import init, { Run, install_panic_hook, last_panic, planners } from '../pkg/planarium.js';
 import { EventKind, STRIDE } from '../run/events.js';
 
 // The run goes to its end in one loop (the page cancels by terminating the worker); batches of this
 // many ms only bound each wasm call. An RRT* cost curve reads its COST events every 10 ms instead.
 const BATCH_MS = 50;
 
+/** @type {Map<string, string | null>} each planner's chart (the registry's `caps.chart`) */
+let charts = new Map();
+
 const ready = init().then(() => {
   install_panic_hook();
+  charts = new Map(JSON.parse(planners()).planners.map((p) => [p.name, p.caps?.chart ?? null]));
   self.postMessage({ type: 'ready' });
 });
 
@@ -26,8 +30,9 @@ self.onmessage = async (e) => {
   let run = null;
   try {
     run = new Run(text, planner, JSON.stringify(params), seed);
-    // An anytime planner's cost curve needs its COST events; other runs record nothing.
-    const curve = planner === 'rrt-star' ? [] : null;
+    // An anytime planner's cost curve (a planner whose chart is its cost) needs its COST events;
+    // other runs record nothing.
+    const curve = charts.get(planner) === 'cost' ? [] : null;
     run.record_events(!!curve);
     let status;
     do {
