@@ -16,7 +16,7 @@
 // Usage: node scripts/check-names.mjs [files…]   (default: every .js/.mjs of www/); needs the wasm
 // build (www/pkg). Exit 1 with each finding as file:line.
 import { readFileSync, readdirSync, statSync } from 'node:fs';
-import { dirname, join, relative } from 'node:path';
+import { dirname, join, relative, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
@@ -149,7 +149,7 @@ function files(dir) {
 
 if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) {
   const { planners, kinds } = await registeredNames();
-  const list = process.argv.length > 2 ? process.argv.slice(2).map((f) => relative(root, join(process.cwd(), f))) : files('www');
+  const list = process.argv.length > 2 ? process.argv.slice(2).map((f) => relative(root, resolve(f))) : files('www');
   const problems = [];
   for (const f of list) {
     for (const { line, name, how } of findNames(readFileSync(join(root, f), 'utf8'), [...planners, ...kinds])) {

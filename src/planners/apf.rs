@@ -81,7 +81,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     caps: Capabilities {
         family: Family::Field,
         draws: Draws::Field,
-        trees: 2,
+        trees: 1,
         improves: false,
         chart: None,
         queries: false,

@@ -117,7 +117,8 @@ pub struct Capabilities {
     pub family: Family,
     /// What its records draw.
     pub draws: Draws,
-    /// Trees it grows (1 or 2; 0 for methods without a tree of their own), for naming them.
+    /// Trees it grows, for naming them: 2 for a tree from the start and one from the goal, 1 for
+    /// one tree (a search's, a descent's with its random walks), 0 for a roadmap.
     pub trees: u8,
     /// It keeps improving after a first solution (a best path so far).
     pub improves: bool,

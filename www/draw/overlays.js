@@ -44,7 +44,7 @@ export function createOverlays(root, onChange, { prefix = '' } = {}) {
 const CHECKING_SAMPLERS = new Set(['gaussian', 'bridge', 'obstacle']);
 
 /** The overlays a planner offers by its registry's `caps.overlays` keys (the rest follow its sampler). */
-const OFFERED = Object.freeze({
+export const OFFERED = Object.freeze({
   showRewires: 'rewires', showBest: 'best', showSeen: 'seen', showFov: 'fov', showCells: 'cells',
   showRegion: 'region', showDensity: 'density', showHeat: 'heat', showArrows: 'arrows',
 });
