@@ -13,7 +13,7 @@ import { plannerCaps, planeIsWorkspace } from '../draw/capabilities.js';
  * @typedef {{id: string, text: string, indent?: number, when?: (o: Options) => boolean}} Line
  * @typedef {{sampler?: string, goalBias?: number, share?: boolean, connect?: boolean, domain?: boolean, exhausted?: boolean,
  *   weighted?: boolean, ladder?: boolean, escape?: string, vertices?: boolean, search?: string}} Options
- * @typedef {{title: string, lines: Line[]}} Pseudocode
+ * @typedef {{title: string, lines: Line[], choosesParent?: boolean}} Pseudocode  (choosesParent: what the Explainer says of a parent that is not the nearest node)
  */
 
 const descent = (o) => !o.search || o.search === 'descent'; // hex-potential: the report's search
