@@ -131,7 +131,7 @@ pub struct Capabilities {
     /// The event kinds it emits (besides those of the sampler and the run: sample, rejected
     /// sample, raw try, solved, smoothing).
     pub events: &'static [EventKind],
-    /// The key of its pseudocode in the page's table (`www/run/explain.js`).
+    /// The key of its pseudocode in the page's table (`www/run/pseudocode.js`).
     pub pseudocode: &'static str,
     /// Its legend entries for the lines it draws (trees, roadmap, graph), beside the paths.
     pub legend: &'static [LegendItem],

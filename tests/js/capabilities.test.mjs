@@ -40,7 +40,7 @@ function lacks(p) {
   const out = [];
   if (!c) return ['capabilities'];
   const code = pseudocode(p.name);
-  if (!code || !code.lines.length) out.push(`pseudocode for "${c.pseudocode}" (www/run/explain.js)`);
+  if (!code || !code.lines.length) out.push(`pseudocode for "${c.pseudocode}" (www/run/pseudocode.js)`);
   if (!(c.draws in DRAWINGS)) out.push(`a drawing for "${c.draws}" (capabilities.js DRAWINGS)`);
   if (!c.legend.length && !c.marks.length) out.push('a legend entry');
   for (const l of [...c.legend, ...c.marks]) {
