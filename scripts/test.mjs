@@ -1,5 +1,6 @@
 // Runs every test: the repository's own checks (scripts/check-repo.mjs: nothing read outside the
-// clone, the third-party notices current, every golden fingerprint named in CHANGELOG.md), ESLint's
+// clone, the third-party notices current, every golden fingerprint named in CHANGELOG.md; and
+// scripts/check-names.mjs: the page keys on capabilities, never on planner or robot names), ESLint's
 // recommended rules on the JavaScript (eslint.config.mjs), tsc --checkJs (tsconfig.json;
 // www/worker/tsconfig.json for the workers), rustfmt (rustfmt.toml), clippy with warnings as
 // errors, native cargo tests, one untimed pass of the micro-benchmarks, the core compiled to wasm
@@ -23,6 +24,8 @@ const STAGES = [
   { name: 'eslint', cmd: 'node node_modules/eslint/bin/eslint.js --max-warnings 0 .', needs: ['set-up'] },
   // tsc --checkJs needs the core's types (www/pkg/planarium.d.ts, from wasm-pack): build first.
   { name: 'wasm build', cmd: 'node scripts/build.mjs', needs: ['set-up'] },
+  // No planner name or robot kind compared or listed in www/ (the names read from the wasm build).
+  { name: 'names in www/', cmd: 'node scripts/check-names.mjs', needs: ['wasm build'] },
   { name: 'tsc (pages)', cmd: 'node node_modules/typescript/bin/tsc -p .', needs: ['wasm build'] },
   { name: 'tsc (workers)', cmd: 'node node_modules/typescript/bin/tsc -p www/worker', needs: ['wasm build'] },
   { name: 'rustfmt', cmd: 'cargo fmt --check', needs: ['set-up'] },

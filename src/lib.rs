@@ -40,6 +40,8 @@ pub mod io;
 
 // 2. The problem, and what it is made of: the workspace, the robot, its space, and the checks.
 pub mod problem;
+// What the page may do with a loaded scenario (the robot kind's record, views, downloads).
+pub mod scene_caps;
 // Exact 2-D shapes and predicates; convex polygons.
 pub mod geometry;
 // Point, rigid body, arm, ASV chain.

@@ -73,6 +73,13 @@ pub fn planners() -> String {
     format!("{{\"planners\": {}, \"run_params\": {}}}", planners::registry_json(), serde_json::to_string(&run).unwrap())
 }
 
+/// The robot kinds as JSON: `[{name, label, drawn, body, sensor, cspace, course_cost, pose,
+/// solution_file}]` ([`crate::robot::kinds`]).
+#[wasm_bindgen]
+pub fn robot_kinds() -> String {
+    crate::robot::kinds::kinds_json()
+}
+
 /// The suite's scaling benchmark (`planarium scaling`, [`crate::run::scaling`]): `checks` state
 /// checks per robot and obstacle count, best of `rounds`, as JSON rows.
 #[wasm_bindgen]
@@ -226,6 +233,11 @@ impl Scene {
         }
         out
     }
+    /// What the page may do with this scene ([`crate::scene_caps::SceneCaps`]) as JSON; the
+    /// optimum is computed on at most `optimum_max_obstacles` obstacles.
+    pub fn caps_json(&self, optimum_max_obstacles: usize) -> String {
+        crate::scene_caps::SceneCaps::of(&self.inner, optimum_max_obstacles).to_json().to_string()
+    }
     /// The planning space's dimensions as JSON `[{lo, hi, wraps}]`.
     pub fn space_json(&self) -> String {
         let dims: Vec<serde_json::Value> = self
@@ -359,7 +371,7 @@ impl Run {
         let p = self.inner.problem();
         let path = self.inner.planning_path(raw);
         // A vehicle chain is shown in the course's primitive steps, exactly as its solution file.
-        if p.robot.kind() == "asv" {
+        if p.robot.caps().solution_file {
             if let Ok(steps) = crate::io::asv::primitive_steps(p, path) {
                 let mut out = vec![p.robot.external_dims() as f64, steps.len() as f64];
                 for c in &steps {

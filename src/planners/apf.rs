@@ -58,10 +58,17 @@ use crate::events::EventKind;
 use crate::journal::Entry;
 use crate::math::Real;
 use crate::motion::MotionValidator;
+use crate::planners::caps::{Capabilities, Draws, Family, LegendItem};
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::space::Metric;
 use crate::space_info::SpaceInfo;
 use std::collections::VecDeque;
+
+/// The legend: descent and random walks.
+const LEGEND: &[LegendItem] =
+    &[LegendItem::line("descent steps", "tree0"), LegendItem::line("random-walk steps", "tree1")];
+/// The field's marks.
+const MARKS: &[LegendItem] = &[LegendItem::ring("local minimum", "minimum")];
 
 /// The registry entry.
 pub const SPEC: PlannerSpec = PlannerSpec {
@@ -71,6 +78,20 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     params: PARAMS,
     groups: &[],
     task: TaskKind::Goal,
+    caps: Capabilities {
+        family: Family::Field,
+        draws: Draws::Field,
+        trees: 1,
+        improves: false,
+        chart: None,
+        queries: false,
+        proves_no_path: true,
+        events: &[EventKind::Field, EventKind::Minimum, EventKind::NodeAdded, EventKind::Solved],
+        pseudocode: "field-potential",
+        legend: LEGEND,
+        marks: MARKS,
+        overlays: &["heat", "arrows"],
+    },
     make: |si, task, params| Ok(Box::new(PotentialField::new(si, task, params)?)),
 };
 

@@ -20,6 +20,7 @@ use super::rrt::{resolve_range, RANGE};
 use crate::events::EventKind;
 use crate::math::Real;
 use crate::motion::MotionValidator;
+use crate::planners::caps::{self, Capabilities, Draws, Family};
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::space_info::SpaceInfo;
 use std::collections::HashMap;
@@ -32,6 +33,20 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     params: PARAMS,
     groups: &[],
     task: TaskKind::Goal,
+    caps: Capabilities {
+        family: Family::Tree,
+        draws: Draws::Tree,
+        trees: 1,
+        improves: false,
+        chart: None,
+        queries: false,
+        proves_no_path: false,
+        events: &[EventKind::Sample, EventKind::NodeAdded, EventKind::Collision, EventKind::Select, EventKind::Solved],
+        pseudocode: "tree-est",
+        legend: caps::ONE_TREE,
+        marks: &[],
+        overlays: &["density"],
+    },
     make: |si, task, params| Ok(Box::new(Est::new(si, task, params, false))),
 };
 
@@ -43,6 +58,27 @@ pub const BI_SPEC: PlannerSpec = PlannerSpec {
     params: BI_PARAMS,
     groups: &[],
     task: TaskKind::Goal,
+    caps: Capabilities {
+        family: Family::Tree,
+        draws: Draws::Tree,
+        trees: 2,
+        improves: false,
+        chart: None,
+        queries: false,
+        proves_no_path: false,
+        events: &[
+            EventKind::Sample,
+            EventKind::NodeAdded,
+            EventKind::Collision,
+            EventKind::Select,
+            EventKind::TreesConnected,
+            EventKind::Solved,
+        ],
+        pseudocode: "tree-bi-est",
+        legend: caps::TWO_TREES,
+        marks: &[],
+        overlays: &["density"],
+    },
     make: |si, task, params| Ok(Box::new(Est::new(si, task, params, true))),
 };
 

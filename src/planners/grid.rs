@@ -30,8 +30,16 @@ use crate::geometry::{Aabb, Workspace};
 use crate::io::occupancy::cell_blocked;
 use crate::math::{Real, Vec2};
 use crate::motion::MotionValidator;
+use crate::planners::caps::{self, Capabilities, Draws, Family, LegendItem};
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::space_info::SpaceInfo;
+
+/// The cells' marks.
+const MARKS: &[LegendItem] = &[
+    LegendItem::boxed("closed cell", "cellVisited"),
+    LegendItem::boxed("open cell", "cellOpen"),
+    LegendItem::boxed("blocked cell", "cellFull"),
+];
 
 /// The registry entry.
 pub const SPEC: PlannerSpec = PlannerSpec {
@@ -41,6 +49,20 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     params: PARAMS,
     groups: &[],
     task: TaskKind::Goal,
+    caps: Capabilities {
+        family: Family::Cells,
+        draws: Draws::Grid,
+        trees: 1,
+        improves: false,
+        chart: None,
+        queries: false,
+        proves_no_path: true,
+        events: &[EventKind::Cell, EventKind::CellShape, EventKind::CellState, EventKind::NodeAdded, EventKind::Solved],
+        pseudocode: "cells-grid-search",
+        legend: caps::TWO_TREES,
+        marks: MARKS,
+        overlays: &["cells"],
+    },
     make: |si, task, params| Ok(Box::new(GridSearch::new(si, task, params)?)),
 };
 

@@ -7,6 +7,7 @@
 //! from that list.
 
 pub mod apf;
+pub mod caps;
 pub mod est;
 pub mod grid;
 pub mod hex;
@@ -276,6 +277,8 @@ pub struct PlannerSpec {
     pub groups: &'static [ParamGroup],
     /// The task it solves.
     pub task: TaskKind,
+    /// What it can do and shows ([`caps`]).
+    pub caps: caps::Capabilities,
     /// Construct it for a task; an error says why it cannot plan for this problem (a robot it
     /// does not handle).
     pub make: MakePlanner,
@@ -285,6 +288,14 @@ impl PlannerSpec {
     /// Every parameter the planner takes, in lookup order: its own, its groups', the run's.
     pub fn all_params(&self) -> impl Iterator<Item = &'static ParamSpec> + '_ {
         self.params.iter().chain(self.groups.iter().flat_map(|g| g.params.iter())).chain(RUN_PARAMS.iter())
+    }
+    /// Whether it draws samples from the run's sampler (it takes the sampler's group).
+    pub fn samples(&self) -> bool {
+        self.groups.iter().any(|g| g.name == crate::sampler::SAMPLER_GROUP.name)
+    }
+    /// Whether it takes the tree variants (the tree group).
+    pub fn tree_variants(&self) -> bool {
+        self.groups.iter().any(|g| g.name == tree::TREE_GROUP.name)
     }
     /// The spec of one of its parameters.
     pub fn param(&self, name: &str) -> Option<&'static ParamSpec> {
@@ -351,6 +362,7 @@ pub fn registry_json() -> String {
                     "params": g.params.iter().filter(|s| !p.params.iter().any(|o| o.name == s.name)).map(ParamSpec::to_json).collect::<Vec<_>>(),
                 })).collect::<Vec<_>>(),
                 "task": match p.task { TaskKind::Goal => "goal", TaskKind::Inspection => "inspection" },
+                "caps": p.caps.to_json(p.samples(), p.tree_variants()),
             })
         })
         .collect();

@@ -23,6 +23,7 @@ use crate::geometry::segment::{
 };
 use crate::geometry::{Aabb, SensorPose, Workspace};
 use crate::math::{angle_diff, MinMax, Real, Vec2, PI};
+use crate::robot::kinds::{Drawn, Pose, RobotKind};
 use crate::scenario::RobotSpec;
 use crate::space::{Dim, Metric, StateSpace};
 
@@ -305,9 +306,22 @@ impl ArmRobot {
     }
 }
 
+/// The kind's record ([`super::kinds`]).
+pub const KIND: RobotKind = RobotKind {
+    name: "arm",
+    label: "Planar arm",
+    drawn: Drawn::OpenChain,
+    body: false,
+    sensor: true,
+    cspace: true,
+    course_cost: Some("fk"),
+    pose: Pose::Joints,
+    solution_file: false,
+};
+
 impl Robot for ArmRobot {
-    fn kind(&self) -> &'static str {
-        "arm"
+    fn caps(&self) -> &'static RobotKind {
+        &KIND
     }
     fn external_dims(&self) -> usize {
         self.links.len()

@@ -18,6 +18,7 @@
 mod arm;
 mod asv;
 pub mod capability;
+pub mod kinds;
 mod point;
 mod rigid;
 
@@ -48,8 +49,12 @@ pub enum Verdict {
 /// A robot in a planar workspace: what every robot has. Capabilities (see [`capability`]) are
 /// handed out by the accessors at the end, `None` by default.
 pub trait Robot: std::fmt::Debug {
+    /// Its kind's record: what the page may do with it ([`kinds`]).
+    fn caps(&self) -> &'static kinds::RobotKind;
     /// The `robot.kind` of the scenario format.
-    fn kind(&self) -> &'static str;
+    fn kind(&self) -> &'static str {
+        self.caps().name
+    }
     /// The robot's state space over the workspace's bounds.
     fn space(&self, ws: &Workspace) -> StateSpace;
     /// How many numbers a state has in the scenario format (start, goal, path points).

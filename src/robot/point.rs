@@ -2,15 +2,29 @@ use super::capability::{all_around, MotionModel, Sensor, WorkspaceBody};
 use super::{xy_dims, xy_in_bounds, Robot, Verdict};
 use crate::geometry::{SensorPose, Workspace};
 use crate::math::{Real, Vec2};
+use crate::robot::kinds::{Drawn, Pose, RobotKind};
 use crate::space::{Metric, StateSpace};
 
 /// A point robot; state `[x, y]`.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct PointRobot;
 
+/// The kind's record ([`super::kinds`]).
+pub const KIND: RobotKind = RobotKind {
+    name: "point",
+    label: "Point robot",
+    drawn: Drawn::Point,
+    body: true,
+    sensor: true,
+    cspace: false,
+    course_cost: None,
+    pose: Pose::Position,
+    solution_file: false,
+};
+
 impl Robot for PointRobot {
-    fn kind(&self) -> &'static str {
-        "point"
+    fn caps(&self) -> &'static RobotKind {
+        &KIND
     }
     fn external_dims(&self) -> usize {
         2

@@ -2,6 +2,7 @@ use super::capability::{MotionModel, Sensor, WorkspaceBody};
 use super::{xy_dims, xy_in_bounds, Robot, Verdict};
 use crate::geometry::{SensorPose, Workspace};
 use crate::math::{self, MinMax, Real, Vec2, PI};
+use crate::robot::kinds::{Drawn, Pose, RobotKind};
 use crate::space::{Dim, Metric, StateSpace};
 
 /// The most footprint vertices transformed on the stack; larger footprints use the heap.
@@ -70,9 +71,22 @@ impl RigidRobot {
     }
 }
 
+/// The kind's record ([`super::kinds`]).
+pub const KIND: RobotKind = RobotKind {
+    name: "rigid",
+    label: "Rigid body",
+    drawn: Drawn::Polygon,
+    body: true,
+    sensor: true,
+    cspace: false,
+    course_cost: None,
+    pose: Pose::PositionHeading,
+    solution_file: false,
+};
+
 impl Robot for RigidRobot {
-    fn kind(&self) -> &'static str {
-        "rigid"
+    fn caps(&self) -> &'static RobotKind {
+        &KIND
     }
     fn external_dims(&self) -> usize {
         3

@@ -153,9 +153,13 @@ mod capabilities {
     #[derive(Debug)]
     struct Bare;
 
+    /// Its record: a kind no scenario names.
+    static BARE: crate::robot::kinds::RobotKind =
+        crate::robot::kinds::RobotKind { name: "bare", ..crate::robot::point::KIND };
+
     impl Robot for Bare {
-        fn kind(&self) -> &'static str {
-            "bare"
+        fn caps(&self) -> &'static crate::robot::kinds::RobotKind {
+            &BARE
         }
         fn space(&self, ws: &Workspace) -> StateSpace {
             PointRobot.space(ws)

@@ -9,6 +9,13 @@ import { lattice, defaultCell, cellAt, cellBox, cellsOnSegment, rectMinus, wallP
 import { readFileSync } from 'node:fs';
 import { CellPainter, MAX_OBSTACLES, MAX_TOTAL_VERTICES, MAX_DRAG_CELLS } from '../../www/ui/cell-painter.js';
 import { mulberry32 as rng } from './seeded.mjs';
+import { learn } from '../../www/draw/capabilities.js';
+import { initSync, planners } from '../../www/pkg/planarium.js';
+
+// The painter paints on the lattice of the planner that draws a grid (the registry's capabilities,
+// learnt by the page from its worker; here from the core in Node).
+initSync({ module: readFileSync(new URL('../../www/pkg/planarium_bg.wasm', import.meta.url)) });
+learn({ planners: JSON.parse(planners()) });
 
 const inBox = (b, x, y) => x >= b[0] && x <= b[2] && y >= b[1] && y <= b[3];
 const inOpen = (b, x, y) => x > b[0] && x < b[2] && y > b[1] && y < b[3];

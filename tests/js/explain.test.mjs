@@ -8,6 +8,11 @@ import assert from 'node:assert/strict';
 import { scenarios, runRecords } from './core-runs.mjs';
 import { EventKind as K, STRIDE } from '../../www/run/events.js';
 import { Explainer, pseudocode, optionsOf, num, blockerText } from '../../www/run/explain.js';
+import { learn } from '../../www/draw/capabilities.js';
+import { planners, robot_kinds } from '../../www/pkg/planarium.js';
+
+// The page learns the registry's capabilities from the worker's ready message; here, from the core.
+learn({ planners: JSON.parse(planners()), robotKinds: JSON.parse(robot_kinds()) });
 
 function records(scenario, planner, params, seed) {
   const { out } = runRecords(scenario, planner, params, seed);

@@ -191,3 +191,41 @@ test('a panic in the core is reported as crashed, not swallowed', async () => {
   });
   assert.match(msg, /^crashed: panicked at .*boom from the test/s);
 });
+
+test('ready carries the registry\'s capabilities and the robot kinds; loaded carries what the core decided for the scene', async () => {
+  const got = await page.evaluate(async () => {
+    // a worker of its own (an earlier test made the driver's crash on purpose)
+    const w = new Worker('/worker/worker.js', { type: 'module' });
+    const next = (type) => new Promise((resolve, reject) => {
+      w.onmessage = (e) => { if (e.data.type === type) resolve(e.data); else if (e.data.type === 'invalid' || e.data.type === 'crashed') reject(new Error(JSON.stringify(e.data))); };
+    });
+    const ready = await next('ready');
+    const out = {
+      kinds: ready.robotKinds.map((k) => `${k.name}:${k.drawn}:${k.pose}`),
+      queries: ready.planners.planners.filter((p) => p.caps.queries).map((p) => p.name),
+    };
+    for (const id of ['arm-2', 'arm-3', 'narrow', 'asv-3', 'hex-open']) {
+      const text = JSON.stringify(ready.builtins.find((b) => b.id === id).scenario);
+      const loaded = next('loaded');
+      w.postMessage({ type: 'load', text });
+      const m = await loaded;
+      const c = m.caps;
+      out[id] = { robot: c.robot.name, cspace: c.cspace, optimum: c.optimum, solution_file: c.solution_file, pose: c.pose, grid: !!m.cspace, sent: !!m.optimum };
+    }
+    w.terminate();
+    return out;
+  });
+  assert.deepEqual(got.kinds, ['point:point:position', 'rigid:polygon:position-heading', 'arm:open-chain:joints', 'asv:closed-chain:none']);
+  assert.deepEqual(got.queries, ['prm', 'prm-star', 'lazy-prm']);
+  // the c-space grid and the optimum are sent exactly when the scene's capabilities say so
+  const scene = (robot, cspace, optimum, solution, pose) => ({ robot, cspace, optimum, solution_file: solution, pose, grid: cspace, sent: optimum });
+  for (const [id, want] of Object.entries({
+    'arm-2': scene('arm', true, false, false, 'joints'),
+    'arm-3': scene('arm', false, false, false, 'joints'),
+    narrow: scene('point', false, true, false, 'position'),
+    'asv-3': scene('asv', false, false, true, 'none'),
+    'hex-open': scene('rigid', false, true, false, 'position-heading'),
+  })) {
+    assert.deepEqual(got[id], want, id);
+  }
+});

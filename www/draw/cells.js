@@ -19,6 +19,7 @@
 
 import { EventKind } from '../run/events.js';
 import { PALETTE, STYLE } from './palette.js';
+import { markLegend } from './capabilities.js';
 import { drawObstacle, pointInPolygon } from './transform.js';
 import { CellRaster, SMALL_CELL_PX, smallCell } from './cell-raster.js';
 
@@ -456,25 +457,9 @@ function fillOf(state, label, level, showHeat) {
   return label === 1 ? PALETTE.cellMixed : label === 2 || state === 4 ? PALETTE.cellFull : PALETTE.cellFree[level];
 }
 
-/** Legend items for the planner `name` (marks the overlay box does not show). */
+/** Legend items for the planner `name` (marks the overlay box does not show): its registry's marks. */
 export function cellLegend(name) {
-  if (name === 'grid-search') {
-    return [
-      { label: 'closed cell', color: PALETTE.cellVisited, shape: 'box' },
-      { label: 'open cell', color: PALETTE.cellOpen, shape: 'box' },
-      { label: 'blocked cell', color: PALETTE.cellFull, shape: 'box' },
-    ];
-  }
-  if (name === 'hex-potential') {
-    return [
-      { label: 'visited (closed) cell', color: PALETTE.cellVisited, shape: 'box' },
-      { label: 'open (A*, Dijkstra) or passable cell', color: PALETTE.cellOpen, shape: 'box' },
-      { label: 'step-blocked cell (×)', color: PALETTE.cellBlocked, shape: 'box' },
-      { label: 'later attempts: earlier trees faint', color: PALETTE.tree0, shape: 'line' },
-    ];
-  }
-  if (name === 'potential-field') return [{ label: 'local minimum', color: PALETTE.minimum, shape: 'ring' }];
-  return [];
+  return markLegend(name);
 }
 
 /** What the mirror holds, for tests and the console (window.planarium.cells()). */

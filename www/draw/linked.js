@@ -16,6 +16,7 @@ import { el } from '../ui/dom.js';
 import { PALETTE } from './palette.js';
 import { outlineOf, sensorPose } from './robots.js';
 import { fmt } from './cells.js';
+import { robotCaps } from './capabilities.js';
 
 /** The ghost's colours: free (purple), colliding (red), the crosshair's (purple), casings. */
 // Free is purple, the linked hover's colour (the crosshair's too), not green: the goal arm is green.
@@ -28,9 +29,9 @@ export const GHOST = Object.freeze({
 
 const NEAR_PX = 8; // css px: how close the pointer must be to a pose's end effector
 
-/** Whether `robot` is an arm of two joints (the robots with a c-space view). */
+/** Whether `robot` is an arm of two joints (its kind has a c-space view, and it has two links). */
 export function isArm2(robot) {
-  return robot?.kind === 'arm' && Array.isArray(robot.links) && robot.links.length === 2;
+  return robotCaps(robot).cspace && Array.isArray(robot.links) && robot.links.length === 2;
 }
 
 /** "q1 0.52 (30°), q2 −1.20 (−69°)": joint angles in radians and degrees. */

@@ -5,6 +5,7 @@
 import { EventKind } from '../run/events.js';
 import { PALETTE, STYLE } from './palette.js';
 import { sensorPose } from './robots.js';
+import { isArm2 } from './linked.js';
 
 const FLASH_MS = 600;        // a rewire flashes this long
 
@@ -64,7 +65,7 @@ export function drawSensor(ctx, L, { scenario, model, showResult }, state, best)
     const t = model.trees[model.best.tree];
     const id = model.best.id;
     const [x, y] = best[best.length - 1];
-    if (robot?.kind === 'arm' && robot.links?.length === 2 && t?.known(id)) {
+    if (isArm2(robot) && t?.known(id)) {
       const tip = sensorPose(robot, [t.c0[id], t.c1[id]]);
       if (tip) { wedge(tip); return; }
     }

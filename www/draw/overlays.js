@@ -4,6 +4,7 @@
 
 import { el } from '../ui/dom.js';
 import { OVERLAYS } from './palette.js';
+import { plannerCaps } from './capabilities.js';
 
 /** A legend mark (styled by .swatch in style.css, coloured by --c). */
 export function swatch({ color, shape }) {
@@ -40,31 +41,34 @@ export function createOverlays(root, onChange, { prefix = '' } = {}) {
   return options;
 }
 
-const SAMPLING = new Set(['rrt', 'rrt-connect', 'rrt-star', 'inspection', 'prm', 'prm-star', 'lazy-prm']);
 const CHECKING_SAMPLERS = new Set(['gaussian', 'bridge', 'obstacle']);
+
+/** The overlays a planner offers by its registry's `caps.overlays` keys (the rest follow its sampler). */
+export const OFFERED = Object.freeze({
+  showRewires: 'rewires', showBest: 'best', showSeen: 'seen', showFov: 'fov', showCells: 'cells',
+  showRegion: 'region', showDensity: 'density', showHeat: 'heat', showArrows: 'arrows',
+});
 
 /**
  * Whether overlay `option` can show anything for `context` = {config: {planner, params}, robot,
- * inspection}: sampling overlays for the sampling planners, the tree variants' when they are on,
- * cells and fields for the workspace planners, the sensor's for inspection. Unknown: shown.
+ * inspection}, by the planner's capabilities (capabilities.js): sampling overlays for a planner that
+ * takes the sampler, the tree variants' when they are on, the overlays its registry entry offers
+ * (cells and fields for the workspace planners), the sensor's for an inspection scenario too.
+ * Unknown: shown.
  */
 /** @param {string} option @param {{config?: {planner: string, params?: Record<string, any>}, robot?: string, inspection?: boolean}} [context] */
 export function overlayApplies(option, { config, inspection = false } = {}) {
   const planner = config?.planner;
   if (!planner) return true;
   const p = config.params || {};
-  const sampling = SAMPLING.has(planner);
+  const caps = plannerCaps(planner);
+  const sampling = caps.samples;
   switch (option) {
     case 'showAccepted': case 'showRejected': case 'showCollisions': return sampling;
     case 'showTries': return sampling && CHECKING_SAMPLERS.has(p.sampler);
     case 'showDomains': return sampling && Number(p.dd_radius) > 0;
     case 'showExhausted': return sampling && Number(p.exhausted) > 0;
-    case 'showRewires': case 'showBest': return planner === 'rrt-star' || planner === 'inspection';
-    case 'showSeen': case 'showFov': return inspection || planner === 'inspection';
-    case 'showCells': return planner === 'hex-potential' || planner === 'grid-search';
-    case 'showRegion': return planner === 'hex-potential';
-    case 'showDensity': return planner === 'est' || planner === 'bi-est';
-    case 'showHeat': case 'showArrows': return planner === 'hex-potential' || planner === 'potential-field';
-    default: return true;
+    case 'showSeen': case 'showFov': return inspection || caps.overlays.includes(OFFERED[option]);
+    default: return option in OFFERED ? caps.overlays.includes(OFFERED[option]) : true;
   }
 }

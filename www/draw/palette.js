@@ -151,19 +151,3 @@ export const OVERLAYS = Object.freeze([
 
 /** The overlays' default view options. */
 export const OVERLAY_DEFAULTS = Object.freeze(Object.fromEntries(OVERLAYS.map((o) => [o.option, o.on])));
-
-/** What tree 0 and tree 1 are called in the legend, by planner (`default`: two trees). */
-export const TREE_LEGEND = Object.freeze({
-  default: [['tree from the start (tree 0)', PALETTE.tree0], ['tree from the goal (tree 1)', PALETTE.tree1]],
-  'hex-potential': [['search steps, cell to cell', PALETTE.tree0]],
-  'potential-field': [['descent steps', PALETTE.tree0], ['random-walk steps', PALETTE.tree1]],
-  rrt: [['tree', PALETTE.tree0]],
-  est: [['tree', PALETTE.tree0]],
-  'rrt-star': [['tree', PALETTE.tree0]],
-  inspection: [['tree', PALETTE.tree0]],
-  prm: [['roadmap: milestones, checked edges', PALETTE.tree0], ["search's latest path", PALETTE.queryPath]],
-  'prm-star': [['roadmap: milestones, checked edges', PALETTE.tree0], ["search's latest path", PALETTE.queryPath]],
-  'lazy-prm': [['milestones, edges checked valid', PALETTE.tree0], ['unchecked edge', PALETTE.roadmapUnchecked],
-    ['edge checked: blocked', PALETTE.roadmapInvalid], ["search's latest path", PALETTE.queryPath]],
-  'visibility-graph': [['A* search tree', PALETTE.tree0], ['visibility-graph edge', PALETTE.graphEdge]],
-});

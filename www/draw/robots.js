@@ -1,13 +1,16 @@
-// Each robot kind drawn as itself, from the outlines the core sends (a flat list of polygons or
-// polylines, see transform.js parseOutline) and the scenario state:
-//   point  a dot at (x, y) (no outline);
-//   rigid  closed polygons, filled;
-//   arm    ONE open polyline: base, every joint, then the end effector (and, for the horn chain, a
-//          tiny tip point): thick segments, joint dots, the base as a small square;
-//   asv    ONE polyline of the vehicles in chain order: brooms solid, the closing edge (last
-//          vehicle back to the first) dashed, vehicles as dots.
+// Each robot drawn as its kind's record says (the core's robot kinds, `drawn`, mapped to a drawing by
+// capabilities.js), from the outlines the core sends (a flat list of polygons or polylines, see
+// transform.js parseOutline) and the scenario state:
+//   dot       a dot at (x, y) (no outline: a point robot);
+//   polygons  closed polygons, filled (a rigid body);
+//   linkage   ONE open polyline: base, every joint, then the end effector (and, for the horn chain, a
+//             tiny tip point): thick segments, joint dots, the base as a small square;
+//   chain     ONE closed chain, the vehicles in chain order (a vehicle chain): brooms solid, the
+//             closing edge (last vehicle back to the first) dashed, vehicles as dots.
 // outlineOf() computes the same outlines in JS, only to preview a start or goal being dragged
 // (the core's outline replaces it once the edited scenario has loaded).
+
+import { robotDrawing } from './capabilities.js';
 
 /** How a robot is drawn: the start, the goal, or the animated robot. */
 export function robotStyle(color, role, palette) {
@@ -18,9 +21,12 @@ export function robotStyle(color, role, palette) {
   return { line: color, fill: color, alpha: 0.45, stroke: color, strokeWidth: 2, edge: palette.robotEdge, width: 5, dot: 6 };
 }
 
-/** Draw a robot of `robot.kind` with outline `polys` (arrays of x, y, x, y, ...) at `state`. */
+/**
+ * Draw a robot with outline `polys` (arrays of x, y, x, y, ...) at `state`, as its kind's record
+ * says it is drawn (capabilities.js: a dot, polygons, an arm's open chain, a closed chain).
+ */
 export function drawRobotShape(ctx, L, robot, polys, state, st) {
-  const kind = robot ? robot.kind : 'point';
+  const drawing = robotDrawing(robot);
   if (!polys || !polys.length) {
     if (!state || state.length < 2) return;
     ctx.beginPath();
@@ -32,8 +38,8 @@ export function drawRobotShape(ctx, L, robot, polys, state, st) {
     ctx.stroke();
     return;
   }
-  if (kind === 'arm') drawArm(ctx, L, polys[0], st);
-  else if (kind === 'asv') drawChain(ctx, L, polys[0], st);
+  if (drawing === 'linkage') drawArm(ctx, L, polys[0], st);
+  else if (drawing === 'chain') drawChain(ctx, L, polys[0], st);
   else drawPolygons(ctx, L, polys, st);
 }
 
@@ -163,15 +169,16 @@ export function drawInspection(ctx, L, points, fill, edge, seen = null, lit = nu
 /**
  * Where the inspection sensor is and where it looks, for `robot` at scenario state `q`:
  * {x, y, heading} (heading in radians from the x axis, null when the robot has none).
- *   arm    the end effector (the last link's end; joint angles are relative to the previous link,
- *          the first to the x axis, so the heading is their sum);
- *   rigid  the reference point, heading θ;
- *   point  the point, no heading; asv: the vehicles' centroid, no heading.
+ * by how the robot is drawn (capabilities.js):
+ *   linkage  the end effector (the last link's end; joint angles are relative to the previous link,
+ *            the first to the x axis, so the heading is their sum);
+ *   polygons the reference point, heading θ;
+ *   dot      the point, no heading; chain: the vehicles' centroid, no heading.
  */
 export function sensorPose(robot, q) {
   if (!q || q.length < 2) return null;
-  switch (robot?.kind) {
-    case 'arm': {
+  switch (robotDrawing(robot)) {
+    case 'linkage': {
       if (!robot.links || q.length < robot.links.length) return null;
       let [x, y] = robot.base || [0, 0];
       let a = 0;
@@ -182,9 +189,9 @@ export function sensorPose(robot, q) {
       });
       return { x, y, heading: a };
     }
-    case 'rigid':
+    case 'polygons':
       return { x: q[0], y: q[1], heading: q.length > 2 ? q[2] : null };
-    case 'asv': {
+    case 'chain': {
       let x = 0, y = 0;
       const n = Math.floor(q.length / 2);
       for (let i = 0; i < n; i++) { x += q[2 * i]; y += q[2 * i + 1]; }
@@ -198,13 +205,13 @@ export function sensorPose(robot, q) {
 /** The outline of `robot` at scenario state `q`, as the core would give it (for previews). */
 export function outlineOf(robot, q) {
   if (!robot || !q) return [];
-  switch (robot.kind) {
-    case 'rigid': {
+  switch (robotDrawing(robot)) {
+    case 'polygons': {
       const [x, y, th] = q;
       const c = Math.cos(th), s = Math.sin(th);
       return [robot.footprint.flatMap(([u, v]) => [x + c * u - s * v, y + s * u + c * v])];
     }
-    case 'arm': {
+    case 'linkage': {
       let [x, y] = robot.base;
       let a = 0;
       const out = [x, y];
@@ -216,7 +223,7 @@ export function outlineOf(robot, q) {
       });
       return [out];
     }
-    case 'asv':
+    case 'chain':
       return [Array.from(q)];
     default:
       return [];
@@ -225,6 +232,6 @@ export function outlineOf(robot, q) {
 
 /** The farthest footprint vertex from the reference point (a rigid body's radius). */
 export function footprintRadius(robot) {
-  if (!robot || robot.kind !== 'rigid') return 0;
+  if (!robot || robotDrawing(robot) !== 'polygons') return 0;
   return Math.max(0, ...robot.footprint.map(([u, v]) => Math.hypot(u, v)));
 }

@@ -22,7 +22,8 @@
 
 import { EventKind, STRIDE } from '../run/events.js';
 import { footprintRadius } from './robots.js';
-import { PALETTE, STYLE, OVERLAY_DEFAULTS, TREE_LEGEND } from './palette.js';
+import { PALETTE, STYLE, OVERLAY_DEFAULTS } from './palette.js';
+import { dragsHeading, robotDrawing, treeLegend } from './capabilities.js';
 import { Layout, parseOutline, parseFrames, makeLayer, drawExhausted } from './transform.js';
 import { CellsDrawing } from './cells.js';
 import { addQueryEdge, drawGraphEdges, drawRoadmap } from './graphs.js';
@@ -157,13 +158,14 @@ export class View {
     this.frames = parseFrames(frames);
     this.rawFrames = parseFrames(rawFrames);
     const solved = !!(result && result.solved);
-    if (this.scenario?.robot?.kind === 'arm') {
+    const drawing = robotDrawing(this.scenario?.robot);
+    if (drawing === 'linkage') {
       // the path as the end effector traces it (the last point of the arm's polyline)
       const tip = (list) => list.filter((f) => f.polys.length && f.polys[0].length >= 2)
         .map(({ polys: [p] }) => [p[p.length - 2], p[p.length - 1]]);
       this.path = solved ? tip(this.rawFrames) : null;
       this.smoothed = solved ? tip(this.frames) : null;
-    } else if (this.scenario?.robot?.kind === 'asv') { // the chain's centroid, where its tree is drawn
+    } else if (drawing === 'chain') { // the chain's centroid, where its tree is drawn
       const mid = (states) => (states || []).map((s) => {
         let x = 0, y = 0;
         for (let i = 0; i + 1 < s.length; i += 2) { x += s[i]; y += s[i + 1]; }
@@ -395,7 +397,7 @@ export class View {
   /** Screen position (device px) of a rigid body's rotation handle, or null. */
   handlePoint(which) {
     const q = this.stateOf(which);
-    if (!this.layout || !q || this.scenario.robot?.kind !== 'rigid') return null;
+    if (!this.layout || !q || !dragsHeading(this.scenario.robot)) return null;
     const L = this.layout;
     const r = footprintRadius(this.scenario.robot) * L.scale + L.px(14);
     return { x: L.sx(q[0]) + r * Math.cos(q[2]), y: L.sy(q[1]) - r * Math.sin(q[2]), cx: L.sx(q[0]), cy: L.sy(q[1]) };
@@ -404,15 +406,14 @@ export class View {
   /**
    * [{label, color, shape}] for the legend under the canvas, from the palette and style table
    * (the switchable overlays have their own marks in the overlay box). The trees are named for
-   * the planner `name` when it is given (what tree 0 and tree 1 mean differs).
+   * the planner `name` when it is given (what tree 0 and tree 1 mean differs: the registry's legend).
    */
   legend(name = null) {
-    const trees = TREE_LEGEND[name] ?? TREE_LEGEND.default;
     const items = [
       { label: 'obstacle', color: PALETTE.obstacle, shape: 'box' },
       { label: 'start', color: PALETTE.start, shape: 'box' },
       { label: 'goal', color: PALETTE.goal, shape: 'box' },
-      ...trees.map(([label, color]) => ({ label, color, shape: 'line' })),
+      ...treeLegend(name),
       { label: 'raw path', color: PALETTE.rawPath, shape: 'dash' },
       { label: 'smoothed path', color: PALETTE.smoothPath, shape: 'thick' },
       { label: 'robot', color: PALETTE.robot, shape: 'box' },

@@ -22,7 +22,7 @@ import { createPanel, taskOf } from '../ui/panel.js';
 import { Playback } from '../run/playback.js';
 import { Chart } from '../draw/chart.js';
 import { Player } from '../run/player.js';
-import { wireRoadmapQuery, ROADMAP_PLANNERS } from '../ui/roadmap-query.js';
+import { wireRoadmapQuery, answersQueries } from '../ui/roadmap-query.js';
 import { createStats } from '../ui/stats.js';
 import { createOverlays } from '../draw/overlays.js';
 import { cellLegend, cellSummary } from '../draw/cells.js';
@@ -39,6 +39,7 @@ import { OVERLAYS } from '../draw/palette.js';
 import { applyPageLimits } from '../run/limits.js';
 import { shown } from '../ui/text.js';
 import { ScenarioSource } from '../run/scenario-source.js';
+import { dragsPosition } from '../draw/capabilities.js';
 
 /**
  * The page's element `id`. Its kind is the HTML's (input, select, button, canvas, dialog…), so it
@@ -75,6 +76,7 @@ let builtins = [];
 // link carries a built-in's id, else its text) and a link's state waiting for its scenario.
 const src = new ScenarioSource({ matchBuiltins: true });
 let loaded = null;       // the latest `loaded` message's scenario
+let loadedCaps = null;   // and what the core decided for it (scene_caps: solution file, c-space view, pose)
 let optimum = null;      // its shortest path's cost when that is the robot's optimum (the cost chart's line)
 
 const player = new Player({
@@ -286,8 +288,9 @@ const markCustom = (label) => markCustomScenario(ui.scenario, label);
 // Display
 
 /** @param {import('../run/messages.js').LoadedReply} msg */
-function showScenario({ scenario, start, goal, space, cspace: grid, optimum: best }) {
+function showScenario({ scenario, start, goal, space, cspace: grid, optimum: best, caps }) {
   loaded = scenario;
+  loadedCaps = caps || null;
   optimum = best && best.exact && Number.isFinite(best.cost) ? best.cost : null;
   ui.course.textContent = src.course;
   ui.name.textContent = shown(scenario.name || 'Untitled scenario');
@@ -307,6 +310,7 @@ function showInvalid(error, edit) {
   lane.clearRun();
   if (!edit) { // an edit keeps the scene on screen, so the start or goal can be dragged back
     loaded = null;
+    loadedCaps = null;
     optimum = null;
     ui.course.textContent = '';
     ui.name.textContent = 'No valid scenario';
@@ -403,15 +407,15 @@ wireExports({
 });
 
 function syncDownload() {
-  ui.download.hidden = !(loaded?.robot?.kind === 'asv' && lane.result?.solved && controller.state === 'finished');
+  ui.download.hidden = !(loadedCaps?.solution_file && lane.result?.solved && controller.state === 'finished');
   roadmapQuery.sync();
 }
 
 // More queries on a finished roadmap run (roadmap-query.js): two clicks, the same roadmap
 const roadmapQuery = wireRoadmapQuery({
   button: $('query-button'), status: $('query-status'), canvas: ui.canvas, view, lane, scenario: () => loaded,
-  applies: () => ROADMAP_PLANNERS.has(panel?.planner()?.name) && controller.state === 'finished' && !!lane.result
-    && (loaded?.robot?.kind === 'point' || loaded?.robot?.kind === 'rigid'),
+  applies: () => answersQueries(panel?.planner()?.name) && controller.state === 'finished' && !!lane.result
+    && dragsPosition(loaded?.robot),
 });
 
 ui.download.addEventListener('click', () => { if (lane.session.alive && lane.result?.solved) lane.session.send({ type: 'asv-solution' }); });

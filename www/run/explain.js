@@ -1,4 +1,4 @@
-// The explain panel's model: each planner's pseudocode, and a reader of the event stream that says,
+// The explain panel's model: each planner's pseudocode (pseudocode.js), and a reader of the event stream that says,
 // for every event, which line of it the planner was on and what happened, in words ("sample
 // (0.31, 0.72) → nearest #52 at 0.41 → step 0.28 → blocked by obstacle 3"). Everything it says
 // comes from the records the core emitted (src/events.rs), so it is true by construction: the
@@ -7,234 +7,14 @@
 // each planner and check line and caption against the events.
 
 import { EventKind as K, STRIDE } from './events.js';
+import { plannerCaps, planeIsWorkspace } from '../draw/capabilities.js';
+import { PSEUDOCODE, complete } from './pseudocode.js';
 
 /**
- * @typedef {{id: string, text: string, indent?: number, when?: (o: Options) => boolean}} Line
- * @typedef {{sampler?: string, goalBias?: number, share?: boolean, connect?: boolean, domain?: boolean, exhausted?: boolean,
- *   weighted?: boolean, ladder?: boolean, escape?: string, vertices?: boolean, search?: string}} Options
- * @typedef {{title: string, lines: Line[]}} Pseudocode
+ * @typedef {import('./pseudocode.js').Options} Options
  */
 
-const descent = (o) => !o.search || o.search === 'descent'; // hex-potential: the report's search
-const complete = (o) => !descent(o); // hex-potential: A* or Dijkstra over the same cells
-const sampled = (o) => o.goalBias === undefined || o.goalBias > 0; // unset: the planner's default, which may bias
-const SAMPLER_LINES = /** @type {Line[]} */ ([
-  { id: 'goal', text: 'with probability goal_bias: q_rand ← q_goal', indent: 2, when: sampled },
-  { id: 'share', text: 'else with probability uniform_share: q_rand ← a plain uniform draw', indent: 2, when: (o) => !!o.share },
-  { id: 'try', text: 'SAMPLE(): uniform draws, checked', indent: 2, when: (o) => !!o.sampler && o.sampler !== 'uniform' && o.sampler !== 'goal-biased' },
-]);
-
-// The ladder move's line, under a step's check (RRT and RRT-Connect's `ladder` parameter).
-const LADDER = /** @type {Line} */ ({
-  id: 'ladder',
-  text: 'else try up to L steps moving a random half of the coordinates (ladder); the first free one becomes q_new',
-  when: (o) => !!o.ladder,
-});
-
-// The tree variants' lines, under NEAREST (RRT and RRT-Connect grow with them).
-const VARIANT_LINES = /** @type {Line[]} */ ([
-  { id: 'exhausted', text: 'skip nodes that failed too often (exhausted)', indent: 2, when: (o) => !!o.exhausted },
-  { id: 'domain', text: 'if d > r(q_near): reject (dynamic domain)', indent: 2, when: (o) => !!o.domain },
-]);
-
-/** @type {Record<string, Pseudocode>} */
-export const PSEUDOCODE = {
-  rrt: {
-    title: 'RRT (LaValle 1998)',
-    lines: [
-      { id: 'init', text: 'T ← {q_start}' },
-      { id: 'loop', text: 'repeat' },
-      { id: 'sample', text: 'q_rand ← SAMPLE()', indent: 1 },
-      ...SAMPLER_LINES,
-      { id: 'nearest', text: 'q_near ← NEAREST(T, q_rand)', indent: 1 },
-      ...VARIANT_LINES,
-      { id: 'steer', text: 'q_new ← STEER(q_near, q_rand, range)', indent: 1 },
-      { id: 'check', text: 'if not MOTION_FREE(q_near, q_new): reject', indent: 1 },
-      { ...LADDER, indent: 2 },
-      { id: 'add', text: 'T ← T ∪ {q_new}, parent(q_new) ← q_near', indent: 1 },
-      { id: 'connect', text: 'connect: steer again toward q_rand until reached or blocked', indent: 2, when: (o) => !!o.connect },
-      { id: 'goal-check', text: 'if dist(q_new, q_goal) ≤ tolerance: return PATH(q_new)', indent: 1 },
-    ],
-  },
-  'rrt-connect': {
-    title: 'RRT-Connect (Kuffner & LaValle 2000)',
-    lines: [
-      { id: 'init', text: 'T_a ← {q_start}, T_b ← {q_goal}' },
-      { id: 'loop', text: 'repeat' },
-      { id: 'sample', text: 'q_rand ← SAMPLE()', indent: 1 },
-      ...SAMPLER_LINES,
-      { id: 'nearest', text: 'EXTEND(T_a, q_rand): q_near ← NEAREST(T_a, q_rand)', indent: 1 },
-      ...VARIANT_LINES,
-      { id: 'steer', text: 'q_new ← STEER(q_near, q_rand, range)', indent: 2 },
-      { id: 'check', text: 'if not MOTION_FREE(q_near, q_new): reject', indent: 2 },
-      { ...LADDER, indent: 3 },
-      { id: 'add', text: 'add q_new to T_a', indent: 2 },
-      { id: 'c-nearest', text: 'CONNECT(T_b, q_new): q_near ← NEAREST(T_b, q_new)', indent: 1 },
-      { id: 'c-steer', text: 'repeat: q ← STEER(q_near, q_new, range)', indent: 2 },
-      { id: 'c-check', text: 'until blocked: MOTION_FREE fails', indent: 2 },
-      { ...LADDER, id: 'c-ladder', text: 'else try up to L steps moving a random half of the coordinates (ladder): add the first free one, and stop', indent: 3 },
-      { id: 'c-add', text: 'add q to T_b', indent: 2 },
-      { id: 'met', text: 'if q = q_new: the trees meet: return PATH', indent: 1 },
-      { id: 'swap', text: 'swap T_a and T_b', indent: 1 },
-    ],
-  },
-  'rrt-star': {
-    title: 'RRT* (Karaman & Frazzoli 2011)',
-    lines: [
-      { id: 'init', text: 'T ← {q_start}' },
-      { id: 'loop', text: 'repeat' },
-      { id: 'sample', text: 'q_rand ← SAMPLE()', indent: 1 },
-      ...SAMPLER_LINES,
-      { id: 'nearest', text: 'q_near ← NEAREST(T, q_rand)', indent: 1 },
-      { id: 'steer', text: 'q_new ← STEER(q_near, q_rand, range)', indent: 1 },
-      { id: 'check', text: 'if not MOTION_FREE(q_near, q_new): reject', indent: 1 },
-      { id: 'add', text: 'Q_near ← NEAR(T, q_new); parent ← cheapest valid in Q_near', indent: 1 },
-      { id: 'rewire', text: 'REWIRE: for q in Q_near cheaper through q_new: parent(q) ← q_new', indent: 1 },
-      { id: 'cost', text: 'if a goal node got cheaper: best ← its cost', indent: 1 },
-      { id: 'goal-check', text: 'return the best path when time or iterations run out', indent: 1 },
-    ],
-  },
-  inspection: {
-    title: 'Inspection planning (IRIS-style tree, Technion course)',
-    lines: [
-      { id: 'init', text: 'T ← {q_start}, seen(q_start) ← S(q_start)' },
-      { id: 'loop', text: 'repeat' },
-      { id: 'sample', text: 'q_rand ← SAMPLE()', indent: 1 },
-      ...SAMPLER_LINES,
-      { id: 'nearest', text: 'q_src ← the node chosen to grow toward q_rand', indent: 1 },
-      { id: 'steer', text: 'q_new ← STEER(q_src, q_rand, range)', indent: 1 },
-      { id: 'check', text: 'if not MOTION_FREE(q_src, q_new): reject', indent: 1 },
-      { id: 'add', text: 'parent ← the near node through which q_new sees most', indent: 1 },
-      { id: 'seen', text: 'seen(q_new) ← seen(parent) ∪ points seen on the way', indent: 1, when: (o) => !o.vertices },
-      { id: 'seen', text: 'seen(q_new) ← seen(parent) ∪ points seen at q_new (the course counts vertices only)', indent: 1, when: (o) => !!o.vertices },
-      { id: 'rewire', text: 'rewire near nodes that see more (or as much, cheaper) through q_new', indent: 1 },
-      { id: 'cost', text: 'if |seen(q_new)| beats the best branch: best ← q_new', indent: 1 },
-      { id: 'goal-check', text: 'when coverage ≥ target: return PATH(best)', indent: 1 },
-    ],
-  },
-  'hex-potential': {
-    title: 'Hexagonal decomposition + potential fields (report 002)',
-    lines: [
-      { id: 'cells', text: 'tile the map with hexagons; split mixed cells, level by level' },
-      { id: 'region', text: 'region ← a disc of influence around the start', when: descent },
-      { id: 'field', text: 'potential of each free cell in the region (heat map)', indent: 1, when: descent },
-      { id: 'loop', text: 'repeat from the robot\'s cell', when: descent },
-      { id: 'judge', text: 'test the step to each neighbouring free cell', indent: 1, when: descent },
-      { id: 'potential', text: 'U = repulsion + trap term − C(1 − k2·α) for each passable one', indent: 1, when: descent },
-      { id: 'add', text: 'step to the lowest U; mark the cell left visited', indent: 1, when: descent },
-      { id: 'grow', text: 'stuck: double the region and start again', indent: 1, when: descent },
-      { id: 'goal-check', text: 'goal cell in reach and its step is free: done', indent: 1, when: descent },
-      { id: 'open', text: 'open ← {start}, g(start) = 0 (the region plays no part)', when: complete },
-      { id: 'close', text: 'close the open cell of least g + h (A*: h = distance to the goal; Dijkstra: h = 0)', when: complete },
-      { id: 'judge', text: 'test the step to each neighbouring free cell; open it if the way through here is shorter', indent: 1, when: complete },
-      { id: 'goal-check', text: 'goal cell in reach and its step is free: open the goal', indent: 1, when: complete },
-      { id: 'add', text: 'goal closed: step along its shortest way (none open: no path at this resolution)', when: complete },
-    ],
-  },
-  'grid-search': {
-    title: 'Grid search: A*, Dijkstra, breadth-first, wavefront (PathFinding.js\'s choices)',
-    lines: [
-      { id: 'cells', text: 'cut the map into square cells; a cell an obstacle touches is blocked' },
-      { id: 'open', text: 'open ← {start}, g(start) = 0', when: (o) => o.search !== 'wavefront' },
-      { id: 'open', text: 'wave ← {goal}: number the cells by moves from the goal', when: (o) => o.search === 'wavefront' },
-      { id: 'close', text: 'close the open cell of least key (A*: g + weight·h; Dijkstra: g; BFS and wave: moves)' },
-      { id: 'judge', text: 'each neighbour (8 without crossing corners, or 4): open it if the way through here is shorter', indent: 1 },
-      { id: 'goal-check', text: 'the far end in reach and the motion to it free: open it', indent: 1 },
-      { id: 'add', text: 'far end closed: walk its way (the wave: down the numbers from the start)' },
-    ],
-  },
-  est: {
-    title: 'EST: expansive-space tree (Hsu, Latombe & Motwani 1997; the grid form of OMPL)',
-    lines: [
-      { id: 'init', text: 'T ← {q_start}; each node filed in a cell of a grid over the map' },
-      { id: 'loop', text: 'repeat' },
-      { id: 'select', text: 'pick a cell with probability ∝ 1 / (its nodes), then a node q of it', indent: 1 },
-      { id: 'goal', text: 'with probability goal_bias: q_new ← q_goal', indent: 1, when: sampled },
-      { id: 'sample', text: 'q_new ← a random state within range of q (each coordinate)', indent: 1 },
-      { id: 'check', text: 'the motion q → q_new blocked: next iteration', indent: 1 },
-      { id: 'add', text: 'add q_new under q; file it in its cell', indent: 1 },
-      { id: 'goal-check', text: 'q_goal within range and the motion to it is free: done', indent: 1 },
-    ],
-  },
-  'bi-est': {
-    title: 'Bidirectional EST (two ESTs taking turns, as OMPL\'s BiEST)',
-    lines: [
-      { id: 'init', text: 'T_a ← {q_start}, T_b ← {q_goal}; nodes filed in grid cells' },
-      { id: 'loop', text: 'repeat, T_a and T_b taking turns' },
-      { id: 'select', text: 'pick a cell of T_a with probability ∝ 1 / (its nodes), then a node q of it', indent: 1 },
-      { id: 'sample', text: 'q_new ← a random state within range of q (each coordinate)', indent: 1 },
-      { id: 'check', text: 'a motion blocked: next iteration', indent: 1 },
-      { id: 'add', text: 'add q_new under q; file it in its cell', indent: 1 },
-      { id: 'met', text: 'T_b\'s nearest node within range and the motion free: the trees meet, done', indent: 1 },
-    ],
-  },
-  'visibility-graph': {
-    title: 'Visibility graph + A* (Lozano-Pérez & Wesley 1979)',
-    lines: [
-      { id: 'init', text: 'grow the obstacles by the robot\'s disc (and a margin); V ← {q_start, q_goal} ∪ convex corners' },
-      { id: 'loop', text: 'for each pair (u, v) tangent at both ends' },
-      { id: 'edge', text: 'if the segment u v crosses no grown interior: E ← E ∪ {u v}', indent: 1 },
-      { id: 'add', text: 'A*: settle the open vertex of least g + |v − q_goal|, parent ← its best neighbour' },
-      { id: 'cost', text: 'q_goal settled: its g is the shortest cost' },
-      { id: 'goal-check', text: 'check the path with MOTION_FREE and return it' },
-    ],
-  },
-  'potential-field': {
-    title: 'Artificial potential field (Khatib 1986; escapes: Barraquand & Latombe 1991)',
-    lines: [
-      { id: 'field', text: 'U(q) = U_att(q) + U_rep(q) (heat map)' },
-      { id: 'loop', text: 'repeat' },
-      { id: 'add', text: 'q ← q − step · ∇U / |∇U| (halved while the motion collides)', indent: 1 },
-      { id: 'minimum', text: 'no progress over the window: a local minimum', indent: 1 },
-      { id: 'walk', text: 'escape: a random walk, then descend again', indent: 2, when: (o) => o.escape !== 'give-up' },
-      { id: 'goal-check', text: 'goal within a step and the motion is free: done', indent: 1 },
-    ],
-  },
-};
-
-// The roadmaps (src/planners/roadmap/): one milestone per iteration, then a query when it changed.
-const ROADMAP_HEAD = /** @type {Line[]} */ ([
-  { id: 'init', text: 'V ← {q_start, q_goal}, E ← ∅' },
-  { id: 'loop', text: 'repeat' },
-  { id: 'sample', text: 'q ← SAMPLE()', indent: 1 },
-  ...SAMPLER_LINES,
-  { id: 'valid', text: 'if not VALID(q): reject', indent: 1 },
-  { id: 'add', text: 'V ← V ∪ {q} (a milestone)', indent: 1 },
-]);
-const EAGER_TAIL = /** @type {Line[]} */ ([
-  { id: 'check', text: "if MOTION_FREE(q, q'): E ← E ∪ {(q, q')}", indent: 2 },
-  { id: 'query', text: 'if q_start and q_goal share a component: return A*(q_start, q_goal) over (V, E)', indent: 1 },
-]);
-PSEUDOCODE.prm = {
-  title: 'PRM (Kavraki, Švestka, Latombe & Overmars 1996)',
-  lines: [...ROADMAP_HEAD, { id: 'near', text: "for q' in the k nearest of q (or those within the radius):", indent: 1 }, ...EAGER_TAIL],
-};
-PSEUDOCODE['prm-star'] = {
-  title: 'PRM* (Karaman & Frazzoli 2011)',
-  lines: [...ROADMAP_HEAD, { id: 'near', text: "for q' in the k(n) = ⌈e(1 + 1/d)·ln n⌉ nearest of q (or within r(n)):", indent: 1 },
-    EAGER_TAIL[0],
-    { id: 'query', text: 'if q_start and q_goal share a component: path ← A*(q_start, q_goal) over (V, E)', indent: 1 },
-    { id: 'cost', text: 'if cost(path) < best: best ← path; improve_for milestones after the first, return best', indent: 2 }],
-};
-PSEUDOCODE['lazy-prm'] = {
-  title: 'Lazy PRM (Bohlin & Kavraki 2000)',
-  lines: [
-    ...ROADMAP_HEAD,
-    { id: 'edge', text: "for q' in the k nearest of q: E ← E ∪ {(q, q')}, unchecked", indent: 1 },
-    { id: 'query', text: 'while q_start and q_goal share a component:', indent: 1 },
-    { id: 'search', text: 'path ← A*(q_start, q_goal) over (V, E)', indent: 2 },
-    { id: 'lazy-check', text: 'check its unchecked edges in order; a blocked one leaves E: search again', indent: 2 },
-    { id: 'goal-check', text: 'every edge free: return path', indent: 2 },
-  ],
-};
-const ROADMAPS = new Set(['prm', 'prm-star', 'lazy-prm']);
-
-/** The pseudocode of `planner` with only the lines `options` apply (null for an unknown planner). */
-export function pseudocode(planner, options = {}) {
-  const p = PSEUDOCODE[planner];
-  if (!p) return null;
-  return { title: p.title, lines: p.lines.filter((l) => !l.when || l.when(options)) };
-}
+export { pseudocode, PSEUDOCODE } from './pseudocode.js';
 
 const NARROW_SAMPLERS = ['gaussian', 'bridge', 'obstacle', 'near-collision'];
 
@@ -275,9 +55,7 @@ export function blockerText(id) {
 }
 
 const HEX_WHY = ['', 'an obstacle vertex in the t/2 circle', 'a vertex in the swept rectangle', 'an obstacle edge crossing the region', 'the map\'s edge'];
-const TWO_TREES = new Set(['rrt-connect', 'bi-est']);
-const TREE_NAME = (planner, tree) => (TWO_TREES.has(planner) ? (tree === 0 ? 'start tree' : 'goal tree') : 'tree');
-const EST = new Set(['est', 'bi-est']);
+const TREE_NAME = (planner, tree) => (plannerCaps(planner).trees === 2 ? (tree === 0 ? 'start tree' : 'goal tree') : 'tree');
 
 /**
  * Reads records one at a time and keeps what the current step has said: the line, the caption
@@ -286,13 +64,31 @@ const EST = new Set(['est', 'bi-est']);
  */
 export class Explainer {
   /**
-   * `planner`: the registry name; `robot`: the scenario's robot kind ('point' draws the range);
-   * `options`: what `optionsOf` reads from the set-up (hex-potential's search).
+   * `planner`: the registry name; `robot`: the scenario's robot kind (one whose planning space is
+   * the plane has its range drawn); `options`: what `optionsOf` reads from the set-up (hex-potential's
+   * search). What the planner does is read from its capabilities (capabilities.js) and the lines of
+   * its pseudocode, never from its name.
    */
-  constructor(planner = 'rrt', robot = 'point', options = /** @type {Options} */ ({})) {
+  constructor(planner = '', robot = '', options = /** @type {Options} */ ({})) {
     this.planner = planner;
     this.robot = robot;
-    this.complete = (planner === 'hex-potential' && complete(options)) || planner === 'grid-search';
+    const caps = plannerCaps(planner);
+    const code = PSEUDOCODE[caps.pseudocode];
+    const has = (id) => !!code?.lines.some((l) => l.id === id);
+    this.twoTrees = caps.trees === 2;
+    this.roadmap = caps.draws === 'roadmap';
+    this.density = caps.events.includes('SELECT');      // EST: a step starts by picking a node
+    this.connects = has('c-nearest');                    // RRT-Connect's CONNECT
+    this.extendConnects = has('connect');                // RRT's extend = connect
+    this.lazy = has('lazy-check');                       // Lazy PRM: edges checked on the path
+    this.choosesParent = !!code?.choosesParent;          // RRT*: the cheapest neighbour is the parent
+    this.grid = caps.draws === 'grid';
+    this.cells = caps.family === 'cells';
+    this.exact = caps.draws === 'exact-graph';
+    this.field = caps.family === 'field';
+    this.stepStart = caps.samples || this.density;       // readStore: steps begin at a SAMPLE or SELECT
+    this.rangeDrawn = planeIsWorkspace(robot);
+    this.complete = (caps.draws === 'cells' && complete(options)) || this.grid;
     this.reset();
   }
 
@@ -341,7 +137,7 @@ export class Explainer {
         this.line = 'select';
         break;
       case K.SAMPLE: {
-        if (EST.has(this.planner)) {
+        if (this.density) {
           this.then(id === 1 ? `sample q_goal ${pt(x, y)} (goal bias)` : `sample ${pt(x, y)} within range of it`);
           A.sample = [x, y];
           this.line = id === 1 ? 'goal' : 'sample';
@@ -353,12 +149,12 @@ export class Explainer {
         if (tries) this.actors.tries = tries;
         this.actors.sample = [x, y];
         this.line = id === 1 ? 'goal' : id === 2 ? 'share' : 'sample';
-        if (this.planner === 'rrt-connect') this.parts[0] += ` for the ${TREE_NAME(this.planner, tree)}`;
+        if (this.connects) this.parts[0] += ` for the ${TREE_NAME(this.planner, tree)}`;
         break;
       }
       case K.NEAREST: {
         const toSample = pc0 === 1;
-        if (!toSample && this.planner === 'rrt-connect') {
+        if (!toSample && this.connects) {
           if (!this.connecting) {
             const sample = A.sample;
             this.begin(`CONNECT the ${TREE_NAME(this.planner, tree)} toward ${pt(px, py)}`);
@@ -377,7 +173,7 @@ export class Explainer {
         N.collision = undefined;
         N.blocked = false;
         if (!toSample) N.sample ||= [px, py];
-        this.line = this.connecting ? 'c-nearest' : toSample || this.planner !== 'rrt' ? 'nearest' : 'connect';
+        this.line = this.connecting ? 'c-nearest' : toSample || !this.extendConnects ? 'nearest' : 'connect';
         break;
       }
       case K.STEER:
@@ -391,18 +187,18 @@ export class Explainer {
         }
         this.then(`step ${num(c0)}${pc0 === 1 ? ' (reaches it)' : ''}`);
         A.edge = [px, py, x, y];
-        if (this.robot === 'point') A.range = [px, py, c1];
+        if (this.rangeDrawn) A.range = [px, py, c1];
         this.line = this.connecting ? 'c-steer' : 'steer';
         break;
       case K.COLLISION:
         this.then(`${blockerText(id)} at ${pt(x, y)}`);
         A.collision = [x, y];
         A.blocked = true;
-        this.line = this.planner === 'lazy-prm' ? 'lazy-check' : this.connecting ? 'c-check' : 'check';
-        if (this.planner === 'bi-est' && this.line === 'check' && A.added) this.line = 'met'; // the join was blocked
+        this.line = this.lazy ? 'lazy-check' : this.connecting ? 'c-check' : 'check';
+        if (this.twoTrees && this.density && this.line === 'check' && A.added) this.line = 'met'; // the join was blocked
         break;
       case K.NODE_ADDED:
-        if (parent < 0 && ROADMAPS.has(this.planner)) {
+        if (parent < 0 && this.roadmap) {
           if (this.line === 'init' && id <= 1) {
             this.begin(`${id === 0 ? 'q_start' : 'q_goal'} ${pt(x, y)} is vertex #${id}`);
             this.line = 'init';
@@ -414,25 +210,25 @@ export class Explainer {
           break;
         }
         if (parent < 0) { this.begin(`the ${TREE_NAME(this.planner, tree)} starts at ${pt(x, y)}`); this.line = 'init'; break; }
-        if (this.planner === 'hex-potential' || this.planner === 'grid-search') {
+        if (this.cells) {
           this.begin(`${this.complete ? 'along the shortest way: step to' : 'step to cell centre'} ${pt(x, y)} (node #${id})`);
           A.edge = [px, py, x, y];
           this.line = 'add';
           break;
         }
-        if (this.planner === 'visibility-graph') {
+        if (this.exact) {
           this.begin(`A* settles ${pt(x, y)} (node #${id}, parent #${parent})`);
           A.edge = [px, py, x, y];
           this.line = 'add';
           break;
         }
-        if (this.planner === 'potential-field') {
+        if (this.field) {
           this.begin(`${tree === 1 ? 'random-walk step' : 'step down the gradient'} to ${pt(x, y)} (node #${id})`);
           A.edge = [px, py, x, y];
           this.line = tree === 1 ? 'walk' : 'add';
           break;
         }
-        if (this.planner === 'rrt-star' && A.nearId !== undefined && parent !== A.nearId) {
+        if (this.choosesParent && A.nearId !== undefined && parent !== A.nearId) {
           this.then(`add #${id} under #${parent} (cheaper than #${A.nearId})`);
         } else {
           this.then(`add #${id} under #${parent}`);
@@ -445,7 +241,7 @@ export class Explainer {
         if (this.line === 'nearest' && A.domain !== null && A.domain !== undefined) {
           this.then(`outside its domain r = ${num(A.domain)}: rejected unchecked`);
           this.line = 'domain';
-        } else if (ROADMAPS.has(this.planner)) {
+        } else if (this.roadmap) {
           this.then('invalid: rejected');
           this.line = 'valid';
         } else {
@@ -459,14 +255,14 @@ export class Explainer {
         this.line = tree === 1 ? 'edge' : 'check';
         break;
       case K.QUERY_PATH:
-        if (tree === 0 || this.line !== (this.planner === 'lazy-prm' ? 'search' : 'query')) {
+        if (tree === 0 || this.line !== (this.lazy ? 'search' : 'query')) {
           this.begin('A* over the roadmap: a path of 1 edge');
           this.pathEdges = 0;
         }
         this.pathEdges++;
         this.parts[0] = `A* over the roadmap: a path of ${this.pathEdges} edge${this.pathEdges > 1 ? 's' : ''}`;
         A.edge = [x, y, px, py];
-        this.line = this.planner === 'lazy-prm' ? 'search' : 'query';
+        this.line = this.lazy ? 'search' : 'query';
         break;
       case K.EDGE_CHECKED:
         this.then(`edge #${id}–#${parent} ${tree === 1 ? 'blocked: removed' : 'checked: free'}`);
@@ -488,7 +284,7 @@ export class Explainer {
         break;
       case K.SOLVED:
         this.then('solved: the path is returned');
-        this.line = TWO_TREES.has(this.planner) ? 'met' : ROADMAPS.has(this.planner) && this.planner !== 'lazy-prm' ? 'query' : 'goal-check';
+        this.line = this.twoTrees ? 'met' : this.roadmap && !this.lazy ? 'query' : 'goal-check';
         break;
       case K.GRAPH_EDGE:
         this.begin(`edge ${pt(x, y)} – ${pt(px, py)}: ${c1 > 0 ? 'clear' : 'blocked'}, length ${num(c0)}`);
@@ -513,7 +309,7 @@ export class Explainer {
         this.line = 'seen';
         break;
       case K.CELL:
-        if (this.planner === 'grid-search') this.begin(`cell #${id} at ${pt(x, y)}: ${px === 0 ? 'free' : 'blocked (an obstacle touches it)'}`);
+        if (this.grid) this.begin(`cell #${id} at ${pt(x, y)}: ${px === 0 ? 'free' : 'blocked (an obstacle touches it)'}`);
         else this.begin(`cell #${id} at level ${tree}: ${['free', 'mixed', 'full'][px] || 'cell'}`);
         A.cell = [x, y];
         this.line = 'cells';
@@ -536,7 +332,7 @@ export class Explainer {
           this.line = 'close';
           break;
         }
-        const verdict = [this.complete ? 'opened (a shorter way)' : 'passable', `blocked: ${this.planner === 'grid-search' ? 'the motion collides' : HEX_WHY[py] || 'the step test failed'}`, 'visited already', 'outside the region', 'an obstacle cell'][px] || 'judged';
+        const verdict = [this.complete ? 'opened (a shorter way)' : 'passable', `blocked: ${this.grid ? 'the motion collides' : HEX_WHY[py] || 'the step test failed'}`, 'visited already', 'outside the region', 'an obstacle cell'][px] || 'judged';
         if (this.line !== 'judge') this.begin(`from cell #${parent}: cell #${id} ${verdict}`);
         else this.then(`#${id} ${verdict}`);
         A.cell = [x, y];
@@ -573,8 +369,8 @@ export class Explainer {
     let start = from;
     if (to - from > LONG_REVEAL) {
       start = Math.max(from, to - LONG_REVEAL);
-      if (SAMPLING.has(this.planner) || EST.has(this.planner)) {
-        const first = EST.has(this.planner) ? K.SELECT : K.SAMPLE;
+      if (this.stepStart) {
+        const first = this.density ? K.SELECT : K.SAMPLE;
         for (let i = to - 1, n = 0; i >= from && n < MAX_LOOK_BACK; i--, n++) {
           if (store.record(i)[0] === first) { start = i; break; }
         }
@@ -593,4 +389,3 @@ export class Explainer {
 const LONG_REVEAL = 256;
 /** How far back readStore looks for the last step's SAMPLE. */
 const MAX_LOOK_BACK = 1 << 17;
-const SAMPLING = new Set(['rrt', 'rrt-connect', 'rrt-star', 'inspection', 'prm', 'prm-star', 'lazy-prm']);

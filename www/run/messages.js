@@ -52,13 +52,19 @@
  */
 
 /**
+ * What the core decided for a loaded scene (src/scene_caps.rs): the robot kind's record, whether the
+ * page gets a configuration-space view, the optimum, a solution file, and which pose can be dragged.
+ * @typedef {{robot: any, cspace: boolean, optimum: boolean, solution_file: boolean, pose: string}} SceneCaps
+ */
+
+/**
  * A scenario the worker validated: the normalised scenario; the robot's outlines at start and goal,
  * flat (the core's `Scene::outline`: `[n_polygons, n_1, x, y, …]`; the goal's empty without a
  * goal); the planning space; for a 2-joint arm the configuration-space validity grid (n × n, rows
  * from the lowest second coordinate, over the space's two dimensions); for a point or rigid robot
- * the visibility graph's optimum.
+ * the visibility graph's optimum; what the core decided for it (`caps`, the core's `scene_caps`).
  * @typedef {{type: 'loaded', scenario: any, start: Float64Array, goal: Float64Array, space: SpaceDim[],
- *   cspace?: {n: number, grid: Uint8Array, dims: SpaceDim[]}, optimum?: Optimum}} LoadedReply
+ *   cspace?: {n: number, grid: Uint8Array, dims: SpaceDim[]}, optimum?: Optimum, caps?: SceneCaps}} LoadedReply
  */
 
 /**
@@ -68,7 +74,7 @@
 
 /**
  * The planning worker's replies (worker.js → the page).
- * @typedef {{type: 'ready', builtins: any[], planners: any, eventKinds: Record<string, number>}
+ * @typedef {{type: 'ready', builtins: any[], planners: any, eventKinds: Record<string, number>, robotKinds?: any[]}
  *   | LoadedReply
  *   | {type: 'invalid', error: ScenarioError}
  *   | {type: 'events', data: Float64Array, stats: RunStats, status: string, tries?: {seen: number, sent: number}}

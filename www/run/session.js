@@ -16,6 +16,7 @@
 // load() starts a fresh one (a user who picks a scenario or opens a file always gets a worker).
 
 import { WATCHDOG_MS, CRASH_LIMIT, CRASH_WINDOW_MS } from './limits.js';
+import { learn } from '../draw/capabilities.js';
 
 /** What `stopped` says when a worker did not acknowledge a message in time, per message type. */
 const HUNG = {
@@ -166,7 +167,7 @@ export class WorkerSession {
   onMessage(msg) {
     const h = this.hooks;
     switch (msg.type) {
-      case 'ready': h.ready?.(msg); return;
+      case 'ready': learn(msg); h.ready?.(msg); return; // the registry's capabilities (capabilities.js)
       case 'ack':
         this.acks.delete(msg.ack);
         this.armWatchdog();

@@ -19,6 +19,7 @@
 import { lattice, gridLattice, cellAt, cellBox, cellsOnSegment, grow, meets, rectMinus, wallPieces, pieceCell } from './cell-grid.js';
 import { CellIndex, obstacleBox } from './cell-index.js';
 import { inside } from './obstacle-shapes.js';
+import { plannerCaps } from '../draw/capabilities.js';
 
 export const MAX_DRAG_CELLS = 10000;
 export const MAX_OBSTACLES = 100000;
@@ -41,7 +42,7 @@ export class CellPainter {
   lattice() {
     const s = this.host.scenario;
     const c = this.config?.();
-    if (c?.planner === 'grid-search') return gridLattice(s, Number(c.params?.cell) || 0);
+    if (c && plannerCaps(c.planner).draws === 'grid') return gridLattice(s, Number(c.params?.cell) || 0);
     if (this.host.grid.on) return lattice(s.bounds, this.host.grid.step, 0);
     return gridLattice(s);
   }

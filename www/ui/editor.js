@@ -6,6 +6,7 @@
 
 import { el } from './dom.js';
 import { pointInPolygon } from '../draw/transform.js';
+import { dragsHeading, dragsPosition, posedByJoints } from '../draw/capabilities.js';
 
 const HIT = 10; // css px: how near a start/goal dot or handle a press must be
 
@@ -44,8 +45,11 @@ export class Editor {
     this.render();
   }
 
-  get kind() { return this.scenario?.robot?.kind; }
-  get draggable() { return this.kind === 'point' || this.kind === 'rigid'; }
+  // The editor's modes follow the robot kind's draggable pose (the core's robot kinds, capabilities.js):
+  // a position to drag, with a heading to turn, or joint angles on sliders.
+  get draggable() { return dragsPosition(this.scenario?.robot); }
+  get turns() { return dragsHeading(this.scenario?.robot); }
+  get jointed() { return posedByJoints(this.scenario?.robot); }
 
   /** Another scenario (not an edit of this one) was sent to the worker. */
   loading() { this.stale = true; this.cancel(); }
@@ -84,7 +88,7 @@ export class Editor {
     this.sliders = [];
     this.restore = null;
     this.canvas.classList.toggle('editable', !!this.scenario && this.draggable);
-    this.view.editable = !!this.scenario && this.kind === 'rigid';
+    this.view.editable = !!this.scenario && this.turns;
     this.view.dirty = true;
     if (!this.scenario) {
       this.root.replaceChildren(el('p', { className: 'hint', text: 'No scenario loaded.' }));
@@ -92,16 +96,16 @@ export class Editor {
     }
     const parts = [];
     if (this.draggable) {
-      parts.push(el('p', { className: 'hint', text: this.kind === 'rigid'
+      parts.push(el('p', { className: 'hint', text: this.turns
         ? 'Drag the start or goal on the canvas to move it; shift-drag it, or drag its round handle, to turn it.'
         : 'Drag the start or goal dot on the canvas.' }));
-    } else if (this.kind === 'arm') {
+    } else if (this.jointed) {
       for (const which of ['start', 'goal']) if (this.scenario[which]) parts.push(this.jointSliders(which));
       parts.push(el('p', { className: 'hint', text: 'Joint angles in radians, each relative to the previous link.' }));
     } else {
       parts.push(el('p', { className: 'hint', text: 'The start and goal of this robot come from the scenario file.' }));
     }
-    if (this.draggable || this.kind === 'arm') {
+    if (this.draggable || this.jointed) {
       this.restore = el('button', { id: 'restore-endpoints', type: 'button', text: 'Restore start and goal' });
       this.restore.disabled = !this.changed();
       this.restore.addEventListener('click', () => {
@@ -173,8 +177,8 @@ export class Editor {
     for (const which of whiches) {
       const q = this.view.stateOf(which);
       const near = Math.hypot(p.x - L.sx(q[0]), p.y - L.sy(q[1])) <= L.px(HIT);
-      const inside = this.kind === 'rigid' && pointInPolygon(wx, wy, rigidOutline(this.scenario.robot, q));
-      if (near || inside) return { which, mode: shift && this.kind === 'rigid' ? 'turn' : 'move' };
+      const inside = this.turns && pointInPolygon(wx, wy, rigidOutline(this.scenario.robot, q));
+      if (near || inside) return { which, mode: shift && this.turns ? 'turn' : 'move' };
     }
     return null;
   }

@@ -8,6 +8,7 @@
 import { el } from './dom.js';
 import { Explainer, optionsOf, pseudocode } from '../run/explain.js';
 import { PALETTE } from '../draw/palette.js';
+import { emits } from '../draw/capabilities.js';
 
 /** The actors' colours (also in the legend): apart from the tree blue and the obstacle brown. */
 // (Purple: apart from the trees' blue and pink and from the best path's vermillion, which a paused
@@ -42,10 +43,10 @@ export class ExplainPanel {
    * `scene`: what the scenario decides ({vertices}: inspection counted at the tree's vertices).
    */
   setPlanner(config, robotKind, scene = {}) {
-    const planner = config?.planner || 'rrt';
+    const planner = config?.planner || '';
     const options = { ...optionsOf(config), ...scene };
     const code = pseudocode(planner, options);
-    this.explainer = new Explainer(planner, robotKind || 'point', options);
+    this.explainer = new Explainer(planner, robotKind || '', options);
     this.items.clear();
     this.title.textContent = code ? code.title : `${planner}: no pseudocode yet`;
     this.code.replaceChildren(...(code ? code.lines : []).map((l) => {
@@ -62,14 +63,14 @@ export class ExplainPanel {
    * leaves (the latest sample; RRT-Connect's meeting ring), for `planner` (registry name).
    */
   legend(planner) {
-    if (!['rrt', 'rrt-connect', 'rrt-star', 'inspection'].includes(planner)) return [];
+    if (!emits(planner, 'NEAREST')) return []; // the panel draws a growth step's actors
     /** @type {Array<{label: string, color: string, shape: string}>} */
     const items = [
       { label: 'latest sample', color: ACTOR.sample, shape: 'dot' },
       { label: 'this step: nearest node, step, range', color: ACTOR.near, shape: 'ring' },
       { label: 'this step: blocked', color: ACTOR.blocked, shape: 'cross' },
     ];
-    if (planner === 'rrt-connect') items.push({ label: 'trees connected', color: PALETTE.connect, shape: 'ring' });
+    if (emits(planner, 'TREES_CONNECTED')) items.push({ label: 'trees connected', color: PALETTE.connect, shape: 'ring' });
     return items;
   }
 

@@ -28,6 +28,8 @@ import { PALETTE } from '../draw/palette.js';
 import { anchor, handles, inside, moved, reshaped, niceStep, stepDecimals, snapTo, tidy, readoutDecimals } from './obstacle-shapes.js';
 import { CellPainter } from './cell-painter.js';
 import { buildBar, renderBar } from './obstacle-toolbar.js';
+import { dragsHeading, dragsPosition } from '../draw/capabilities.js';
+import { footprintRadius } from '../draw/robots.js';
 
 const HANDLE = 6; // css px: handle half-size and grab distance
 const MIN = 1e-3; // the smallest rectangle side or circle radius, as a fraction of the scene
@@ -162,17 +164,17 @@ export class ObstacleEditor {
     delete m.notes;
     delete m.planner; // the panel keeps the planner chosen now
     m.obstacles = [];
-    const kind = s.robot?.kind;
-    if (kind === 'point' || kind === 'rigid') {
+    if (dragsPosition(s.robot)) {
       // an arm or a vehicle chain keeps its start and goal: they were valid in these bounds
       const [x0, y0, x1, y1] = s.bounds;
       const side = Math.min(x1 - x0, y1 - y0);
-      const reach = kind === 'rigid' ? Math.max(0, ...s.robot.footprint.map(([u, v]) => Math.hypot(u, v))) : 0;
+      const reach = footprintRadius(s.robot);
       const inset = Math.min(side / 2, Math.max(side / 10, reach * 1.25));
       const corner = (x, y) => this.place(x, y);
       const a = corner(x0 + inset, y0 + inset), b = corner(x1 - inset, y1 - inset);
-      m.start = kind === 'rigid' ? [...a, 0] : a;
-      if (s.goal || !s.inspection) m.goal = kind === 'rigid' ? [...b, 0] : b;
+      const turns = dragsHeading(s.robot);
+      m.start = turns ? [...a, 0] : a;
+      if (s.goal || !s.inspection) m.goal = turns ? [...b, 0] : b;
     }
     this.editor.scenario = m;
     this.selected = -1;

@@ -7,7 +7,10 @@
 // the scenario start's heading); arms and vehicle chains are not offered it. Every text shown is
 // built from numbers and fixed words (textContent).
 
-export const ROADMAP_PLANNERS = new Set(['prm', 'prm-star', 'lazy-prm']);
+import { dragsHeading, plannerCaps } from '../draw/capabilities.js';
+
+/** Whether planner `name` answers further queries on what it built (the registry's `caps.queries`). */
+export const answersQueries = (name) => plannerCaps(name).queries;
 
 const fmt = (v) => (Math.abs(v) >= 100 ? v.toFixed(1) : v.toFixed(3));
 
@@ -72,7 +75,7 @@ export function wireRoadmapQuery({ button, status, canvas, view, lane, applies, 
     view.setQuery?.({ points: [], picks: [...picking] });
     if (picking.length < 2) { say(`Start (${fmt(p[0])}, ${fmt(p[1])}): now click the goal.`); return; }
     const sc = scenario();
-    const state = (/** @type {number[]} */ [x, y]) => (sc?.robot?.kind === 'rigid' ? [x, y, Number(sc.start?.[2]) || 0] : [x, y]);
+    const state = (/** @type {number[]} */ [x, y]) => (dragsHeading(sc?.robot) ? [x, y, Number(sc.start?.[2]) || 0] : [x, y]);
     const [a, b] = picking;
     picks = picking;
     picking = null;

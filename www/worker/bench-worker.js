@@ -9,7 +9,7 @@
 //              {type: 'crashed', id, message}: the core panicked; the page replaces this worker.
 // Their types, BenchJob and BenchReply, are in ../run/messages.js (checked by tsc --checkJs).
 
-import init, { Run, install_panic_hook, last_panic } from '../pkg/planarium.js';
+import init, { Run, install_panic_hook, last_panic, planners } from '../pkg/planarium.js';
 import { EventKind, STRIDE } from '../run/events.js';
 
 // The run goes to its end in one loop (the page cancels by terminating the worker); batches of this
@@ -19,8 +19,12 @@ const BATCH_MS = 50;
 /** @param {import('../run/messages.js').BenchReply} msg */
 const post = (msg) => self.postMessage(msg);
 
+/** @type {Map<string, string | null>} each planner's chart (the registry's `caps.chart`) */
+let charts = new Map();
+
 const ready = init().then(() => {
   install_panic_hook();
+  charts = new Map(JSON.parse(planners()).planners.map((p) => [p.name, p.caps?.chart ?? null]));
   post({ type: 'ready' });
 });
 
@@ -31,9 +35,10 @@ self.onmessage = async (e) => {
   let run = null;
   try {
     run = new Run(text, planner, JSON.stringify(params), seed);
-    // An anytime planner's cost curve needs its COST events; other runs record nothing.
+    // An anytime planner's cost curve (a planner whose chart is its cost) needs its COST events;
+    // other runs record nothing.
     /** @type {Array<[number, number]> | null} */
-    const curve = planner === 'rrt-star' ? [] : null;
+    const curve = charts.get(planner) === 'cost' ? [] : null;
     run.record_events(!!curve);
     let status;
     do {

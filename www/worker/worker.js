@@ -28,13 +28,16 @@
 // it, before doing the work (the page's watchdog, session.js, replaces a worker that does not
 // acknowledge cancel, reset, configure or load within a second).
 // Messages out {type, run, ...}:
-//   ready     {builtins, planners, eventKinds}
-//   loaded    {scenario, start, goal, space, cspace?, optimum?}  normalised scenario; start/goal outlines
-//                                            (flat Float64Arrays); space: the planning space [{lo, hi, wraps}];
-//                                            cspace {n, grid: Uint8Array (transferred), dims: the space} for a
+//   ready     {builtins, planners, eventKinds, robotKinds}   planners: the registry (each with `caps`,
+//                                            its capabilities); robotKinds: the robot kinds' records
+//   loaded    {scenario, start, goal, space, caps, cspace?, optimum?}  normalised scenario; start/goal
+//                                            outlines (flat Float64Arrays); space: the planning space [{lo, hi, wraps}];
+//                                            caps: what the core decided (scene_caps: {robot, cspace,
+//                                            optimum, solution_file, pose});
+//                                            cspace {n, grid: Uint8Array (transferred), dims} for a
 //                                            2-D arm: n×n validity, rows from the lowest 2nd coordinate;
-//                                            optimum {cost, exact} | {error}: the visibility graph's, for
-//                                            a point or rigid robot
+//                                            optimum {cost, exact} | {error}: the visibility graph's,
+//                                            when caps.optimum
 //   invalid   {error: {path, message, line, column, text}}
 //   events    {data: Float64Array, stats, status, tries: {seen, sent}}   transferred, once per batch;
 //                                            the sampler's raw tries (SAMPLE_TRY) are all sent up to
@@ -54,7 +57,7 @@
 // `run` is a counter bumped on every run/reset/load, so the page can drop stale replies.
 // The messages' types, both directions, are in ../run/messages.js (checked by tsc --checkJs).
 
-import init, { Scene, builtins, map_image_name, planners, event_kinds, install_panic_hook, last_panic, debug_panic, fresh_seed }
+import init, { Scene, builtins, map_image_name, planners, robot_kinds, event_kinds, install_panic_hook, last_panic, debug_panic, fresh_seed }
   from '../pkg/planarium.js';
 import { thinTries } from './thin.js';
 
@@ -80,7 +83,7 @@ let stepToken = 0;
 const ready = init().then(() => {
   install_panic_hook();
   post({ type: 'ready', builtins: JSON.parse(builtins()), planners: JSON.parse(planners()),
-         eventKinds: JSON.parse(event_kinds()) });
+         eventKinds: JSON.parse(event_kinds()), robotKinds: JSON.parse(robot_kinds()) });
 });
 
 /** @param {WorkerOut} msg @param {Transferable[]} [transfer] */
@@ -174,19 +177,23 @@ function load(make) {
   const start = scene.outline(new Float64Array(sc.start));
   const goal = sc.goal ? scene.outline(new Float64Array(sc.goal)) : new Float64Array(0);
   const space = JSON.parse(scene.space_json());
+  // What the core decided for this scene (scene_caps): the robot kind's record, the c-space view,
+  // the optimum, the solution file, the draggable pose.
+  const caps = JSON.parse(scene.caps_json(OPTIMUM_MAX));
   /** @type {import('../run/messages.js').LoadedReply & {run: number}} */
-  const msg = { type: 'loaded', run: runId, scenario: sc, start, goal, space };
+  const msg = { type: 'loaded', run: runId, scenario: sc, start, goal, space, caps };
   const transfer = [];
-  if (space.length === 2 && sc.robot && sc.robot.kind === 'arm') {
+  if (caps.cspace) {
     const grid = scene.cspace_grid(CSPACE_N);
     if (grid.length === CSPACE_N * CSPACE_N) {
       msg.cspace = { n: CSPACE_N, grid, dims: space };
       transfer.push(grid.buffer);
     }
   }
-  // The shortest path's cost (visibility graph), for a point or a rigid robot: {cost, exact} or
-  // {error}. The cost chart draws it as its reference line when it is the robot's optimum.
-  if (sc.goal && sc.robot && (sc.robot.kind === 'point' || sc.robot.kind === 'rigid') && sc.obstacles.length <= OPTIMUM_MAX) {
+  // The shortest path's cost (visibility graph), for a robot whose paths are polylines in the plane
+  // (a point or a rigid body): {cost, exact} or {error}. The cost chart draws it as its reference
+  // line when it is the robot's optimum.
+  if (caps.optimum) {
     try { msg.optimum = JSON.parse(scene.optimum_json(OPTIMUM_S)); } catch (e) { rethrowPanic(e); }
   }
   post(msg, transfer);

@@ -42,9 +42,20 @@ use self::step::{disc_blocked, step_test};
 use crate::events::EventKind;
 use crate::geometry::Workspace;
 use crate::math::{wrap_angle, Real, Vec2};
+use crate::planners::caps::{Capabilities, Draws, Family, LegendItem};
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::space_info::SpaceInfo;
 use std::collections::VecDeque;
+
+/// The legend: the search's steps.
+const LEGEND: &[LegendItem] = &[LegendItem::line("search steps, cell to cell", "tree0")];
+/// The cells' marks.
+const MARKS: &[LegendItem] = &[
+    LegendItem::boxed("visited (closed) cell", "cellVisited"),
+    LegendItem::boxed("open (A*, Dijkstra) or passable cell", "cellOpen"),
+    LegendItem::boxed("step-blocked cell (×)", "cellBlocked"),
+    LegendItem::line("later attempts: earlier trees faint", "tree0"),
+];
 
 /// The registry entry.
 pub const SPEC: PlannerSpec = PlannerSpec {
@@ -54,6 +65,20 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     params: PARAMS,
     groups: &[],
     task: TaskKind::Goal,
+    caps: Capabilities {
+        family: Family::Cells,
+        draws: Draws::Cells,
+        trees: 1,
+        improves: false,
+        chart: None,
+        queries: false,
+        proves_no_path: true,
+        events: &[EventKind::Cell, EventKind::CellShape, EventKind::CellState, EventKind::Potential, EventKind::Region, EventKind::Field, EventKind::NodeAdded, EventKind::Solved],
+        pseudocode: "cells-hex-potential",
+        legend: LEGEND,
+        marks: MARKS,
+        overlays: &["cells", "region", "heat", "arrows"],
+    },
     make: |si, task, params| Ok(Box::new(HexPotential::new(si, task, params)?)),
 };
 

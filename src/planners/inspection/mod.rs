@@ -49,7 +49,9 @@ mod visibility;
 pub use coverage::{continuous_coverage, course_coverage, path_coverage, seen_along, shortcut};
 
 use super::rrt::{resolve_range, RANGE};
+use crate::events::EventKind;
 use crate::math::Real;
+use crate::planners::caps::{self, Capabilities, Draws, Family};
 use crate::planners::{
     Context, InspectionTask, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree,
 };
@@ -66,6 +68,31 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     params: PARAMS,
     groups: &[SAMPLER_GROUP],
     task: TaskKind::Inspection,
+    caps: Capabilities {
+        family: Family::Tree,
+        draws: Draws::Tree,
+        trees: 1,
+        improves: true,
+        chart: Some("coverage"),
+        queries: false,
+        proves_no_path: false,
+        events: &[
+            EventKind::Sample,
+            EventKind::SampleTry,
+            EventKind::NodeAdded,
+            EventKind::Collision,
+            EventKind::Nearest,
+            EventKind::Steer,
+            EventKind::Solved,
+            EventKind::Rewire,
+            EventKind::Coverage,
+            EventKind::PointSeen,
+        ],
+        pseudocode: "tree-inspection",
+        legend: caps::ONE_TREE,
+        marks: &[],
+        overlays: &["rewires", "best", "seen", "fov"],
+    },
     make: |si, task, params| {
         si.sensor().ok_or_else(|| format!("needs a robot with a sensor (a {} robot has none)", si.robot_kind()))?;
         Ok(Box::new(Inspection::new(si, task, params)))

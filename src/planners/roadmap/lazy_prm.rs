@@ -10,8 +10,18 @@
 //! [`Rng`]: crate::rng::Rng
 
 use super::{fixed_rule, RoadmapPlanner, CONNECT, K, RADIUS};
+use crate::events::EventKind;
+use crate::planners::caps::{Capabilities, Draws, Family, LegendItem};
 use crate::planners::{ParamSpec, PlannerSpec, TaskKind};
 use crate::sampler::SAMPLER_GROUP;
+
+/// Lazy PRM's legend: edges unchecked, checked valid or blocked.
+const LEGEND: &[LegendItem] = &[
+    LegendItem::line("milestones, edges checked valid", "tree0"),
+    LegendItem::line("unchecked edge", "roadmapUnchecked"),
+    LegendItem::line("edge checked: blocked", "roadmapInvalid"),
+    LegendItem::line("search's latest path", "queryPath"),
+];
 
 /// The registry entry.
 pub const SPEC: PlannerSpec = PlannerSpec {
@@ -21,6 +31,30 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     params: PARAMS,
     groups: &[SAMPLER_GROUP],
     task: TaskKind::Goal,
+    caps: Capabilities {
+        family: Family::Roadmap,
+        draws: Draws::Roadmap,
+        trees: 0,
+        improves: false,
+        chart: None,
+        queries: true,
+        proves_no_path: false,
+        events: &[
+            EventKind::Sample,
+            EventKind::SampleRejected,
+            EventKind::SampleTry,
+            EventKind::NodeAdded,
+            EventKind::Collision,
+            EventKind::RoadmapEdge,
+            EventKind::EdgeChecked,
+            EventKind::QueryPath,
+            EventKind::Solved,
+        ],
+        pseudocode: "roadmap-lazy-prm",
+        legend: LEGEND,
+        marks: &[],
+        overlays: &[],
+    },
     make: |si, task, params| Ok(Box::new(RoadmapPlanner::new(si.dims(), task, fixed_rule(si, params), true))),
 };
 

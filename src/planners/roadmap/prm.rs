@@ -10,6 +10,8 @@
 //! [`Rng`]: crate::rng::Rng
 
 use super::{fixed_rule, RoadmapPlanner, CONNECT, K, RADIUS};
+use crate::events::EventKind;
+use crate::planners::caps::{self, Capabilities, Draws, Family};
 use crate::planners::{ParamSpec, PlannerSpec, TaskKind};
 use crate::sampler::SAMPLER_GROUP;
 
@@ -21,6 +23,29 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     params: PARAMS,
     groups: &[SAMPLER_GROUP],
     task: TaskKind::Goal,
+    caps: Capabilities {
+        family: Family::Roadmap,
+        draws: Draws::Roadmap,
+        trees: 0,
+        improves: false,
+        chart: None,
+        queries: true,
+        proves_no_path: false,
+        events: &[
+            EventKind::Sample,
+            EventKind::SampleRejected,
+            EventKind::SampleTry,
+            EventKind::NodeAdded,
+            EventKind::Collision,
+            EventKind::RoadmapEdge,
+            EventKind::QueryPath,
+            EventKind::Solved,
+        ],
+        pseudocode: "roadmap-prm",
+        legend: caps::ROADMAP,
+        marks: &[],
+        overlays: &[],
+    },
     make: |si, task, params| Ok(Box::new(RoadmapPlanner::new(si.dims(), task, fixed_rule(si, params), false))),
 };
 

@@ -11,7 +11,9 @@
 //! [`Rng`]: crate::rng::Rng
 
 use super::{Neighbours, RoadmapPlanner};
+use crate::events::EventKind;
 use crate::math::Real;
+use crate::planners::caps::{self, Capabilities, Draws, Family};
 use crate::planners::{ParamSpec, Params, PlannerSpec, TaskKind};
 use crate::sampler::SAMPLER_GROUP;
 use crate::space_info::SpaceInfo;
@@ -24,6 +26,30 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     params: PARAMS,
     groups: &[SAMPLER_GROUP],
     task: TaskKind::Goal,
+    caps: Capabilities {
+        family: Family::Roadmap,
+        draws: Draws::Roadmap,
+        trees: 0,
+        improves: true,
+        chart: None,
+        queries: true,
+        proves_no_path: false,
+        events: &[
+            EventKind::Sample,
+            EventKind::SampleRejected,
+            EventKind::SampleTry,
+            EventKind::NodeAdded,
+            EventKind::Collision,
+            EventKind::RoadmapEdge,
+            EventKind::QueryPath,
+            EventKind::Cost,
+            EventKind::Solved,
+        ],
+        pseudocode: "roadmap-prm-star",
+        legend: caps::ROADMAP,
+        marks: &[],
+        overlays: &[],
+    },
     make: |si, task, params| {
         Ok(Box::new(
             RoadmapPlanner::new(si.dims(), task, rule(si, params), false).improving(params.real("improve_for") as u64),

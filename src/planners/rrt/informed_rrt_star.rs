@@ -28,6 +28,7 @@
 use super::rrt_star::{RrtStar, PARAMS};
 use crate::events::EventKind;
 use crate::math::{Real, Vec2};
+use crate::planners::caps::{self, Capabilities, Draws, Family};
 use crate::planners::{Context, Planner, PlannerData, PlannerSpec, TaskKind};
 use crate::sampler::SAMPLER_GROUP;
 use crate::space::Metric;
@@ -40,6 +41,32 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     params: PARAMS,
     groups: &[SAMPLER_GROUP],
     task: TaskKind::Goal,
+    caps: Capabilities {
+        family: Family::Tree,
+        draws: Draws::Tree,
+        trees: 1,
+        improves: true,
+        chart: Some("cost"),
+        queries: false,
+        proves_no_path: false,
+        events: &[
+            EventKind::Sample,
+            EventKind::SampleRejected,
+            EventKind::SampleTry,
+            EventKind::NodeAdded,
+            EventKind::Collision,
+            EventKind::Nearest,
+            EventKind::Steer,
+            EventKind::Solved,
+            EventKind::Rewire,
+            EventKind::Cost,
+            EventKind::Informed,
+        ],
+        pseudocode: "tree-informed-rrt-star",
+        legend: caps::ONE_TREE,
+        marks: &[],
+        overlays: &["rewires", "best", "informed"],
+    },
     make: |si, task, params| {
         let star = RrtStar::new(si, task, params);
         let start = task.start.clone();

@@ -11,6 +11,7 @@
 use super::{resolve_range, RANGE};
 use crate::events::EventKind;
 use crate::math::Real;
+use crate::planners::caps::{self, Capabilities, Draws, Family};
 use crate::planners::tree::MAX_CONNECT_STEPS;
 use crate::planners::tree::{TreeOptions, TREE_GROUP};
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
@@ -26,6 +27,31 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     params: PARAMS,
     groups: &[SAMPLER_GROUP, TREE_GROUP],
     task: TaskKind::Goal,
+    caps: Capabilities {
+        family: Family::Tree,
+        draws: Draws::Tree,
+        trees: 1,
+        improves: false,
+        chart: None,
+        queries: false,
+        proves_no_path: false,
+        events: &[
+            EventKind::Sample,
+            EventKind::SampleRejected,
+            EventKind::SampleTry,
+            EventKind::NodeAdded,
+            EventKind::Collision,
+            EventKind::Nearest,
+            EventKind::Steer,
+            EventKind::Solved,
+            EventKind::Domain,
+            EventKind::Exhausted,
+        ],
+        pseudocode: "tree-rrt",
+        legend: caps::ONE_TREE,
+        marks: &[],
+        overlays: &[],
+    },
     make: |si, task, params| Ok(Box::new(Rrt::new(si, task, params))),
 };
 

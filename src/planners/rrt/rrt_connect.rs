@@ -11,6 +11,7 @@
 use super::{resolve_range, RANGE};
 use crate::events::EventKind;
 use crate::math::Real;
+use crate::planners::caps::{self, Capabilities, Draws, Family};
 use crate::planners::tree::{TreeOptions, TREE_GROUP};
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::sampler::SAMPLER_GROUP;
@@ -25,6 +26,32 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     params: PARAMS,
     groups: &[SAMPLER_GROUP, TREE_GROUP],
     task: TaskKind::Goal,
+    caps: Capabilities {
+        family: Family::Tree,
+        draws: Draws::Tree,
+        trees: 2,
+        improves: false,
+        chart: None,
+        queries: false,
+        proves_no_path: false,
+        events: &[
+            EventKind::Sample,
+            EventKind::SampleRejected,
+            EventKind::SampleTry,
+            EventKind::NodeAdded,
+            EventKind::Collision,
+            EventKind::Nearest,
+            EventKind::Steer,
+            EventKind::Solved,
+            EventKind::Domain,
+            EventKind::Exhausted,
+            EventKind::TreesConnected,
+        ],
+        pseudocode: "tree-rrt-connect",
+        legend: caps::TWO_TREES,
+        marks: &[],
+        overlays: &[],
+    },
     make: |si, task, params| Ok(Box::new(RrtConnect::new(si, task, params))),
 };
 

@@ -29,6 +29,7 @@ use super::{resolve_range, RANGE};
 use crate::events::EventKind;
 use crate::math::Real;
 use crate::motion::MotionValidator;
+use crate::planners::caps::{self, Capabilities, Draws, Family};
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::sampler::SAMPLER_GROUP;
 use crate::space_info::SpaceInfo;
@@ -41,6 +42,31 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     params: PARAMS,
     groups: &[SAMPLER_GROUP],
     task: TaskKind::Goal,
+    caps: Capabilities {
+        family: Family::Tree,
+        draws: Draws::Tree,
+        trees: 1,
+        improves: true,
+        chart: Some("cost"),
+        queries: false,
+        proves_no_path: false,
+        events: &[
+            EventKind::Sample,
+            EventKind::SampleRejected,
+            EventKind::SampleTry,
+            EventKind::NodeAdded,
+            EventKind::Collision,
+            EventKind::Nearest,
+            EventKind::Steer,
+            EventKind::Solved,
+            EventKind::Rewire,
+            EventKind::Cost,
+        ],
+        pseudocode: "tree-rrt-star",
+        legend: caps::ONE_TREE,
+        marks: &[],
+        overlays: &["rewires", "best"],
+    },
     make: |si, task, params| Ok(Box::new(RrtStar::new(si, task, params))),
 };
 

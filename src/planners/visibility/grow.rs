@@ -207,24 +207,25 @@ pub struct Body {
 
 /// The robot as a point or disc, or why the planner does not apply to it.
 pub fn body_of(si: &SpaceInfo) -> Result<Body, String> {
-    match si.robot_kind() {
-        "point" => Ok(Body { radius: 0.0, round: true }),
-        "rigid" => {
-            let outline = si.outline(&[0.0, 0.0, 0.0]);
-            let pts: Vec<Vec2> = outline.iter().flatten().copied().collect();
-            let outer = pts.iter().map(|p| p.norm()).fold(0.0, Real::max);
-            let inner = outline
-                .iter()
-                .flat_map(|poly| (0..poly.len()).map(|i| (poly[i], poly[(i + 1) % poly.len()])))
-                .map(|(a, b)| crate::geometry::segment::distance2_point_segment(Vec2::zeros(), a, b).sqrt())
-                .fold(Real::INFINITY, Real::min);
-            Ok(Body { radius: outer, round: inner >= 0.99 * outer })
-        }
-        kind => Err(format!(
+    // A robot with a body in the plane (its `WorkspaceBody`) has paths that are polylines of its
+    // reference point: planned as the disc its outline at the origin fits in (a point: none).
+    if si.body().is_none() {
+        let kind = si.robot_kind();
+        return Err(format!(
             "needs a point robot or a rigid robot (planned as its bounding disc); this is a{} {kind} robot, whose paths are not polylines in the plane",
             if kind.starts_with(['a', 'e', 'i', 'o', 'u']) { "n" } else { "" }
-        )),
+        ));
     }
+    let origin = vec![0.0; si.dims()];
+    let outline = si.outline(&origin);
+    let pts: Vec<Vec2> = outline.iter().flatten().copied().collect();
+    let outer = pts.iter().map(|p| p.norm()).fold(0.0, Real::max);
+    let inner = outline
+        .iter()
+        .flat_map(|poly| (0..poly.len()).map(|i| (poly[i], poly[(i + 1) % poly.len()])))
+        .map(|(a, b)| crate::geometry::segment::distance2_point_segment(Vec2::zeros(), a, b).sqrt())
+        .fold(Real::INFINITY, Real::min);
+    Ok(Body { radius: outer, round: inner >= 0.99 * outer })
 }
 
 /// The growth for a robot on a map: its disc's radius plus the margin ([`MARGIN`] × the map's

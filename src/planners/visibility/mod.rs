@@ -59,11 +59,16 @@ use crate::geometry::segment::orient_sign;
 use crate::journal::Entry as Recorded;
 use crate::math::{angle_diff, wrap_angle, Real, Vec2};
 use crate::motion::MotionValidator;
+use crate::planners::caps::{Capabilities, Draws, Family, LegendItem};
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::space_info::SpaceInfo;
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 use std::rc::Rc;
+
+/// The legend: the search and the graph.
+const LEGEND: &[LegendItem] =
+    &[LegendItem::line("A* search tree", "tree0"), LegendItem::line("visibility-graph edge", "graphEdge")];
 
 /// The registry entry.
 pub const SPEC: PlannerSpec = PlannerSpec {
@@ -73,6 +78,20 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     params: PARAMS,
     groups: &[],
     task: TaskKind::Goal,
+    caps: Capabilities {
+        family: Family::Exact,
+        draws: Draws::ExactGraph,
+        trees: 1,
+        improves: false,
+        chart: None,
+        queries: false,
+        proves_no_path: true,
+        events: &[EventKind::GraphEdge, EventKind::NodeAdded, EventKind::Cost, EventKind::Solved],
+        pseudocode: "exact-visibility-graph",
+        legend: LEGEND,
+        marks: &[],
+        overlays: &[],
+    },
     make: |si, task, params| Ok(Box::new(VisibilityGraph::new(si, task, params)?)),
 };
 

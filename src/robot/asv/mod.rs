@@ -33,6 +33,7 @@ use super::capability::{all_around, MotionModel, OwnSampler, Sensor};
 use super::{Robot, Verdict};
 use crate::geometry::{SensorPose, Workspace};
 use crate::math::{angle_diff, wrap_angle, MinMax, Real, Vec2, PI};
+use crate::robot::kinds::{Drawn, Pose, RobotKind};
 use crate::scenario::RobotSpec;
 use crate::space::{Dim, Metric, StateSpace};
 use std::cell::{Cell, RefCell};
@@ -220,9 +221,22 @@ fn motion_bound(l: Real, a: &[Real], b: &[Real], radii: &[Real]) -> Real {
     dc + best
 }
 
+/// The kind's record ([`super::kinds`]).
+pub const KIND: RobotKind = RobotKind {
+    name: "asv",
+    label: "Vehicle chain (ASV)",
+    drawn: Drawn::ClosedChain,
+    body: false,
+    sensor: true,
+    cspace: false,
+    course_cost: None,
+    pose: Pose::None,
+    solution_file: true,
+};
+
 impl Robot for AsvRobot {
-    fn kind(&self) -> &'static str {
-        "asv"
+    fn caps(&self) -> &'static RobotKind {
+        &KIND
     }
     fn external_dims(&self) -> usize {
         2 * self.n
