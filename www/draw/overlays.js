@@ -46,7 +46,7 @@ const CHECKING_SAMPLERS = new Set(['gaussian', 'bridge', 'obstacle']);
 /** The overlays a planner offers by its registry's `caps.overlays` keys (the rest follow its sampler). */
 export const OFFERED = Object.freeze({
   showRewires: 'rewires', showBest: 'best', showSeen: 'seen', showFov: 'fov', showCells: 'cells',
-  showRegion: 'region', showDensity: 'density', showHeat: 'heat', showArrows: 'arrows',
+  showRegion: 'region', showDensity: 'density', showHeat: 'heat', showArrows: 'arrows', showInformed: 'informed',
 });
 
 /**

@@ -67,6 +67,8 @@ export const PALETTE = Object.freeze({
   queryAnswer: '#5e3c99', // another query on the finished roadmap: its path and its two clicks
   // EST's density grid: a cell shaded by its chance of being picked, the latest pick outlined
   density: '#cc79a7',
+  // The informed set (Informed RRT*): its latest ellipse, the earlier ones faint
+  informed: '#6a3d9a',
   densityPick: '#882255',
 });
 
@@ -138,6 +140,9 @@ export const OVERLAYS = Object.freeze([
   { option: 'showDensity', id: 'show-density', label: "EST's pick chance by cell", on: true,
     swatches: [{ color: '#cc79a7', shape: 'box' }, { color: '#882255', shape: 'ring' }],
     doc: "EST and bi-EST: the density grid over the map, each cell of the tree that picked last shaded by its chance of being picked next (darkest: the sparsest cell, 1 / its nodes, over the sum for all the tree's cells); the cell of the latest pick outlined. Empty cells hold no node, so they cannot be picked." },
+  { option: 'showInformed', id: 'show-informed', label: 'informed set (ellipse), shrinking', on: true,
+    swatches: [{ color: PALETTE.informed, shape: 'ring' }],
+    doc: 'Once a path is found, only states whose distance from the start plus distance to the goal is below its cost can lie on a shorter path: in the plane, the ellipse with foci the start and the goal and major axis that cost. Informed RRT* samples only there; each better path shrinks it (the earlier ellipses stay, faint). For a rigid body the ellipse bounds the positions; the heading is free.' },
   { option: 'showHeat', id: 'show-heat', label: 'potential heat map (low → high)', on: false,
     swatches: [{ color: PALETTE.heat[1], shape: 'box' }, { color: PALETTE.heat[4], shape: 'box' }, { color: PALETTE.heat[8], shape: 'box' }],
     doc: "The potential field the planner reports, light where it is low, dark where it is high, by rank: each of the nine colours holds about a ninth of the samples, so the repulsion's blow-up near obstacles does not wash out the rest (hover a cell or tile for its numbers); where the robot would collide it takes the obstacle colour. hex-potential: each free cell in the region of influence, coloured by its obstacle terms (repulsion + trap term; the goal term depends on the step); potential-field: a grid of tiles, coloured by attraction + repulsion. A new region of influence replaces it." },

@@ -18,6 +18,27 @@ import { drawGraphEdges, drawRoadmap, drawQueryAnswer } from './graphs.js';
 import { drawFlashes, drawSensor, drawHandle } from './marks.js';
 import { drawAccepted, drawCollisions, drawDomains, drawSamples, ranges, treeSteps } from './layers.js';
 
+/** The informed set's ellipses ([cx, cy, a, b, ux, uy, cost] each, oldest first): the latest bold, the earlier faint. */
+function drawInformed(ctx, L, list) {
+  list.forEach(([cx, cy, a, b, ux, uy], i) => {
+    if (![cx, cy, a, b, ux, uy].every(Number.isFinite)) return;
+    const latest = i === list.length - 1;
+    ctx.save();
+    ctx.globalAlpha = latest ? 1 : 0.25;
+    ctx.strokeStyle = PALETTE.informed;
+    ctx.lineWidth = L.px(latest ? 2 : 1);
+    ctx.beginPath();
+    const n = 96; // a polygon of n sides: both renderers draw it alike, rotated or not
+    for (let k = 0; k <= n; k++) {
+      const t = (2 * Math.PI * k) / n, p = a * Math.cos(t), q = b * Math.sin(t);
+      const x = L.sx(cx + p * ux - q * uy), y = L.sy(cy + p * uy + q * ux);
+      if (k) ctx.lineTo(x, y); else ctx.moveTo(x, y);
+    }
+    ctx.stroke();
+    ctx.restore();
+  });
+}
+
 const boundsRect = (ctx, L, [x0, y0, x1, y1]) => [L.sx(x0), L.sy(y1), (x1 - x0) * L.scale, (y1 - y0) * L.scale];
 
 /** A start or goal: its outline (the edited state's, while one is dragged), and its rotation handle on the canvas. */
@@ -60,6 +81,9 @@ export const PICTURE = [
   { id: 'veil', draw(ctx, L, v) { if (v.cells.active(v.options)) v.cells.veil(ctx, L, v.scenario); } },
   { id: 'density', merge: 'style', draw(ctx, L, v) {
     if (v.options.showDensity && !v.showResult) drawDensity(ctx, L, v.model?.density, v.scenario.bounds);
+  } },
+  { id: 'informed', draw(ctx, L, v) {
+    if (v.options.showInformed && !v.showResult && v.model?.informed.length) drawInformed(ctx, L, v.model.informed);
   } },
   { id: 'samples', layer: 'under', merge: 'style', *draw(ctx, L, v, f) {
     const st = { pendingSample: null };

@@ -300,6 +300,10 @@ export class Explainer {
         this.begin(`best cost now ${num(px)} (goal node #${id}, iteration ${parent})`);
         this.line = 'cost';
         break;
+      case K.INFORMED:
+        this.then(`samples now only where d(start, q) + d(q, goal) < ${num(pc0)}: an ellipse ${num(2 * px)} × ${num(2 * py)} around the foci ${num(pc1)} apart`);
+        this.line = 'informed';
+        break;
       case K.COVERAGE:
         this.begin(`best branch now sees ${num(100 * px)}% (${py} points; node #${id})`);
         this.line = 'cost';

@@ -153,6 +153,7 @@ export class RunModel {
     this.best = null;      // {tree, id, kind}: the latest COST or COVERAGE node
     this.costs = [];       // [iteration, cost] per COST event
     this.coverage = [];    // [iteration, fraction, points seen] per COVERAGE event
+    this.informed = [];    // the informed set's ellipses, oldest first: [cx, cy, a, b, ux, uy, cost] per INFORMED event
     this.seen = new Set(); // inspection point numbers seen
     this.counts = new Float64Array(32); // records per kind
     this.cells = new CellMirror(); // cells, verdicts, regions, fields, minima
@@ -222,6 +223,9 @@ export class RunModel {
         return;
       case EventKind.POINT_SEEN:
         this.seen.add(d[o + 2]);
+        return;
+      case EventKind.INFORMED:
+        this.informed.push([d[o + 4], d[o + 5], d[o + 6], d[o + 7], d[o + 8], d[o + 9], d[o + 10]]);
         return;
       case EventKind.SELECT:
         this.tree(d[o + 1]).placeIfUnknown(d[o + 2], d[o + 4], d[o + 5]);
