@@ -93,6 +93,24 @@ export const PSEUDOCODE = {
       { id: 'goal-check', text: 'return the best path when time or iterations run out', indent: 1 },
     ],
   },
+  'tree-informed-rrt-star': {
+    title: 'Informed RRT* (Gammell, Srinivasa & Barfoot 2014)',
+    choosesParent: true,
+    lines: [
+      { id: 'init', text: 'T ← {q_start}, c_best ← ∞' },
+      { id: 'loop', text: 'repeat' },
+      { id: 'sample', text: 'q_rand ← SAMPLE() while c_best = ∞, else a uniform state of the informed set', indent: 1 },
+      ...SAMPLER_LINES,
+      { id: 'nearest', text: 'q_near ← NEAREST(T, q_rand)', indent: 1 },
+      { id: 'steer', text: 'q_new ← STEER(q_near, q_rand, range)', indent: 1 },
+      { id: 'check', text: 'if not MOTION_FREE(q_near, q_new): reject', indent: 1 },
+      { id: 'add', text: 'Q_near ← NEAR(T, q_new); parent ← cheapest valid in Q_near', indent: 1 },
+      { id: 'rewire', text: 'REWIRE: for q in Q_near cheaper through q_new: parent(q) ← q_new', indent: 1 },
+      { id: 'cost', text: 'if a goal node got cheaper: c_best ← its cost', indent: 1 },
+      { id: 'informed', text: 'informed set ← {q : d(q_start, q) + d(q, q_goal) < c_best}: an ellipse, shrinking', indent: 2 },
+      { id: 'goal-check', text: 'return the best path when time or iterations run out', indent: 1 },
+    ],
+  },
   'tree-inspection': {
     title: 'Inspection planning (IRIS-style tree, Technion course)',
     lines: [
