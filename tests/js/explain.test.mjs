@@ -35,6 +35,7 @@ function expected(planner, r) {
       return `add #${id} under #${parent}`;
     case K.REWIRE: return `rewire #${id}: its parent is now #${parent}`;
     case K.COST: return `best cost now ${num(px)}`;
+    case K.INFORMED: return `d(start, q) + d(q, goal) < ${num(r[10])}: an ellipse ${num(2 * px)} × ${num(2 * py)}`;
     case K.TREES_CONNECTED: return 'the trees meet';
     case K.SOLVED: return 'solved';
     case K.MINIMUM: return `local minimum at (${num(x)}, ${num(y)})`;
@@ -56,6 +57,7 @@ const RUNS = [
   ['narrow', 'rrt-connect', { ladder: 8 }, 7],
   ['zigzag', 'rrt', { ladder: 4 }, 1],
   ['ompl-rect', 'rrt-star', { max_iterations: 400 }, 1],
+  ['open-field', 'informed-rrt-star', { improve_for: 300 }, 1],
   ['technion-ip', 'inspection', { max_iterations: 300 }, 1],
   ['hex-trap', 'hex-potential', {}, 1],
   ['apf-minimum', 'potential-field', {}, 1],
@@ -98,6 +100,8 @@ for (const [scenario, planner, params, seed] of RUNS) {
     }
     assert.ok(checked > 20, `${checked} captions checked`);
     assert.ok(linesSeen.size >= 3, `lines reached: ${[...linesSeen]}`);
+    if (recs.some((r) => r[0] === K.INFORMED)) assert.ok(linesSeen.has('informed'), 'the informed set was captioned');
+    if (planner === 'informed-rrt-star') assert.ok(recs.some((r) => r[0] === K.INFORMED), 'the run logged its informed set');
   });
 }
 

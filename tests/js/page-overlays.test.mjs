@@ -123,6 +123,39 @@ test('narrow, bridge sampler and dynamic domains: raw tries and domain circles s
   assert.equal(await page.isChecked('#show-domains'), true);
 });
 
+test('Informed RRT*: the informed set is drawn as an ellipse that shrinks with each better path, switched by its box', async () => {
+  await pickScenario('open-field', 'Open field');
+  await page.selectOption('#planner', 'rrt-star');
+  await waitState('idle');
+  assert.equal(await page.isHidden('label[data-option="showInformed"]'), true, 'RRT* offers no informed set');
+  await page.selectOption('#planner', 'informed-rrt-star');
+  await waitState('idle');
+  assert.equal(await page.isVisible('label[data-option="showInformed"]'), true, 'Informed RRT* offers its informed set');
+  await setField('param-improve_for', 600);
+  await fastPlayback();
+  await page.click('#run');
+  await waitStatus('solved');
+  await nextFrames();
+  const model = await page.evaluate(() => window.planarium.model());
+  assert.ok(model.informed.length >= 2, `ellipses: ${model.informed.length}`);
+  // one ellipse per better cost, each the set of that cost: major axis = the cost, shrinking
+  assert.equal(model.informed.length, model.costs.length);
+  model.informed.forEach((e, i) => {
+    assert.equal(e[6], model.costs[i][1]);
+    assert.ok(Math.abs(2 * e[2] - e[6]) < 1e-12);
+    if (i) assert.ok(e[2] < model.informed[i - 1][2], `ellipse ${i} smaller than the one before`);
+  });
+  const ink = async () => (await countColours('canvas', [PALETTE.informed], 6))[0];
+  const on = await ink();
+  console.log(`informed set: ${model.informed.length} ellipses, ${on} pixels`);
+  assert.ok(on > 300, `informed-set pixels: ${on}`);
+  await page.screenshot({ path: join(shots, 'page-overlays-informed.png') });
+  await toggle('show-informed');
+  const off = await ink();
+  assert.ok(off < on / 10, `ellipses gone: ${off} pixels (antialiased neighbours) left of ${on}`);
+  await toggle('show-informed');
+});
+
 test('accepted and rejected samples are drawn in their own colours when switched on', async () => {
   await pickScenario('narrow', 'Narrow passage');
   await fastPlayback();

@@ -83,7 +83,7 @@ export const PICTURE = [
     if (v.options.showDensity && !v.showResult) drawDensity(ctx, L, v.model?.density, v.scenario.bounds);
   } },
   { id: 'informed', draw(ctx, L, v) {
-    if (v.options.showInformed && !v.showResult && v.model?.informed.length) drawInformed(ctx, L, v.model.informed);
+    if (v.options.showInformed && v.model?.informed.length) drawInformed(ctx, L, v.model.informed);
   } },
   { id: 'samples', layer: 'under', merge: 'style', *draw(ctx, L, v, f) {
     const st = { pendingSample: null };

@@ -47,6 +47,7 @@ export function modelSummary(model, chart = null) {
     roadmap: { edges: count(EventKind.ROADMAP_EDGE), checked: count(EventKind.EDGE_CHECKED), pathEdges: count(EventKind.QUERY_PATH) },
     costs: model.costs.map((c) => c.slice()),
     coverage: model.coverage.map((c) => c.slice()),
+    informed: model.informed.map((e) => e.slice()),
     seen: [...model.seen],
     best: model.best ? { ...model.best } : null,
     bestBranch: model.bestBranch().length,
