@@ -39,7 +39,7 @@ fn every_emitted_event_is_declared() {
         if spec.tree_variants() {
             runs.push(json!({"dd_radius": 0.05, "exhausted": 3}));
         }
-        let declared: BTreeSet<u8> = spec.caps.events.iter().map(|&k| k as u8).collect();
+        let declared: BTreeSet<u8> = spec.caps.events.iter().map(|(k, _)| k as u8).collect();
         let mut seen = BTreeSet::new();
         for params in runs {
             let (emitted, _) = kinds(scenario, spec.name, params.clone(), 3000);

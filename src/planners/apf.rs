@@ -58,7 +58,7 @@ use crate::events::EventKind;
 use crate::journal::Entry;
 use crate::math::Real;
 use crate::motion::MotionValidator;
-use crate::planners::caps::{Capabilities, Draws, Family, LegendItem};
+use crate::planners::caps::{Capabilities, Draws, EventSet, Family, LegendItem};
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::space::Metric;
 use crate::space_info::SpaceInfo;
@@ -86,7 +86,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
         chart: None,
         queries: false,
         proves_no_path: true,
-        events: &[EventKind::Field, EventKind::Minimum, EventKind::NodeAdded, EventKind::Solved],
+        events: EventSet::of(&[EventKind::Field, EventKind::Minimum, EventKind::NodeAdded, EventKind::Solved]),
         pseudocode: "field-potential",
         legend: LEGEND,
         marks: MARKS,

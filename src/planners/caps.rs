@@ -130,7 +130,7 @@ pub struct Capabilities {
     pub proves_no_path: bool,
     /// The event kinds it emits (besides those of the sampler and the run: sample, rejected
     /// sample, raw try, solved, smoothing).
-    pub events: &'static [EventKind],
+    pub events: EventSet,
     /// The key of its pseudocode in the page's table (`www/run/pseudocode.js`).
     pub pseudocode: &'static str,
     /// Its legend entries for the lines it draws (trees, roadmap, graph), beside the paths.
@@ -142,14 +142,52 @@ pub struct Capabilities {
     pub overlays: &'static [&'static str],
 }
 
-/// The events any tree grown through [`super::Tree`] emits.
-pub const TREE_EVENTS: &[EventKind] =
-    &[EventKind::NodeAdded, EventKind::Collision, EventKind::Nearest, EventKind::Steer, EventKind::Solved];
+/// A set of event kinds, built in constant expressions (`of`, `with`), so a planner declares its
+/// events as a shared set plus its own.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct EventSet(u64);
+
+impl EventSet {
+    /// The set of `kinds`.
+    pub const fn of(kinds: &[EventKind]) -> EventSet {
+        EventSet(0).with(kinds)
+    }
+    /// This set and `kinds`.
+    pub const fn with(self, kinds: &[EventKind]) -> EventSet {
+        let mut bits = self.0;
+        let mut i = 0;
+        while i < kinds.len() {
+            bits |= 1 << kinds[i] as u8;
+            i += 1;
+        }
+        EventSet(bits)
+    }
+    /// Whether `kind` is in the set.
+    pub fn contains(self, kind: EventKind) -> bool {
+        self.0 & (1 << kind as u8) != 0
+    }
+    /// The kinds in the set, in [`EventKind::ALL`]'s order, with their names.
+    pub fn iter(self) -> impl Iterator<Item = (EventKind, &'static str)> {
+        EventKind::ALL.into_iter().filter(move |(k, _)| self.contains(*k))
+    }
+}
+
+/// The events of a sampling tree grown through [`super::Tree`]: its sampler's (sample, rejected
+/// sample, raw try) and the tree's growth.
+pub const SAMPLING_TREE: EventSet = EventSet::of(&[
+    EventKind::Sample,
+    EventKind::SampleRejected,
+    EventKind::SampleTry,
+    EventKind::NodeAdded,
+    EventKind::Collision,
+    EventKind::Nearest,
+    EventKind::Steer,
+    EventKind::Solved,
+]);
 
 impl Capabilities {
     /// As JSON, with what the spec derives: `samples`, `tree_variants`.
     pub fn to_json(&self, samples: bool, tree_variants: bool) -> serde_json::Value {
-        let name = |k: EventKind| EventKind::ALL.iter().find(|(e, _)| *e == k).map(|(_, n)| *n).unwrap_or("?");
         serde_json::json!({
             "family": self.family.as_str(),
             "draws": self.draws.as_str(),
@@ -160,7 +198,7 @@ impl Capabilities {
             "chart": self.chart,
             "queries": self.queries,
             "proves_no_path": self.proves_no_path,
-            "events": self.events.iter().map(|&k| name(k)).collect::<Vec<_>>(),
+            "events": self.events.iter().map(|(_, name)| name).collect::<Vec<_>>(),
             "pseudocode": self.pseudocode,
             "legend": self.legend.iter().map(LegendItem::to_json).collect::<Vec<_>>(),
             "marks": self.marks.iter().map(LegendItem::to_json).collect::<Vec<_>>(),

@@ -20,7 +20,7 @@ use super::rrt::{resolve_range, RANGE};
 use crate::events::EventKind;
 use crate::math::Real;
 use crate::motion::MotionValidator;
-use crate::planners::caps::{self, Capabilities, Draws, Family};
+use crate::planners::caps::{self, Capabilities, Draws, EventSet, Family};
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::space_info::SpaceInfo;
 use std::collections::HashMap;
@@ -41,7 +41,13 @@ pub const SPEC: PlannerSpec = PlannerSpec {
         chart: None,
         queries: false,
         proves_no_path: false,
-        events: &[EventKind::Sample, EventKind::NodeAdded, EventKind::Collision, EventKind::Select, EventKind::Solved],
+        events: EventSet::of(&[
+            EventKind::Sample,
+            EventKind::NodeAdded,
+            EventKind::Collision,
+            EventKind::Select,
+            EventKind::Solved,
+        ]),
         pseudocode: "tree-est",
         legend: caps::ONE_TREE,
         marks: &[],
@@ -66,14 +72,14 @@ pub const BI_SPEC: PlannerSpec = PlannerSpec {
         chart: None,
         queries: false,
         proves_no_path: false,
-        events: &[
+        events: EventSet::of(&[
             EventKind::Sample,
             EventKind::NodeAdded,
             EventKind::Collision,
             EventKind::Select,
             EventKind::TreesConnected,
             EventKind::Solved,
-        ],
+        ]),
         pseudocode: "tree-bi-est",
         legend: caps::TWO_TREES,
         marks: &[],

@@ -30,7 +30,7 @@ use crate::geometry::{Aabb, Workspace};
 use crate::io::occupancy::cell_blocked;
 use crate::math::{Real, Vec2};
 use crate::motion::MotionValidator;
-use crate::planners::caps::{self, Capabilities, Draws, Family, LegendItem};
+use crate::planners::caps::{self, Capabilities, Draws, EventSet, Family, LegendItem};
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::space_info::SpaceInfo;
 
@@ -57,7 +57,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
         chart: None,
         queries: false,
         proves_no_path: true,
-        events: &[EventKind::Cell, EventKind::CellShape, EventKind::CellState, EventKind::NodeAdded, EventKind::Solved],
+        events: EventSet::of(&[EventKind::Cell, EventKind::CellShape, EventKind::CellState, EventKind::NodeAdded, EventKind::Solved]),
         pseudocode: "cells-grid-search",
         legend: caps::TWO_TREES,
         marks: MARKS,

@@ -93,24 +93,6 @@ export const PSEUDOCODE = {
       { id: 'goal-check', text: 'return the best path when time or iterations run out', indent: 1 },
     ],
   },
-  'tree-informed-rrt-star': {
-    title: 'Informed RRT* (Gammell, Srinivasa & Barfoot 2014)',
-    choosesParent: true,
-    lines: [
-      { id: 'init', text: 'T ← {q_start}, c_best ← ∞' },
-      { id: 'loop', text: 'repeat' },
-      { id: 'sample', text: 'q_rand ← SAMPLE() while c_best = ∞, else a uniform state of the informed set', indent: 1 },
-      ...SAMPLER_LINES,
-      { id: 'nearest', text: 'q_near ← NEAREST(T, q_rand)', indent: 1 },
-      { id: 'steer', text: 'q_new ← STEER(q_near, q_rand, range)', indent: 1 },
-      { id: 'check', text: 'if not MOTION_FREE(q_near, q_new): reject', indent: 1 },
-      { id: 'add', text: 'Q_near ← NEAR(T, q_new); parent ← cheapest valid in Q_near', indent: 1 },
-      { id: 'rewire', text: 'REWIRE: for q in Q_near cheaper through q_new: parent(q) ← q_new', indent: 1 },
-      { id: 'cost', text: 'if a goal node got cheaper: c_best ← its cost', indent: 1 },
-      { id: 'informed', text: 'informed set ← {q : d(q_start, q) + d(q, q_goal) < c_best}: an ellipse, shrinking', indent: 2 },
-      { id: 'goal-check', text: 'return the best path when time or iterations run out', indent: 1 },
-    ],
-  },
   'tree-inspection': {
     title: 'Inspection planning (IRIS-style tree, Technion course)',
     lines: [
@@ -207,6 +189,22 @@ export const PSEUDOCODE = {
       { id: 'goal-check', text: 'goal within a step and the motion is free: done', indent: 1 },
     ],
   },
+};
+
+// Informed RRT* (Gammell, Srinivasa & Barfoot 2014) is RRT* whose samples, once it has a path, come
+// from the informed set: RRT*'s lines, with its sampling and the set's shrinking said.
+PSEUDOCODE['tree-informed-rrt-star'] = {
+  title: 'Informed RRT* (Gammell, Srinivasa & Barfoot 2014)',
+  choosesParent: true,
+  lines: PSEUDOCODE['tree-rrt-star'].lines.flatMap((l) => {
+    if (l.id === 'init') return [{ ...l, text: 'T ← {q_start}, c_best ← ∞' }];
+    if (l.id === 'sample') return [{ ...l, text: 'q_rand ← SAMPLE() while c_best = ∞, else a uniform state of the informed set' }];
+    if (l.id === 'cost') {
+      return [{ ...l, text: 'if a goal node got cheaper: c_best ← its cost' },
+        { id: 'informed', text: 'informed set ← {q : d(q_start, q) + d(q, q_goal) < c_best}: an ellipse, shrinking', indent: 2 }];
+    }
+    return [l];
+  }),
 };
 
 // The roadmaps (src/planners/roadmap/): one milestone per iteration, then a query when it changed.

@@ -42,7 +42,7 @@ use self::step::{disc_blocked, step_test};
 use crate::events::EventKind;
 use crate::geometry::Workspace;
 use crate::math::{wrap_angle, Real, Vec2};
-use crate::planners::caps::{Capabilities, Draws, Family, LegendItem};
+use crate::planners::caps::{Capabilities, Draws, EventSet, Family, LegendItem};
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::space_info::SpaceInfo;
 use std::collections::VecDeque;
@@ -73,7 +73,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
         chart: None,
         queries: false,
         proves_no_path: true,
-        events: &[EventKind::Cell, EventKind::CellShape, EventKind::CellState, EventKind::Potential, EventKind::Region, EventKind::Field, EventKind::NodeAdded, EventKind::Solved],
+        events: EventSet::of(&[EventKind::Cell, EventKind::CellShape, EventKind::CellState, EventKind::Potential, EventKind::Region, EventKind::Field, EventKind::NodeAdded, EventKind::Solved]),
         pseudocode: "cells-hex-potential",
         legend: LEGEND,
         marks: MARKS,

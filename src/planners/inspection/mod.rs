@@ -51,7 +51,7 @@ pub use coverage::{continuous_coverage, course_coverage, path_coverage, seen_alo
 use super::rrt::{resolve_range, RANGE};
 use crate::events::EventKind;
 use crate::math::Real;
-use crate::planners::caps::{self, Capabilities, Draws, Family};
+use crate::planners::caps::{self, Capabilities, Draws, EventSet, Family};
 use crate::planners::{
     Context, InspectionTask, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree,
 };
@@ -76,7 +76,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
         chart: Some("coverage"),
         queries: false,
         proves_no_path: false,
-        events: &[
+        events: EventSet::of(&[
             EventKind::Sample,
             EventKind::SampleTry,
             EventKind::NodeAdded,
@@ -87,7 +87,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
             EventKind::Rewire,
             EventKind::Coverage,
             EventKind::PointSeen,
-        ],
+        ]),
         pseudocode: "tree-inspection",
         legend: caps::ONE_TREE,
         marks: &[],

@@ -11,7 +11,7 @@
 
 use super::{fixed_rule, RoadmapPlanner, CONNECT, K, RADIUS};
 use crate::events::EventKind;
-use crate::planners::caps::{Capabilities, Draws, Family, LegendItem};
+use crate::planners::caps::{Capabilities, Draws, EventSet, Family, LegendItem};
 use crate::planners::{ParamSpec, PlannerSpec, TaskKind};
 use crate::sampler::SAMPLER_GROUP;
 
@@ -39,7 +39,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
         chart: None,
         queries: true,
         proves_no_path: false,
-        events: &[
+        events: EventSet::of(&[
             EventKind::Sample,
             EventKind::SampleRejected,
             EventKind::SampleTry,
@@ -49,7 +49,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
             EventKind::EdgeChecked,
             EventKind::QueryPath,
             EventKind::Solved,
-        ],
+        ]),
         pseudocode: "roadmap-lazy-prm",
         legend: LEGEND,
         marks: &[],

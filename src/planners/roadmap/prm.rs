@@ -11,7 +11,7 @@
 
 use super::{fixed_rule, RoadmapPlanner, CONNECT, K, RADIUS};
 use crate::events::EventKind;
-use crate::planners::caps::{self, Capabilities, Draws, Family};
+use crate::planners::caps::{self, Capabilities, Draws, EventSet, Family};
 use crate::planners::{ParamSpec, PlannerSpec, TaskKind};
 use crate::sampler::SAMPLER_GROUP;
 
@@ -31,7 +31,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
         chart: None,
         queries: true,
         proves_no_path: false,
-        events: &[
+        events: EventSet::of(&[
             EventKind::Sample,
             EventKind::SampleRejected,
             EventKind::SampleTry,
@@ -40,7 +40,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
             EventKind::RoadmapEdge,
             EventKind::QueryPath,
             EventKind::Solved,
-        ],
+        ]),
         pseudocode: "roadmap-prm",
         legend: caps::ROADMAP,
         marks: &[],

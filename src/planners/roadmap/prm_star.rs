@@ -13,7 +13,7 @@
 use super::{Neighbours, RoadmapPlanner};
 use crate::events::EventKind;
 use crate::math::Real;
-use crate::planners::caps::{self, Capabilities, Draws, Family};
+use crate::planners::caps::{self, Capabilities, Draws, EventSet, Family};
 use crate::planners::{ParamSpec, Params, PlannerSpec, TaskKind};
 use crate::sampler::SAMPLER_GROUP;
 use crate::space_info::SpaceInfo;
@@ -34,7 +34,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
         chart: None,
         queries: true,
         proves_no_path: false,
-        events: &[
+        events: EventSet::of(&[
             EventKind::Sample,
             EventKind::SampleRejected,
             EventKind::SampleTry,
@@ -44,7 +44,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
             EventKind::QueryPath,
             EventKind::Cost,
             EventKind::Solved,
-        ],
+        ]),
         pseudocode: "roadmap-prm-star",
         legend: caps::ROADMAP,
         marks: &[],

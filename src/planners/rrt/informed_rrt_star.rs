@@ -25,10 +25,10 @@
 //! plane, none is logged), so the page draws it shrinking. Unlike the paper, the tree is not
 //! pruned of nodes outside the set. Parameters are RRT*'s.
 
-use super::rrt_star::{RrtStar, PARAMS};
+use super::rrt_star::{self, RrtStar, PARAMS};
 use crate::events::EventKind;
 use crate::math::{Real, Vec2};
-use crate::planners::caps::{self, Capabilities, Draws, Family};
+use crate::planners::caps::Capabilities;
 use crate::planners::{Context, Planner, PlannerData, PlannerSpec, TaskKind};
 use crate::sampler::SAMPLER_GROUP;
 use crate::space::Metric;
@@ -42,30 +42,10 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     groups: &[SAMPLER_GROUP],
     task: TaskKind::Goal,
     caps: Capabilities {
-        family: Family::Tree,
-        draws: Draws::Tree,
-        trees: 1,
-        improves: true,
-        chart: Some("cost"),
-        queries: false,
-        proves_no_path: false,
-        events: &[
-            EventKind::Sample,
-            EventKind::SampleRejected,
-            EventKind::SampleTry,
-            EventKind::NodeAdded,
-            EventKind::Collision,
-            EventKind::Nearest,
-            EventKind::Steer,
-            EventKind::Solved,
-            EventKind::Rewire,
-            EventKind::Cost,
-            EventKind::Informed,
-        ],
+        events: rrt_star::SPEC.caps.events.with(&[EventKind::Informed]),
         pseudocode: "tree-informed-rrt-star",
-        legend: caps::ONE_TREE,
-        marks: &[],
         overlays: &["rewires", "best", "informed"],
+        ..rrt_star::SPEC.caps
     },
     make: |si, task, params| {
         let star = RrtStar::new(si, task, params);
@@ -160,7 +140,7 @@ impl InformedSet {
             norm += *o * *o;
         }
         let norm = norm.sqrt();
-        if !(norm > 0.0) {
+        if norm <= 0.0 {
             return false;
         }
         let r = libm::pow(cx.rng.uniform01(), 1.0 / out.len() as Real) / norm;

@@ -59,7 +59,7 @@ use crate::geometry::segment::orient_sign;
 use crate::journal::Entry as Recorded;
 use crate::math::{angle_diff, wrap_angle, Real, Vec2};
 use crate::motion::MotionValidator;
-use crate::planners::caps::{Capabilities, Draws, Family, LegendItem};
+use crate::planners::caps::{Capabilities, Draws, EventSet, Family, LegendItem};
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::space_info::SpaceInfo;
 use std::cmp::Ordering;
@@ -86,7 +86,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
         chart: None,
         queries: false,
         proves_no_path: true,
-        events: &[EventKind::GraphEdge, EventKind::NodeAdded, EventKind::Cost, EventKind::Solved],
+        events: EventSet::of(&[EventKind::GraphEdge, EventKind::NodeAdded, EventKind::Cost, EventKind::Solved]),
         pseudocode: "exact-visibility-graph",
         legend: LEGEND,
         marks: &[],
