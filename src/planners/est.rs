@@ -65,26 +65,13 @@ pub const BI_SPEC: PlannerSpec = PlannerSpec {
     groups: &[],
     task: TaskKind::Goal,
     caps: Capabilities {
-        family: Family::Tree,
-        draws: Draws::Tree,
         trees: 2,
-        improves: false,
-        chart: None,
-        queries: false,
-        proves_no_path: false,
-        events: EventSet::of(&[
-            EventKind::Sample,
-            EventKind::NodeAdded,
-            EventKind::Collision,
-            EventKind::Select,
-            EventKind::TreesConnected,
-            EventKind::Solved,
-        ]),
+        events: SPEC.caps.events.with(&[EventKind::TreesConnected]),
         pseudocode: "tree-bi-est",
         legend: caps::TWO_TREES,
-        marks: &[],
-        overlays: &["density"],
+        ..SPEC.caps
     },
+
     make: |si, task, params| Ok(Box::new(Est::new(si, task, params, true))),
 };
 

@@ -11,7 +11,7 @@
 
 use super::{fixed_rule, RoadmapPlanner, CONNECT, K, RADIUS};
 use crate::events::EventKind;
-use crate::planners::caps::{Capabilities, Draws, EventSet, Family, LegendItem};
+use crate::planners::caps::{Capabilities, LegendItem};
 use crate::planners::{ParamSpec, PlannerSpec, TaskKind};
 use crate::sampler::SAMPLER_GROUP;
 
@@ -32,29 +32,12 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     groups: &[SAMPLER_GROUP],
     task: TaskKind::Goal,
     caps: Capabilities {
-        family: Family::Roadmap,
-        draws: Draws::Roadmap,
-        trees: 0,
-        improves: false,
-        chart: None,
-        queries: true,
-        proves_no_path: false,
-        events: EventSet::of(&[
-            EventKind::Sample,
-            EventKind::SampleRejected,
-            EventKind::SampleTry,
-            EventKind::NodeAdded,
-            EventKind::Collision,
-            EventKind::RoadmapEdge,
-            EventKind::EdgeChecked,
-            EventKind::QueryPath,
-            EventKind::Solved,
-        ]),
+        events: super::prm::SPEC.caps.events.with(&[EventKind::EdgeChecked]),
         pseudocode: "roadmap-lazy-prm",
         legend: LEGEND,
-        marks: &[],
-        overlays: &[],
+        ..super::prm::SPEC.caps
     },
+
     make: |si, task, params| Ok(Box::new(RoadmapPlanner::new(si.dims(), task, fixed_rule(si, params), true))),
 };
 

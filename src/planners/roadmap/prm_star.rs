@@ -13,7 +13,7 @@
 use super::{Neighbours, RoadmapPlanner};
 use crate::events::EventKind;
 use crate::math::Real;
-use crate::planners::caps::{self, Capabilities, Draws, EventSet, Family};
+use crate::planners::caps::Capabilities;
 use crate::planners::{ParamSpec, Params, PlannerSpec, TaskKind};
 use crate::sampler::SAMPLER_GROUP;
 use crate::space_info::SpaceInfo;
@@ -27,29 +27,12 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     groups: &[SAMPLER_GROUP],
     task: TaskKind::Goal,
     caps: Capabilities {
-        family: Family::Roadmap,
-        draws: Draws::Roadmap,
-        trees: 0,
         improves: true,
-        chart: None,
-        queries: true,
-        proves_no_path: false,
-        events: EventSet::of(&[
-            EventKind::Sample,
-            EventKind::SampleRejected,
-            EventKind::SampleTry,
-            EventKind::NodeAdded,
-            EventKind::Collision,
-            EventKind::RoadmapEdge,
-            EventKind::QueryPath,
-            EventKind::Cost,
-            EventKind::Solved,
-        ]),
+        events: super::prm::SPEC.caps.events.with(&[EventKind::Cost]),
         pseudocode: "roadmap-prm-star",
-        legend: caps::ROADMAP,
-        marks: &[],
-        overlays: &[],
+        ..super::prm::SPEC.caps
     },
+
     make: |si, task, params| {
         Ok(Box::new(
             RoadmapPlanner::new(si.dims(), task, rule(si, params), false).improving(params.real("improve_for") as u64),
