@@ -37,10 +37,11 @@ pub struct SpaceInfo {
     pub space: StateSpace,
     /// Largest step between two checked states along a motion, in the space's metric.
     pub resolution: Real,
-    pub(crate) validity: RobotInWorkspace,
-    pub(crate) checks: Cell<u64>,
+    validity: RobotInWorkspace,
+    /// State checks so far.
+    checks: Cell<u64>,
     /// Scratch for the clearances along a motion (reused, so checking does not allocate).
-    pub(crate) clearances: RefCell<Vec<Real>>,
+    clearances: RefCell<Vec<Real>>,
     /// The run's deadline (see [`Deadline`]), and whether work was cut short by it.
     deadline: Cell<Deadline>,
     interrupted: Cell<bool>,
@@ -50,7 +51,7 @@ pub struct SpaceInfo {
     last_look: Cell<Option<Instant>>,
     /// The bounded batch's journal (see [`crate::journal`]), whether it is in use, when the batch
     /// is suspended, whether it was, and the units of new work done in the batch.
-    pub(crate) journal: RefCell<Journal>,
+    journal: RefCell<Journal>,
     journal_on: Cell<bool>,
     suspend_at: Cell<Deadline>,
     suspended: Cell<bool>,

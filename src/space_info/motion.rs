@@ -126,8 +126,7 @@ impl SpaceInfo {
         n: usize,
         scratch: &mut [Real],
     ) -> Result<(), Invalid> {
-        let disp = measure.disp();
-        let m = measure;
+        let (m, disp) = (measure, measure.disp());
         let cap = disp / n as Real;
         let mut clear = self.clearances.take();
         clear.clear();
