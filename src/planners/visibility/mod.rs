@@ -453,7 +453,7 @@ impl Planner for VisibilityGraph {
         false
     }
     fn data(&self) -> PlannerData {
-        PlannerData { trees: self.tree.iter().cloned().collect() }
+        PlannerData::of_trees(self.tree.iter().cloned().collect())
     }
     fn gave_up(&self) -> Option<String> {
         self.reason.clone()
