@@ -1,6 +1,7 @@
 //! Motion validation. A straight motion in state space is checked at every state at most
-//! [`SpaceInfo::resolution`](crate::space_info::SpaceInfo::resolution) apart (OMPL's `DiscreteMotionValidator`: the end first, then in
-//! bisection order, coarse to fine, so a collision is found after few checks). On top of that the
+//! [`SpaceInfo::resolution`](crate::space_info::SpaceInfo::resolution) apart (OMPL's
+//! `DiscreteMotionValidator`: the end first, then in bisection order, coarse to fine, so a
+//! collision is found after few checks). On top of that the
 //! motion is *certified*, so no motion can cut an obstacle's corner between two checked states:
 //!
 //! - a point robot's motion is a segment, tested exactly against every obstacle;

@@ -19,53 +19,53 @@ enum Mode {
         /// Whether the sweep hits.
         hit: bool,
     },
-    /// Clearances certified between checked states, measured by [`Measure`].
-    Certified(Measure),
+    /// Clearances in units of the motion's parameter, certified between checked states: every
+    /// constraint closes at most at rate 1.
+    AlongMotion,
+    /// Clearances in workspace units, certified between checked states: no body point moves more
+    /// than `disp` along the whole motion.
+    InWorkspace {
+        /// The bound on any body point's travel.
+        disp: Real,
+    },
     /// The discrete checks alone (a robot with no model of its own).
     Discrete,
 }
 
-/// What a certified motion's clearances measure.
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum Measure {
-    /// In units of the motion's parameter: every constraint closes at most at rate 1.
-    Motion,
-    /// In workspace units: no body point moves more than `disp` along the whole motion.
-    Workspace {
-        /// The bound on any body point's travel.
-        disp: Real,
-    },
-}
-
-impl Measure {
-    /// The bound on travel over the whole motion, in the clearances' units.
+impl Mode {
+    /// How the motion `a → b` is checked, given what the robot's exact sweep (if any) said.
+    /// Built where it is matched, so the enum costs nothing (callgrind: the same instructions as
+    /// matching on the model's answers directly).
     #[inline]
-    fn disp(self) -> Real {
-        match self {
-            Measure::Motion => 1.0,
-            Measure::Workspace { disp } => disp,
+    fn of(model: &dyn MotionModel, sweep: Option<bool>, a: &[Real], b: &[Real]) -> Mode {
+        match sweep {
+            Some(hit) => Mode::Swept { hit },
+            None if model.has_motion_clearance() => Mode::AlongMotion,
+            None => match model.displacement_bound(a, b) {
+                Some(disp) => Mode::InWorkspace { disp },
+                None => Mode::Discrete,
+            },
         }
     }
+}
+
+/// Which clearance a certified check asks the motion model for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Clearance<'m> {
+    /// Along the motion `a → b`, in units of its parameter.
+    Motion(&'m [Real], &'m [Real]),
+    /// Of the state alone, in workspace units.
+    Workspace,
 }
 
 /// Deepest bisection when certifying one interval (2^-40 of a resolution step).
 const MAX_DEPTH: u32 = 40;
 
 impl SpaceInfo {
-    /// Clearance of `q` on the motion `a → b`, capped at `cap`, by the robot's motion model
-    /// `model`, counted as one state check: as `measure` says (workspace units, or units of the
-    /// motion's parameter).
+    /// Clearance of `q` capped at `cap` by the robot's motion model `model`, counted as one state
+    /// check: the clearance `kind` says (workspace units, or units of the motion's parameter).
     #[inline]
-    #[allow(clippy::too_many_arguments)]
-    fn clearance_checked(
-        &self,
-        model: &dyn MotionModel,
-        measure: Measure,
-        a: &[Real],
-        b: &[Real],
-        q: &[Real],
-        cap: Real,
-    ) -> Real {
+    fn clearance_checked(&self, model: &dyn MotionModel, kind: Clearance, q: &[Real], cap: Real) -> Real {
         self.checks.set(self.checks.get() + 1);
         // Past the deadline, a clearance of 0 refuses the motion (and the run stops).
         if self.interrupted() {
@@ -76,9 +76,9 @@ impl SpaceInfo {
             Entry::Clear,
             0.0,
             || {
-                match measure {
-                    Measure::Motion => model.motion_clearance(&self.validity.workspace, a, b, q, cap),
-                    Measure::Workspace { .. } => model.clearance(&self.validity.workspace, q, cap),
+                match kind {
+                    Clearance::Motion(a, b) => model.motion_clearance(&self.validity.workspace, a, b, q, cap),
+                    Clearance::Workspace => model.clearance(&self.validity.workspace, q, cap),
                 }
                 .unwrap_or(0.0)
             },
@@ -116,37 +116,39 @@ impl SpaceInfo {
     }
 
     /// Like the discrete check, but computing each state's clearance (capped at the per-step
-    /// displacement) and then certifying every interval between checked states.
+    /// displacement) and then certifying every interval between checked states. `disp` bounds
+    /// any body point's travel over the motion in the clearances' units (1 along the motion).
+    #[allow(clippy::too_many_arguments)]
     fn check_certified(
         &self,
         model: &dyn MotionModel,
-        measure: Measure,
         a: &[Real],
         b: &[Real],
         n: usize,
+        disp: Real,
+        m: Clearance,
         scratch: &mut [Real],
     ) -> Result<(), Invalid> {
-        let (m, disp) = (measure, measure.disp());
         let cap = disp / n as Real;
         let mut clear = self.clearances.take();
         clear.clear();
         clear.resize(n + 1, 0.0);
         let outcome = (|| {
-            clear[n] = self.clearance_checked(model, m, a, b, b, cap);
+            clear[n] = self.clearance_checked(model, m, b, cap);
             if clear[n] == 0.0 {
                 scratch.copy_from_slice(b);
                 return Err(Invalid);
             }
             in_bisection_order(n, |i| {
                 self.interpolate(a, b, i as Real / n as Real, scratch);
-                clear[i] = self.clearance_checked(model, m, a, b, scratch, cap);
+                clear[i] = self.clearance_checked(model, m, scratch, cap);
                 if clear[i] == 0.0 {
                     Err(Invalid)
                 } else {
                     Ok(())
                 }
             })?;
-            clear[0] = self.clearance_checked(model, m, a, b, a, cap);
+            clear[0] = self.clearance_checked(model, m, a, cap);
             for i in 0..n {
                 if clear[i] + clear[i + 1] <= cap {
                     let (t0, t1) = (i as Real / n as Real, (i + 1) as Real / n as Real);
@@ -168,7 +170,7 @@ impl SpaceInfo {
         lo: (Real, Real),
         hi: (Real, Real),
         disp: Real,
-        m: Measure,
+        m: Clearance,
         scratch: &mut [Real],
         depth: u32,
     ) -> Result<(), Invalid> {
@@ -178,7 +180,7 @@ impl SpaceInfo {
         }
         let tm = 0.5 * (lo.0 + hi.0);
         self.interpolate(a, b, tm, scratch);
-        let cm = self.clearance_checked(model, m, a, b, scratch, span);
+        let cm = self.clearance_checked(model, m, scratch, span);
         if cm == 0.0 || depth >= MAX_DEPTH {
             return Err(Invalid);
         }
@@ -235,12 +237,19 @@ impl SpaceInfo {
             self.interpolate(a, b, 0.5, scratch);
             return Err(Invalid);
         };
-        let mode = self.mode(model, a, b);
+        // The sweep is a question a planner decides by, so it is journalled (refused, as a hit,
+        // once the batch is suspended).
+        let sweep = self.journalled(
+            |e| if let Entry::Hit(h) = e { Some(*h) } else { None },
+            Entry::Hit,
+            Some(true),
+            || model.sweep_hits(&self.validity.workspace, a, b),
+        );
         if self.stopped() {
             scratch.copy_from_slice(b);
             return Err(Invalid);
         }
-        match mode {
+        match Mode::of(model, sweep, a, b) {
             Mode::Swept { hit } => {
                 self.check_discrete(a, b, n, scratch)?;
                 if hit {
@@ -249,28 +258,9 @@ impl SpaceInfo {
                 }
                 Ok(())
             }
-            Mode::Certified(measure) => self.check_certified(model, measure, a, b, n, scratch),
+            Mode::AlongMotion => self.check_certified(model, a, b, n, 1.0, Clearance::Motion(a, b), scratch),
+            Mode::InWorkspace { disp } => self.check_certified(model, a, b, n, disp, Clearance::Workspace, scratch),
             Mode::Discrete => self.check_discrete(a, b, n, scratch),
-        }
-    }
-
-    /// How the motion `a → b` is checked. The sweep is a question a planner decides by, so it is
-    /// journalled (refused, as a hit, once the batch is suspended).
-    #[inline]
-    fn mode(&self, model: &dyn MotionModel, a: &[Real], b: &[Real]) -> Mode {
-        let sweep = self.journalled(
-            |e| if let Entry::Hit(h) = e { Some(*h) } else { None },
-            Entry::Hit,
-            Some(true),
-            || model.sweep_hits(&self.validity.workspace, a, b),
-        );
-        match sweep {
-            Some(hit) => Mode::Swept { hit },
-            None if model.has_motion_clearance() => Mode::Certified(Measure::Motion),
-            None => match model.displacement_bound(a, b) {
-                Some(disp) => Mode::Certified(Measure::Workspace { disp }),
-                None => Mode::Discrete,
-            },
         }
     }
 }
