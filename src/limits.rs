@@ -179,3 +179,18 @@ pub fn cut(text: &str, max: usize) -> String {
         s
     }
 }
+
+/// The bytes `v`'s items take (its length, not its capacity: see
+/// [`Planner::stored_bytes`](crate::planners::Planner::stored_bytes)); what a run's memory limit
+/// counts.
+#[inline]
+pub fn bytes_of<T>(v: &[T]) -> usize {
+    std::mem::size_of_val(v)
+}
+
+/// The bytes a vector of vectors takes: each inner vector's header, and `items` items of `T` in
+/// all (counted by the caller, so this is quick).
+#[inline]
+pub fn nested_bytes<T>(outer: usize, items: usize) -> usize {
+    outer * std::mem::size_of::<Vec<T>>() + items * std::mem::size_of::<T>()
+}

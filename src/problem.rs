@@ -125,9 +125,11 @@ impl Problem {
         path.iter().map(|q| self.robot.decode(q)).collect()
     }
 
-    /// Build the problem, checking that start and goal have the robot's dimension, lie in bounds
-    /// and are collision-free; errors say which state and why.
+    /// Build the problem, checking the planner block against the registry, and that start and goal
+    /// have the robot's dimension, lie in bounds and are collision-free; errors say which key or
+    /// state and why.
     pub fn from_scenario(sc: &Scenario) -> Result<Problem, ScenarioError> {
+        check_planner_block(sc)?;
         let b = sc.bounds;
         let mut workspace = Workspace::new(
             Aabb { min: Vec2::new(b[0], b[1]), max: Vec2::new(b[2], b[3]) },
@@ -152,4 +154,15 @@ impl Problem {
             goal_tolerance: sc.goal_tolerance,
         })
     }
+}
+
+/// The scenario's planner block against the registry: a planner it has, parameters that planner
+/// takes with values in range; an error names the block's key (`planner.name`, `planner.range`).
+/// The scenario parses the block's shape; what only the registry knows is checked here, above the
+/// planners, so the scenario module does not depend on them.
+fn check_planner_block(sc: &Scenario) -> Result<(), ScenarioError> {
+    let Some(block) = &sc.planner else { return Ok(()) };
+    let spec = crate::planners::block_planner(&block.name).map_err(|msg| ScenarioError::at("planner.name", msg))?;
+    crate::planners::check_block_params(spec, &block.params)
+        .map_err(|(key, msg)| ScenarioError::at(crate::scenario::join("planner", &key), msg))
 }

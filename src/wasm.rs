@@ -257,7 +257,7 @@ impl Scene {
     pub fn optimum_json(&self, seconds: f64) -> String {
         let r = Problem::from_scenario(&self.inner.scenario)
             .map_err(|e| e.to_string())
-            .and_then(|p| crate::planners::visibility::optimum_within(p, seconds));
+            .and_then(|p| crate::run::optimum_within(p, seconds));
         match r {
             Ok(o) => serde_json::json!({"cost": o.cost, "exact": o.exact}).to_string(),
             Err(e) => serde_json::json!({ "error": e }).to_string(),

@@ -1,14 +1,16 @@
 //! Every registered planner, on every built-in scenario, for several seeds (OMPL's `2denvs`
 //! harness): it must solve within an iteration limit, and every returned path, raw and smoothed,
-//! must pass an independent checker; every tree edge must be a valid motion.
+//! must pass an independent checker; every motion of its data (tree edges, roadmap edges) must be
+//! valid.
 
 mod common;
 
 use planarium::motion::MotionValidator;
-use planarium::planners::{self, Params};
+use planarium::planners::{self, Params, TaskKind};
 use planarium::problem::Problem;
 use planarium::run::{RunConfig, Session};
-use planarium::scenario::{builtin, builtin_names};
+use planarium::scenario::{builtin, builtin_names, Scenario};
+use planarium::space_info::Deadline;
 use serde_json::json;
 
 /// Planner set-ups; a `range_fraction` becomes a range of that fraction of the space's extent.
@@ -31,65 +33,130 @@ fn the_checker_rejects_bad_paths() {
     common::self_test();
 }
 
+/// The built-ins a planner of task `task` is run on: every one of that task but horn-20 (a
+/// benchmark: OMPL solves it in a third of its runs within 30 s, not a test case) and the vehicle
+/// chain's (its paths are re-checked in tests/asv.rs, in primitive steps, against the course's own
+/// rules, io::asv::check_solution).
+fn builtins_for(task: TaskKind) -> Vec<(&'static str, Scenario)> {
+    builtin_names()
+        .into_iter()
+        .filter(|n| *n != "horn-20")
+        .map(|n| (n, builtin(n).unwrap()))
+        .filter(|(_, sc)| !matches!(sc.robot, planarium::scenario::RobotSpec::Asv { .. }))
+        .filter(|(_, sc)| match task {
+            TaskKind::Goal => sc.goal.is_some(),
+            TaskKind::Inspection => sc.goal.is_none(),
+        })
+        .collect()
+}
+
+/// Every planner of the registry, with the set-ups above (those must solve every built-in) or, for
+/// the others, its defaults: on every built-in of its task that it plans for (a planner may refuse
+/// a robot it does not handle, as grid search refuses an arm: the run is then skipped), every path
+/// it returns, raw and smoothed, passes the independent checker, and every motion its
+/// [`PlannerData`](planarium::planners::PlannerData) holds (tree edges, a roadmap's checked edges)
+/// is valid, by the crate's validator and, for a sample, independently. Planners outside the
+/// set-ups need not solve each built-in (a potential field stops in a local minimum by design: see
+/// apf-minimum), but each must solve at least one, so its path check is not vacuous. A planner
+/// whose data holds no motion on a run (a descent that kept none) is checked by its path alone.
 #[test]
 fn every_planner_solves_every_builtin_with_valid_paths() {
-    // horn-20 is a benchmark (OMPL solves it in a third of its runs within 30 s), not a test case;
-    // an inspection task has no goal for these planners.
-    for name in builtin_names().into_iter().filter(|n| *n != "horn-20") {
-        let sc = builtin(name).unwrap();
-        if sc.goal.is_none() {
-            continue;
+    let listed = setups();
+    let mut motions_checked = std::collections::BTreeMap::<&str, usize>::new();
+    for spec in planners::REGISTRY {
+        let mut own: Vec<serde_json::Value> =
+            listed.iter().filter(|(n, _)| *n == spec.name).map(|(_, p)| p.clone()).collect();
+        let must_solve = !own.is_empty();
+        if own.is_empty() {
+            own.push(json!({}));
         }
-        // The vehicle chain's paths are re-checked in tests/asv.rs, in primitive steps, against
-        // the course's own rules (io::asv::check_solution).
-        if matches!(sc.robot, planarium::scenario::RobotSpec::Asv { .. }) {
-            continue;
-        }
-        for (planner, params) in setups() {
-            let spec = planners::find(planner).unwrap();
-            let extent = Problem::from_scenario(&sc).unwrap().si.space.max_extent();
-            let mut params = params.clone();
-            if let Some(f) = params.as_object_mut().unwrap().remove("range_fraction") {
-                params["range"] = json!(f.as_f64().unwrap() * extent);
-            }
-            for seed in 1..=4 {
-                let mut p = Params::from_json(spec, &params).unwrap();
-                p.set_text(spec, "max_iterations", "200000").unwrap();
-                let problem = Problem::from_scenario(&sc).unwrap();
-                let mut s =
-                    Session::new(problem, RunConfig { planner: planner.into(), params: p, seed, record_events: false })
-                        .unwrap();
-                s.run_to_end();
-                let r = s.result();
-                let what = format!("{name} / {planner} {params} / seed {seed}");
-                assert!(r.solved, "{what}: {}", r.status);
-                if let Some(e) = common::path_problem(&sc, &r.path) {
-                    panic!("{what}: raw path: {e}");
+        let (mut ran, mut solved) = (0, 0);
+        for (name, sc) in builtins_for(spec.task) {
+            for params in &own {
+                let extent = Problem::from_scenario(&sc).unwrap().si.space.max_extent();
+                let mut params = params.clone();
+                if let Some(f) = params.as_object_mut().unwrap().remove("range_fraction") {
+                    params["range"] = json!(f.as_f64().unwrap() * extent);
                 }
-                if let Some(e) = common::path_problem(&sc, &r.smoothed) {
-                    panic!("{what}: smoothed path: {e}");
-                }
-                let (cost, smoothed) = (r.stats.cost.unwrap(), r.stats.smoothed_cost.unwrap());
-                assert!(smoothed <= cost + 1e-9, "{what}: smoothing made it longer ({cost} → {smoothed})");
-                assert!(r.stats.checks > 0 && r.stats.nodes >= 2);
-                // Every edge of every tree was checked by the planner: re-check with the crate's
-                // validator and, for a sample, independently.
-                let si = &s.problem().si;
-                let mut scratch = vec![0.0; si.dims()];
-                for (k, tree) in s.planner_data().trees.iter().enumerate() {
-                    for (e, (a, b)) in tree.edges().enumerate() {
-                        assert!(si.check_motion(a, b, &mut scratch).is_ok(), "{what}: tree {k} edge {e} invalid");
+                let seeds = if must_solve { 1..=4 } else { 1..=2 };
+                for seed in seeds {
+                    let mut p = Params::from_json(spec, &params).unwrap();
+                    p.set_text(spec, "max_iterations", if must_solve { "200000" } else { "20000" }).unwrap();
+                    let problem = Problem::from_scenario(&sc).unwrap();
+                    let config = RunConfig { planner: spec.name.into(), params: p, seed, record_events: false };
+                    let what = format!("{name} / {} {params} / seed {seed}", spec.name);
+                    let mut s = match Session::new(problem, config) {
+                        Ok(s) => s,
+                        Err(e) => {
+                            println!("{what}: not planned for ({e})");
+                            break;
+                        }
+                    };
+                    ran += 1;
+                    s.run_to_end();
+                    let r = s.result();
+                    assert!(r.solved || !must_solve, "{what}: {}", r.status);
+                    if r.solved {
+                        solved += 1;
+                        if let Some(e) = common::path_problem(&sc, &r.path) {
+                            panic!("{what}: raw path: {e}");
+                        }
+                        if let Some(e) = common::path_problem(&sc, &r.smoothed) {
+                            panic!("{what}: smoothed path: {e}");
+                        }
+                        let (cost, smoothed) = (r.stats.cost.unwrap(), r.stats.smoothed_cost.unwrap());
+                        // Not asserted outside the set-ups: under an arm's chain metric a shortcut's
+                        // ends, found by joint interpolation, are not on a shortest motion, so a
+                        // shortcut can lengthen the path (RRT* on arm-3, seed 1: 0.7623 → 0.7659).
+                        if must_solve {
+                            assert!(smoothed <= cost + 1e-9, "{what}: smoothing made it longer ({cost} → {smoothed})");
+                        } else if smoothed > cost + 1e-9 {
+                            println!("{what}: smoothing made it longer ({cost} → {smoothed})");
+                        }
+                        assert!(r.stats.checks > 0 && r.stats.nodes >= 2);
+                    }
+                    // Every motion the planner kept was checked by it: re-check with the crate's
+                    // validator and, for a sample, independently.
+                    let si = &s.problem().si;
+                    // The run's deadline no longer applies: past it, every motion check refuses
+                    // (a busy machine re-checking thousands of roadmap edges reached it).
+                    si.set_deadline(Deadline::NONE);
+                    let mut scratch = vec![0.0; si.dims()];
+                    let data = s.planner_data();
+                    for (e, (a, b)) in data.motions().enumerate() {
+                        assert!(si.check_motion(a, b, &mut scratch).is_ok(), "{what}: motion {e} of its data invalid");
                         if e % 7 == 0 {
                             if let Some(err) = common::motion_problem(&sc, a, b) {
-                                panic!("{what}: tree {k} edge {e}: {err}");
+                                panic!("{what}: motion {e} of its data: {err}");
                             }
                         }
+                        *motions_checked.entry(spec.name).or_default() += 1;
                     }
                 }
             }
         }
+        println!("{}: {ran} runs, {solved} solved", spec.name);
+        assert!(
+            ran > 0 && solved > 0,
+            "{}: planned {ran} runs and solved {solved}: its paths went unchecked",
+            spec.name
+        );
+        assert!(
+            motions_checked.contains_key(spec.name) != NO_GRAPH.contains(&spec.name),
+            "{}: its data held {} motions; a planner that keeps none is listed in NO_GRAPH, \
+             which says what is checked instead",
+            spec.name,
+            motions_checked.get(spec.name).copied().unwrap_or(0)
+        );
     }
+    println!("motions re-checked per planner: {motions_checked:?}");
 }
+
+/// Planners whose [`PlannerData`](planarium::planners::PlannerData) holds no motion (no tree, no
+/// graph): only their paths are checked, raw and smoothed, by the independent checker. None today:
+/// the potential field keeps its descent as a tree, grid and hexagonal search their search trees,
+/// the visibility graph its shortest-path tree, the roadmaps their checked edges.
+const NO_GRAPH: &[&str] = &[];
 
 #[test]
 fn one_iteration_cannot_outlast_the_time_limit_under_a_chain_metric() {

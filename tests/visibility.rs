@@ -10,9 +10,9 @@ mod common;
 
 use planarium::events::{EventKind, STRIDE};
 use planarium::motion::MotionValidator;
-use planarium::planners::visibility::optimum;
 use planarium::planners::{self, Params};
 use planarium::problem::Problem;
+use planarium::run::optimum;
 use planarium::run::{PlanResult, RunConfig, Session};
 use planarium::scenario::{builtin, builtin_names, RobotSpec, Scenario};
 use serde_json::{json, Value};

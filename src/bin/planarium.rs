@@ -290,7 +290,7 @@ fn print_optimum(sc: &Scenario, planner: &str, cost: Option<f64>, smoothed: Opti
         return;
     }
     let Ok(problem) = Problem::from_scenario(sc) else { return };
-    if let Ok(o) = planarium::planners::visibility::optimum_within(problem, 5.0) {
+    if let Ok(o) = planarium::run::optimum_within(problem, 5.0) {
         if let (true, Some(opt), Some(c), Some(sm)) = (o.exact, o.cost, cost, smoothed) {
             let above = |v: f64| 100.0 * (v / opt - 1.0);
             println!(

@@ -22,7 +22,7 @@ pub use aabb::Aabb;
 pub use shape::Shape;
 pub use sight::SensorPose;
 pub(crate) use workspace::add_tests;
-pub use workspace::{take_tests, Workspace, BVH_FROM, GRID_FROM};
+pub use workspace::{cell_blocked, take_tests, Workspace, BVH_FROM, GRID_FROM};
 
 #[cfg(test)]
 mod tests;

@@ -499,3 +499,17 @@ impl Workspace {
         found
     }
 }
+
+/// Whether an obstacle meets the interior of the cell `[min, max]`: a rectangle when their open
+/// interiors overlap (so a rectangle that only shares a side does not block, and a map's pixels
+/// come back exactly); other shapes when they touch the cell at all (the closed test, which is
+/// safe for moves between cell centres). Grid search's cells and an occupancy map's pixels.
+pub fn cell_blocked(ws: &Workspace, min: Vec2, max: Vec2) -> bool {
+    let bbox = Aabb { min, max };
+    let outline = [min, Vec2::new(max.x, min.y), max, Vec2::new(min.x, max.y)];
+    ws.first_hit(&bbox, |i| match &ws.obstacles[i] {
+        Shape::Rect(r) => r.min.x < max.x && min.x < r.max.x && r.min.y < max.y && min.y < r.max.y,
+        s => s.intersects_polygon(&outline, &bbox),
+    })
+    .is_some()
+}

@@ -1,6 +1,8 @@
 use super::*;
 use crate::problem::Problem;
 use crate::scenario::{builtin, Scenario};
+use crate::space::in_bisection_order;
+use crate::space_info::SpaceInfo;
 
 #[test]
 fn bisection_order_checks_every_step_once() {

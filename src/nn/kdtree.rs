@@ -41,7 +41,7 @@ impl KdTree {
     /// The bytes its points take (keys, ids, links and boxes; see
     /// [`Planner::stored_bytes`](crate::planners::Planner::stored_bytes)).
     pub fn bytes(&self) -> usize {
-        use crate::planners::bytes_of;
+        use crate::limits::bytes_of;
         bytes_of(&self.keys)
             + bytes_of(&self.ids)
             + bytes_of(&self.split)

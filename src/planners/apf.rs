@@ -532,7 +532,7 @@ impl Planner for PotentialField {
     }
 
     fn data(&self) -> PlannerData {
-        PlannerData { trees: self.tree.iter().cloned().collect() }
+        PlannerData::of_trees(self.tree.iter().cloned().collect())
     }
 
     fn gave_up(&self) -> Option<String> {

@@ -326,6 +326,6 @@ impl Planner for Est {
     }
 
     fn data(&self) -> PlannerData {
-        PlannerData { trees: self.trees.iter().map(|g| g.tree.clone()).collect() }
+        PlannerData::of_trees(self.trees.iter().map(|g| g.tree.clone()).collect())
     }
 }

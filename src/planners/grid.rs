@@ -26,8 +26,7 @@ use super::hex::cells::label_of;
 use super::hex::search::{Frontier, Search};
 use super::hex::CellLabel;
 use crate::events::EventKind;
-use crate::geometry::{Aabb, Workspace};
-use crate::io::occupancy::cell_blocked;
+use crate::geometry::{cell_blocked, Aabb, Workspace};
 use crate::math::{Real, Vec2};
 use crate::motion::MotionValidator;
 use crate::planners::caps::{self, Capabilities, Draws, EventSet, Family, LegendItem};
@@ -418,7 +417,7 @@ impl Planner for GridSearch {
         false
     }
     fn data(&self) -> PlannerData {
-        PlannerData { trees: self.tree.iter().cloned().collect() }
+        PlannerData::of_trees(self.tree.iter().cloned().collect())
     }
     fn gave_up(&self) -> Option<String> {
         self.failure.clone()

@@ -190,18 +190,7 @@ impl Context<'_> {
     }
 }
 
-/// The bytes `v`'s items take (its length, not its capacity: see [`Planner::stored_bytes`]).
-#[inline]
-pub fn bytes_of<T>(v: &[T]) -> usize {
-    std::mem::size_of_val(v)
-}
-
-/// The bytes a vector of vectors takes: each inner vector's header, and `items` items of `T` in
-/// all (counted by the caller, so this is quick).
-#[inline]
-pub fn nested_bytes<T>(outer: usize, items: usize) -> usize {
-    outer * std::mem::size_of::<Vec<T>>() + items * std::mem::size_of::<T>()
-}
+pub use crate::limits::{bytes_of, nested_bytes};
 
 /// A planner, advanced one iteration at a time.
 pub trait Planner {

@@ -459,9 +459,40 @@ impl Tree {
     }
 }
 
-/// A planner's trees, for drawing and for re-checking in tests.
+/// What a planner built (OMPL's `PlannerData`), for drawing and for re-checking in tests: its
+/// trees, and a graph's vertices and edges. Every edge here, of a tree or of the graph, is a motion
+/// the planner checked and kept ([`PlannerData::motions`]).
 #[derive(Clone, Debug, Default)]
 pub struct PlannerData {
-    /// The trees.
+    /// The trees (tree planners, EST, grid and hexagonal search, the potential field's descent,
+    /// the visibility graph's search tree).
     pub trees: Vec<Tree>,
+    /// A graph's vertices (a roadmap's milestones), `dims` numbers each, flat.
+    pub vertices: Vec<Real>,
+    /// Numbers per vertex.
+    pub dims: usize,
+    /// The graph's edges, as vertex pairs: those whose motion was checked and found valid (a Lazy
+    /// PRM's edges that no path used are unchecked, so not here).
+    pub edges: Vec<(u32, u32)>,
+}
+
+impl PlannerData {
+    /// Trees only.
+    pub fn of_trees(trees: Vec<Tree>) -> PlannerData {
+        PlannerData { trees, ..PlannerData::default() }
+    }
+    /// Vertex `v` of the graph.
+    pub fn vertex(&self, v: u32) -> &[Real] {
+        let v = v as usize;
+        &self.vertices[v * self.dims..(v + 1) * self.dims]
+    }
+    /// Vertices of the graph.
+    pub fn vertex_count(&self) -> usize {
+        self.vertices.len().checked_div(self.dims).unwrap_or(0)
+    }
+    /// Every motion the planner checked and kept: each tree's edges (parent → child), then the
+    /// graph's.
+    pub fn motions(&self) -> impl Iterator<Item = (&[Real], &[Real])> {
+        self.trees.iter().flat_map(Tree::edges).chain(self.edges.iter().map(|&(a, b)| (self.vertex(a), self.vertex(b))))
+    }
 }

@@ -75,7 +75,7 @@ pub trait Robot: std::fmt::Debug {
     fn is_valid(&self, ws: &Workspace, q: &[Real]) -> bool {
         self.verdict(ws, q) == Verdict::Valid
     }
-    /// The discrete check of the motion `a → b` in `n` steps ([`crate::motion::check_discrete`]).
+    /// The discrete check of the motion `a → b` in `n` steps ([`crate::space::check_discrete`]).
     /// Robots keep this default: it is entered once per motion, so that the loop calls each
     /// robot's own `is_valid` directly (in wasm, a dynamic call per state cost more than the point
     /// robot's check itself). It resumes after `skip` states and calls `stop` as it goes (see the
@@ -91,8 +91,8 @@ pub trait Robot: std::fmt::Debug {
         scratch: &mut [Real],
         skip: u64,
         stop: &dyn Fn(u64) -> bool,
-    ) -> (crate::motion::Discrete, u64) {
-        crate::motion::check_discrete(space, a, b, n, scratch, skip, stop, |q| self.is_valid(ws, q))
+    ) -> (crate::space::Discrete, u64) {
+        crate::space::check_discrete(space, a, b, n, scratch, skip, stop, |q| self.is_valid(ws, q))
     }
     /// The point of the workspace a state is drawn at (trees are projected onto it).
     fn project(&self, q: &[Real]) -> Vec2;

@@ -9,6 +9,7 @@
 pub mod bench;
 pub mod course_grade;
 mod fingerprint;
+mod optimum;
 pub mod report;
 mod result;
 pub mod scaling;
@@ -16,6 +17,7 @@ mod session;
 pub mod summary;
 
 pub use fingerprint::{fingerprint, fingerprint_in_batches, fnv1a, Fingerprint, FNV_OFFSET};
+pub use optimum::{optimum, optimum_within, Optimum};
 pub use report::{BenchReport, SetupReport};
 pub use result::{PlanResult, SamplerSummary, Stats};
 pub use session::{QueryAnswer, RunConfig, Session, SUSPEND_AFTER};

@@ -46,6 +46,7 @@ use crate::events::{EventKind, EventLog};
 use crate::math::Real;
 use crate::params::{ParamGroup, ParamSpec, ParamValues};
 use crate::rng::Rng;
+pub use crate::space::gaussian_coordinates;
 use crate::space_info::SpaceInfo;
 use serde::Serialize;
 
@@ -229,34 +230,6 @@ impl Draw<'_> {
             None => gaussian_coordinates(&self.si.space, self.rng, centre, sigma, out),
         }
     }
-}
-
-/// The generic Gaussian neighbour: every coordinate moved independently (what a sampler's
-/// `Draw::gaussian_near` falls back to). Public for robots that move some coordinates this way.
-pub fn gaussian_coordinates(
-    space: &crate::space::StateSpace,
-    rng: &mut Rng,
-    centre: &[Real],
-    sigma: Real,
-    out: &mut [Real],
-) {
-    for (i, d) in space.dims.iter().enumerate() {
-        let v = centre[i] + rng.normal() * sigma * (d.hi - d.lo);
-        out[i] = if d.wraps { v } else { reflect(v, d.lo, d.hi) };
-    }
-    space.enforce(out);
-}
-
-/// `v` folded into `[lo, hi]` by reflection at the bounds (as often as needed): the identity
-/// inside, a mirror image just outside, and uniform in the limit of a wide spread. Plain IEEE
-/// arithmetic (`rem_euclid`), so the result is the same on every platform.
-fn reflect(v: Real, lo: Real, hi: Real) -> Real {
-    let w = hi - lo;
-    if w <= 0.0 {
-        return lo;
-    }
-    let t = (v - lo).rem_euclid(2.0 * w);
-    (lo + if t > w { 2.0 * w - t } else { t }).clamp(lo, hi)
 }
 
 impl Sampler {

@@ -2,12 +2,13 @@
 //! reflection into the bounds) and the logging of checked draws. Each sampler's defining property
 //! is tested through the public API in `tests/samplers.rs`.
 
-use super::{reflect, Draw};
+use super::Draw;
 use crate::events::{EventKind, EventLog, STRIDE};
 use crate::math::{angle_diff, Real};
 use crate::problem::Problem;
 use crate::rng::Rng;
 use crate::scenario::builtin;
+use crate::space::reflect;
 
 fn problem(name: &str) -> Problem {
     Problem::from_scenario(&builtin(name).unwrap()).unwrap()

@@ -13,6 +13,7 @@ mod types;
 
 pub use builtin::{builtin, builtin_names, course_of, BUILTINS};
 pub use error::ScenarioError;
+pub(crate) use parse::join;
 pub use types::{Inspection, MapGrid, ObstacleSpec, PlannerDefaults, RobotSpec, Scenario, FORMAT};
 
 #[cfg(test)]

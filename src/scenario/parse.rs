@@ -16,7 +16,7 @@ struct Obj<'a> {
     used: Vec<&'static str>,
 }
 
-fn join(path: &str, key: &str) -> String {
+pub(crate) fn join(path: &str, key: &str) -> String {
     let key = key_name(key);
     if path.is_empty() {
         key
@@ -380,8 +380,6 @@ fn planner(v: &Value, path: &str) -> Result<PlannerDefaults> {
         map.get("name").ok_or_else(|| ScenarioError::at(join(path, "name"), "is missing (a required key)"))?,
         &join(path, "name"),
     )?;
-    // What only the registry knows (the planner, its parameters) is checked on the planner side.
-    let spec = crate::planners::block_planner(&name).map_err(|msg| ScenarioError::at(join(path, "name"), msg))?;
     let seed = match map.get("seed") {
         Some(s) => {
             Some(s.as_u64().ok_or_else(|| ScenarioError::at(join(path, "seed"), "must be a non-negative integer"))?)
@@ -391,15 +389,16 @@ fn planner(v: &Value, path: &str) -> Result<PlannerDefaults> {
     let mut params = map.clone();
     params.remove("name");
     params.remove("seed");
-    crate::planners::check_block_params(spec, &params)
-        .map_err(|(key, msg)| ScenarioError::at(join(path, &key), msg))?;
+    // What only the registry knows (the planner, its parameters) is checked above the planners,
+    // when the scenario becomes a problem ([`crate::problem::Problem::from_scenario`]).
     Ok(PlannerDefaults { name, seed, params })
 }
 
 impl Scenario {
     /// Parse and validate a scenario document. Syntax errors carry their line and column; every
-    /// other error names its JSON path. (Start and goal validity are checked when the scenario
-    /// becomes a [`Problem`](crate::problem::Problem).)
+    /// other error names its JSON path. (Start and goal validity, and the planner block's planner
+    /// and parameters, are checked when the scenario becomes a
+    /// [`Problem`](crate::problem::Problem).)
     pub fn from_json(text: &str) -> Result<Scenario> {
         if let Some(why) = limits::text_too_large(text) {
             return Err(ScenarioError::document(why));

@@ -7,6 +7,14 @@
 use crate::math::{angle_diff, wrap_angle, MinMax, Real};
 use crate::rng::Rng;
 
+mod discrete;
+mod gaussian;
+pub(crate) use discrete::in_bisection_order;
+pub use discrete::{check_discrete, Discrete};
+pub use gaussian::gaussian_coordinates;
+#[cfg(test)]
+pub(crate) use gaussian::reflect;
+
 /// One dimension of a state space.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Dim {

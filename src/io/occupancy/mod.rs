@@ -29,12 +29,12 @@
 //! Here: the grid, map_server's classification, grid → scenario. The image decoders are in
 //! `decode.rs`, the YAML reader in `yaml.rs`, scenario → grid → files in `export.rs`.
 
-use crate::geometry::{Aabb, Shape, Workspace};
 use crate::limits;
-use crate::math::{Real, Vec2};
+use crate::math::Real;
 use crate::scenario::{Scenario, ScenarioError};
 use serde_json::json;
 
+pub use crate::geometry::cell_blocked;
 pub use crate::limits::{MAX_MAP_PIXELS, MAX_MAP_SIDE};
 
 mod decode;
@@ -381,17 +381,3 @@ pub fn import_image(bytes: &[u8], name: &str, yaml: Option<(&str, &str)>) -> Res
 
 // ---------------------------------------------------------------------------------------------
 // Scenario → grid → files
-
-/// Whether an obstacle meets the interior of the cell `[min, max]`: a rectangle when their open
-/// interiors overlap (so a rectangle that only shares a side does not block, and a map's pixels
-/// come back exactly); other shapes when they touch the cell at all (the closed test, which is
-/// safe for moves between cell centres).
-pub fn cell_blocked(ws: &Workspace, min: Vec2, max: Vec2) -> bool {
-    let bbox = Aabb { min, max };
-    let outline = [min, Vec2::new(max.x, min.y), max, Vec2::new(min.x, max.y)];
-    ws.first_hit(&bbox, |i| match &ws.obstacles[i] {
-        Shape::Rect(r) => r.min.x < max.x && min.x < r.max.x && r.min.y < max.y && min.y < r.max.y,
-        s => s.intersects_polygon(&outline, &bbox),
-    })
-    .is_some()
-}

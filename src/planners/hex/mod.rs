@@ -593,7 +593,7 @@ impl Planner for HexPotential {
             + self.frontier.as_ref().map_or(0, Frontier::bytes)
     }
     fn data(&self) -> PlannerData {
-        PlannerData { trees: self.trees.clone() }
+        PlannerData::of_trees(self.trees.clone())
     }
     fn gave_up(&self) -> Option<String> {
         self.failure.clone()

@@ -383,6 +383,12 @@ impl Planner for RoadmapPlanner {
     }
     /// No trees: the roadmap is read through [`RoadmapPlanner::roadmap`].
     fn data(&self) -> PlannerData {
-        PlannerData::default()
+        let g = &self.graph;
+        PlannerData {
+            trees: Vec::new(),
+            vertices: g.states().to_vec(),
+            dims: self.sample.len(),
+            edges: g.edges().iter().filter(|e| e.state == EdgeState::Valid).map(|e| (e.a, e.b)).collect(),
+        }
     }
 }

@@ -135,6 +135,6 @@ impl Planner for Rrt {
     }
 
     fn data(&self) -> PlannerData {
-        PlannerData { trees: self.tree.iter().cloned().collect() }
+        PlannerData::of_trees(self.tree.iter().cloned().collect())
     }
 }

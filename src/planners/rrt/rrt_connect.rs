@@ -135,6 +135,6 @@ impl Planner for RrtConnect {
     }
 
     fn data(&self) -> PlannerData {
-        PlannerData { trees: self.trees.clone() }
+        PlannerData::of_trees(self.trees.clone())
     }
 }

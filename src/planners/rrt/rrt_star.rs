@@ -377,7 +377,7 @@ impl Planner for RrtStar {
     }
 
     fn data(&self) -> PlannerData {
-        PlannerData { trees: self.tree.iter().cloned().collect() }
+        PlannerData::of_trees(self.tree.iter().cloned().collect())
     }
 
     fn best_so_far(&self) -> Option<Vec<Vec<Real>>> {

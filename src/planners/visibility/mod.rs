@@ -44,7 +44,7 @@
 //!   goal's in proportion to the distance travelled (a disc may turn anywhere). For a footprint
 //!   that is itself (nearly) a disc, a regular polygon centred on the rotation point, this is the
 //!   optimum in the robot's metric (translation plus `weight·|Δθ|`) up to the approximations; for
-//!   other footprints it is a valid path but not the optimum (see [`optimum`]).
+//!   other footprints it is a valid path but not the optimum (see [`optimum`](crate::run::optimum)).
 //!
 //! Circles are approximated by `sides`-gons, so on maps with circles the path is the optimum among
 //! the approximating polygons: longer than the true optimum by at most a factor
@@ -472,48 +472,9 @@ impl Planner for VisibilityGraph {
         false
     }
     fn data(&self) -> PlannerData {
-        PlannerData { trees: self.tree.iter().cloned().collect() }
+        PlannerData::of_trees(self.tree.iter().cloned().collect())
     }
     fn gave_up(&self) -> Option<String> {
         self.reason.clone()
-    }
-}
-
-/// The shortest path's cost for a problem, from a run of the planner to its end: `Ok(None)` when no
-/// path exists; an error for a robot it does not apply to. `exact` says whether the cost is the
-/// robot's optimum (a point, or a round footprint: see [`Body`]) or only a valid path's cost.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Optimum {
-    /// The shortest path's cost in the robot's metric (`None`: start and goal not connected).
-    pub cost: Option<Real>,
-    /// Whether that is the robot's optimum (up to the approximations in the module's doc).
-    pub exact: bool,
-    /// The path (planning states).
-    pub path: Vec<Vec<Real>>,
-}
-
-/// The optimum of `problem` by the visibility graph (default parameters, no events, an hour at
-/// most: see [`optimum_within`]).
-pub fn optimum(problem: crate::problem::Problem) -> Result<Optimum, String> {
-    optimum_within(problem, 3600.0)
-}
-
-/// [`optimum`] within `seconds`; an error when the graph takes longer (a map of many obstacles).
-pub fn optimum_within(problem: crate::problem::Problem, seconds: Real) -> Result<Optimum, String> {
-    let exact = body_of(&problem.si)?.round;
-    let spec = crate::planners::find(SPEC.name).expect("registered");
-    let mut params = Params::defaults(spec);
-    params.set_text(spec, "time_limit", &format!("{}", seconds.clamp(0.01, 3600.0)))?;
-    params.set_text(spec, "batch", "1000000")?;
-    let config = crate::run::RunConfig { planner: spec.name.into(), params, seed: 1, record_events: false };
-    let mut s = crate::run::Session::new(problem, config)?;
-    s.run_to_end();
-    let r = s.result();
-    if r.solved {
-        Ok(Optimum { cost: r.stats.cost, exact, path: s.planning_path(true).to_vec() })
-    } else if s.status() == crate::status::Status::NoPath {
-        Ok(Optimum { cost: None, exact, path: Vec::new() })
-    } else {
-        Err(format!("the visibility graph stopped: {}", r.status))
     }
 }

@@ -18,8 +18,8 @@
 //! Motions are checked so that no vehicle moves more than `max_step` between two checked states
 //! (its [`MotionModel::steps`](super::MotionModel::steps), from a bound on every vehicle's speed
 //! proved in [`motion_bound`]),
-//! and then **certified** as the rigid body's are (`motion.rs`): each checked state's clearance
-//! says how far every vehicle may move with the state staying valid, and intervals whose end
+//! and then **certified** as the rigid body's are (`space_info/motion.rs`): each checked state's
+//! clearance says how far every vehicle may move with the state staying valid, and intervals whose end
 //! clearances do not cover the movement between them are bisected. So every state along an
 //! accepted motion is valid, not only the checked ones: a part of a motion (the path smoother cuts
 //! motions at arbitrary points) or a motion walked backwards (the goal tree's edges, in the final

@@ -279,7 +279,7 @@ pub(super) fn sample_gaussian(
     out: &mut [Real],
 ) {
     let placement = StateSpace { dims: space.dims[..3].to_vec(), metric: crate::space::Metric::Euclidean };
-    crate::sampler::gaussian_coordinates(&placement, rng, &centre[..3], sigma, &mut out[..3]);
+    crate::space::gaussian_coordinates(&placement, rng, &centre[..3], sigma, &mut out[..3]);
     let winding = match robot.orientation() {
         0.0 => {
             let s: Real = centre[3..].iter().sum();

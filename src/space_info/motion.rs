@@ -1,0 +1,266 @@
+//! Motion checks: the problem's [`MotionValidator`], counted and journalled (see
+//! [`crate::motion`] for the method). How a motion is checked follows from the robot's motion
+//! model ([`Mode`]).
+
+use super::SpaceInfo;
+use crate::journal::Entry;
+use crate::math::Real;
+use crate::motion::{Discrete, Invalid, MotionValidator};
+use crate::robot::MotionModel;
+use crate::space::in_bisection_order;
+
+/// How a motion is checked on top of its discrete states, from the robot's motion model (asked in
+/// this order: an exact sweep, clearances along the motion, a bound on any body point's travel).
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Mode {
+    /// An exact swept test, which said whether the motion hits an obstacle: the discrete checks
+    /// (the contract), then the sweep's answer.
+    Swept {
+        /// Whether the sweep hits.
+        hit: bool,
+    },
+    /// Clearances in units of the motion's parameter, certified between checked states: every
+    /// constraint closes at most at rate 1.
+    AlongMotion,
+    /// Clearances in workspace units, certified between checked states: no body point moves more
+    /// than `disp` along the whole motion.
+    InWorkspace {
+        /// The bound on any body point's travel.
+        disp: Real,
+    },
+    /// The discrete checks alone (a robot with no model of its own).
+    Discrete,
+}
+
+impl Mode {
+    /// How the motion `a → b` is checked, given what the robot's exact sweep (if any) said.
+    /// Built where it is matched, so the enum costs nothing (callgrind: the same instructions as
+    /// matching on the model's answers directly).
+    #[inline]
+    fn of(model: &dyn MotionModel, sweep: Option<bool>, a: &[Real], b: &[Real]) -> Mode {
+        match sweep {
+            Some(hit) => Mode::Swept { hit },
+            None if model.has_motion_clearance() => Mode::AlongMotion,
+            None => match model.displacement_bound(a, b) {
+                Some(disp) => Mode::InWorkspace { disp },
+                None => Mode::Discrete,
+            },
+        }
+    }
+}
+
+/// Which clearance a certified check asks the motion model for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Clearance<'m> {
+    /// Along the motion `a → b`, in units of its parameter.
+    Motion(&'m [Real], &'m [Real]),
+    /// Of the state alone, in workspace units.
+    Workspace,
+}
+
+/// Deepest bisection when certifying one interval (2^-40 of a resolution step).
+const MAX_DEPTH: u32 = 40;
+
+impl SpaceInfo {
+    /// Clearance of `q` capped at `cap` by the robot's motion model `model`, counted as one state
+    /// check: the clearance `kind` says (workspace units, or units of the motion's parameter).
+    #[inline]
+    fn clearance_checked(&self, model: &dyn MotionModel, kind: Clearance, q: &[Real], cap: Real) -> Real {
+        self.checks.set(self.checks.get() + 1);
+        // Past the deadline, a clearance of 0 refuses the motion (and the run stops).
+        if self.interrupted() {
+            return 0.0;
+        }
+        self.journalled(
+            |e| if let Entry::Clear(c) = e { Some(*c) } else { None },
+            Entry::Clear,
+            0.0,
+            || {
+                match kind {
+                    Clearance::Motion(a, b) => model.motion_clearance(&self.validity.workspace, a, b, q, cap),
+                    Clearance::Workspace => model.clearance(&self.validity.workspace, q, cap),
+                }
+                .unwrap_or(0.0)
+            },
+        )
+    }
+
+    fn check_discrete(&self, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real]) -> Result<(), Invalid> {
+        // A check cut short in an earlier batch resumes after the states it visited.
+        let mark = self.journal_on().then(|| self.journal.borrow().mark());
+        let skip = match self.journal_on().then(|| self.journal.borrow().peek().cloned()).flatten() {
+            Some(Entry::Partial { visited }) => {
+                self.journal.borrow_mut().take();
+                visited
+            }
+            _ => 0,
+        };
+        let ws = &self.validity.workspace;
+        let (outcome, checks) = self
+            .validity
+            .robot
+            .check_discrete(ws, &self.space, a, b, n, scratch, skip, &|units| self.fresh_work(units));
+        self.count_checks(checks);
+        match outcome {
+            Discrete::Valid => Ok(()),
+            Discrete::Invalid => Err(Invalid),
+            Discrete::OutOfTime => {
+                if let (Some(mark), true) = (mark, self.suspended() && !self.interrupted()) {
+                    // Resumed at this state in the next batch (in place of where it resumed).
+                    self.journal.borrow_mut().compact(mark, Entry::Partial { visited: checks }, None);
+                }
+                scratch.copy_from_slice(b);
+                Err(Invalid)
+            }
+        }
+    }
+
+    /// Like the discrete check, but computing each state's clearance (capped at the per-step
+    /// displacement) and then certifying every interval between checked states. `disp` bounds
+    /// any body point's travel over the motion in the clearances' units (1 along the motion).
+    #[allow(clippy::too_many_arguments)]
+    fn check_certified(
+        &self,
+        model: &dyn MotionModel,
+        a: &[Real],
+        b: &[Real],
+        n: usize,
+        disp: Real,
+        m: Clearance,
+        scratch: &mut [Real],
+    ) -> Result<(), Invalid> {
+        let cap = disp / n as Real;
+        let mut clear = self.clearances.take();
+        clear.clear();
+        clear.resize(n + 1, 0.0);
+        let outcome = (|| {
+            clear[n] = self.clearance_checked(model, m, b, cap);
+            if clear[n] == 0.0 {
+                scratch.copy_from_slice(b);
+                return Err(Invalid);
+            }
+            in_bisection_order(n, |i| {
+                self.interpolate(a, b, i as Real / n as Real, scratch);
+                clear[i] = self.clearance_checked(model, m, scratch, cap);
+                if clear[i] == 0.0 {
+                    Err(Invalid)
+                } else {
+                    Ok(())
+                }
+            })?;
+            clear[0] = self.clearance_checked(model, m, a, cap);
+            for i in 0..n {
+                if clear[i] + clear[i + 1] <= cap {
+                    let (t0, t1) = (i as Real / n as Real, (i + 1) as Real / n as Real);
+                    self.certify(model, a, b, (t0, clear[i]), (t1, clear[i + 1]), disp, m, scratch, 0)?;
+                }
+            }
+            Ok(())
+        })();
+        self.clearances.replace(clear);
+        outcome
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn certify(
+        &self,
+        model: &dyn MotionModel,
+        a: &[Real],
+        b: &[Real],
+        lo: (Real, Real),
+        hi: (Real, Real),
+        disp: Real,
+        m: Clearance,
+        scratch: &mut [Real],
+        depth: u32,
+    ) -> Result<(), Invalid> {
+        let span = disp * (hi.0 - lo.0);
+        if lo.1 + hi.1 > span {
+            return Ok(());
+        }
+        let tm = 0.5 * (lo.0 + hi.0);
+        self.interpolate(a, b, tm, scratch);
+        let cm = self.clearance_checked(model, m, scratch, span);
+        if cm == 0.0 || depth >= MAX_DEPTH {
+            return Err(Invalid);
+        }
+        self.certify(model, a, b, lo, (tm, cm), disp, m, scratch, depth + 1)?;
+        self.certify(model, a, b, (tm, cm), hi, disp, m, scratch, depth + 1)
+    }
+}
+
+impl MotionValidator for SpaceInfo {
+    fn check_motion(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Invalid> {
+        // Cut short by the deadline (or a suspended batch): refuse at once, accept nothing
+        // unchecked.
+        if self.stopped() {
+            scratch.copy_from_slice(b);
+            return Err(Invalid);
+        }
+        if !self.journal_on() {
+            return self.check_motion_now(a, b, scratch);
+        }
+        // In a bounded batch: a finished check is answered from the journal, one cut short
+        // resumes where it stopped, and a check that finishes is kept as one entry.
+        let mark = self.journal.borrow().mark();
+        let done = match self.journal.borrow().peek() {
+            Some(&Entry::Motion { ok, checks, at }) => Some((ok, checks, at)),
+            _ => None,
+        };
+        if let Some((ok, checks, at)) = done {
+            self.journal.borrow_mut().take();
+            self.count_checks(checks);
+            if ok {
+                return Ok(());
+            }
+            self.journal.borrow().load(at, scratch);
+            return Err(Invalid);
+        }
+        let before = self.checks();
+        let outcome = self.check_motion_now(a, b, scratch);
+        if !self.stopped() {
+            let entry = Entry::Motion { ok: outcome.is_ok(), checks: self.checks() - before, at: 0 };
+            self.journal.borrow_mut().compact(mark, entry, outcome.is_err().then_some(&*scratch));
+        }
+        outcome
+    }
+}
+
+impl SpaceInfo {
+    /// The motion check itself.
+    fn check_motion_now(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Invalid> {
+        let d = self.distance(a, b);
+        let model = self.motion_model();
+        // More steps than can be checked (unreachable for states in bounds: `Problem` refuses
+        // such a resolution): refuse the motion rather than check it more coarsely.
+        let Some(n) = model.steps(a, b, d, self.resolution) else {
+            self.interpolate(a, b, 0.5, scratch);
+            return Err(Invalid);
+        };
+        // The sweep is a question a planner decides by, so it is journalled (refused, as a hit,
+        // once the batch is suspended).
+        let sweep = self.journalled(
+            |e| if let Entry::Hit(h) = e { Some(*h) } else { None },
+            Entry::Hit,
+            Some(true),
+            || model.sweep_hits(&self.validity.workspace, a, b),
+        );
+        if self.stopped() {
+            scratch.copy_from_slice(b);
+            return Err(Invalid);
+        }
+        match Mode::of(model, sweep, a, b) {
+            Mode::Swept { hit } => {
+                self.check_discrete(a, b, n, scratch)?;
+                if hit {
+                    self.interpolate(a, b, 0.5, scratch);
+                    return Err(Invalid);
+                }
+                Ok(())
+            }
+            Mode::AlongMotion => self.check_certified(model, a, b, n, 1.0, Clearance::Motion(a, b), scratch),
+            Mode::InWorkspace { disp } => self.check_certified(model, a, b, n, disp, Clearance::Workspace, scratch),
+            Mode::Discrete => self.check_discrete(a, b, n, scratch),
+        }
+    }
+}
