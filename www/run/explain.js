@@ -46,7 +46,7 @@ export function num(v) {
 }
 const pt = (x, y) => `(${num(x)}, ${num(y)})`;
 
-/** What blocked a motion, from a COLLISION record's id (src/space_info.rs, SpaceInfo::blocked_at). */
+/** What blocked a motion, from a COLLISION record's id (src/space_info/explain.rs, SpaceInfo::blocked_at). */
 export function blockerText(id) {
   if (id >= 0) return `blocked by obstacle ${id}`;
   if (id === -2) return 'blocked by the map\'s edge';
