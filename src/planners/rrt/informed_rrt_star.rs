@@ -71,7 +71,8 @@ pub const SPEC: PlannerSpec = PlannerSpec {
         // the robot's point and the metric is at least their distance.
         let (ps, pg) = (si.project(&start), si.project(&goal));
         let planar = n >= 2 && ps == Vec2::new(start[0], start[1]) && pg == Vec2::new(goal[0], goal[1]) && direct == 2;
-        let set = InformedSet { goal_bias: params.real("goal_bias"), start, goal, foci, direct, turn };
+        let turn_sq = turn.iter().map(|v| v * v).sum();
+        let set = InformedSet { goal_bias: params.real("goal_bias"), start, goal, foci, direct, turn, turn_sq };
         Ok(Box::new(InformedRrtStar { star, set, planar: planar.then_some((ps, pg)), shown: None }))
     },
 };
@@ -105,6 +106,8 @@ struct InformedSet {
     /// Householder vector `e₁ − (goal − start)/foci` over the direct coordinates (all 0 when the
     /// foci coincide).
     turn: Vec<Real>,
+    /// `|turn|²`.
+    turn_sq: Real,
 }
 
 impl InformedSet {
@@ -117,7 +120,10 @@ impl InformedSet {
     fn draw(&self, cx: &mut Context, c: Real, out: &mut [Real]) -> bool {
         let (n, k) = (out.len(), self.direct);
         for _ in 0..TRIES {
-            cx.si.space.sample_uniform(cx.rng, out);
+            if k < n {
+                // the coordinates not drawn directly: uniformly (then the whole state is tested)
+                cx.si.space.sample_uniform(cx.rng, out);
+            }
             if k > 0 && !self.draw_direct(cx, c, &mut out[..k]) {
                 continue;
             }
@@ -150,7 +156,7 @@ impl InformedSet {
             *o *= r * if i == 0 { c / 2.0 } else { minor };
         }
         // …reflected onto the start–goal line and moved to the midpoint.
-        let vv: Real = self.turn.iter().map(|v| v * v).sum();
+        let vv = self.turn_sq;
         if vv > 0.0 {
             let vx: Real = self.turn.iter().zip(out.iter()).map(|(v, x)| v * x).sum();
             let k = 2.0 * vx / vv;
