@@ -146,14 +146,45 @@ test('Informed RRT*: the informed set is drawn as an ellipse that shrinks with e
     if (i) assert.ok(e[2] < model.informed[i - 1][2], `ellipse ${i} smaller than the one before`);
   });
   const ink = async () => (await countColours('canvas', [PALETTE.informed], 6))[0];
+  // The latest ellipse's own outline, in canvas pixels: 360 points of it, read where they fall.
+  const [cx, cy, a, b, ux, uy] = model.informed[model.informed.length - 1];
+  const outline = [];
+  for (let k = 0; k < 360; k++) {
+    const t = (k * Math.PI) / 180;
+    const [ex, ey] = [a * Math.cos(t), b * Math.sin(t)];
+    outline.push(await page.evaluate(([x, y]) => window.planarium.toCanvas(x, y), [cx + ex * ux - ey * uy, cy + ex * uy + ey * ux]));
+  }
+  // How many outline points have the informed colour within a pixel of them.
+  const onOutline = () => page.evaluate(({ pts, hex }) => {
+    const c = document.getElementById('canvas');
+    const dpr = c.width / c.clientWidth;
+    const px = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    const rgb = [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16));
+    return pts.filter(([x, y]) => {
+      for (let dy = -1; dy <= 1; dy++) {
+        for (let dx = -1; dx <= 1; dx++) {
+          const [i, j] = [Math.round(x * dpr) + dx, Math.round(y * dpr) + dy];
+          if (i < 0 || j < 0 || i >= c.width || j >= c.height) continue;
+          const o = 4 * (j * c.width + i);
+          if (rgb.every((v, m) => Math.abs(px[o + m] - v) <= 24)) return true;
+        }
+      }
+      return false;
+    }).length;
+  }, { pts: outline, hex: PALETTE.informed });
   const on = await ink();
-  console.log(`informed set: ${model.informed.length} ellipses, ${on} pixels`);
+  const onLine = await onOutline();
+  console.log(`informed set: ${model.informed.length} ellipses, ${on} pixels; latest outline: ${onLine} of 360 points inked`);
   assert.ok(on > 300, `informed-set pixels: ${on}`);
+  assert.ok(onLine > 300, `the latest ellipse is drawn where it is: ${onLine} of 360 outline points`);
   await page.screenshot({ path: join(shots, 'page-overlays-informed.png') });
   await toggle('show-informed');
-  const off = await ink();
-  assert.ok(off < on / 10, `ellipses gone: ${off} pixels (antialiased neighbours) left of ${on}`);
+  const offLine = await onOutline();
+  console.log(`switched off: ${offLine} of 360 outline points in its colour`);
+  // Tree edges crossing the outline may come near the colour at a few points; the ellipse itself is gone.
+  assert.ok(offLine < 36, `ellipse gone: ${offLine} of 360 outline points still in its colour`);
   await toggle('show-informed');
+  assert.ok((await onOutline()) > 300, 'and back when switched on again');
 });
 
 test('accepted and rejected samples are drawn in their own colours when switched on', async () => {
