@@ -44,6 +44,23 @@ pub const MAX_VEHICLES: usize = 64;
 /// Inspection points.
 pub const MAX_INSPECTION_POINTS: usize = 10_000;
 
+/// Joints of a spatial arm (industrial arms have 6 or 7; a state check does forward kinematics
+/// and up to `joints²/2` self pairs).
+pub const MAX_SPATIAL_JOINTS: usize = 12;
+
+/// Points of one convex hull (a link's or a 3-D obstacle's); rl's Puma links have 29 to 95.
+pub const MAX_HULL_POINTS: usize = 1_024;
+
+/// Boxes fixed to one link of a spatial arm (a tool).
+pub const MAX_LINK_BOXES: usize = 16;
+
+/// 3-D obstacles (`obstacles3d`): each state check tests the arm's links against every one whose
+/// box meets theirs, so this bounds a check's cost.
+pub const MAX_SOLIDS: usize = 10_000;
+
+/// Hull points in all of a scenario's 3-D obstacles together.
+pub const MAX_TOTAL_HULL_POINTS: usize = 200_000;
+
 /// Characters of a scenario's name.
 pub const MAX_NAME_CHARS: usize = 500;
 
@@ -100,6 +117,11 @@ pub fn to_json() -> serde_json::Value {
         "max_links": MAX_LINKS,
         "max_vehicles": MAX_VEHICLES,
         "max_inspection_points": MAX_INSPECTION_POINTS,
+        "max_spatial_joints": MAX_SPATIAL_JOINTS,
+        "max_hull_points": MAX_HULL_POINTS,
+        "max_link_boxes": MAX_LINK_BOXES,
+        "max_solids": MAX_SOLIDS,
+        "max_total_hull_points": MAX_TOTAL_HULL_POINTS,
         "max_name_chars": MAX_NAME_CHARS,
         "max_notes_chars": MAX_NOTES_CHARS,
         "max_motion_steps": MAX_MOTION_STEPS,

@@ -1,10 +1,11 @@
 //! A planning problem: a scenario turned into a workspace, a robot, a space, a start and a goal.
 
+use crate::geometry::solid::Solid;
 use crate::geometry::{Aabb, Shape, Workspace};
 use crate::limits;
 use crate::math::{Real, Vec2};
 use crate::robot::{self, Robot, Verdict};
-use crate::scenario::{ObstacleSpec, Scenario, ScenarioError};
+use crate::scenario::{ObstacleSpec, Scenario, ScenarioError, SolidShape};
 use crate::space_info::SpaceInfo;
 use crate::validity::RobotInWorkspace;
 use std::rc::Rc;
@@ -34,6 +35,20 @@ pub fn shape_of(o: &ObstacleSpec) -> Shape {
         ObstacleSpec::Circle(c) => Shape::Circle(Vec2::new(c[0], c[1]), c[2]),
         ObstacleSpec::Segment(s) => Shape::Segment(Vec2::new(s[0], s[1]), Vec2::new(s[2], s[3])),
     }
+}
+
+/// The scenario's 3-D obstacles as solids; an error names a hull parry cannot build.
+fn solids_of(sc: &Scenario) -> Result<Vec<Solid>, ScenarioError> {
+    sc.obstacles3d
+        .iter()
+        .enumerate()
+        .map(|(i, o)| match &o.shape {
+            SolidShape::Box { center, size } => Ok(Solid::cuboid(&o.name, *center, *size)),
+            SolidShape::Hull(pts) => {
+                Solid::hull(&o.name, pts).map_err(|e| ScenarioError::at(format!("obstacles3d[{i}].hull"), e))
+            }
+        })
+        .collect()
 }
 
 fn obstacle_kind(o: &ObstacleSpec) -> &'static str {
@@ -99,12 +114,24 @@ fn check_state(
     space.enforce(&mut q);
     match robot.verdict(workspace, &q) {
         Verdict::Valid => Ok(q),
-        Verdict::Invalid(why) => Err(ScenarioError::at(name, why)),
+        Verdict::Invalid(why) => Err(ScenarioError::at(
+            name,
+            match robot.describe_collision(workspace, &q) {
+                Some(what) => format!("{why}: {what}"),
+                None => why.to_string(),
+            },
+        )),
         Verdict::OutOfBounds(d) => {
             let axis = ["x", "y"][d.min(1)];
             let b = sc.bounds;
             let (lo, hi) = if d == 0 { (b[0], b[2]) } else { (b[1], b[3]) };
             Err(ScenarioError::at(name, format!("out of bounds: {axis} must stay within [{lo}, {hi}]")))
+        }
+        Verdict::Collision(i) if !sc.obstacles3d.is_empty() => {
+            let named = &sc.obstacles3d[i].name;
+            let what = if named.is_empty() { String::new() } else { format!(", the {named}") };
+            let why = robot.describe_collision(workspace, &q).unwrap_or_default();
+            Err(ScenarioError::at(name, format!("in collision with obstacles3d[{i}]{what}: {why}")))
         }
         Verdict::Collision(i) => Err(ScenarioError::at(
             name,
@@ -137,6 +164,7 @@ impl Problem {
         );
         workspace.touching_allowed = sc.touching_allowed;
         workspace.map_grid = sc.map.as_ref().map(|m| (Vec2::new(m.origin[0], m.origin[1]), m.resolution));
+        workspace.solids = solids_of(sc)?;
         let robot: Rc<dyn Robot> =
             robot::from_spec(&sc.robot, sc.body_in_bounds).map_err(|e| ScenarioError::at("robot.kind", e))?.into();
         let space = robot.space(&workspace);

@@ -5,7 +5,8 @@
 //! [`segment`] (segment/segment, point/segment), [`polygon`] (point/polygon, segment/polygon),
 //! [`circle`] (segment/circle). All obstacles are closed sets: touching is a collision.
 //! [`convex`] holds the floating-point constructions on convex polygons (clipping, centroid,
-//! hexagons) that the hexagonal decomposition builds its cells with.
+//! hexagons) that the hexagonal decomposition builds its cells with. [`solid`] holds the 3-D
+//! convex solids (parry3d shapes) of a spatial arm's scene and links.
 
 mod aabb;
 pub mod circle;
@@ -16,6 +17,7 @@ pub mod polygon;
 pub mod segment;
 mod shape;
 pub mod sight;
+pub mod solid;
 mod workspace;
 
 pub use aabb::Aabb;

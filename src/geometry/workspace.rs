@@ -52,6 +52,8 @@ pub struct Workspace {
     /// The pixel grid of the occupancy map the scenario came from (its `map` block): `(origin,
     /// side)`. Only grid-search reads it (its default cell, aligned with the pixels).
     pub map_grid: Option<(Vec2, Real)>,
+    /// The 3-D obstacles (`obstacles3d`), in scenario order, for a spatial arm; empty otherwise.
+    pub solids: Vec<super::solid::Solid>,
     boxes: Vec<Aabb>,
     bvh: Option<Bvh>,
     /// With the hierarchy, a grid of candidate lists in front of it (see `geometry/grid.rs`).
@@ -200,7 +202,7 @@ impl Workspace {
             Bvh::from_leaves(BvhBuildStrategy::Binned, &leaves)
         });
         let grid = (boxes.len() >= GRID_FROM).then(|| Grid::new(&boxes)).flatten();
-        Workspace { bounds, obstacles, boxes, bvh, grid, touching_allowed: false, map_grid: None }
+        Workspace { bounds, obstacles, boxes, bvh, grid, touching_allowed: false, map_grid: None, solids: Vec::new() }
     }
 
     /// The same workspace with the broad phase a scan of every box (for tests and benchmarks

@@ -15,6 +15,8 @@ pub enum Drawn {
     /// A chain whose ends are joined (a vehicle chain: vehicles joined by brooms, the closing
     /// edge dashed).
     ClosedChain,
+    /// A chain of convex solids in 3-D (a spatial arm); seen from above, its skeleton.
+    SpatialArm,
 }
 
 impl Drawn {
@@ -25,6 +27,7 @@ impl Drawn {
             Drawn::Polygon => "polygon",
             Drawn::OpenChain => "open-chain",
             Drawn::ClosedChain => "closed-chain",
+            Drawn::SpatialArm => "spatial-arm",
         }
     }
 }
@@ -92,7 +95,8 @@ impl RobotKind {
 }
 
 /// Every robot kind.
-pub static KINDS: &[RobotKind] = &[super::point::KIND, super::rigid::KIND, super::arm::KIND, super::asv::KIND];
+pub static KINDS: &[RobotKind] =
+    &[super::point::KIND, super::rigid::KIND, super::arm::KIND, super::asv::KIND, super::spatial::KIND];
 
 /// A kind by name.
 pub fn find(name: &str) -> Option<&'static RobotKind> {

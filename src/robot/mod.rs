@@ -14,6 +14,7 @@
 //! | [`RigidRobot`] | clearance + displacement bound | – | its footprint's box | along its x axis |
 //! | [`ArmRobot`] | clearance per motion | – | – | along the last link |
 //! | [`AsvRobot`] | own steps, clearance + bound | yes | – | all around, at the centroid |
+//! | [`SpatialArmRobot`] | discrete steps | – | – | – |
 
 mod arm;
 mod asv;
@@ -21,12 +22,14 @@ pub mod capability;
 pub mod kinds;
 mod point;
 mod rigid;
+pub mod spatial;
 
 pub use arm::{fk_path_cost, ArmRobot};
 pub use asv::AsvRobot;
 pub use capability::{DiscreteOnly, MotionModel, OwnSampler, Sensor, WorkspaceBody};
 pub use point::PointRobot;
 pub use rigid::RigidRobot;
+pub use spatial::SpatialArmRobot;
 
 use crate::geometry::Workspace;
 use crate::math::{Real, Vec2};
@@ -94,6 +97,11 @@ pub trait Robot: std::fmt::Debug {
     ) -> (crate::space::Discrete, u64) {
         crate::space::check_discrete(space, a, b, n, scratch, skip, stop, |q| self.is_valid(ws, q))
     }
+    /// What state `q` collides with, in words, when the robot can say more than its verdict does
+    /// ("link6's bar meets the lintel"); `None` when it cannot or `q` is free.
+    fn describe_collision(&self, _ws: &Workspace, _q: &[Real]) -> Option<String> {
+        None
+    }
     /// The point of the workspace a state is drawn at (trees are projected onto it).
     fn project(&self, q: &[Real]) -> Vec2;
     /// The body's outline at state `q` in world coordinates (for drawing and exports): closed
@@ -131,6 +139,7 @@ pub fn from_spec(spec: &RobotSpec, body_in_bounds: bool) -> Result<Box<dyn Robot
         )),
         RobotSpec::Arm { .. } => Box::new(ArmRobot::from_spec(spec)?),
         RobotSpec::Asv { .. } => Box::new(AsvRobot::from_spec(spec)?),
+        RobotSpec::SpatialArm(_) => Box::new(SpatialArmRobot::from_spec(spec)?),
     })
 }
 

@@ -8,13 +8,17 @@
 mod builtin;
 mod error;
 mod parse;
+mod parse3d;
 pub(crate) use parse::key_name;
 mod types;
 
 pub use builtin::{builtin, builtin_names, course_of, BUILTINS};
 pub use error::ScenarioError;
 pub(crate) use parse::join;
-pub use types::{Inspection, MapGrid, ObstacleSpec, PlannerDefaults, RobotSpec, Scenario, FORMAT};
+pub use types::{
+    BoxSpec, DhJoint, Inspection, LinkSpec, MapGrid, ObstacleSpec, PlannerDefaults, PoseSpec, RobotSpec, Scenario,
+    SolidShape, SolidSpec, SpatialArmSpec, FORMAT,
+};
 
 #[cfg(test)]
 mod tests;

@@ -10,9 +10,9 @@ use serde_json::{Map, Value};
 type Result<T> = std::result::Result<T, ScenarioError>;
 
 /// An object being read: remembers its path and which keys were used, so leftovers are errors.
-struct Obj<'a> {
-    path: String,
-    map: &'a Map<String, Value>,
+pub(super) struct Obj<'a> {
+    pub(super) path: String,
+    pub(super) map: &'a Map<String, Value>,
     used: Vec<&'static str>,
 }
 
@@ -35,7 +35,7 @@ pub(crate) fn key_name(key: &str) -> String {
     }
 }
 
-fn describe(v: &Value) -> &'static str {
+pub(super) fn describe(v: &Value) -> &'static str {
     match v {
         Value::Null => "null",
         Value::Bool(_) => "a boolean",
@@ -47,7 +47,7 @@ fn describe(v: &Value) -> &'static str {
 }
 
 impl<'a> Obj<'a> {
-    fn new(path: &str, v: &'a Value) -> Result<Self> {
+    pub(super) fn new(path: &str, v: &'a Value) -> Result<Self> {
         match v {
             Value::Object(map) => Ok(Obj { path: path.to_string(), map, used: Vec::new() }),
             // The document itself: it starts at line 1, column 1.
@@ -57,17 +57,17 @@ impl<'a> Obj<'a> {
             other => Err(ScenarioError::at(path, format!("must be an object, found {}", describe(other)))),
         }
     }
-    fn get(&mut self, key: &'static str) -> Option<(&'a Value, String)> {
+    pub(super) fn get(&mut self, key: &'static str) -> Option<(&'a Value, String)> {
         self.used.push(key);
         self.map.get(key).map(|v| (v, join(&self.path, key)))
     }
     /// A required key; when it is missing, the error's path is where it belongs (`robot.kind`).
-    fn req(&mut self, key: &'static str) -> Result<(&'a Value, String)> {
+    pub(super) fn req(&mut self, key: &'static str) -> Result<(&'a Value, String)> {
         let path = join(&self.path, key);
         self.get(key).ok_or_else(|| ScenarioError::at(path, "is missing (a required key)"))
     }
     /// Every key not read is an unknown key: almost always a typo.
-    fn finish(self) -> Result<()> {
+    pub(super) fn finish(self) -> Result<()> {
         for k in self.map.keys() {
             if !self.used.iter().any(|u| u == k) {
                 let mut known: Vec<&str> = self.used.clone();
@@ -83,7 +83,7 @@ impl<'a> Obj<'a> {
 }
 
 /// A finite number within [`limits::MAX_MAGNITUDE`], and 0 or at least [`limits::MIN_MAGNITUDE`].
-fn number(v: &Value, path: &str) -> Result<Real> {
+pub(super) fn number(v: &Value, path: &str) -> Result<Real> {
     match v.as_f64() {
         Some(x) if x != 0.0 && x.abs() < limits::MIN_MAGNITUDE => Err(ScenarioError::at(
             path,
@@ -96,7 +96,7 @@ fn number(v: &Value, path: &str) -> Result<Real> {
 }
 
 /// An array of at most `max` items (`what` names them in the error).
-fn array<'a>(v: &'a Value, path: &str, expected: &str, max: usize, what: &str) -> Result<&'a Vec<Value>> {
+pub(super) fn array<'a>(v: &'a Value, path: &str, expected: &str, max: usize, what: &str) -> Result<&'a Vec<Value>> {
     let arr =
         v.as_array().ok_or_else(|| ScenarioError::at(path, format!("must be {expected}, found {}", describe(v))))?;
     if arr.len() > max {
@@ -108,12 +108,12 @@ fn array<'a>(v: &'a Value, path: &str, expected: &str, max: usize, what: &str) -
 /// Numbers in a state or a list: a state has at most a few hundred (64 vehicles' positions).
 const MAX_NUMBERS: usize = 1_000;
 
-fn numbers(v: &Value, path: &str) -> Result<Vec<Real>> {
+pub(super) fn numbers(v: &Value, path: &str) -> Result<Vec<Real>> {
     let arr = array(v, path, "an array of numbers", MAX_NUMBERS, "numbers")?;
     arr.iter().enumerate().map(|(i, x)| number(x, &format!("{path}[{i}]"))).collect()
 }
 
-fn fixed<const N: usize>(v: &Value, path: &str, what: &str) -> Result<[Real; N]> {
+pub(super) fn fixed<const N: usize>(v: &Value, path: &str, what: &str) -> Result<[Real; N]> {
     let xs = numbers(v, path)?;
     xs.try_into().map_err(|xs: Vec<Real>| {
         ScenarioError::at(path, format!("must be {what} ({N} numbers), found {} numbers", xs.len()))
@@ -125,14 +125,14 @@ fn points(v: &Value, path: &str, max: usize) -> Result<Vec<[Real; 2]>> {
     arr.iter().enumerate().map(|(i, p)| fixed::<2>(p, &format!("{path}[{i}]"), "a point [x, y]")).collect()
 }
 
-fn string(v: &Value, path: &str) -> Result<String> {
+pub(super) fn string(v: &Value, path: &str) -> Result<String> {
     v.as_str()
         .map(str::to_string)
         .ok_or_else(|| ScenarioError::at(path, format!("must be a string, found {}", describe(v))))
 }
 
 /// A string of at most `max` characters.
-fn text(v: &Value, path: &str, max: usize) -> Result<String> {
+pub(super) fn text(v: &Value, path: &str, max: usize) -> Result<String> {
     let s = string(v, path)?;
     let n = s.chars().count();
     if n > max {
@@ -141,7 +141,7 @@ fn text(v: &Value, path: &str, max: usize) -> Result<String> {
     Ok(s)
 }
 
-fn boolean(v: &Value, path: &str) -> Result<bool> {
+pub(super) fn boolean(v: &Value, path: &str) -> Result<bool> {
     v.as_bool().ok_or_else(|| ScenarioError::at(path, format!("must be true or false, found {}", describe(v))))
 }
 
@@ -218,10 +218,14 @@ fn robot(v: &Value, path: &str) -> Result<RobotSpec> {
         }
         "arm" => arm(&mut o)?,
         "asv" => asv(&mut o)?,
+        "spatial-arm" => super::parse3d::spatial_arm(&mut o)?,
         other => {
             return Err(ScenarioError::at(
                 kp,
-                format!("unknown robot kind \"{}\" (use point, rigid, arm or asv)", limits::cut(other, 100)),
+                format!(
+                    "unknown robot kind \"{}\" (use point, rigid, arm, asv or spatial-arm)",
+                    limits::cut(other, 100)
+                ),
             ))
         }
     };
@@ -461,6 +465,11 @@ impl Scenario {
         };
         let (rv, rp) = o.req("robot")?;
         let robot = robot(rv, &rp)?;
+        let obstacles3d = match o.get("obstacles3d") {
+            Some((v, p)) => super::parse3d::solids(v, &p)?,
+            None => Vec::new(),
+        };
+        super::parse3d::check_dimension(&robot, &obstacles, &obstacles3d)?;
         let (sv, sp) = o.req("start")?;
         let start = numbers(sv, &sp)?;
         let goal = match o.get("goal") {
@@ -518,6 +527,7 @@ impl Scenario {
             notes,
             bounds,
             obstacles,
+            obstacles3d,
             robot,
             start,
             goal,

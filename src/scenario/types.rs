@@ -19,6 +19,9 @@ pub struct Scenario {
     pub bounds: [Real; 4],
     /// Closed obstacles.
     pub obstacles: Vec<ObstacleSpec>,
+    /// Closed 3-D obstacles, for a spatial arm (optional).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub obstacles3d: Vec<SolidSpec>,
     /// The robot.
     pub robot: RobotSpec,
     /// Start state.
@@ -117,6 +120,104 @@ pub enum RobotSpec {
         /// Largest move of any vehicle in one primitive step (default 0.001).
         max_step: Real,
     },
+    /// A serial chain of revolute joints in 3-D (classic Denavit–Hartenberg rows); state
+    /// `[q1, ..., qn]`, radians.
+    #[serde(rename = "spatial-arm")]
+    SpatialArm(Box<SpatialArmSpec>),
+}
+
+/// The `spatial-arm` robot block (see `docs/scenario-format.md`).
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct SpatialArmSpec {
+    /// Link 0's frame in the world.
+    pub base: PoseSpec,
+    /// One row per joint.
+    pub joints: Vec<DhJoint>,
+    /// `joints + 1` links: link 0 the base, link `k` moved by joint `k`.
+    pub links: Vec<LinkSpec>,
+    /// Link pairs `[i, j]` (`i < j`) never tested against each other.
+    pub ignore: Vec<[usize; 2]>,
+    /// Links never tested against the scene.
+    pub exempt: Vec<usize>,
+    /// The tool centre point in the last link's frame.
+    pub tool: [Real; 3],
+    /// The metric over the joint angles: `joint` (Euclidean, radians).
+    pub metric: String,
+}
+
+/// A pose: a translation and a rotation `[rx, ry, rz]` (radians, `Rz(rz)·Ry(ry)·Rx(rx)`).
+#[derive(Clone, Copy, Debug, Serialize, PartialEq, Default)]
+pub struct PoseSpec {
+    /// `[x, y, z]`.
+    pub translation: [Real; 3],
+    /// `[rx, ry, rz]`.
+    pub rotation: [Real; 3],
+}
+
+/// One classic Denavit–Hartenberg row: the joint's transform is `Rz(theta + q)·Tz(d)·Tx(a)·Rx(alpha)`.
+#[derive(Clone, Copy, Debug, Serialize, PartialEq)]
+pub struct DhJoint {
+    /// Offset along the previous z axis.
+    pub d: Real,
+    /// Angle about the previous z axis added to the joint's value.
+    pub theta: Real,
+    /// Length along the new x axis.
+    pub a: Real,
+    /// Twist about the new x axis.
+    pub alpha: Real,
+    /// `[lo, hi]` of the joint's value.
+    pub limits: [Real; 2],
+}
+
+/// One link's collision geometry, in its own frame.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct LinkSpec {
+    /// Its name (default `linkK`).
+    pub name: String,
+    /// Points whose convex hull collides (empty: none).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub hull: Vec<[Real; 3]>,
+    /// Boxes fixed to the link (a tool).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub boxes: Vec<BoxSpec>,
+}
+
+/// An axis-aligned box by centre and full size, with an optional name.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct BoxSpec {
+    /// Its name ("" when none was given).
+    #[serde(skip_serializing_if = "String::is_empty")]
+    pub name: String,
+    /// `[x, y, z]`.
+    pub center: [Real; 3],
+    /// Full size `[sx, sy, sz]`, each positive.
+    pub size: [Real; 3],
+}
+
+/// One 3-D obstacle (`obstacles3d`): a box or a convex hull, optionally named.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct SolidSpec {
+    /// Its name ("" when none was given).
+    #[serde(skip_serializing_if = "String::is_empty")]
+    pub name: String,
+    /// The shape.
+    #[serde(flatten)]
+    pub shape: SolidShape,
+}
+
+/// A 3-D obstacle's shape.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+#[serde(rename_all = "lowercase")]
+pub enum SolidShape {
+    /// `{"center": [...], "size": [...]}`.
+    Box {
+        /// `[x, y, z]`.
+        center: [Real; 3],
+        /// Full size.
+        size: [Real; 3],
+    },
+    /// Points whose convex hull is the obstacle.
+    Hull(Vec<[Real; 3]>),
 }
 
 fn is_zero(x: &Real) -> bool {
@@ -131,6 +232,7 @@ impl RobotSpec {
             RobotSpec::Rigid { .. } => "rigid",
             RobotSpec::Arm { .. } => "arm",
             RobotSpec::Asv { .. } => "asv",
+            RobotSpec::SpatialArm(_) => "spatial-arm",
         }
     }
 }

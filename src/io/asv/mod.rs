@@ -169,6 +169,7 @@ pub fn import_problem(text: &str, name: &str) -> Result<Scenario, ScenarioError>
         ),
         bounds: [0.0, 0.0, 1.0, 1.0],
         obstacles,
+        obstacles3d: Vec::new(),
         robot: RobotSpec::Asv { count: n, broom: BROOM, min_area: area, convex: true, max_step: MAX_STEP },
         start,
         goal: Some(goal),

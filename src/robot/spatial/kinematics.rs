@@ -1,0 +1,87 @@
+//! Forward kinematics of a chain of revolute joints in classic Denavit–Hartenberg form, with
+//! nalgebra's isometries: link `k`'s frame is link `k − 1`'s times `Rz(θ_k + q_k)·Tz(d_k)·Tx(a_k)·Rx(α_k)`,
+//! link 0's frame is the base pose.
+//!
+//! Every sine and cosine comes from `libm` (the same bits natively and in wasm; the platform's
+//! own `sin` may differ in the last place), and rotations are built as unit quaternions from
+//! them, so nalgebra only multiplies and adds.
+
+use crate::math::Real;
+use crate::scenario::{DhJoint, PoseSpec};
+use nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion, Vector3};
+
+/// A rotation about one axis (0: x, 1: y, 2: z) by `angle`, from its half angle's sine and cosine.
+fn axis_rotation(axis: usize, angle: Real) -> UnitQuaternion<Real> {
+    let (s, c) = libm::sincos(0.5 * angle);
+    let mut v = [0.0; 3];
+    v[axis] = s;
+    UnitQuaternion::new_unchecked(Quaternion::new(c, v[0], v[1], v[2]))
+}
+
+/// The pose `Rz(rz)·Ry(ry)·Rx(rx)` after the translation.
+pub fn pose_of(spec: &PoseSpec) -> Isometry3<Real> {
+    let [rx, ry, rz] = spec.rotation;
+    let r = axis_rotation(2, rz) * axis_rotation(1, ry) * axis_rotation(0, rx);
+    let [x, y, z] = spec.translation;
+    Isometry3::from_parts(Translation3::new(x, y, z), r)
+}
+
+/// One joint's row, with what does not depend on the joint's value computed once.
+#[derive(Clone, Debug)]
+struct Row {
+    theta: Real,
+    d: Real,
+    a: Real,
+    /// `Rx(α)`.
+    twist: UnitQuaternion<Real>,
+}
+
+/// A serial chain of revolute joints.
+#[derive(Clone, Debug)]
+pub struct Chain {
+    base: Isometry3<Real>,
+    rows: Vec<Row>,
+}
+
+impl Chain {
+    /// The chain of `joints` on `base`.
+    pub fn new(base: &PoseSpec, joints: &[DhJoint]) -> Chain {
+        Chain {
+            base: pose_of(base),
+            rows: joints
+                .iter()
+                .map(|j| Row { theta: j.theta, d: j.d, a: j.a, twist: axis_rotation(0, j.alpha) })
+                .collect(),
+        }
+    }
+
+    /// Number of joints.
+    pub fn joints(&self) -> usize {
+        self.rows.len()
+    }
+
+    /// Every link's frame in the world at `q` (link 0, the base, first): `out` holds
+    /// `joints + 1` isometries.
+    pub fn frames(&self, q: &[Real], out: &mut [Isometry3<Real>]) {
+        let mut f = self.base;
+        out[0] = f;
+        for (k, r) in self.rows.iter().enumerate() {
+            let angle = r.theta + q[k];
+            let (s, c) = libm::sincos(angle);
+            let (hs, hc) = libm::sincos(0.5 * angle);
+            let turn = UnitQuaternion::new_unchecked(Quaternion::new(hc, 0.0, 0.0, hs));
+            // Rz(θ)·Tz(d)·Tx(a)·Rx(α): the translation is Rz(θ)·(a, 0, d), the rotation Rz(θ)·Rx(α).
+            let step = Isometry3::from_parts(Translation3::new(r.a * c, r.a * s, r.d), turn * r.twist);
+            f *= step;
+            out[k + 1] = f;
+        }
+    }
+
+    /// The world position of `p` (in the last link's frame) at `q`.
+    pub fn point_on_last(&self, q: &[Real], p: &[Real; 3]) -> [Real; 3] {
+        let mut frames = vec![Isometry3::identity(); self.rows.len() + 1];
+        self.frames(q, &mut frames);
+        let w = frames[self.rows.len()] * nalgebra::Point3::from(Vector3::new(p[0], p[1], p[2]));
+        [w.x, w.y, w.z]
+    }
+}

@@ -1,0 +1,188 @@
+//! A spatial serial arm (report 001's Unimation Puma 560, `docs/sources.md`): revolute joints in
+//! classic Denavit–Hartenberg form on a base pose, each link colliding as its convex hull and the
+//! boxes fixed to it (a tool), in a scene of 3-D boxes and hulls (`obstacles3d`).
+//!
+//! Its state is the joint angles in radians, each within its limits (no wrapping); its metric is
+//! Euclidean over them, the course's. Valid when every joint is within its limits, no link that
+//! may touch the scene meets a 3-D obstacle, and no tested pair of links meets (the scenario lists
+//! the pairs never tested, and the links exempt from the scene). Obstacles are closed: touching
+//! is a collision, up to GJK's tolerance. Motions are checked at the scenario's resolution
+//! (discrete checks: the course's `delta` steps), there being no exact sweep in 3-D here.
+//!
+//! The kinematics ([`kinematics`]) is nalgebra's; the collision query ([`collide`]) parry3d's,
+//! with the same bits natively, in Node and in the browser.
+
+mod collide;
+mod kinematics;
+
+use super::{Robot, Verdict};
+use crate::geometry::solid::Solid;
+use crate::geometry::Workspace;
+use crate::math::{Real, Vec2};
+use crate::robot::kinds::{Drawn, Pose, RobotKind};
+use crate::scenario::{RobotSpec, SpatialArmSpec};
+use crate::space::{Dim, Metric, StateSpace};
+use collide::{Body, Hit, Part, Scratch};
+pub use kinematics::Chain;
+use std::cell::RefCell;
+
+/// The kind's record ([`super::kinds`]).
+pub const KIND: RobotKind = RobotKind {
+    name: "spatial-arm",
+    label: "Spatial arm (3-D)",
+    drawn: Drawn::SpatialArm,
+    body: false,
+    sensor: false,
+    cspace: false,
+    course_cost: None,
+    pose: Pose::Joints,
+    solution_file: false,
+};
+
+/// A spatial serial arm.
+#[derive(Clone, Debug)]
+pub struct SpatialArmRobot {
+    chain: Chain,
+    limits: Vec<[Real; 2]>,
+    body: Body,
+    tool: [Real; 3],
+    names: Vec<String>,
+    scratch: RefCell<Scratch>,
+}
+
+impl SpatialArmRobot {
+    /// The robot a scenario's `spatial-arm` block describes; an error names the part whose hull
+    /// could not be built.
+    pub fn from_spec(spec: &RobotSpec) -> Result<Self, String> {
+        let RobotSpec::SpatialArm(s) = spec else {
+            return Err("not a spatial arm".into());
+        };
+        let SpatialArmSpec { base, joints, links, ignore, exempt, tool, .. } = s.as_ref();
+        let mut parts = Vec::new();
+        let mut link_parts = Vec::new();
+        for (k, l) in links.iter().enumerate() {
+            let from = parts.len();
+            if !l.hull.is_empty() {
+                let solid = Solid::hull(&l.name, &l.hull).map_err(|e| format!("robot.links[{k}].hull: {e}"))?;
+                parts.push(Part { link: k, solid });
+            }
+            for b in &l.boxes {
+                let name = if b.name.is_empty() { l.name.clone() } else { format!("{}'s {}", l.name, b.name) };
+                parts.push(Part { link: k, solid: Solid::cuboid(&name, b.center, b.size) });
+            }
+            link_parts.push(from..parts.len());
+        }
+        let scene_parts = (0..parts.len()).filter(|&i| !exempt.contains(&parts[i].link)).collect();
+        let mut pairs = Vec::new();
+        for i in 0..links.len() {
+            for j in i + 1..links.len() {
+                if ignore.contains(&[i, j]) {
+                    continue;
+                }
+                for a in link_parts[i].clone() {
+                    for b in link_parts[j].clone() {
+                        pairs.push((a, b));
+                    }
+                }
+            }
+        }
+        Ok(SpatialArmRobot {
+            chain: Chain::new(base, joints),
+            limits: joints.iter().map(|j| j.limits).collect(),
+            body: Body { parts, link_parts, scene_parts, pairs },
+            tool: *tool,
+            names: links.iter().map(|l| l.name.clone()).collect(),
+            scratch: RefCell::new(Scratch::default()),
+        })
+    }
+
+    fn within_limits(&self, q: &[Real]) -> bool {
+        q.iter().zip(&self.limits).all(|(x, [lo, hi])| *lo <= *x && *x <= *hi)
+    }
+
+    /// The first hit at `q` (scene first, then link pairs), or `None` when the arm is free; the
+    /// joint limits are not checked.
+    pub fn first_hit(&self, ws: &Workspace, q: &[Real]) -> Option<Hit> {
+        let mut s = self.scratch.borrow_mut();
+        self.body.place(&self.chain, q, &mut s);
+        self.body.first_hit(&ws.solids, &s)
+    }
+
+    /// What a hit is, in words: "link6's bar meets the lintel", "link2 meets link5".
+    pub fn describe(&self, ws: &Workspace, hit: Hit) -> String {
+        let part = |i: usize| &self.body.parts[i].solid.name;
+        match hit {
+            Hit::Scene { part: p, solid } => {
+                let o = &ws.solids[solid].name;
+                let o = if o.is_empty() { format!("obstacles3d[{solid}]") } else { format!("the {o}") };
+                format!("{} meets {o}", part(p))
+            }
+            Hit::Links { a, b } => format!("{} meets {}", part(a), part(b)),
+        }
+    }
+
+    /// Every link frame's origin and the tool centre point at `q`, in the world (`joints + 2`
+    /// points): what a 3-D view draws the arm's skeleton and its tool through.
+    pub fn skeleton(&self, q: &[Real]) -> Vec<[Real; 3]> {
+        let mut frames = vec![nalgebra::Isometry3::identity(); self.chain.joints() + 1];
+        self.chain.frames(q, &mut frames);
+        let mut pts: Vec<[Real; 3]> = frames.iter().map(|f| f.translation.vector.into()).collect();
+        let [x, y, z] = self.tool;
+        let t = frames[self.chain.joints()] * nalgebra::Point3::new(x, y, z);
+        pts.push([t.x, t.y, t.z]);
+        pts
+    }
+
+    /// The tool centre point at `q`, in the world.
+    pub fn tool_point(&self, q: &[Real]) -> [Real; 3] {
+        self.chain.point_on_last(q, &self.tool)
+    }
+
+    /// The links' names.
+    pub fn link_names(&self) -> &[String] {
+        &self.names
+    }
+}
+
+impl Robot for SpatialArmRobot {
+    fn caps(&self) -> &'static RobotKind {
+        &KIND
+    }
+    fn external_dims(&self) -> usize {
+        self.chain.joints()
+    }
+    fn space(&self, _ws: &Workspace) -> StateSpace {
+        StateSpace {
+            dims: self.limits.iter().map(|[lo, hi]| Dim { lo: *lo, hi: *hi, wraps: false }).collect(),
+            metric: Metric::Euclidean,
+        }
+    }
+    fn verdict(&self, ws: &Workspace, q: &[Real]) -> Verdict {
+        if !self.within_limits(q) {
+            return Verdict::Invalid("a joint is outside its limits");
+        }
+        match self.first_hit(ws, q) {
+            None => Verdict::Valid,
+            Some(Hit::Scene { solid, .. }) => Verdict::Collision(solid),
+            Some(Hit::Links { .. }) => Verdict::Invalid("two links of the arm meet"),
+        }
+    }
+    fn is_valid(&self, ws: &Workspace, q: &[Real]) -> bool {
+        self.within_limits(q) && self.first_hit(ws, q).is_none()
+    }
+    fn describe_collision(&self, ws: &Workspace, q: &[Real]) -> Option<String> {
+        self.first_hit(ws, q).map(|h| self.describe(ws, h))
+    }
+    /// The tool centre point seen from above.
+    fn project(&self, q: &[Real]) -> Vec2 {
+        let [x, y, _] = self.tool_point(q);
+        Vec2::new(x, y)
+    }
+    /// The skeleton seen from above: the link frames' origins and the tool centre point.
+    fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>> {
+        vec![self.skeleton(q).iter().map(|p| Vec2::new(p[0], p[1])).collect()]
+    }
+}
+
+#[cfg(test)]
+mod tests;
