@@ -2,6 +2,8 @@
 // - nothing the tests, scripts, benchmarks or fuzz targets run reads outside the clone (a public
 //   clone has nothing beside it: course files the tests use live in tests/data/);
 // - THIRD_PARTY_NOTICES.md is what Cargo.lock and package.json give now (scripts/notices.mjs);
+// - the built-in scenarios converted from data/ are what their converter writes now
+//   (scripts/convert-rl.mjs: the Puma 560 scenarios from the Robotics Library's files);
 // - CHANGELOG.md names every golden fingerprint pinned in tests/golden/runs.json (a figure in
 //   someone's course notes changes when one does, so each change is written down);
 // - every file of the repository the README, the docs, Cargo.toml, the code's comments and the
@@ -10,6 +12,7 @@ import { execFileSync } from 'node:child_process';
 import { existsSync, readFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { stale as staleConversions } from './convert-rl.mjs';
 import { notices, NOTICES } from './notices.mjs';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
@@ -39,6 +42,13 @@ if (readFileSync(NOTICES, 'utf8') !== notices()) {
   problems.push('THIRD_PARTY_NOTICES.md is out of date: run node scripts/notices.mjs and commit it');
 }
 
+// 2b. The scenarios converted from data/.
+try {
+  for (const p of staleConversions()) problems.push(`${p}: run node scripts/convert-rl.mjs and commit it`);
+} catch (e) {
+  problems.push(`scripts/convert-rl.mjs fails: ${e.message}`);
+}
+
 // 3. Every golden fingerprint named in the changelog.
 const changelog = readFileSync(join(root, 'CHANGELOG.md'), 'utf8');
 const cases = JSON.parse(readFileSync(join(root, 'tests', 'golden', 'cases.json'), 'utf8'));
@@ -55,8 +65,8 @@ runs.forEach((r, i) => {
 //    paths below are other projects' files (OMPL's sources, a book's pages in an example).
 const ELSEWHERE = new Set(['docs/notes/rrt.md', 'docs/index.md', 'src/ompl/tools/benchmark/src/Benchmark.cpp',
   'src/ompl/base/src/PlannerStatus.cpp']);
-const PATH = /(?<![\w./-])((?:src|www|tests|scripts|benches|bench|fuzz|docs|scenarios)\/[\w./-]*\w\.(?:rs|js|mjs|md|json|toml|html|css|cpp|sh))\b/g;
-const prose = execFileSync('git', ['ls-files', '--', 'README.md', 'docs', 'Cargo.toml', 'src', 'www', 'scenarios'],
+const PATH = /(?<![\w./-])((?:src|www|tests|scripts|benches|bench|fuzz|docs|scenarios|data)\/[\w./-]*\w\.(?:rs|js|mjs|md|json|toml|html|css|cpp|sh))\b/g;
+const prose = execFileSync('git', ['ls-files', '--', 'README.md', 'docs', 'Cargo.toml', 'src', 'www', 'scenarios', 'data'],
   { cwd: root, encoding: 'utf8' }).split('\n').filter((f) => /\.(md|toml|rs|m?js|json)$/.test(f) && !f.startsWith('www/pkg/'));
 for (const file of prose) {
   readFileSync(join(root, file), 'utf8').split('\n').forEach((line, i) => {
@@ -70,5 +80,5 @@ if (problems.length) {
   console.error(`[check-repo] ${problems.length} problem(s):\n${problems.map((p) => `  ${p}`).join('\n')}`);
   process.exit(1);
 }
-console.log(`[check-repo] ${tracked.length} files read nothing outside the clone; notices current; ${runs.length} golden runs named in CHANGELOG.md; `
+console.log(`[check-repo] ${tracked.length} files read nothing outside the clone; notices current; converted scenarios current; ${runs.length} golden runs named in CHANGELOG.md; `
   + `the files ${prose.length} docs and sources name exist`);

@@ -3,7 +3,8 @@
 // and the native command line), read from Cargo.lock through `cargo metadata`, each with the
 // licence files its published package holds; the npm packages the page loads at run time (none:
 // package.json has only devDependencies, the tools that build and test it); and the data the
-// built-in scenarios were made from.
+// built-in scenarios were made from, with the licence text a data set's licence asks to travel
+// with it (read from the copy in data/).
 //
 //   node scripts/notices.mjs            write the file
 //   node scripts/notices.mjs --check    exit 1 when the file is not what the lock files give now
@@ -20,7 +21,11 @@ import { fileURLToPath } from 'node:url';
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 export const NOTICES = join(root, 'THIRD_PARTY_NOTICES.md');
 
-/** The data the project ships in its built-in scenarios, with where each came from. */
+/**
+ * The data the project ships in its built-in scenarios, with where each came from; `licence`, when
+ * the data's licence must be reproduced, is its licence file in the repository.
+ * @type {{what: string, source: string, licence?: string}[]}
+ */
 const DATA = [
   {
     what: 'the vehicle-chain ("ASV") problems: the built-ins `asv-3-easy`, `asv-3`, `asv-7-easy`, `asv-7` '
@@ -37,6 +42,13 @@ const DATA = [
     what: 'the kinematic chain in a horn: the built-ins `horn-10` and `horn-20`',
     source: 'the problem of OMPL\'s `KinematicChainBenchmark` demo (BSD licence; the problem\'s geometry is restated, '
       + 'no OMPL code is included)',
+  },
+  {
+    what: 'the Unimation Puma 560: the built-ins `puma-rbo-wall` and `puma-boxes` (the Puma 560\'s kinematics and convex '
+      + 'link hulls, and the Robotics Library\'s boxes example)',
+    source: 'the Robotics Library (rl, https://github.com/roboticslibrary/rl, `examples/`, commit 91df9f2), BSD 2-Clause, '
+      + '© 2009 Markus Rickert; `data/rl-puma560/` holds the files as published, `scripts/convert-rl.mjs` converts them',
+    licence: 'data/rl-puma560/LICENSE.md',
   },
 ];
 
@@ -107,6 +119,15 @@ export function notices() {
     }
   }
 
+  // The data's licence texts, after the crates' (so adding data renumbers no crate's text).
+  const dataText = new Map();
+  for (const d of DATA.filter((x) => x.licence)) {
+    const text = readFileSync(join(root, d.licence), 'utf8').replace(/\r\n/g, '\n').replace(/\s+$/, '');
+    if (!texts.has(text)) texts.set(text, { text, users: [] });
+    texts.get(text).users.push(`the data of ${d.what.split(':')[0]} (\`${d.licence}\`)`);
+    dataText.set(d, [...texts.keys()].indexOf(text) + 1);
+  }
+
   const npm = JSON.parse(readFileSync(join(root, 'package.json'), 'utf8'));
   const npmRuntime = Object.keys(npm.dependencies || {});
   const fence = (t) => { const f = '`'.repeat(Math.max(3, ...[...t.matchAll(/`+/g)].map((m) => m[0].length + 1))); return `${f}text\n${t}\n${f}`; };
@@ -115,8 +136,8 @@ export function notices() {
     '',
     'Planarium is licensed under MIT OR Apache-2.0 (`LICENSE-MIT`, `LICENSE-APACHE`). What it ships that',
     'others made is listed here with their licences. This file is written by `node scripts/notices.mjs`',
-    'from `Cargo.lock` and `package.json`; `npm test` fails when it is out of date. `npm run build` copies',
-    'it, with the two licence files, into `dist/`.',
+    'from `Cargo.lock`, `package.json` and the licence files in `data/`; `npm test` fails when it is out',
+    'of date. `npm run build` copies it, with the two licence files, into `dist/`.',
     '',
     '## Rust crates compiled into Planarium',
     '',
@@ -137,11 +158,11 @@ export function notices() {
     '',
     '## Data',
     '',
-    ...DATA.flatMap((d) => [`- **${d.what}**: ${d.source}.`]),
+    ...DATA.flatMap((d) => [`- **${d.what}**: ${d.source}${dataText.has(d) ? `; its licence is Text ${dataText.get(d)} below` : ''}.`]),
     '',
     '## Licence texts',
     '',
-    'Each text below is printed once, after the crates whose published package holds it.',
+    'Each text below is printed once, after the crates whose published package holds it or the data it came with.',
   ];
   if (missing.length) {
     lines.push('', 'These published packages hold no licence file; their stated licence applies, whose standard text is',
