@@ -17,6 +17,14 @@ pub enum Convex {
 }
 
 impl Convex {
+    /// The shape as a support map (for GJK).
+    pub fn support(&self) -> &dyn parry3d_f64::shape::SupportMap {
+        match self {
+            Convex::Cuboid(c) => c,
+            Convex::Hull(h) => h,
+        }
+    }
+
     /// The shape for parry's queries.
     pub fn shape(&self) -> &dyn ParryShape {
         match self {
@@ -46,9 +54,9 @@ impl Box3 {
     pub fn of_points(pts: &[[Real; 3]]) -> Box3 {
         let mut b = Box3 { lo: [Real::INFINITY; 3], hi: [Real::NEG_INFINITY; 3] };
         for p in pts {
-            for k in 0..3 {
-                b.lo[k] = b.lo[k].min(p[k]);
-                b.hi[k] = b.hi[k].max(p[k]);
+            for (k, x) in p.iter().enumerate() {
+                b.lo[k] = b.lo[k].min(*x);
+                b.hi[k] = b.hi[k].max(*x);
             }
         }
         b

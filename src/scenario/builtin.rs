@@ -27,6 +27,8 @@ pub const BUILTINS: &[(&str, &str)] = &[
     ("hex-trap", include_str!("../../scenarios/hex-trap.json")),
     ("hex-trap-modified", include_str!("../../scenarios/hex-trap-modified.json")),
     ("apf-minimum", include_str!("../../scenarios/apf-minimum.json")),
+    ("puma-rbo-wall", include_str!("../../scenarios/puma-rbo-wall.json")),
+    ("puma-boxes", include_str!("../../scenarios/puma-boxes.json")),
 ];
 
 /// The course (or source) a built-in scenario comes from, for grouping them in the page.
@@ -38,6 +40,7 @@ pub fn course_of(id: &str) -> &'static str {
         _ if id.starts_with("technion-") => "Technion manipulator and inspection (report 004)",
         _ if id.starts_with("asv-") => "Vehicles joined by brooms (report 000)",
         _ if id.starts_with("apf-") || id.starts_with("hex-") => "Hexagons and potential fields (report 002)",
+        _ if id.starts_with("puma-") => "Puma 560 in 3-D, RRT-Connect's extensions (report 001)",
         _ => "First steps",
     }
 }

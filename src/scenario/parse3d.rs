@@ -58,7 +58,8 @@ fn is_flat(pts: &[[Real; 3]]) -> bool {
     let p3 = far(&|p| dot(&n, &sub(p, &p0)).abs());
     let volume = dot(&n, &sub(&p3, &p0)).abs();
     let extent = dot(&e1, &e1).sqrt();
-    !(volume > 1e-12 * extent * extent * extent)
+    // NaN (no extent) counts as flat too.
+    volume.partial_cmp(&(1e-12 * extent * extent * extent)) != Some(std::cmp::Ordering::Greater)
 }
 
 fn label(o: &mut Obj, default: String) -> Result<String> {

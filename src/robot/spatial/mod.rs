@@ -89,7 +89,13 @@ impl SpatialArmRobot {
         Ok(SpatialArmRobot {
             chain: Chain::new(base, joints),
             limits: joints.iter().map(|j| j.limits).collect(),
-            body: Body { parts, link_parts, scene_parts, pairs },
+            body: Body {
+                halves: parts.iter().map(|p| p.solid.bounds.centre_half().1).collect(),
+                parts,
+                link_parts,
+                scene_parts,
+                pairs,
+            },
             tool: *tool,
             names: links.iter().map(|l| l.name.clone()).collect(),
             scratch: RefCell::new(Scratch::default()),
@@ -105,7 +111,7 @@ impl SpatialArmRobot {
     pub fn first_hit(&self, ws: &Workspace, q: &[Real]) -> Option<Hit> {
         let mut s = self.scratch.borrow_mut();
         self.body.place(&self.chain, q, &mut s);
-        self.body.first_hit(&ws.solids, &s)
+        self.body.first_hit(&ws.solids, &mut s)
     }
 
     /// What a hit is, in words: "link6's bar meets the lintel", "link2 meets link5".

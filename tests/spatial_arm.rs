@@ -1,0 +1,76 @@
+//! The spatial arm on report 001's robot: the Puma 560's kinematics against the Robotics Library's
+//! own placement of its links, the course's scene, and the collision query's cost (printed).
+
+use planarium::problem::Problem;
+use planarium::robot::SpatialArmRobot;
+use planarium::scenario::{builtin, Scenario};
+
+fn puma(id: &str) -> (Scenario, Problem) {
+    let mut sc = builtin(id).unwrap();
+    sc.planner = None; // TEMP
+    let p = Problem::from_scenario(&sc).unwrap();
+    (sc, p)
+}
+
+/// At q = 0 every link frame is where rl's display file (`data/rl-puma560/rlsg/
+/// unimation-puma560.convex/unimation-puma560.wrl`) puts it, turned by the world's Rz(90°).
+#[test]
+fn puma_frames_at_zero_are_rls() {
+    let (sc, _) = puma("puma-rbo-wall");
+    let arm = SpatialArmRobot::from_spec(&sc.robot).unwrap();
+    let s = arm.skeleton(&[0.0; 6]);
+    // rl's translations, x y z; Rz(90°) takes (x, y, z) to (−y, x, z).
+    let rl = [
+        [0.0, 0.0, 0.0],
+        [0.0, 0.0, 0.6604],
+        [0.4318, 0.1291, 0.6604],
+        [0.4115, 0.1291, 0.6604],
+        [0.4115, 0.1291, 1.0935],
+        [0.4115, 0.1291, 1.0935],
+        [0.4115, 0.1291, 1.13475],
+    ];
+    for (k, p) in rl.iter().enumerate() {
+        let want = [-p[1], p[0], p[2]];
+        assert!(s[k].iter().zip(want).all(|(a, b)| (a - b).abs() < 1e-9), "link{k}: {:?} against {want:?}", s[k]);
+    }
+}
+
+#[test]
+fn the_course_scene_start_and_goal() {
+    let (sc, p) = puma("puma-rbo-wall");
+    let arm = SpatialArmRobot::from_spec(&sc.robot).unwrap();
+    let ws = p.si.workspace();
+    assert_eq!(ws.solids.len(), 4);
+    let goal = sc.goal.clone().unwrap();
+    assert!(p.robot.is_valid(ws, &sc.start) && p.robot.is_valid(ws, &goal));
+    // The tool centre point is in front of the wall at the start and behind it at the goal.
+    let (a, b) = (arm.tool_point(&sc.start), arm.tool_point(&goal));
+    assert!(a[0] < 0.81 && b[0] > 0.89, "{a:?} {b:?}");
+    // Straight from start to goal, the arm hits the wall somewhere.
+    let hits = (0..=100)
+        .map(|k| {
+            let t = k as f64 / 100.0;
+            sc.start.iter().zip(&goal).map(|(x, y)| x + t * (y - x)).collect::<Vec<_>>()
+        })
+        .filter(|q| !p.robot.is_valid(ws, q))
+        .count();
+    assert!(hits > 0, "the straight motion must collide");
+    let (_, p) = puma("puma-boxes");
+    assert_eq!(p.si.workspace().solids.len(), 8);
+}
+
+/// A collision query's cost on the course's problem: uniform states within the limits (printed,
+/// never asserted).
+#[test]
+fn query_cost_is_printed() {
+    let (sc, p) = puma("puma-rbo-wall");
+    let ws = p.si.workspace();
+    let mut rng = planarium::rng::Rng::new(1);
+    let states: Vec<Vec<f64>> =
+        (0..20_000).map(|_| p.si.space.dims.iter().map(|d| rng.uniform(d.lo, d.hi)).collect()).collect();
+    let t = std::time::Instant::now();
+    let free = states.iter().filter(|q| p.robot.is_valid(ws, q)).count();
+    let ns = t.elapsed().as_nanos() as f64 / states.len() as f64;
+    eprintln!("{}: {free} of {} uniform states free; {ns:.0} ns a query", sc.name, states.len());
+    assert!(free > 0 && free < states.len());
+}
