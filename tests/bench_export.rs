@@ -128,6 +128,7 @@ fn csv_quotes_as_rfc_4180_asks() {
         host: String::new(),
         time_limit_s: 1.0,
         runs: 1,
+        seeds: None,
         setups: vec![SetupReport {
             label: label.into(),
             planner: "rrt".into(),

@@ -1,4 +1,5 @@
-//! The native command line: `plan`, `bench`, `scaling`, `validate`, `export-map` and `list`.
+//! The native command line: `plan`, `bench`, `merge`, `scaling`, `validate`, `export-map` and
+//! `list`.
 //!
 //! Every planner parameter is a flag (`--goal-bias 0.2`, `--extend connect`), generated from the
 //! planner registry, so a new parameter needs no CLI code.
@@ -13,6 +14,8 @@ use std::process::ExitCode;
 #[path = "planarium/input.rs"]
 mod input;
 use input::*;
+#[path = "planarium/merge.rs"]
+mod merge;
 
 fn param_flag(name: &str) -> String {
     name.replace('_', "-")
@@ -80,7 +83,7 @@ fn cli() -> Command {
         ))
         .subcommand(with_param_flags(
             Command::new("bench")
-                .about("Run planners for seeds 1..N and summarise")
+                .about("Run planners for seeds 1..N (or A..B with --seeds) and summarise")
                 .arg(scenario_arg.clone())
                 .arg(Arg::new("planners").long("planners").default_value("rrt,rrt-connect").help("Comma-separated planner names (ignored when --setup is given)"))
                 .arg(
@@ -91,7 +94,14 @@ fn cli() -> Command {
                         .help("A planner set-up to compare, repeatable: \"[label:] planner [--param value ...]\", e.g. \"bridge: rrt-connect --sampler bridge --sigma 0.02\"; the other flags apply to every set-up"),
                 )
                 .arg(Arg::new("report").long("report").action(ArgAction::SetTrue).help("Print report 001's table (avg and std of time, avg nodes, avg and median checks) as Markdown"))
-                .arg(Arg::new("runs").long("runs").default_value("20").value_parser(clap::value_parser!(u64)).help("Seeds 1..=runs"))
+                .arg(Arg::new("runs").long("runs").default_value("20").value_parser(clap::value_parser!(u64)).help("Seeds 1..=runs (at most 10,000)"))
+                .arg(
+                    Arg::new("seeds")
+                        .long("seeds")
+                        .value_name("A-B")
+                        .allow_hyphen_values(true)
+                        .help("Run seeds A..=B only: one shard of a study, joined with the others by `planarium merge` (--runs N is --seeds 1-N; give one of them)"),
+                )
                 .arg(Arg::new("json").long("json").action(ArgAction::SetTrue).help("Print JSON instead of a table"))
                 .arg(
                     Arg::new("course-table")
@@ -126,6 +136,7 @@ fn cli() -> Command {
                 .arg(Arg::new("rounds").long("rounds").default_value("3").value_parser(clap::value_parser!(u32)).help("Rounds (the best is kept)"))
                 .arg(Arg::new("json-file").long("json-file").value_name("FILE").help("Also write the rows as JSON")),
         )
+        .subcommand(merge::command())
         .subcommand(Command::new("validate").about("Check a scenario and print it normalised").arg(scenario_arg.clone()))
         .subcommand(
             Command::new("export-map")
@@ -304,6 +315,9 @@ fn print_optimum(sc: &Scenario, planner: &str, cost: Option<f64>, smoothed: Opti
 
 fn run_bench(m: &ArgMatches) -> Result<(), String> {
     if m.get_flag("course-grade") {
+        if m.get_one::<String>("seeds").is_some() {
+            return Err("--seeds does not apply to --course-grade (the course's seeds are 1 to 10)".into());
+        }
         return run_course_grade(m);
     }
     if m.get_many::<String>("more").is_some() {
@@ -311,7 +325,9 @@ fn run_bench(m: &ArgMatches) -> Result<(), String> {
     }
     let sc = load(m.get_one::<String>("scenario").unwrap())?;
     Problem::from_scenario(&sc).map_err(|e| e.to_string())?;
-    let runs = *m.get_one::<u64>("runs").unwrap();
+    let (first, last) = bench_seeds(m)?;
+    let runs = last - first + 1;
+    let seeds = format!("seeds {first}..={last}");
     let mut rows = Vec::new();
     let setups: Vec<String> = match m.get_many::<String>("setup") {
         Some(v) => v.cloned().collect(),
@@ -327,7 +343,7 @@ fn run_bench(m: &ArgMatches) -> Result<(), String> {
     for text in &setups {
         let setup = bench::parse_setup(text, |spec| params_for(spec, &sc, m))
             .map_err(|e| format!("--setup \"{}\": {e}", planarium::limits::cut(text, 100)))?;
-        let mut row = bench::bench_planner(&sc, setup.spec.name, &setup.params, runs)?;
+        let mut row = bench::bench_seeds(&sc, setup.spec.name, &setup.params, first, last)?;
         row.label = setup.label;
         eprintln!(
             "{}: {:.0}% solved, median {:.0} checks",
@@ -351,16 +367,16 @@ fn run_bench(m: &ArgMatches) -> Result<(), String> {
         }
     }
     if m.get_flag("course-table") {
-        println!("{} — {} seeded runs per set-up (seeds 1..={runs})\n", sc.name, runs);
+        println!("{} — {} seeded runs per set-up ({seeds})\n", sc.name, runs);
         print!("{}", report::course_table(&report));
     } else if m.get_flag("report") {
-        println!("{} — {} seeded runs per set-up (seeds 1..={runs})\n", sc.name, runs);
+        println!("{} — {} seeded runs per set-up ({seeds})\n", sc.name, runs);
         print!("{}", bench::report_table(&rows));
     } else if m.get_flag("json") {
-        let out = serde_json::json!({"scenario": sc.name, "runs": runs, "planners": rows});
+        let out = serde_json::json!({"scenario": sc.name, "runs": runs, "seeds": {"first": first, "last": last}, "planners": rows});
         println!("{}", serde_json::to_string_pretty(&out).unwrap());
     } else {
-        println!("{} — {} seeded runs per planner (seeds 1..={runs})\n", sc.name, runs);
+        println!("{} — {} seeded runs per planner ({seeds})\n", sc.name, runs);
         print!("{}", bench::table(&rows));
     }
     Ok(())
@@ -496,6 +512,7 @@ fn main() -> ExitCode {
     let r = match m.subcommand() {
         Some(("plan", m)) => plan(m),
         Some(("bench", m)) => run_bench(m),
+        Some(("merge", m)) => merge::run(m),
         Some(("scaling", m)) => run_scaling(m),
         Some(("validate", m)) => load(m.get_one::<String>("scenario").unwrap()).and_then(|sc| {
             Problem::from_scenario(&sc).map_err(|e| e.to_string())?;

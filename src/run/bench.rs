@@ -1,4 +1,5 @@
-//! Benchmarks over seeds: run planners on one problem for seeds 1..=N and summarise
+//! Benchmarks over seeds: run planners on one problem for seeds 1..=N (or one shard of them,
+//! seeds A..=B, which [`merge`](super::report::merge) joins back into one report) and summarise
 //! (success rate; median, mean and standard deviation of time, nodes, checks and cost, as
 //! [`summary`](super::summary) computes them), as a table or JSON. [`report`](super::report) turns
 //! the results into a [`BenchReport`](super::report::BenchReport) and writes it as CSV, JSON, an
@@ -112,11 +113,62 @@ pub fn parse_setup_lines(text: &str) -> Result<Vec<Setup>, String> {
 /// Set-ups compared in one benchmark (the page's plots label each one).
 pub const MAX_SETUPS: usize = 16;
 
+/// Seeds one benchmark runs per set-up (the benchmark page's limit on its runs, too).
+pub const MAX_RUNS: u64 = 10_000;
+
+/// A shard's seeds, `A-B` (`A..=B`; a single seed may be written `A`): whole numbers, `A ≤ B`, at
+/// most [`MAX_RUNS`] of them. Errors say what is wrong without naming the flag (the caller does).
+pub fn parse_seed_range(text: &str) -> Result<(u64, u64), String> {
+    let shown = crate::limits::cut(text.trim(), 60);
+    if text.trim().starts_with('-') {
+        return Err(format!(
+            "\"{shown}\": the first seed must be at least 0 (seeds are whole numbers from 0 to {})",
+            u64::MAX
+        ));
+    }
+    let (a, b) = text.trim().split_once('-').unwrap_or((text.trim(), text.trim()));
+    let whole = |s: &str, which: &str| {
+        let s = s.trim();
+        if s.is_empty() {
+            return Err(format!("\"{shown}\": the {which} seed is missing (write A-B, e.g. 1-10)"));
+        }
+        s.parse::<u64>().map_err(|_| {
+            format!(
+                "\"{shown}\": the {which} seed \"{}\" is not a whole number from 0 to {} (write A-B, e.g. 1-10)",
+                crate::limits::cut(s, 40),
+                u64::MAX
+            )
+        })
+    };
+    let (first, last) = (whole(a, "first")?, whole(b, "last")?);
+    if first > last {
+        return Err(format!("\"{shown}\": the first seed ({first}) is after the last ({last})"));
+    }
+    if last - first >= MAX_RUNS {
+        return Err(format!(
+            "\"{shown}\": {} seeds; the limit is {MAX_RUNS} per benchmark (split it into shards and merge them)",
+            u128::from(last - first) + 1
+        ));
+    }
+    Ok((first, last))
+}
+
 /// Run `planner` with `params` on `scenario` for seeds `1..=runs`.
 pub fn bench_planner(scenario: &Scenario, planner: &str, params: &Params, runs: u64) -> Result<PlannerBench, String> {
+    bench_seeds(scenario, planner, params, 1, runs)
+}
+
+/// Run `planner` with `params` on `scenario` for seeds `first..=last` (one shard of a study).
+pub fn bench_seeds(
+    scenario: &Scenario,
+    planner: &str,
+    params: &Params,
+    first: u64,
+    last: u64,
+) -> Result<PlannerBench, String> {
     let mut per_run = Vec::new();
     let mut statuses = Vec::new();
-    for seed in 1..=runs {
+    for seed in first..=last {
         let problem = Problem::from_scenario(scenario).map_err(|e: ScenarioError| e.to_string())?;
         let config = RunConfig { planner: planner.to_string(), params: params.clone(), seed, record_events: false };
         let mut s = Session::new(problem, config)?;

@@ -176,3 +176,25 @@ pub fn load_for_plan(m: &ArgMatches) -> Result<Scenario, String> {
     Problem::from_scenario(&sc).map_err(flagged)?;
     Ok(sc)
 }
+
+/// `bench`'s seeds: `--seeds A-B`, or `--runs N` (seeds 1..=N, 20 unless given); not both. Errors
+/// name the flag.
+pub fn bench_seeds(m: &ArgMatches) -> Result<(u64, u64), String> {
+    use clap::parser::ValueSource;
+    use planarium::run::bench::MAX_RUNS;
+    let runs_given = m.value_source("runs") == Some(ValueSource::CommandLine);
+    match m.get_one::<String>("seeds") {
+        Some(_) if runs_given => Err(
+            "--runs and --seeds are both given: --runs N is --seeds 1-N, so give one (--seeds A-B for a shard of a study)"
+                .into(),
+        ),
+        Some(text) => planarium::run::bench::parse_seed_range(text).map_err(|e| format!("--seeds {e}")),
+        None => {
+            let runs = *m.get_one::<u64>("runs").expect("--runs has a default");
+            if runs == 0 || runs > MAX_RUNS {
+                return Err(format!("--runs {runs}: from 1 to {MAX_RUNS} (more seeds: shard them with --seeds and merge)"));
+            }
+            Ok((1, runs))
+        }
+    }
+}

@@ -35,6 +35,8 @@ pub fn to_json(r: &BenchReport) -> String {
         host: &'a str,
         time_limit_s: f64,
         runs: usize,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        seeds: Option<super::SeedRange>,
         setups: Vec<SetupOut<'a>>,
     }
     let out = ReportOut {
@@ -44,6 +46,7 @@ pub fn to_json(r: &BenchReport) -> String {
         host: &r.host,
         time_limit_s: r.time_limit_s,
         runs: r.runs,
+        seeds: r.seeds,
         setups: r.setups.iter().map(|s| SetupOut { setup: s, summary: s.summary() }).collect(),
     };
     serde_json::to_string_pretty(&out).expect("a report serialises") + "\n"

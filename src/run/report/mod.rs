@@ -13,6 +13,7 @@
 pub mod csv;
 pub mod json;
 pub mod markdown;
+pub mod merge;
 pub mod ompl;
 
 pub use self::csv::{to_csv, CSV_HEADER};
@@ -59,8 +60,41 @@ pub struct BenchReport {
     /// Runs per set-up (when absent: the most rows of any set-up).
     #[serde(default)]
     pub runs: usize,
+    /// The seeds every set-up ran, `first..=last` (the CLI's `bench` writes it; a report without it,
+    /// as the page builds one, says its seeds only in its rows).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub seeds: Option<SeedRange>,
     /// The set-ups, in the order they ran.
     pub setups: Vec<SetupReport>,
+}
+
+/// The seeds of a benchmark or of one shard of it: `first..=last`, each set-up one run per seed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct SeedRange {
+    /// The first seed.
+    pub first: u64,
+    /// The last seed (inclusive).
+    pub last: u64,
+}
+
+impl SeedRange {
+    /// The range the rows' seeds make when they are consecutive and ascending, else `None`.
+    pub fn of_rows(rows: &[RunRow]) -> Option<SeedRange> {
+        let (first, last) = (rows.first()?.seed, rows.last()?.seed);
+        let consecutive = rows.windows(2).all(|w| w[0].seed.checked_add(1) == Some(w[1].seed));
+        consecutive.then_some(SeedRange { first, last })
+    }
+
+    /// How many seeds.
+    pub fn count(&self) -> u128 {
+        u128::from(self.last - self.first) + 1
+    }
+}
+
+impl std::fmt::Display for SeedRange {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}-{}", self.first, self.last)
+    }
 }
 
 /// The formats [`render`] writes.
@@ -119,8 +153,22 @@ impl BenchReport {
             host: host.to_string(),
             time_limit_s: benches.iter().map(|b| b.time_limit_s).fold(0.0, f64::max),
             runs: benches.iter().map(|b| b.per_run.len()).max().unwrap_or(0),
+            seeds: None,
             setups: benches.iter().map(SetupReport::from).collect(),
         }
+        .with_seeds()
+    }
+
+    /// The report with [`seeds`](Self::seeds) set when every set-up ran the same consecutive
+    /// seeds (else left as it was).
+    pub fn with_seeds(mut self) -> BenchReport {
+        let mut ranges = self.setups.iter().map(|s| SeedRange::of_rows(&s.rows));
+        if let Some(Some(first)) = ranges.next() {
+            if ranges.all(|r| r == Some(first)) {
+                self.seeds = Some(first);
+            }
+        }
+        self
     }
 
     /// Check what JSON cannot: known status names, `solved` agreeing with the status, finite
@@ -129,9 +177,21 @@ impl BenchReport {
         if !(self.time_limit_s.is_finite() && self.time_limit_s >= 0.0) {
             return Err(format!("time_limit_s: must be a non-negative number, not {}", self.time_limit_s));
         }
+        if let Some(r) = self.seeds {
+            if r.first > r.last {
+                return Err(format!("seeds: first ({}) is after last ({})", r.first, r.last));
+            }
+        }
         for (i, s) in self.setups.iter().enumerate() {
             if s.label.trim().is_empty() {
                 return Err(format!("setups[{i}].label: must not be empty"));
+            }
+            if let Some(want) = self.seeds {
+                let held = SeedRange::of_rows(&s.rows);
+                if held != Some(want) {
+                    let held = held.map_or_else(|| seed_list(&s.rows), |h| h.to_string());
+                    return Err(format!("setups[{i}].rows: hold seeds {held}, but seeds says {want}"));
+                }
             }
             for (j, r) in s.rows.iter().enumerate() {
                 let at = format!("setups[{i}].rows[{j}]");
@@ -166,6 +226,18 @@ impl BenchReport {
         }
         Ok(())
     }
+}
+
+/// The rows' seeds as a short list (`1,2,4,...` cut after 10), for messages.
+fn seed_list(rows: &[RunRow]) -> String {
+    if rows.is_empty() {
+        return "none".into();
+    }
+    let mut s: Vec<String> = rows.iter().take(10).map(|r| r.seed.to_string()).collect();
+    if rows.len() > 10 {
+        s.push(format!("... ({} in all)", rows.len()));
+    }
+    s.join(",")
 }
 
 /// One line of free text (no line breaks).

@@ -95,7 +95,7 @@ fn ompl_word(s: &str) -> String {
 }
 
 /// A number as the OMPL reader takes it (`nan`/`inf` for non-finite values).
-fn ompl_real(x: f64) -> String {
+pub(crate) fn ompl_real(x: f64) -> String {
     if x.is_nan() {
         "nan".into()
     } else if x.is_infinite() {
