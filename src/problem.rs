@@ -147,6 +147,24 @@ impl Problem {
         check_state(self.robot.as_ref(), &self.si.space, self.si.workspace(), &self.scenario, name, q)
     }
 
+    /// For a robot in 3-D: its tool centre point at every step of the straight motion `a → b` as
+    /// the course's connect takes it (`k·resolution` along it, in the space's metric, then `b`),
+    /// so an edge is drawn as the curve the tool really sweeps; empty for other robots or a motion
+    /// of more than [`limits::MAX_MOTION_STEPS`] steps.
+    pub fn tool_steps(&self, a: &[Real], b: &[Real]) -> Vec<[Real; 3]> {
+        let Some(sp) = self.robot.spatial() else { return Vec::new() };
+        let d = self.si.distance(a, b);
+        let Some(n) = limits::steps(d, self.si.resolution, limits::MAX_MOTION_STEPS) else { return Vec::new() };
+        let mut q = vec![0.0; a.len()];
+        (0..=n)
+            .map(|k| {
+                let t = if k == n || d == 0.0 { 1.0 } else { (k as Real * self.si.resolution / d).min(1.0) };
+                self.si.interpolate(a, b, t, &mut q);
+                sp.tool_point(&q)
+            })
+            .collect()
+    }
+
     /// A planning path as scenario states.
     pub fn decode_path(&self, path: &[Vec<Real>]) -> Vec<Vec<Real>> {
         path.iter().map(|q| self.robot.decode(q)).collect()

@@ -276,6 +276,39 @@ impl Scene {
     }
 }
 
+#[wasm_bindgen]
+impl Scene {
+    /// For a robot in 3-D: its link frames' origins and its tool centre point at scenario state
+    /// `q`, flat `[x, y, z, ...]`; empty for other robots or a `q` that is not a state.
+    pub fn skeleton(&self, q: &[f64]) -> Vec<f64> {
+        match (self.inner.robot.spatial(), self.state(q)) {
+            (Some(sp), Some(q)) => sp.skeleton(&q).concat(),
+            _ => Vec::new(),
+        }
+    }
+    /// For a robot in 3-D: its tool centre point at every step of the motion `a → b` the course's
+    /// connect takes (`Problem::tool_steps`), flat `[x, y, z, ...]`.
+    pub fn tool_steps(&self, a: &[f64], b: &[f64]) -> Vec<f64> {
+        match (self.state(a), self.state(b)) {
+            (Some(a), Some(b)) => self.inner.tool_steps(&a, &b).concat(),
+            _ => Vec::new(),
+        }
+    }
+    /// What scenario state `q` collides with, in words ("link6's bar meets the lintel"), or ""
+    /// when it is free or the robot cannot say. Not counted.
+    pub fn collision(&self, q: &[f64]) -> String {
+        self.state(q)
+            .and_then(|q| self.inner.robot.describe_collision(self.inner.si.workspace(), &q))
+            .unwrap_or_default()
+    }
+    fn state(&self, q: &[f64]) -> Option<Vec<f64>> {
+        if q.len() != self.inner.robot.external_dims() || q.iter().any(|v| !v.is_finite()) {
+            return None;
+        }
+        self.inner.robot.encode(q).ok()
+    }
+}
+
 fn flat_outline(p: &Problem, q: &[f64]) -> Vec<f64> {
     let polys = p.robot.outline(q);
     let mut out = vec![polys.len() as f64];

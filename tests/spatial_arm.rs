@@ -2,7 +2,7 @@
 //! own placement of its links, the course's scene, and the collision query's cost (printed).
 
 use planarium::problem::Problem;
-use planarium::robot::SpatialArmRobot;
+use planarium::robot::{Spatial, SpatialArmRobot};
 use planarium::scenario::{builtin, Scenario};
 
 fn puma(id: &str) -> (Scenario, Problem) {
@@ -18,7 +18,7 @@ fn puma(id: &str) -> (Scenario, Problem) {
 fn puma_frames_at_zero_are_rls() {
     let (sc, _) = puma("puma-rbo-wall");
     let arm = SpatialArmRobot::from_spec(&sc.robot).unwrap();
-    let s = arm.skeleton(&[0.0; 6]);
+    let s = arm.skeleton_points(&[0.0; 6]);
     // rl's translations, x y z; Rz(90°) takes (x, y, z) to (−y, x, z).
     let rl = [
         [0.0, 0.0, 0.0],
@@ -73,4 +73,26 @@ fn query_cost_is_printed() {
     let ns = t.elapsed().as_nanos() as f64 / states.len() as f64;
     eprintln!("{}: {free} of {} uniform states free; {ns:.0} ns a query", sc.name, states.len());
     assert!(free > 0 && free < states.len());
+}
+
+/// The tool's curve along a motion: one point per `delta` step (then the end), on the arm's own
+/// kinematics, ready for a 3-D view to draw an edge as the tool sweeps it.
+#[test]
+fn tool_steps_follow_the_connect() {
+    let (sc, p) = puma("puma-rbo-wall");
+    let goal = sc.goal.clone().unwrap();
+    let pts = p.tool_steps(&sc.start, &goal);
+    let d = p.si.distance(&sc.start, &goal);
+    assert_eq!(pts.len(), (d / sc.resolution).ceil() as usize + 1);
+    let sp = p.robot.spatial().unwrap();
+    assert_eq!(pts[0], sp.tool_point(&sc.start));
+    assert_eq!(*pts.last().unwrap(), sp.tool_point(&goal));
+    // Neighbouring steps are close: the tool is at most 1.3 m from the base axis, so it moves at
+    // most about 1.3 × 6 × δ... far less in practice; a chord would cut through the wall.
+    let longest =
+        pts.windows(2).map(|w| (0..3).map(|k| (w[1][k] - w[0][k]).powi(2)).sum::<f64>().sqrt()).fold(0.0, f64::max);
+    assert!(longest < 0.05, "{longest}");
+    // A planar robot has none.
+    let n = Problem::from_scenario(&builtin("narrow").unwrap()).unwrap();
+    assert!(n.tool_steps(&[0.1, 0.5], &[0.2, 0.5]).is_empty() && n.robot.spatial().is_none());
 }

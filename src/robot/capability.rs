@@ -110,3 +110,11 @@ pub trait Sensor {
 pub(crate) fn all_around(at: Vec2) -> SensorPose {
     SensorPose { at, heading: None }
 }
+
+/// A robot in 3-D (a spatial arm): what a 3-D view draws, from the core's own kinematics.
+pub trait Spatial {
+    /// Every link frame's origin and the tool centre point at `q`, in the world.
+    fn skeleton(&self, q: &[Real]) -> Vec<[Real; 3]>;
+    /// The tool centre point at `q`, in the world.
+    fn tool_point(&self, q: &[Real]) -> [Real; 3];
+}

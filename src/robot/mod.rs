@@ -26,7 +26,7 @@ pub mod spatial;
 
 pub use arm::{fk_path_cost, ArmRobot};
 pub use asv::AsvRobot;
-pub use capability::{DiscreteOnly, MotionModel, OwnSampler, Sensor, WorkspaceBody};
+pub use capability::{DiscreteOnly, MotionModel, OwnSampler, Sensor, Spatial, WorkspaceBody};
 pub use point::PointRobot;
 pub use rigid::RigidRobot;
 pub use spatial::SpatialArmRobot;
@@ -124,6 +124,10 @@ pub trait Robot: std::fmt::Debug {
     }
     /// Its sensor (inspection tasks); `None`: it has none.
     fn sensor(&self) -> Option<&dyn Sensor> {
+        None
+    }
+    /// Its 3-D geometry for drawing (a spatial arm); `None`: it moves in the plane.
+    fn spatial(&self) -> Option<&dyn Spatial> {
         None
     }
 }

@@ -108,9 +108,12 @@ export const ROBOT_DRAWINGS = Object.freeze({
   polygon: 'polygons',
   'open-chain': 'linkage',
   'closed-chain': 'chain',
+  // A spatial arm seen from above: its skeleton (the core's outline) ending at the tool; the page's
+  // 3-D view draws it in full.
+  'spatial-arm': 'skeleton',
 });
 
-/** How the robot of scenario `robot` is drawn: 'dot', 'polygons', 'linkage' or 'chain'. */
+/** How the robot of scenario `robot` is drawn: 'dot', 'polygons', 'linkage', 'chain' or 'skeleton'. */
 export function robotDrawing(robot) {
   return ROBOT_DRAWINGS[robotCaps(robot).drawn] ?? 'dot';
 }

@@ -7,6 +7,8 @@
 //             tiny tip point): thick segments, joint dots, the base as a small square;
 //   chain     ONE closed chain, the vehicles in chain order (a vehicle chain): brooms solid, the
 //             closing edge (last vehicle back to the first) dashed, vehicles as dots.
+//   skeleton  a spatial arm seen from above: ONE open polyline through its link frames to the tool
+//             centre point, drawn as a linkage (no preview outline: only the core knows its kinematics).
 // outlineOf() computes the same outlines in JS, only to preview a start or goal being dragged
 // (the core's outline replaces it once the edited scenario has loaded).
 
@@ -38,7 +40,7 @@ export function drawRobotShape(ctx, L, robot, polys, state, st) {
     ctx.stroke();
     return;
   }
-  if (drawing === 'linkage') drawArm(ctx, L, polys[0], st);
+  if (drawing === 'linkage' || drawing === 'skeleton') drawArm(ctx, L, polys[0], st);
   else if (drawing === 'chain') drawChain(ctx, L, polys[0], st);
   else drawPolygons(ctx, L, polys, st);
 }

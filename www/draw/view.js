@@ -159,7 +159,7 @@ export class View {
     this.rawFrames = parseFrames(rawFrames);
     const solved = !!(result && result.solved);
     const drawing = robotDrawing(this.scenario?.robot);
-    if (drawing === 'linkage') {
+    if (drawing === 'linkage' || drawing === 'skeleton') {
       // the path as the end effector traces it (the last point of the arm's polyline)
       const tip = (list) => list.filter((f) => f.polys.length && f.polys[0].length >= 2)
         .map(({ polys: [p] }) => [p[p.length - 2], p[p.length - 1]]);

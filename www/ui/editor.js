@@ -123,7 +123,8 @@ export class Editor {
 
   jointSliders(which) {
     const q = this.scenario[which];
-    const limits = this.scenario.robot.limits;
+    // a planar arm lists its limits; a spatial arm gives them per joint row
+    const limits = this.scenario.robot.limits ?? this.scenario.robot.joints?.map((j) => j.limits);
     const set = el('fieldset', { id: `${which}-joints` });
     const sw = el('span', { className: 'swatch box', 'aria-hidden': 'true' });
     sw.style.setProperty('--c', this.palette[which]);

@@ -15,7 +15,7 @@
 mod collide;
 mod kinematics;
 
-use super::{Robot, Verdict};
+use super::{Robot, Spatial, Verdict};
 use crate::geometry::solid::Solid;
 use crate::geometry::Workspace;
 use crate::math::{Real, Vec2};
@@ -129,7 +129,7 @@ impl SpatialArmRobot {
 
     /// Every link frame's origin and the tool centre point at `q`, in the world (`joints + 2`
     /// points): what a 3-D view draws the arm's skeleton and its tool through.
-    pub fn skeleton(&self, q: &[Real]) -> Vec<[Real; 3]> {
+    pub fn skeleton_points(&self, q: &[Real]) -> Vec<[Real; 3]> {
         let mut frames = vec![nalgebra::Isometry3::identity(); self.chain.joints() + 1];
         self.chain.frames(q, &mut frames);
         let mut pts: Vec<[Real; 3]> = frames.iter().map(|f| f.translation.vector.into()).collect();
@@ -137,11 +137,6 @@ impl SpatialArmRobot {
         let t = frames[self.chain.joints()] * nalgebra::Point3::new(x, y, z);
         pts.push([t.x, t.y, t.z]);
         pts
-    }
-
-    /// The tool centre point at `q`, in the world.
-    pub fn tool_point(&self, q: &[Real]) -> [Real; 3] {
-        self.chain.point_on_last(q, &self.tool)
     }
 
     /// The links' names.
@@ -181,12 +176,24 @@ impl Robot for SpatialArmRobot {
     }
     /// The tool centre point seen from above.
     fn project(&self, q: &[Real]) -> Vec2 {
-        let [x, y, _] = self.tool_point(q);
+        let [x, y, _] = self.chain.point_on_last(q, &self.tool);
         Vec2::new(x, y)
     }
     /// The skeleton seen from above: the link frames' origins and the tool centre point.
     fn outline(&self, q: &[Real]) -> Vec<Vec<Vec2>> {
-        vec![self.skeleton(q).iter().map(|p| Vec2::new(p[0], p[1])).collect()]
+        vec![self.skeleton_points(q).iter().map(|p| Vec2::new(p[0], p[1])).collect()]
+    }
+    fn spatial(&self) -> Option<&dyn Spatial> {
+        Some(self)
+    }
+}
+
+impl Spatial for SpatialArmRobot {
+    fn skeleton(&self, q: &[Real]) -> Vec<[Real; 3]> {
+        self.skeleton_points(q)
+    }
+    fn tool_point(&self, q: &[Real]) -> [Real; 3] {
+        self.chain.point_on_last(q, &self.tool)
     }
 }
 

@@ -47,10 +47,10 @@ fn dh_frames_follow_rz_tz_tx_rx() {
     let arm = SpatialArmRobot::from_spec(&p.scenario.robot).unwrap();
     let close = |a: [f64; 3], b: [f64; 3]| a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-12);
     // q = 0: joint 2 at (1, 0, 0), the hand's frame (and the tool) at (1.5, 0, 0).
-    let s = arm.skeleton(&[0.0, 0.0]);
+    let s = arm.skeleton_points(&[0.0, 0.0]);
     assert!(close(s[1], [1.0, 0.0, 0.0]) && close(s[2], [1.5, 0.0, 0.0]), "{s:?}");
     // The first joint a quarter turn: everything along y.
-    let s = arm.skeleton(&[FRAC_PI_2, 0.0]);
+    let s = arm.skeleton_points(&[FRAC_PI_2, 0.0]);
     assert!(close(s[1], [0.0, 1.0, 0.0]) && close(s[2], [0.0, 1.5, 0.0]), "{s:?}");
     // d lifts along the previous z, α twists the next joint's axis: with α = π/2 on joint 1,
     // joint 2 turns about the world's −y, so a quarter turn of it points the hand down... or up.
@@ -59,13 +59,13 @@ fn dh_frames_follow_rz_tz_tx_rx() {
         json!({"joints": [{"d": 0.3, "a": 1, "alpha": FRAC_PI_2, "limits": [-3, 3]}, {"a": 0.5, "limits": [-3, 3]}]}),
     ));
     let arm = SpatialArmRobot::from_spec(&p.scenario.robot).unwrap();
-    let s = arm.skeleton(&[0.0, FRAC_PI_2]);
+    let s = arm.skeleton_points(&[0.0, FRAC_PI_2]);
     assert!(close(s[1], [1.0, 0.0, 0.3]), "{s:?}");
     assert!(close(s[2], [1.0, 0.0, 0.8]), "Rx(π/2) takes the new y axis to the old z: {s:?}");
     // The base pose turns everything: rz = π/2 takes x to y.
     let p = problem(&scenario(5.0, json!({"base": {"translation": [0, 0, 2], "rotation": [0, 0, FRAC_PI_2]}})));
     let arm = SpatialArmRobot::from_spec(&p.scenario.robot).unwrap();
-    let s = arm.skeleton(&[0.0, 0.0]);
+    let s = arm.skeleton_points(&[0.0, 0.0]);
     assert!(close(s[0], [0.0, 0.0, 2.0]) && close(s[2], [0.0, 1.5, 2.0]), "{s:?}");
 }
 
