@@ -83,7 +83,7 @@ test('a planner without its pieces is named', () => {
 });
 
 test('every robot kind has a drawing and a pose the editor knows', () => {
-  assert.deepEqual(kinds.map((k) => k.name).sort(), ['arm', 'asv', 'point', 'rigid']);
+  assert.deepEqual(kinds.map((k) => k.name).sort(), ['arm', 'asv', 'point', 'rigid', 'spatial-arm']);
   for (const k of kinds) {
     assert.ok(k.drawn in ROBOT_DRAWINGS, `${k.name}: a drawing for "${k.drawn}"`);
     assert.ok(['none', 'position', 'position-heading', 'joints'].includes(k.pose), `${k.name}: pose ${k.pose}`);
