@@ -6,7 +6,7 @@ use super::BenchReport;
 pub const CSV_HEADER: &str = "setup,planner,seed,solved,status,time_ms,iterations,nodes,checks,cost,smoothed_cost";
 
 /// One CSV field, quoted as RFC 4180 asks when it holds a comma, a quote or a line break.
-fn csv_field(s: &str) -> String {
+pub(super) fn csv_field(s: &str) -> String {
     if s.contains([',', '"', '\r', '\n']) {
         format!("\"{}\"", s.replace('"', "\"\""))
     } else {
