@@ -17,6 +17,16 @@
 //!   is added. For a point robot that is the report's move along one axis; for a chain of vehicles
 //!   it bends or shifts part of the chain while the rest holds still, which slides it along walls
 //!   a full step would hit.
+//!
+//! Besides RRT's EXTEND and RRT-Connect's CONNECT in steps of `range` (motions checked by the
+//! motion validator), the tree has the Robotics Library's connect, which keeps only the last free
+//! configuration of a line stepped at the resolution ([`Tree::connect_last_free`], in
+//! `tree/last_free.rs`); the dynamic domain, exhausted nodes and near-collision sampling act on it
+//! through the same [`Tree::select`] and books.
+
+mod last_free;
+
+pub use last_free::MAX_LAST_FREE_STEPS;
 
 use super::{Context, ParamGroup, ParamSpec, Params};
 use crate::events::EventKind;
