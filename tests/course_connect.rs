@@ -5,8 +5,9 @@
 //! counted once each; on hand-built trees only the last free configuration becomes a node, a
 //! dynamic domain and an exhausted count are given to a node whose connect added nothing, and the
 //! near-collision sampler is told the last connected node; each tree variant changes a run; runs
-//! are deterministic, in one go and in suspended batches; `range` (the default) is unchanged (its
-//! goldens are pinned in tests/golden and checked by tests/determinism.rs).
+//! are deterministic, in one go and in suspended batches; ladder steps (range steps) do nothing in
+//! it; `range` (the default) is unchanged (its goldens are pinned in tests/golden and checked by
+//! tests/determinism.rs).
 
 mod common;
 
@@ -450,16 +451,23 @@ fn last_free_runs_are_deterministic_in_one_go_and_in_suspended_batches() {
 }
 
 #[test]
-fn ladder_steps_are_refused_with_last_free() {
+fn ladder_steps_do_nothing_with_last_free_and_bad_values_are_refused() {
+    let sc = builtin("narrow").unwrap();
+    for seed in 1..=2 {
+        let plain = fingerprint(&sc, "rrt-connect", &json!({"connect": "last-free"}), seed).unwrap();
+        let ladder = fingerprint(&sc, "rrt-connect", &json!({"connect": "last-free", "ladder": 8}), seed).unwrap();
+        assert_eq!(plain, ladder, "seed {seed}: ladder steps are range steps");
+        let range = fingerprint(&sc, "rrt-connect", &json!({"ladder": 8}), seed).unwrap();
+        assert_ne!(
+            range,
+            fingerprint(&sc, "rrt-connect", &json!({}), seed).unwrap(),
+            "seed {seed}: they act in range mode"
+        );
+    }
     let spec = planners::find("rrt-connect").unwrap();
-    let params = Params::from_json(spec, &json!({"connect": "last-free", "ladder": 4})).unwrap();
-    let problem = Problem::from_scenario(&builtin("narrow").unwrap()).unwrap();
-    let err = Session::new(problem, RunConfig { planner: "rrt-connect".into(), params, seed: 1, record_events: false })
-        .err()
-        .expect("refused");
-    assert!(err.contains("ladder") && err.contains("last-free"), "{err}");
     let bad = Params::from_json(spec, &json!({"connect": "extend"})).unwrap_err();
     assert_eq!(bad.0, "connect");
     assert!(bad.1.contains("range, last-free"), "{}", bad.1);
     assert!(Params::from_json(spec, &json!({"epsilon": 0})).is_err(), "epsilon must be positive");
+    assert!(Params::from_json(spec, &json!({"epsilon": 0.01})).is_err(), "epsilon at most 1e-3");
 }

@@ -16,7 +16,8 @@
 //! then the goal tree's from the parent of its own meeting node (the two are within `epsilon`) to
 //! the goal. Start and goal are tested once each, counted, in the first iteration (rl's
 //! `Planner::verify` before `solve`), so `checks` and `free_checks` are the course's collision and
-//! free queries. Ladder steps are range steps: refused with `last-free`.
+//! free queries. Ladder steps are range steps: `ladder` does nothing with `last-free` (as a
+//! sampler's `sigma` does nothing with the uniform sampler; the page hides it).
 //!
 //! [`Rng`]: crate::rng::Rng
 
@@ -52,12 +53,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
         marks: &[],
         overlays: &[],
     },
-    make: |si, task, params| {
-        if params.choice("connect") == "last-free" && params.real("ladder") > 0.0 {
-            return Err("ladder steps are range steps: set ladder to 0 with connect last-free".into());
-        }
-        Ok(Box::new(RrtConnect::new(si, task, params)))
-    },
+    make: |si, task, params| Ok(Box::new(RrtConnect::new(si, task, params))),
 };
 
 /// How a CONNECT grows: in steps of `range`, each motion checked and added (Kuffner and LaValle),
