@@ -450,6 +450,32 @@ fn last_free_runs_are_deterministic_in_one_go_and_in_suspended_batches() {
     assert!(suspended > 0, "no batch was suspended: the journal is not exercised");
 }
 
+/// One connect may test up to 100,000 configurations: the run's time limit holds inside it. On a
+/// simulated clock where a state check costs 1 ms, a 50 ms limit stops the first connect (some
+/// 94,000 steps long) after about 50 checks, with nothing added; in bounded batches of 0.5 ms the
+/// connect is suspended and resumed from the journal, and the batches end within their budget.
+#[test]
+fn a_long_connect_stops_at_the_time_limit_and_in_bounded_batches() {
+    let sc = Scenario::from_json(
+        r#"{"format": "planarium-scenario/1", "name": "fine", "bounds": [0, 0, 1, 1], "obstacles": [],
+            "robot": {"kind": "point"}, "start": [0.0, 0.0], "goal": [1.0, 1.0], "resolution": 1.5e-5}"#,
+    )
+    .unwrap();
+    {
+        let _sim = planarium::clock::simulate(std::time::Duration::from_millis(1), std::time::Duration::ZERO);
+        let r = run(&sc, json!({"connect": "last-free", "time_limit": 0.05}), 1).result();
+        assert_eq!(r.status, "time_limit");
+        assert_eq!(r.stats.nodes, 2, "a connect cut short adds nothing");
+        assert!(r.stats.checks < 200, "{} checks: the limit holds inside the connect", r.stats.checks);
+    }
+    let _sim = planarium::clock::simulate(std::time::Duration::from_micros(1), std::time::Duration::ZERO);
+    let one = fingerprint(&sc, "rrt-connect", &json!({"connect": "last-free"}), 1).unwrap();
+    let (batched, n) =
+        planarium::run::fingerprint_in_batches(&sc, "rrt-connect", &json!({"connect": "last-free"}), 1, 0.5).unwrap();
+    assert_eq!(one, batched);
+    assert!(n > 10 && one.checks > 50_000, "{n} batches suspended over {} checks", one.checks);
+}
+
 #[test]
 fn ladder_steps_do_nothing_with_last_free_and_bad_values_are_refused() {
     let sc = builtin("narrow").unwrap();
