@@ -15,6 +15,11 @@
 //!   front of it) keeps it nearly flat. The maps are `planarium::run::scaling`'s, which the suite
 //!   times too (`planarium scaling`).
 //!
+//! - `spatial_query`: one collision query of report 001's Puma 560 on its course scene
+//!   (`puma-rbo-wall`: forward kinematics, the scene's boxes, the 13 tested link pairs), on uniform
+//!   states and on the states a connect tests (1° steps from a free state toward a uniform one,
+//!   up to the first collision: the run's queries are these, neighbours of each other).
+//!
 //! Every input is drawn from a seeded generator, so each run of the benchmark measures the same work.
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
@@ -166,9 +171,43 @@ fn scaling(c: &mut Criterion) {
     g.finish();
 }
 
+fn spatial_query(c: &mut Criterion) {
+    let mut g = c.benchmark_group("spatial_query");
+    let p = problem("puma-rbo-wall");
+    let uniform = uniform_states(&p, 4096, 3);
+    // Connect-like sequences: from a free state toward a uniform one in steps of the resolution.
+    let mut steps = Vec::new();
+    let targets = uniform_states(&p, 4096, 4);
+    let mut q = vec![0.0; p.si.dims()];
+    for (a, b) in uniform.iter().filter(|a| p.si.is_valid(a)).zip(&targets) {
+        let d = p.si.distance(a, b);
+        let n = (d / p.si.resolution).ceil() as usize;
+        for k in 1..=n {
+            p.si.interpolate(a, b, (k as f64 * p.si.resolution / d).min(1.0), &mut q);
+            steps.push(q.clone());
+            if !p.si.is_valid(&q) || steps.len() >= 100_000 {
+                break;
+            }
+        }
+        if steps.len() >= 100_000 {
+            break;
+        }
+    }
+    for (name, states) in [("uniform", &uniform), ("connect steps", &steps)] {
+        let mut k = 0;
+        g.bench_function(name, |b| {
+            b.iter(|| {
+                k = (k + 1) % states.len();
+                black_box(p.si.is_valid(&states[k]))
+            })
+        });
+    }
+    g.finish();
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default().warm_up_time(Duration::from_millis(500)).measurement_time(Duration::from_secs(2));
-    targets = nearest, state_check, motion_check, plan, scaling
+    targets = nearest, state_check, motion_check, plan, scaling, spatial_query
 }
 criterion_main!(benches);

@@ -61,6 +61,8 @@ pub enum Entry {
         ok: bool,
         /// The state checks it counted.
         checks: u64,
+        /// Of those, the ones that found their state valid.
+        free: u64,
         /// For an invalid motion, where the state found is in the arena.
         at: usize,
     },
@@ -205,7 +207,7 @@ impl Journal {
         }
         self.cut(mark);
         let e = match (e, state) {
-            (Entry::Motion { ok, checks, .. }, Some(q)) => Entry::Motion { ok, checks, at: self.store(q) },
+            (Entry::Motion { ok, checks, free, .. }, Some(q)) => Entry::Motion { ok, checks, free, at: self.store(q) },
             (e, _) => e,
         };
         self.push(e);

@@ -1,7 +1,8 @@
 //! Benchmark exports: the CSV, JSON and OMPL benchmark log written by `run::report` read back to
 //! the per-run statistics, through small readers written here (an RFC 4180 CSV reader, and an OMPL
-//! log reader following `readBenchmarkLog` of OMPL's `scripts/ompl_benchmark_statistics.py`), and
-//! the CLI's `bench --csv --json-file --ompl-log` files equal to the library's for the same seeds.
+//! log reader following `readBenchmarkLog` of OMPL's `scripts/ompl_benchmark_statistics.py`), report
+//! 001's course benchmark lines read back the same way, and the CLI's `bench --csv --json-file
+//! --ompl-log --course-csv` files equal to the library's for the same seeds.
 
 use planarium::planners::{self, Params};
 use planarium::run::bench::{self, PlannerBench};
@@ -104,6 +105,40 @@ fn csv_reads_back_to_the_per_run_stats() {
     }
 }
 
+/// Report 001's course lines: the course's header exactly, then one line per run (LF-ended, as
+/// rl's `std::endl`), set-ups and seeds in order, with the date split into date and time, solved
+/// as true/false, the set-up's label, nodes, checks, free checks and the time.
+#[test]
+fn course_lines_read_back_to_the_per_run_stats() {
+    let benches = benches();
+    let text = report::render(&report(&benches), "course").unwrap();
+    assert!(!text.contains('\r'), "lines end with LF, as rl wrote them");
+    let records = read_csv(&text);
+    assert_eq!(
+        records[0].join(","),
+        "date,time,solved,plannerName,#vertices,#totalCollisionQueries,#freeQueries,time_ms"
+    );
+    assert_eq!(report::COURSE_HEADER, records[0].join(","));
+    let runs: Vec<_> = benches.iter().flat_map(|b| b.per_run.iter().map(move |r| (b.label.as_str(), r))).collect();
+    assert_eq!(records.len(), 1 + runs.len());
+    for (rec, (label, (_, solved, st))) in records[1..].iter().zip(&runs) {
+        assert_eq!(rec.len(), 8);
+        assert_eq!((rec[0].as_str(), rec[1].as_str()), ("2025-01-31", "12:00:00"));
+        assert_eq!(rec[2].parse::<bool>().unwrap(), *solved);
+        assert_eq!(rec[3], *label);
+        assert_eq!(rec[4].parse::<u64>().unwrap(), st.nodes);
+        assert_eq!(rec[5].parse::<u64>().unwrap(), st.checks);
+        assert_eq!(rec[6].parse::<u64>().unwrap(), st.free_checks);
+        assert!(st.free_checks > 0 && st.free_checks <= st.checks, "{st:?}");
+        assert_eq!(rec[7].parse::<f64>().unwrap(), st.time_ms, "time in ms, exactly");
+    }
+    // A date that is not the CLI's UTC stamp (the page's own) is kept whole, with no time.
+    let mut r = report(&benches);
+    r.date = "today, 5 pm".into();
+    let rec = &read_csv(&report::render(&r, "course").unwrap())[1];
+    assert_eq!((rec[0].as_str(), rec[1].as_str()), ("today, 5 pm", ""));
+}
+
 #[test]
 fn csv_quotes_as_rfc_4180_asks() {
     let row = RunRow {
@@ -114,6 +149,7 @@ fn csv_quotes_as_rfc_4180_asks() {
         iterations: 2,
         nodes: 3,
         checks: 4,
+        free_checks: 3,
         cost: None,
         smoothed_cost: None,
         smoothing_ms: 0.0,
@@ -204,7 +240,7 @@ fn from_json_takes_the_pages_minimal_report_and_says_what_is_wrong() {
         assert!(e.starts_with("bench report: ") && e.contains(want), "{e} (wanted: {want})");
     }
     let e = report::render(&r, "xml").unwrap_err();
-    assert_eq!(e, "unknown export format \"xml\" (known: csv, json, ompl, table)");
+    assert_eq!(e, "unknown export format \"xml\" (known: csv, json, ompl, table, course)");
 }
 
 #[test]
@@ -352,10 +388,10 @@ fn ompl_without_times(mut log: OmplLog) -> OmplLog {
 }
 
 #[test]
-fn the_cli_writes_the_same_three_formats() {
+fn the_cli_writes_the_same_four_formats() {
     let dir = std::env::temp_dir().join(format!("planarium-bench-export-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let (csv, json, log) = (dir.join("b.csv"), dir.join("b.json"), dir.join("b.log"));
+    let (csv, json, log, course) = (dir.join("b.csv"), dir.join("b.json"), dir.join("b.log"), dir.join("c.csv"));
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_planarium"))
         .args([
             "bench",
@@ -375,11 +411,13 @@ fn the_cli_writes_the_same_three_formats() {
         .arg(&json)
         .arg("--ompl-log")
         .arg(&log)
+        .arg("--course-csv")
+        .arg(&course)
         .output()
         .unwrap();
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let read = |p: &std::path::Path| std::fs::read_to_string(p).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
-    let (csv_text, json_text, log_text) = (read(&csv), read(&json), read(&log));
+    let (csv_text, json_text, log_text, course_text) = (read(&csv), read(&json), read(&log), read(&course));
     std::fs::remove_dir_all(&dir).ok();
 
     let lib = report(&benches());
@@ -402,6 +440,20 @@ fn the_cli_writes_the_same_three_formats() {
             .collect::<Vec<_>>()
     };
     assert_eq!(drop_time(&csv_text), drop_time(&report::to_csv(&lib)));
+    // Course lines: the same but date, time and time_ms; the date and time the JSON's.
+    let course_records = read_csv(&course_text);
+    assert!(course_records[1..].iter().all(|r| format!("{}T{}Z", r[0], r[1]) == cli.date), "{course_text}");
+    let undated = |t: &str| {
+        read_csv(t)
+            .into_iter()
+            .map(|mut r| {
+                r.truncate(7);
+                r.drain(0..2);
+                r
+            })
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(undated(&course_text), undated(&report::to_course_csv(&lib)));
     // OMPL log: the same log but times, date and host.
     assert_eq!(
         ompl_without_times(read_ompl_log(&log_text)),

@@ -6,8 +6,7 @@ use planarium::robot::{Spatial, SpatialArmRobot};
 use planarium::scenario::{builtin, Scenario};
 
 fn puma(id: &str) -> (Scenario, Problem) {
-    let mut sc = builtin(id).unwrap();
-    sc.planner = None; // TEMP
+    let sc = builtin(id).unwrap();
     let p = Problem::from_scenario(&sc).unwrap();
     (sc, p)
 }

@@ -111,6 +111,12 @@ fn cli() -> Command {
                 )
                 .arg(Arg::new("csv").long("csv").value_name("FILE").help("Also write every run as CSV (one row per run; see docs/benchmarks.md)"))
                 .arg(Arg::new("json-file").long("json-file").value_name("FILE").help("Also write the report (runs and summaries) as JSON"))
+                .arg(
+                    Arg::new("course-csv")
+                        .long("course-csv")
+                        .value_name("FILE")
+                        .help("Also write report 001's course benchmark lines, one per run: date,time,solved,plannerName,#vertices,#totalCollisionQueries,#freeQueries,time_ms (the Robotics Library's benchmark file; see docs/benchmarks.md)"),
+                )
                 .arg(Arg::new("more").num_args(0..).value_name("SCENARIO").help("More scenarios to grade (with --course-grade)"))
                 .arg(
                     Arg::new("course-grade")
@@ -247,7 +253,10 @@ fn plan(m: &ArgMatches) -> Result<(), String> {
     } else {
         let st = &r.stats;
         println!("{} on \"{}\", seed {}: {}", spec.label, sc.name, seed, r.status);
-        println!("  time {:.3} ms, {} iterations, {} nodes, {} checks", st.time_ms, st.iterations, st.nodes, st.checks);
+        println!(
+            "  time {:.3} ms, {} iterations, {} nodes, {} checks ({} free)",
+            st.time_ms, st.iterations, st.nodes, st.checks, st.free_checks
+        );
         let sm = &st.sampler;
         if sm.used {
             println!(
@@ -360,7 +369,7 @@ fn run_bench(m: &ArgMatches) -> Result<(), String> {
         if path.exists() { path.file_stem().and_then(|s| s.to_str()).unwrap_or(scenario_arg) } else { scenario_arg }
             .to_string();
     let report = report::BenchReport::new(&sc.name, &scenario_id, &now_utc(), &host_name(), &rows);
-    for (flag, format) in [("csv", "csv"), ("json-file", "json"), ("ompl-log", "ompl")] {
+    for (flag, format) in [("csv", "csv"), ("json-file", "json"), ("ompl-log", "ompl"), ("course-csv", "course")] {
         if let Some(file) = m.get_one::<String>(flag) {
             std::fs::write(file, report::render(&report, format)?).map_err(|e| format!("{file}: {e}"))?;
             eprintln!("wrote {file}");

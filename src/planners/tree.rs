@@ -17,6 +17,16 @@
 //!   is added. For a point robot that is the report's move along one axis; for a chain of vehicles
 //!   it bends or shifts part of the chain while the rest holds still, which slides it along walls
 //!   a full step would hit.
+//!
+//! Besides RRT's EXTEND and RRT-Connect's CONNECT in steps of `range` (motions checked by the
+//! motion validator), the tree has the Robotics Library's connect, which keeps only the last free
+//! configuration of a line stepped at the resolution ([`Tree::connect_last_free`], in
+//! `tree/last_free.rs`); the dynamic domain, exhausted nodes and near-collision sampling act on it
+//! through the same [`Tree::select`] and books.
+
+mod last_free;
+
+pub use last_free::MAX_LAST_FREE_STEPS;
 
 use super::{Context, ParamGroup, ParamSpec, Params};
 use crate::events::EventKind;
@@ -32,7 +42,7 @@ pub static TREE_PARAMS: &[ParamSpec] = &[
     ParamSpec::real("dd_min_radius", "Smallest domain", 0.0, 1e6, 0.0, "Adaptive Dynamic-Domain: the smallest radius (0: the motion resolution)."),
     ParamSpec::int("exhausted", "Exhausted after", 0.0, 1e6, 0.0, "Exhausted nodes: failed expansions after which a node is exhausted (0: off)."),
     ParamSpec::choice("exhausted_policy", "Exhausted policy", &["drop", "weighted"], 0, "drop: exhausted nodes leave nearest-neighbour selection; weighted: pick the lowest distance-plus-failures score H."),
-    ParamSpec::int("ladder", "Ladder steps", 0.0, 64.0, 0.0, "When a step collides, try up to this many steps that move only a random half of the coordinates (report 000's ladder move, generalised; 0: off)."),
+    ParamSpec::int("ladder", "Ladder steps", 0.0, 64.0, 0.0, "When a step collides, try up to this many steps that move only a random half of the coordinates (report 000's ladder move, generalised; 0: off; range steps only: nothing with RRT-Connect's last-free connect)."),
 ];
 
 /// The tree variants as a group of the page's parameter panel.

@@ -196,10 +196,11 @@ pub fn table(rows: &[PlannerBench]) -> String {
         format!("{:<16} {:>8}  {:<14} {:>12} {:>12} {:>12}\n", "planner", "success", "metric", "median", "mean", "std");
     for r in rows {
         let m = &r.summary;
-        let metrics: [(&str, &Summary); 5] = [
+        let metrics: [(&str, &Summary); 6] = [
             ("time_ms", &m.time_ms),
             ("nodes", &m.nodes),
             ("checks", &m.checks),
+            ("free_checks", &m.free_checks),
             ("cost", &m.cost),
             ("smoothed_cost", &m.smoothed_cost),
         ];

@@ -10,8 +10,13 @@ pub struct Stats {
     pub iterations: u64,
     /// Nodes in all trees.
     pub nodes: u64,
-    /// State validity checks, including those inside motion checks.
+    /// State validity checks, including those inside motion checks (the Robotics Library's
+    /// collision queries).
     pub checks: u64,
+    /// Of `checks`, those that found the state valid (the Robotics Library's free queries; the
+    /// workspace planners' geometric tests and a robot's own sampler's checks are never counted
+    /// here: see [`SpaceInfo::free_checks`](crate::space_info::SpaceInfo::free_checks)).
+    pub free_checks: u64,
     /// Raw path cost in the robot's metric (`null` when unsolved).
     pub cost: Option<Real>,
     /// Smoothed path cost (`null` when unsolved).

@@ -49,6 +49,7 @@ struct Snapshot {
     events: usize,
     iterations: u64,
     checks: u64,
+    free_checks: u64,
 }
 
 /// The run's limits, read from its parameters once (they are checked before every iteration).
@@ -85,8 +86,9 @@ pub struct Session {
     iterations: u64,
     elapsed_ms: f64,
     smoothing_ms: f64,
-    /// State checks spent planning, frozen when solved (smoothing's checks are not the planner's).
-    planning_checks: Option<u64>,
+    /// State checks spent planning, all and free, frozen when solved (smoothing's checks are not
+    /// the planner's).
+    planning_checks: Option<(u64, u64)>,
     path: Vec<Vec<Real>>,
     smoothed: Vec<Vec<Real>>,
     /// Why the planner gave up, when it did.
@@ -253,6 +255,7 @@ impl Session {
             events: self.events.len(),
             iterations: self.iterations,
             checks: self.problem.si.checks(),
+            free_checks: self.problem.si.free_checks(),
         };
         let took = begin.elapsed().as_secs_f64() * 1000.0;
         self.snapshot_ms_per_node = took / nodes;
@@ -271,7 +274,7 @@ impl Session {
             self.sampler = kept.sampler;
             self.events.truncate(kept.events);
             self.iterations = kept.iterations;
-            self.problem.si.set_checks(kept.checks);
+            self.problem.si.set_checks(kept.checks, kept.free_checks);
             self.status = Status::Running;
             self.planning_checks = None;
             self.path.clear();
@@ -402,7 +405,7 @@ impl Session {
     }
 
     fn finish_solved(&mut self, path: Vec<Vec<Real>>) {
-        self.planning_checks = Some(self.problem.si.checks());
+        self.planning_checks = Some((self.problem.si.checks(), self.problem.si.free_checks()));
         let t = Instant::now();
         let mut rng = Rng::new(self.config.seed ^ SMOOTHING_STREAM);
         let attempts = self.config.params.real("shortcut_attempts") as usize;
@@ -502,7 +505,8 @@ impl Session {
             time_ms: self.elapsed_ms,
             iterations: self.iterations,
             nodes: self.planner.node_count() as u64,
-            checks: self.planning_checks.unwrap_or_else(|| si.checks()),
+            checks: self.planning_checks.map_or_else(|| si.checks(), |c| c.0),
+            free_checks: self.planning_checks.map_or_else(|| si.free_checks(), |c| c.1),
             cost: solved.then(|| smoothing::path_cost(si, &self.path)),
             smoothed_cost: solved.then(|| smoothing::path_cost(si, &self.smoothed)),
             smoothing_ms: self.smoothing_ms,

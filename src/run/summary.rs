@@ -58,6 +58,10 @@ pub struct RunRow {
     pub nodes: u64,
     /// State validity checks.
     pub checks: u64,
+    /// Of those, the ones that found the state valid (optional, 0 when absent: reports written
+    /// before it was counted).
+    #[serde(default)]
+    pub free_checks: u64,
     /// Raw path cost (`null` when unsolved).
     #[serde(default)]
     pub cost: Option<f64>,
@@ -86,6 +90,7 @@ impl RunRow {
             iterations: st.iterations,
             nodes: st.nodes,
             checks: st.checks,
+            free_checks: st.free_checks,
             cost: st.cost,
             smoothed_cost: st.smoothed_cost,
             smoothing_ms: st.smoothing_ms,
@@ -110,6 +115,8 @@ pub struct SetupSummary {
     pub nodes: Summary,
     /// State checks (all runs).
     pub checks: Summary,
+    /// Free state checks (all runs).
+    pub free_checks: Summary,
     /// Raw path cost (solved runs).
     pub cost: Summary,
     /// Smoothed path cost (solved runs).
@@ -137,6 +144,7 @@ impl SetupSummary {
             time_ms: all(|r| r.time_ms),
             nodes: all(|r| r.nodes as f64),
             checks: all(|r| r.checks as f64),
+            free_checks: all(|r| r.free_checks as f64),
             cost: solved_only(|r| r.cost),
             smoothed_cost: solved_only(|r| r.smoothed_cost),
             cost_fk: solved_only(|r| r.cost_fk),

@@ -1,7 +1,8 @@
 //! Sampling near collisions (report 001, "Extension 2"): Gaussian samples around the last point
 //! where a motion collided, with `collision_sigma`: as in the report's algorithm 2, the tree node
 //! the colliding motion started from (free, and beside the obstacle; the colliding state itself
-//! would lie inside it). A counter holds the samples drawn since the
+//! would lie inside it); in RRT-Connect's `last-free` connect, the last free configuration, the
+//! node that connect added (or the node it started from when it added none). A counter holds the samples drawn since the
 //! centre was last chosen at random; once it reaches `perseverance`, the centre moves to a random
 //! state (one raw draw from the robot's sampler), the spread becomes `random_sigma` and the counter
 //! starts again, so a fruitless obstacle is given up. A collision moves the centre to the

@@ -1,5 +1,8 @@
 //! The counted state questions and their counters: whether a state is valid and a random state,
-//! each counted as state checks (and journalled in a bounded batch); the count itself.
+//! each counted as state checks (and journalled in a bounded batch); the counts themselves: every
+//! state check, and the *free* ones, those that found the state valid (the Robotics Library's
+//! `SimpleModel` counts `totalQueries` and `freeQueries` so: one query per configuration tested,
+//! a free query when nothing was hit).
 
 use super::SpaceInfo;
 use crate::journal::Entry;
@@ -11,12 +14,14 @@ impl SpaceInfo {
     #[inline]
     pub fn is_valid(&self, q: &[Real]) -> bool {
         self.checks.set(self.checks.get() + 1);
-        self.journalled(
+        let valid = self.journalled(
             |e| if let Entry::Valid(v) = e { Some(*v) } else { None },
             Entry::Valid,
             false,
             || self.validity.is_valid(q),
-        )
+        );
+        self.free.set(self.free.get() + valid as u64);
+        valid
     }
     /// Whether `q` is valid, **not** counted as a state check and not journalled: for work that
     /// counts its own checks (a potential field's clearances, inside one journalled answer) or that
@@ -78,15 +83,32 @@ impl SpaceInfo {
     pub fn checks(&self) -> u64 {
         self.checks.get()
     }
-    /// Reset the check counter.
-    pub fn reset_checks(&self) {
-        self.checks.set(0)
-    }
-    /// Restore the state-check count (a suspended batch's checks are counted again when its
-    /// iterations are replayed).
+    /// Of the state checks so far, those that found the state valid (the Robotics Library's free
+    /// queries): a valid [`is_valid`](SpaceInfo::is_valid), each valid state of a motion check
+    /// (and each positive clearance of a certified one). Not classified, so never free: the
+    /// geometric tests the workspace planners count with [`count_checks`](SpaceInfo::count_checks)
+    /// (cells, steps, potential evaluations), and the checks a robot's own sampler spends (a
+    /// vehicle chain's: it reports how many, not which; at most one per sample was free).
     #[inline]
-    pub(crate) fn set_checks(&self, n: u64) {
-        self.checks.set(n);
+    pub fn free_checks(&self) -> u64 {
+        self.free.get()
+    }
+    /// Reset both check counters.
+    pub fn reset_checks(&self) {
+        self.checks.set(0);
+        self.free.set(0);
+    }
+    /// Restore the state-check counts, all and free (a suspended batch's checks are counted again
+    /// when its iterations are replayed).
+    #[inline]
+    pub(crate) fn set_checks(&self, checks: u64, free: u64) {
+        self.checks.set(checks);
+        self.free.set(free);
+    }
+    /// Count `n` state checks that found their states valid (part of a motion check).
+    #[inline]
+    pub(super) fn count_free(&self, n: u64) {
+        self.free.set(self.free.get() + n);
     }
     /// Count `n` geometric tests as state checks (workspace planners test cells and steps rather
     /// than states; their tests are counted here so `checks` compares work across planners).

@@ -40,6 +40,8 @@ pub struct SpaceInfo {
     validity: RobotInWorkspace,
     /// State checks so far.
     checks: Cell<u64>,
+    /// Of those, the ones that found the state valid (see [`SpaceInfo::free_checks`]).
+    free: Cell<u64>,
     /// Scratch for the clearances along a motion (reused, so checking does not allocate).
     clearances: RefCell<Vec<Real>>,
     /// The run's deadline (see [`Deadline`]), and whether work was cut short by it.
@@ -66,6 +68,7 @@ impl SpaceInfo {
             resolution,
             validity,
             checks: Cell::new(0),
+            free: Cell::new(0),
             clearances: RefCell::new(Vec::new()),
             deadline: Cell::new(Deadline::NONE),
             interrupted: Cell::new(false),

@@ -71,7 +71,7 @@ impl SpaceInfo {
         if self.interrupted() {
             return 0.0;
         }
-        self.journalled(
+        let clearance = self.journalled(
             |e| if let Entry::Clear(c) = e { Some(*c) } else { None },
             Entry::Clear,
             0.0,
@@ -82,7 +82,10 @@ impl SpaceInfo {
                 }
                 .unwrap_or(0.0)
             },
-        )
+        );
+        // A positive clearance: the state is valid (0: it is not, or the answer was refused).
+        self.count_free((clearance > 0.0) as u64);
+        clearance
     }
 
     fn check_discrete(&self, a: &[Real], b: &[Real], n: usize, scratch: &mut [Real]) -> Result<(), Invalid> {
@@ -101,6 +104,8 @@ impl SpaceInfo {
             .robot
             .check_discrete(ws, &self.space, a, b, n, scratch, skip, &|units| self.fresh_work(units));
         self.count_checks(checks);
+        // Every state visited was valid but, for an invalid motion, the last.
+        self.count_free(checks - matches!(outcome, Discrete::Invalid) as u64);
         match outcome {
             Discrete::Valid => Ok(()),
             Discrete::Invalid => Err(Invalid),
@@ -204,22 +209,24 @@ impl MotionValidator for SpaceInfo {
         // resumes where it stopped, and a check that finishes is kept as one entry.
         let mark = self.journal.borrow().mark();
         let done = match self.journal.borrow().peek() {
-            Some(&Entry::Motion { ok, checks, at }) => Some((ok, checks, at)),
+            Some(&Entry::Motion { ok, checks, free, at }) => Some((ok, checks, free, at)),
             _ => None,
         };
-        if let Some((ok, checks, at)) = done {
+        if let Some((ok, checks, free, at)) = done {
             self.journal.borrow_mut().take();
             self.count_checks(checks);
+            self.count_free(free);
             if ok {
                 return Ok(());
             }
             self.journal.borrow().load(at, scratch);
             return Err(Invalid);
         }
-        let before = self.checks();
+        let (before, free_before) = (self.checks(), self.free_checks());
         let outcome = self.check_motion_now(a, b, scratch);
         if !self.stopped() {
-            let entry = Entry::Motion { ok: outcome.is_ok(), checks: self.checks() - before, at: 0 };
+            let (checks, free) = (self.checks() - before, self.free_checks() - free_before);
+            let entry = Entry::Motion { ok: outcome.is_ok(), checks, free, at: 0 };
             self.journal.borrow_mut().compact(mark, entry, outcome.is_err().then_some(&*scratch));
         }
         outcome

@@ -93,3 +93,19 @@ test('every robot kind has a drawing and a pose the editor knows', () => {
   assert.equal(robotCaps({ kind: 'none-such' }).pose, 'none');
   assert.equal(plannerCaps('none-such').queries, false);
 });
+
+test('parameters shown only where they act name parameters the registry declares (APPLIES)', async () => {
+  const { APPLIES } = await import('../../www/ui/panel.js');
+  const declared = new Set(registry.planners.flatMap((p) => [...p.params, ...p.groups.flatMap((g) => g.params)]).map((s) => s.name));
+  for (const name of Object.keys(APPLIES)) assert.ok(declared.has(name), `APPLIES names ${name}, which no planner declares`);
+  // RRT-Connect's last-free connect: epsilon acts only in it, ladder steps (range steps) only outside it;
+  // a planner without `connect` (RRT) shows its ladder.
+  const connect = registry.planners.find((p) => p.params.some((s) => s.name === 'epsilon')).params.find((s) => s.name === 'connect');
+  assert.deepEqual(connect.options, ['range', 'last-free']);
+  const values = (v) => (name) => v[name];
+  assert.equal(APPLIES.epsilon(values({ connect: 'last-free' })), true);
+  assert.equal(APPLIES.epsilon(values({ connect: 'range' })), false);
+  assert.equal(APPLIES.ladder(values({ connect: 'last-free' })), false);
+  assert.equal(APPLIES.ladder(values({ connect: 'range' })), true);
+  assert.equal(APPLIES.ladder(values({})), true);
+});

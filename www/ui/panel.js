@@ -34,6 +34,8 @@ export const APPLIES = Object.freeze({
   dd_adaptive: (v) => Number(v('dd_radius')) > 0,
   dd_min_radius: (v) => Number(v('dd_radius')) > 0,
   exhausted_policy: (v) => Number(v('exhausted')) > 0,
+  epsilon: (v) => v('connect') === 'last-free',
+  ladder: (v) => v('connect') !== 'last-free',
 });
 
 /** Parse an input's text for `spec`: {ok, value} or {ok: false, why}. Empty text: {ok, value: undefined}. */

@@ -6,6 +6,19 @@
 //! motion collides; the trees alternate every iteration. Seeded by the run's [`Rng`]. The goal is
 //! reached exactly (goal tolerance plays no part: the goal is a tree's root).
 //!
+//! With `connect` = `last-free` it is the Robotics Library's `RrtConCon` (rl's
+//! `rl/plan/RrtConCon.cpp` in its repository's `src`, the planner of report 001's course): both
+//! trees CONNECT, tree A toward the sample and tree B toward the node tree A added, each stepping
+//! by the scenario's resolution with one state check per configuration and keeping only the last
+//! free one ([`Tree::connect_last_free`]); solved when tree B's last configuration is within
+//! `epsilon` of tree A's new node (rl's `areEqual`: distance ≤ epsilon); the trees swap every
+//! iteration. The path is rl's `RrtDual::getPath`: the start tree's branch to its meeting node,
+//! then the goal tree's from the parent of its own meeting node (the two are within `epsilon`) to
+//! the goal. Start and goal are tested once each, counted, in the first iteration (rl's
+//! `Planner::verify` before `solve`), so `checks` and `free_checks` are the course's collision and
+//! free queries. Ladder steps are range steps: `ladder` does nothing with `last-free` (as a
+//! sampler's `sigma` does nothing with the uniform sampler; the page hides it).
+//!
 //! [`Rng`]: crate::rng::Rng
 
 use super::{resolve_range, RANGE};
@@ -43,14 +56,39 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     make: |si, task, params| Ok(Box::new(RrtConnect::new(si, task, params))),
 };
 
+/// How a CONNECT grows: in steps of `range`, each motion checked and added (Kuffner and LaValle),
+/// or the Robotics Library's last free configuration at the resolution.
+pub const CONNECT: ParamSpec = ParamSpec::choice(
+    "connect",
+    "Connect",
+    &["range", "last-free"],
+    0,
+    "range: both growths step by range, each motion checked and added as a node (Kuffner & LaValle); last-free: the Robotics Library's RrtConCon (report 001's course): both trees step along the line by the resolution, one state check per configuration, and only the last free configuration becomes a node.",
+);
+
+/// How close the two trees' last configurations must be to meet, in `last-free` mode.
+pub const EPSILON: ParamSpec = ParamSpec::real(
+    "epsilon",
+    "Meeting distance",
+    1e-12,
+    1e-3,
+    1e-8,
+    "last-free: the trees meet when the other tree's last configuration is within this distance of the new node (the Robotics Library's epsilon; the gap between them is not checked, so keep it far below the resolution).",
+);
+
 /// RRT-Connect's parameters.
-pub const PARAMS: &[ParamSpec] = &[RANGE];
+pub const PARAMS: &[ParamSpec] = &[RANGE, CONNECT, EPSILON];
 
 /// The RRT-Connect planner.
 #[derive(Clone)]
 pub struct RrtConnect {
     task: Task,
     range: Real,
+    /// The Robotics Library's connect (last free configuration), stepping by `delta`, meeting
+    /// within `epsilon`.
+    last_free: bool,
+    delta: Real,
+    epsilon: Real,
     opts: TreeOptions,
     trees: Vec<Tree>,
     /// The tree that extends toward the sample this iteration.
@@ -68,6 +106,9 @@ impl RrtConnect {
         RrtConnect {
             task: task.clone(),
             range: resolve_range(si, params.real("range")),
+            last_free: params.choice("connect") == "last-free",
+            delta: si.resolution,
+            epsilon: params.real("epsilon"),
             opts: TreeOptions::from_params(params, si.resolution),
             trees: Vec::new(),
             turn: 0,
@@ -88,6 +129,15 @@ impl Planner for RrtConnect {
             let o = self.opts;
             self.trees =
                 vec![Tree::with_options(cx, &self.task.start, 0, o), Tree::with_options(cx, self.task.goal(), 1, o)];
+            if self.last_free {
+                // rl's `Planner::verify`: start and goal tested once each (both valid: the problem
+                // checked them), so the counts are the course's.
+                cx.si.is_valid(&self.task.start);
+                cx.si.is_valid(self.task.goal());
+            }
+        }
+        if self.last_free {
+            return self.iterate_last_free(cx);
         }
         let (a, b) = (self.turn, 1 - self.turn);
         self.turn = b;
@@ -118,11 +168,7 @@ impl Planner for RrtConnect {
                 let goal = self.task.goal();
                 cx.events.at(EventKind::Solved, a, cx.si.project(goal), goal);
                 let (from_start, from_goal) = if a == 0 { (added, reached) } else { (reached, added) };
-                let mut path = self.trees[0].path_to(from_start);
-                let mut tail = self.trees[1].path_to(from_goal);
-                tail.reverse();
-                path.extend(tail.into_iter().skip(1)); // the meeting state is in both
-                Some(path)
+                Some(self.path(from_start, from_goal))
             }
         }
     }
@@ -136,5 +182,47 @@ impl Planner for RrtConnect {
 
     fn data(&self) -> PlannerData {
         PlannerData::of_trees(self.trees.clone())
+    }
+}
+
+impl RrtConnect {
+    /// The path through the start tree's node `from_start` and the goal tree's `from_goal`, which
+    /// are the same state or (last-free) within `epsilon`: the start tree's branch, then the goal
+    /// tree's from the parent of `from_goal` (rl's `RrtDual::getPath` drops it too).
+    fn path(&self, from_start: u32, from_goal: u32) -> Vec<Vec<Real>> {
+        let mut path = self.trees[0].path_to(from_start);
+        let mut tail = self.trees[1].path_to(from_goal);
+        tail.reverse();
+        path.extend(tail.into_iter().skip(1));
+        path
+    }
+
+    /// One iteration of rl's `RrtConCon::solve` loop (see the module documentation).
+    fn iterate_last_free(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
+        let (a, b) = (self.turn, 1 - self.turn);
+        self.turn = b;
+        if !cx.sample(a, &mut self.sample) {
+            return None;
+        }
+        let (delta, n) = (self.delta, &mut self.new);
+        let (grow, added) = self.trees[a].connect_last_free(cx, &self.sample, delta, true, &mut self.scratch, n);
+        if matches!(grow, Grow::Trapped | Grow::Rejected) {
+            cx.events.at(EventKind::SampleRejected, a, cx.si.project(&self.sample), &self.sample);
+            return None;
+        }
+        self.target.copy_from_slice(self.trees[a].state(added));
+        let (g, reached) =
+            self.trees[b].connect_last_free(cx, &self.target, delta, false, &mut self.scratch, &mut self.new);
+        if matches!(g, Grow::Trapped | Grow::Rejected)
+            || cx.si.distance(self.trees[b].state(reached), &self.target) > self.epsilon
+        {
+            return None;
+        }
+        let p = cx.si.project(&self.target);
+        cx.events.push(EventKind::TreesConnected, a, added as i64, reached as i64, p, p, &self.target, &self.target);
+        let goal = self.task.goal();
+        cx.events.at(EventKind::Solved, a, cx.si.project(goal), goal);
+        let (from_start, from_goal) = if a == 0 { (added, reached) } else { (reached, added) };
+        Some(self.path(from_start, from_goal))
     }
 }

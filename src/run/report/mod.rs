@@ -2,20 +2,23 @@
 //! planner, parameters and one [`RunRow`] per seed) and its four renderings, one file each: CSV
 //! ([`to_csv`], in [`csv`](mod@csv)), JSON with summaries ([`to_json`], read back by [`from_json`],
 //! in [`json`]), an OMPL benchmark log that `ompl_benchmark_statistics.py` turns into a Planner
-//! Arena database ([`to_ompl_log`], in [`ompl`], whose documentation is the log's grammar), and the
-//! courses' Markdown table ([`course_table`], in [`markdown`]); [`render`] picks one by name. The
+//! Arena database ([`to_ompl_log`], in [`ompl`], whose documentation is the log's grammar), the
+//! courses' Markdown table ([`course_table`], in [`markdown`]) and report 001's course benchmark
+//! lines ([`to_course_csv`], in [`course`]); [`render`] picks one by name. The
 //! CLI's `bench` and the page (through wasm's `bench_export`) both write through these functions.
 //! No clock is read here: the caller passes the date and host ([`utc_timestamp`] formats it).
 //!
 //! The dependency is one-way: the report is made from [`bench`](super::bench)'s results; the rows
 //! and summaries both use are in [`summary`](super::summary).
 
+pub mod course;
 pub mod csv;
 pub mod json;
 pub mod markdown;
 pub mod merge;
 pub mod ompl;
 
+pub use self::course::{to_course_csv, COURSE_HEADER};
 pub use self::csv::{to_csv, CSV_HEADER};
 pub use self::json::{from_json, to_json};
 pub use self::markdown::course_table;
@@ -98,7 +101,7 @@ impl std::fmt::Display for SeedRange {
 }
 
 /// The formats [`render`] writes.
-pub const FORMATS: [&str; 4] = ["csv", "json", "ompl", "table"];
+pub const FORMATS: [&str; 5] = ["csv", "json", "ompl", "table", "course"];
 
 const STATUSES: [Status; 8] = [
     Status::Running,
@@ -245,14 +248,15 @@ fn one_line(s: &str) -> String {
     s.chars().map(|c| if c == '\n' || c == '\r' { ' ' } else { c }).collect()
 }
 
-/// The report in one of [`FORMATS`]: `csv`, `json`, `ompl` (the OMPL benchmark log) or `table`
-/// (the courses' Markdown table).
+/// The report in one of [`FORMATS`]: `csv`, `json`, `ompl` (the OMPL benchmark log), `table`
+/// (the courses' Markdown table) or `course` (report 001's course benchmark lines).
 pub fn render(r: &BenchReport, format: &str) -> Result<String, String> {
     match format {
         "csv" => Ok(to_csv(r)),
         "json" => Ok(to_json(r)),
         "ompl" => Ok(to_ompl_log(r)),
         "table" => Ok(course_table(r)),
+        "course" => Ok(to_course_csv(r)),
         _ => Err(format!(
             "unknown export format \"{}\" (known: {})",
             crate::limits::cut(format, 100),

@@ -1,0 +1,128 @@
+//! The Robotics Library's CONNECT (`rl::plan::Rrt::connect`, used by `RrtConCon`, the planner of
+//! report 001's course): step from the selected node along the straight line toward the target by
+//! `delta`, testing each configuration with one state check, until the target is reached or a
+//! configuration collides; only the **last free configuration** becomes a node, with one edge from
+//! the node it started at; nothing when the first configuration collides.
+//!
+//! Followed from rl's `Rrt::connect` (`rl/plan/Rrt.cpp` in its repository's `src`):
+//! - the first configuration is `interpolate(near, target, step / d)` with `step = d` when
+//!   `d ≤ delta` (reached at once), else `step = delta`; when it collides, no vertex
+//!   (`return nullptr`);
+//! - then `step += delta` (a running sum, as rl adds it), and once `step ≥ d`, `step = d` and the
+//!   target is reached: the last configuration is `interpolate(near, target, 1)`; the loop stops at
+//!   the first colliding configuration or after the reached one;
+//! - every configuration tested is one `isColliding` call, which `rl::plan::SimpleModel` counts as
+//!   one query (`totalQueries`) and, when nothing was hit, one free query (`freeQueries`): here
+//!   one counted [`SpaceInfo::is_valid`](crate::space_info::SpaceInfo::is_valid), which counts
+//!   both;
+//! - the vertex added is the last free configuration, its edge from `near`.
+//!
+//! What Planarium adds, through the tree's machinery (not copies of it):
+//! - the node is chosen by [`Tree::select`] (exhausted nodes and the weighted policy apply), and a
+//!   sample beyond that node's dynamic domain is rejected before any check;
+//! - **failure** (for the dynamic domain's radius and the exhausted nodes' count) means that no
+//!   vertex came of it: the first configuration collided, rl's `connect` returning `nullptr`.
+//!   Report 001's DD-RRT pseudocode sets `q_near.radius = R` exactly when `CONNECT` does not
+//!   return a new node, and Yershova et al. ("Dynamic-Domain RRTs", ICRA 2005) make a node a
+//!   boundary node when its expansion fails, not when a long expansion that made progress ends
+//!   against an obstacle (that node is interior; the new node at the end is the boundary one).
+//!   The report counts an exhausted node's "failed expansions" the same way. A connect that made
+//!   progress is a success for the node it started at (the adaptive domain grows);
+//! - a **collision** (any, even after progress) is told to the sampler
+//!   ([`Sampler::note_collision`](crate::sampler::Sampler::note_collision)) at the last connected
+//!   configuration, as report 001's Algorithm 2 puts it (`lastCollisionPoint =
+//!   lastConnectedNode`): the new node, or the start node when nothing was added;
+//! - a target at distance 0 is reached at once, unchecked and without a node (rl would interpolate
+//!   0/0);
+//! - at most [`MAX_LAST_FREE_STEPS`] configurations (a problem's longest motion is at most
+//!   [`MAX_MOTION_STEPS`](crate::limits::MAX_MOTION_STEPS) resolutions long); a connect cut short
+//!   by the run's deadline or a suspended batch adds nothing (the run stops, or the iteration is
+//!   done again from the journal).
+//!
+//! Events, as a range step's: `Nearest`; then `Steer` from the node to the farthest configuration
+//! tested (the target when reached), `Collision` at the configuration that collided, `NodeAdded`
+//! for the last free one.
+
+use super::Tree;
+use crate::math::Real;
+use crate::planners::Context;
+use crate::status::Grow;
+
+/// The most configurations one last-free connect tests: a problem's longest motion in resolution
+/// steps, plus the first.
+pub const MAX_LAST_FREE_STEPS: usize = crate::limits::MAX_MOTION_STEPS as usize + 1;
+
+impl Tree {
+    /// Connect toward `target` the Robotics Library's way (see the module documentation), in steps
+    /// of `delta`; `sample`: the target is a sample (its node's dynamic domain applies). `scratch`
+    /// holds the configuration tested, `new` the last free one. Returns the outcome and the node
+    /// added ([`Grow::Reached`] when it is the target, [`Grow::Advanced`] when a configuration
+    /// collided after progress), or the selected node ([`Grow::Trapped`]: the first configuration
+    /// collided, or no node may be added; [`Grow::Rejected`]: outside its domain; `Reached` at a
+    /// distance of 0).
+    pub fn connect_last_free(
+        &mut self,
+        cx: &mut Context,
+        target: &[Real],
+        delta: Real,
+        sample: bool,
+        scratch: &mut [Real],
+        new: &mut [Real],
+    ) -> (Grow, u32) {
+        self.slid = false;
+        let (near, d) = self.select(cx, target);
+        cx.note_nearest(self.index, near, self.state(near), target, d, self.domain(near), sample);
+        if d == 0.0 {
+            return (Grow::Reached, near);
+        }
+        if sample && d > self.domain(near) {
+            self.rejected += 1;
+            return (Grow::Rejected, near);
+        }
+        if cx.nodes_left == 0 {
+            return (Grow::Trapped, near);
+        }
+        let from = &self.states[near as usize * self.dims..(near as usize + 1) * self.dims];
+        // rl: `step = distance`, reached when `step <= delta`, else `step = delta`.
+        let (mut step, mut reached) = if d <= delta { (d, true) } else { (delta, false) };
+        let (mut any_free, mut collided) = (false, false);
+        for _ in 0..MAX_LAST_FREE_STEPS {
+            cx.si.interpolate(from, target, step / d, scratch);
+            let free = cx.si.is_valid(scratch);
+            if cx.si.stopped() {
+                // Out of time, or the batch was suspended (its answers are refused): add nothing.
+                return (Grow::Trapped, near);
+            }
+            if !free {
+                collided = true;
+                break;
+            }
+            new.copy_from_slice(scratch);
+            any_free = true;
+            if reached {
+                break;
+            }
+            step += delta;
+            if step >= d {
+                reached = true;
+                step = d;
+            }
+        }
+        // The farthest configuration tested: the one that collided, or the last free one.
+        let tested = if collided { &*scratch } else { &*new };
+        cx.note_steer(self.index, near, from, tested, step, d, reached && !collided);
+        if collided {
+            cx.note_collision(self.index, near, from, target, scratch);
+        }
+        if !any_free {
+            cx.sampler.note_collision(self.state(near));
+            self.record(cx, near, true);
+            return (Grow::Trapped, near);
+        }
+        if collided {
+            cx.sampler.note_collision(new);
+        }
+        let id = self.append(cx, near, new);
+        (if reached && !collided { Grow::Reached } else { Grow::Advanced }, id)
+    }
+}
