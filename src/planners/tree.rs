@@ -325,6 +325,32 @@ impl Tree {
         self.grow(cx, target, range, scratch, new, false)
     }
 
+    /// What every growth toward `target` does first (both connects): pick the node to grow from
+    /// ([`select`](Self::select)) and say so; then `Err` with the outcome when there is nothing to
+    /// grow (the target is that node, a sample outside its dynamic domain, no node may be added),
+    /// else `Ok((near, distance))`.
+    pub(super) fn begin_growth(
+        &mut self,
+        cx: &mut Context,
+        target: &[Real],
+        sample: bool,
+    ) -> Result<(u32, Real), (Grow, u32)> {
+        self.slid = false;
+        let (near, d) = self.select(cx, target);
+        cx.note_nearest(self.index, near, self.state(near), target, d, self.domain(near), sample);
+        if d == 0.0 {
+            return Err((Grow::Reached, near));
+        }
+        if sample && d > self.domain(near) {
+            self.rejected += 1;
+            return Err((Grow::Rejected, near));
+        }
+        if cx.nodes_left == 0 {
+            return Err((Grow::Trapped, near));
+        }
+        Ok((near, d))
+    }
+
     fn grow(
         &mut self,
         cx: &mut Context,
@@ -334,19 +360,10 @@ impl Tree {
         new: &mut [Real],
         sample: bool,
     ) -> (Grow, u32) {
-        self.slid = false;
-        let (near, d) = self.select(cx, target);
-        cx.note_nearest(self.index, near, self.state(near), target, d, self.domain(near), sample);
-        if d == 0.0 {
-            return (Grow::Reached, near);
-        }
-        if sample && d > self.domain(near) {
-            self.rejected += 1;
-            return (Grow::Rejected, near);
-        }
-        if cx.nodes_left == 0 {
-            return (Grow::Trapped, near);
-        }
+        let (near, d) = match self.begin_growth(cx, target, sample) {
+            Ok(nd) => nd,
+            Err(outcome) => return outcome,
+        };
         let reached = d <= range;
         if reached {
             new.copy_from_slice(target);

@@ -69,19 +69,10 @@ impl Tree {
         scratch: &mut [Real],
         new: &mut [Real],
     ) -> (Grow, u32) {
-        self.slid = false;
-        let (near, d) = self.select(cx, target);
-        cx.note_nearest(self.index, near, self.state(near), target, d, self.domain(near), sample);
-        if d == 0.0 {
-            return (Grow::Reached, near);
-        }
-        if sample && d > self.domain(near) {
-            self.rejected += 1;
-            return (Grow::Rejected, near);
-        }
-        if cx.nodes_left == 0 {
-            return (Grow::Trapped, near);
-        }
+        let (near, d) = match self.begin_growth(cx, target, sample) {
+            Ok(nd) => nd,
+            Err(outcome) => return outcome,
+        };
         let from = &self.states[near as usize * self.dims..(near as usize + 1) * self.dims];
         // rl: `step = distance`, reached when `step <= delta`, else `step = delta`.
         let (mut step, mut reached) = if d <= delta { (d, true) } else { (delta, false) };
