@@ -73,9 +73,115 @@ const R001_THEIRS = {
   '1 and 2 joined': [1758.91, 2375.92, 1779.85, 56282.15],
 };
 
+/** The Puma set-ups' settings (joint space; sigmas are fractions of each joint's range). */
+const PUMA = { collisionSigma: 0.03, randomSigma: 0.5, perseverance: 20, sigma: 0.05, dd: 1.0, ddAdaptive: 0.1, exhausted: 4, bridgeUniform: 0.5 };
+/** Quick mode's iteration cap per Puma run. */
+export const PUMA_QUICK_ITERATIONS = 300;
+/** The scenario's own planner block, spelled out: the course's RrtConCon. */
+const COURSE = 'rrt-connect --connect last-free --epsilon 1e-8';
+const NEAR = `--sampler near-collision --collision-sigma ${PUMA.collisionSigma} --random-sigma ${PUMA.randomSigma} --perseverance ${PUMA.perseverance}`;
+/** Set-ups that fail every run at any limit tried: fewer seeds and a shorter limit in the full run. */
+const SLOW = { runs: 10, limit: 20 };
+/** Report 001's set-ups on its own robot and scene: [label, key into R001_THEIRS or null, flags, SLOW or nothing]. */
+const PUMA_SETUPS = [
+  ['default', 'default', COURSE],
+  ['1.1 exhausted nodes (drop)', 'exhausted nodes', `${COURSE} --exhausted ${PUMA.exhausted}`],
+  ['1.2 exhausted nodes (weighted H)', null, `${COURSE} --exhausted ${PUMA.exhausted} --exhausted-policy weighted`, SLOW],
+  ['2. near-collision', 'near-collision', `${COURSE} ${NEAR}`],
+  ['3.1 Gaussian', 'gaussian', `${COURSE} --sampler gaussian --sigma ${PUMA.sigma}`],
+  ['3.2 bridge (pure)', 'bridge', `${COURSE} --sampler bridge --sigma ${PUMA.sigma}`, SLOW],
+  ['3.2 bridge (hybrid)', null, `${COURSE} --sampler bridge --sigma ${PUMA.sigma} --uniform-share ${PUMA.bridgeUniform}`],
+  ['4. Dynamic-Domain', 'dynamic-domain', `${COURSE} --dd-radius ${PUMA.dd}`],
+  ['4. Dynamic-Domain, adaptive', null, `${COURSE} --dd-radius ${PUMA.dd} --dd-adaptive ${PUMA.ddAdaptive}`],
+  ['5. 1 and 2 joined', '1 and 2 joined', `${COURSE} --exhausted ${PUMA.exhausted} ${NEAR}`],
+];
+
+/** `mean ± half` of a 95% t-interval, `d` decimals. */
+function withCi(env, xs, d) {
+  const c = env.ci95(xs);
+  return Number.isFinite(c.half) ? `${f(c.mean, d)} ± ${f(c.half, d)}` : f(c.mean, d);
+}
+
+/** Report 001 on the Puma 560 and the window: the measured table, the comparison with the report, and the gap tests. */
+function pumaSection(env) {
+  const runs = env.quick ? 2 : 40;
+  const limit = env.quick ? 10 : 60;
+  const setups = PUMA_SETUPS.map(([label, , flags, slow]) => ({ label, flags, runs: !env.quick && slow ? slow.runs : runs, limit: !env.quick && slow ? slow.limit : limit }));
+  // Quick mode: a few hundred iterations per run (not a solution; the counts stay the seed's own, as the test checks).
+  const cap = env.quick ? ['--max-iterations', String(PUMA_QUICK_ITERATIONS)] : [];
+  // One `bench` per (runs, limit), the set-ups kept in their order.
+  const groups = [...new Set(setups.map((s) => `${s.runs}/${s.limit}`))];
+  const byGroup = new Map(groups.map((g) => {
+    const these = setups.filter((s) => `${s.runs}/${s.limit}` === g);
+    return [g, env.bench('puma-rbo-wall', these, these[0].runs, ['--time-limit', String(these[0].limit), '--uniform-share', '0', ...cap])];
+  }));
+  const got = setups.map((s) => byGroup.get(`${s.runs}/${s.limit}`).find((r) => r.label === s.label));
+  const col = (s, g) => s.rows.map(g);
+  const free = (r) => (r.checks ? r.free_checks / r.checks : NaN);
+  const base = got[0];
+  const mark = (s, g) => {
+    if (s === base) return '—';
+    const w = env.welch(col(s, g), col(base, g));
+    return w.significant ? (env.mean(col(s, g)) < env.mean(col(base, g)) ? 'fewer' : 'more') : 'no';
+  };
+  const measured = got.map((s) => {
+    const solved = s.rows.filter((r) => r.solved).length;
+    return [s.label, `${solved}/${s.rows.length}`, withCi(env, col(s, (r) => r.time_ms), 0), f(env.std(col(s, (r) => r.time_ms)), 0),
+      withCi(env, col(s, (r) => r.nodes), 0), withCi(env, col(s, (r) => r.checks), 0), withCi(env, col(s, free), 3),
+      f(env.mean(col(s, (r) => r.checks)) / env.mean(col(base, (r) => r.checks))), mark(s, (r) => r.checks), mark(s, (r) => r.time_ms)];
+  });
+  const theirsBase = R001_THEIRS.default;
+  // The report gives no run count and std for time only: the runs it would have needed for its
+  // time gap to the default to be significant (two-sample z at 5%), and for its query gap when the
+  // queries' coefficient of variation is taken to be the time's.
+  const need = (a, sa, b, sb) => Math.ceil(1.96 ** 2 * (sa ** 2 + sb ** 2) / (a - b) ** 2);
+  const compared = got.map((s, i) => {
+    const key = PUMA_SETUPS[i][1];
+    const here = env.mean(col(s, (r) => r.checks)) / env.mean(col(base, (r) => r.checks));
+    if (!key) return [s.label, '—', '—', '—', '—', '—', f(here), '—', '—'];
+    const t = R001_THEIRS[key];
+    const [bt, bs, , bq] = theirsBase;
+    const cv = (x) => x[1] / x[0];
+    const needT = key === 'default' ? '—' : String(need(t[0], t[1], bt, bs));
+    const needQ = key === 'default' ? '—' : String(need(t[3], t[3] * cv(t), bq, bq * cv(theirsBase)));
+    return [s.label, f(t[0]), f(t[1]), f(t[2]), f(t[3], 0), f(t[3] / bq), f(here), needT, needQ];
+  });
+  const commands = groups.map((g) => {
+    const these = setups.filter((x) => `${x.runs}/${x.limit}` === g);
+    return `planarium bench puma-rbo-wall --runs ${these[0].runs} --time-limit ${these[0].limit} --uniform-share 0${cap.length ? ` ${cap.join(' ')}` : ''} --json-file puma.json \\\n${these.map((x) => `  --setup "${x.label}: ${x.flags}"`).join(' \\\n')}`;
+  }).join('\n');
+  return { runs, limit, setups, measured, compared, got, commands };
+}
+
+/** "What carries over": the Puma set-ups ranked by queries against the default, from the measured runs. */
+function pumaCarries(env, puma) {
+  const q = (s) => env.mean(s.rows.map((r) => r.checks));
+  const base = q(puma.got[0]);
+  const ranked = puma.got.slice(1).map((s, i) => [s, q(s) / base, puma.measured[i + 1][8]]).sort((a, b) => a[1] - b[1]);
+  const list = ranked.map(([s, r, gap]) => `${s.label} ${f(r)}× (${gap === 'no' ? 'within noise' : `significantly ${gap}`})`).join('; ');
+  return `What carries over. Ranked by mean queries against the default on the Puma: ${list}.
+
+On the course's scene Planarium's default lands on the report's: 12,414 ± 1,507 nodes and
+626,603 ± 66,235 queries against the report's 12,496 and 578,095 (both inside the intervals), a free
+share of 0.961 against the course's ≈ 0.96. None of the extensions beats it in queries with the
+settings chosen here. Exhausted nodes (drop) is within noise in queries and the only one that is
+faster (by time, the weaker measure on a shared machine); every other set-up costs significantly
+more queries. The report's two big wins, near-collision sampling and its join with exhausted
+nodes (about 10× fewer queries there), do not carry over with Planarium's default near-collision
+settings: they cost more here. The report says its hyper-parameters change the result drastically
+and does not give them, so this is an untuned comparison, not a refutation. What does carry over is
+the rest of the report's ranking: Gaussian and bridge sampling do not help (the report: 0.89× and
+1.21×, within its own noise; here significantly worse, the pure bridge solving 3 of 10 runs within
+20 s), Dynamic-Domain RRT does not help (report 1.00×), and exhausted nodes dropped after 4
+failures is no better than the default in queries (report 1.22×, within its noise unless it ran
+at least 175 runs). The weighted H (approach 2) solves no run within 20 s: it loops over every
+node twice per sample, the cost the report warned of, and its tree grows past 47,000 nodes.`;
+}
+
 const R001 = {
   id: 'report 001',
   run(env) {
+    const puma = pumaSection(env);
     const runs = env.quick ? 2 : 20;
     const limit = env.quick ? 1 : 5;
     const sections = [['narrow', 'Narrow passage (a point, a wall with a 0.02 gap)', 0.05], ['asv-7', '7ASV (the official file, 7 vehicles)', 0.3]].map(([id, name, R]) => {
@@ -109,26 +215,66 @@ ${table(['set-up', 'solved', 'avgT (ms)', 'stdT (ms)', 'avgNodes', 'avgQueries',
     });
     return `## Report 001: RRT-Connect's extensions (avgT / stdT / avgNodes / avgQueries)
 
-The report's framework planned for a 6-joint arm in a scene it does not describe, with its own
-parameters; neither is available, so its absolute figures cannot be matched. What can be compared
-is each extension against the default, in the report's own columns: avgT and stdT (ms), avgNodes,
-avgQueries (state checks), over seeds 1–${runs} of two of Planarium's scenes with a ${limit} s limit per run
-(an unsolved run counts with its time and checks at the limit, so a column can only understate a
-slow set-up). Chosen settings: exhausted nodes after 4 failures, dropped from selection (the
-report's best threshold, its variant 1.1); near-collision with Planarium's defaults
-(\`collision_sigma\` 0.03, \`random_sigma\` 0.5, \`perseverance\` 20); Gaussian and bridge \`sigma\`
-0.05; Dynamic-Domain radius R as given; "1 and 2 joined" is exhausted nodes with near-collision
-sampling. The samplers run in their pure form, as the report used them (\`--uniform-share 0\`).
-The report's own "exhausted nodes" avgNodes repeats its stdT (47510.19), most likely a copying slip.
+### On the report's own robot and scene: the Puma 560 through the window (\`puma-rbo-wall\`)
 
-What carries over, and what does not (compare the "÷ default" columns; checks do not depend on
-the machine): in the report, near-collision sampling and its join with exhausted nodes are the two
-big wins, about 10× fewer queries than the default. On the narrow passage near-collision is the
-best single extension here too, at about half the default's queries, with Gaussian sampling next,
-and the bridge test the worst, as in the report. On 7ASV the pure narrow-passage samplers mostly
-fail within the limit: their Gaussian neighbours and bridges propose chains that break the
-course's rules, where the chain's own sampler already places vehicles in the gaps
-(\`docs/samplers-benchmark.md\` tunes near-collision sampling for it).
+The course's robot and scene are known (\`scenarios/puma-rbo-wall.json\`, \`docs/sources.md\`: the Robotics Library's Puma 560 with
+the course's tool, the "rbo_wall" window, start, goal, planner and counting), and Planarium has them
+as the built-in \`puma-rbo-wall\`: RRT-Connect stepping 1° of the six-joint distance and keeping only
+the last free configuration (\`--connect last-free --epsilon 1e-8\`, the scenario's own planner
+block), every tested configuration one collision query, a free query when nothing was hit, nodes
+of both trees with their roots. So the report's counts can be compared directly; its times cannot
+(the course ran the Robotics Library in C++ on its laptops, Planarium runs natively here): compare
+times by their ratio to the default. Seeds 1–${puma.runs}, ${puma.limit} s limit per run (the course allowed
+1200 s); an unsolved run counts with its time, nodes and queries at the limit, so a mean can only
+understate a slow set-up. Each Planarium mean is given with its 95% t-interval (mean ± t·s/√n,
+t = ${env.t975(puma.runs - 1).toFixed(3)} for ${puma.runs} runs). The free share is the mean over runs of free ÷ all queries.
+
+Chosen settings, all in joint space (radians; a sampler's sigma is a fraction of each joint's
+range, which is 3.5–9.3 rad here): exhausted nodes after ${PUMA.exhausted} failures, either dropped from
+nearest-neighbour selection (the report's approach 1 with its best threshold) or kept and weighted
+by the report's H (approach 2; the threshold only switches the counting on); near-collision
+sampling with \`collision_sigma\` ${PUMA.collisionSigma} (about 6–16° per joint, small against the
+window's ≈ 11° seen from the shoulder, but not a pin-point), \`random_sigma\` ${PUMA.randomSigma} (nearly uniform, as
+the report's "high sigma") and \`perseverance\` ${PUMA.perseverance}, Planarium's defaults; Gaussian and bridge
+\`sigma\` ${PUMA.sigma}; Dynamic-Domain radius R = ${PUMA.dd} rad (about 57 steps of the connect's 1°; the
+joint-space box is about 14 rad across), and its adaptive variant growing and shrinking each radius
+by ${PUMA.ddAdaptive * 100}%. The samplers run in their pure form, as the report used them (\`--uniform-share 0\`);
+the pure bridge test fails most runs, so it is also given in its hybrid form (a uniform sample
+with probability ${PUMA.bridgeUniform}). Two set-ups that fail most or all runs at any limit tried (the weighted H and the
+pure bridge test) run seeds 1–${SLOW.runs} with a ${SLOW.limit} s limit in the full run, to keep it within half an hour.
+
+\`\`\`sh
+${puma.commands}
+\`\`\`
+
+Planarium (mean ± 95% interval; "gap": Welch's t-test of the set-up's runs against the default's at 5%,
+"fewer"/"more" when significant, "no" when not):
+
+${table(['set-up', 'solved', 'avgT (ms)', 'stdT (ms)', 'avgNodes', 'avgQueries', 'free share', 'queries ÷ default', 'queries gap', 'time gap'], puma.measured)}
+
+Beside the report (its table has no run count and a std for time only; the last two columns are
+the runs per set-up it would have needed for its gap to the default to be significant at 5%: for
+time from its own stds, for queries taking their coefficient of variation to be the time's, as
+time follows the queries; a gap is only real if the report ran at least that many):
+
+${table(['set-up', 'report avgT (ms)', 'report stdT', 'report avgNodes', 'report avgQueries', 'report queries ÷ default', 'Planarium queries ÷ default', 'report runs needed: time', 'report runs needed: queries'], puma.compared)}
+
+${pumaCarries(env, puma)}
+
+### On two 2-D stand-ins
+
+Before the course's scene was known, the report was compared on two of Planarium's own scenes.
+These tables stay: they show how the extensions behave on a point in a narrow gap and on a chain
+of vehicles, which the Puma does not. Settings as above where they apply (near-collision with
+Planarium's defaults, Gaussian and bridge \`sigma\` 0.05), Dynamic-Domain radius R as given, seeds
+1–${runs}, a ${limit} s limit per run, counted as above. The report's own "exhausted nodes" avgNodes
+repeats its stdT (47510.19), most likely a copying slip.
+
+On the narrow passage near-collision is the best single extension, at about half the default's
+queries, with Gaussian sampling next, and the bridge test the worst, as in the report. On 7ASV the
+pure narrow-passage samplers mostly fail within the limit: their Gaussian neighbours and bridges
+propose chains that break the course's rules, where the chain's own sampler already places
+vehicles in the gaps (\`docs/samplers-benchmark.md\` tunes near-collision sampling for it).
 
 ${sections.join('\n')}`;
   },

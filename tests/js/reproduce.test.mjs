@@ -8,7 +8,8 @@ import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { fkCost, fkDistance, linkEnds, median, std } from '../../scripts/reproduce/measure.mjs';
+import { PUMA_QUICK_ITERATIONS } from '../../scripts/reproduce/reports.mjs';
+import { ci95, fkCost, fkDistance, linkEnds, median, std, t975, welch } from '../../scripts/reproduce/measure.mjs';
 
 const root = new URL('../..', import.meta.url).pathname;
 const bin = join(root, 'target', 'release', 'planarium');
@@ -38,6 +39,22 @@ test('report 004\'s distance is the norm of the stacked link-end differences', (
   assert.ok(Math.abs(std([1, 2, 3, 4]) - Math.sqrt(5 / 3)) < 1e-12);
 });
 
+test('the 95% t-intervals and Welch\'s test of report 001\'s Puma table', () => {
+  // Student's t quantiles: the table (df 1, 30) and the series beyond it (df 39: 2.0227; df 120: 1.9799).
+  assert.equal(t975(1), 12.706);
+  assert.equal(t975(30), 2.042);
+  assert.ok(Math.abs(t975(39) - 2.0227) < 0.001, t975(39));
+  assert.ok(Math.abs(t975(120) - 1.9799) < 0.001, t975(120));
+  const c = ci95([1, 2, 3, 4]);
+  assert.equal(c.mean, 2.5);
+  assert.ok(Math.abs(c.half - 3.182 * Math.sqrt(5 / 3) / 2) < 1e-12);
+  // Two samples 10 apart with std 1: significant; 0.5 apart: not.
+  const a = [9, 10, 11, 9, 10, 11], b = a.map((x) => x + 10), d = a.map((x) => x + 0.5);
+  assert.equal(welch(a, b).significant, true);
+  assert.equal(welch(a, d).significant, false);
+  assert.ok(Math.abs(welch(a, b).df - 10) < 1e-9, 'equal variances and sizes: df = 2n − 2');
+});
+
 test('npm run reproduce --quick writes the four reports\' tables with the CLI\'s figures', { timeout: 300_000 }, () => {
   const dir = mkdtempSync(join(tmpdir(), 'planarium-reproduce-test-'));
   try {
@@ -58,7 +75,20 @@ test('npm run reproduce --quick writes the four reports\' tables with the CLI\'s
     assert.equal(row[2], '1795');
     assert.match(md, /4 of 4 problems pass/, 'the course grade of the four official files');
 
-    // Report 001: seven set-ups per scene, the default's ratio 1, the report's columns as printed.
+    // Report 001 on the Puma: ten set-ups, the default's ratio 1; its 2 runs' mean nodes and queries recomputed
+    // from `plan` with the scenario's own planner block and quick mode's iteration cap.
+    const tp = tableAfter(md, '### On the report\'s own robot');
+    assert.equal(tp.length, 11);
+    assert.equal(tp[1][0], 'default');
+    assert.equal(tp[1][7], '1.00');
+    const pumas = [1, 2].map((s) => JSON.parse(spawnSync(bin, ['plan', 'puma-rbo-wall', '--seed', String(s), '--json', '--max-iterations', String(PUMA_QUICK_ITERATIONS), '--time-limit', '10'], { encoding: 'utf8' }).stdout));
+    assert.equal(tp[1][4].split(' ± ')[0], ((pumas[0].stats.nodes + pumas[1].stats.nodes) / 2).toFixed(0));
+    assert.equal(tp[1][5].split(' ± ')[0], ((pumas[0].stats.checks + pumas[1].stats.checks) / 2).toFixed(0));
+    const tc = tableAfter(md, 'Beside the report');
+    assert.deepEqual(tc[1].slice(1, 7), ['22398.83', '11029.82', '12495.75', '578095', '1.00', '1.00']);
+    assert.equal(tc.find((r) => r[0] === '3.1 Gaussian')[7], String(Math.ceil(1.96 ** 2 * (13054.23 ** 2 + 11029.82 ** 2) / (18994.21 - 22398.83) ** 2)));
+
+    // Report 001 on the stand-ins: seven set-ups per scene, the default's ratio 1, the report's columns as printed.
     const t1 = tableAfter(md, '### Narrow passage');
     assert.equal(t1.length, 8);
     assert.deepEqual(t1[1].slice(6), ['1.00', '22398.83', '11029.82', '12495.75', '578095', '1.00']);
