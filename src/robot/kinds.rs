@@ -116,7 +116,7 @@ mod tests {
     /// Each kind's record agrees with its robot's capabilities.
     #[test]
     fn records_agree_with_the_robots() {
-        let robots: Vec<_> = ["narrow", "hex-open", "arm-2", "asv-3"]
+        let robots: Vec<_> = ["narrow", "hex-open", "arm-2", "asv-3", "puma-boxes"]
             .iter()
             .map(|id| super::super::from_spec(&crate::scenario::builtin(id).unwrap().robot, true).unwrap())
             .collect();
@@ -128,8 +128,9 @@ mod tests {
             assert!(std::ptr::eq(find(k.name).unwrap(), find(r.kind()).unwrap()));
         }
         let names: Vec<_> = KINDS.iter().map(|k| k.name).collect();
-        assert_eq!(names, ["point", "rigid", "arm", "asv"]);
+        assert_eq!(names, ["point", "rigid", "arm", "asv", "spatial-arm"]);
         let drawn: Vec<_> = robots.iter().map(|r| r.caps().drawn).collect();
-        assert_eq!(drawn, [Drawn::Point, Drawn::Polygon, Drawn::OpenChain, Drawn::ClosedChain]);
+        assert_eq!(drawn, [Drawn::Point, Drawn::Polygon, Drawn::OpenChain, Drawn::ClosedChain, Drawn::SpatialArm]);
+        assert_eq!(robots.iter().filter(|r| r.spatial().is_some()).count(), 1, "only the spatial arm is drawn in 3-D");
     }
 }

@@ -62,7 +62,7 @@ fn errors_name_their_json_path() {
     );
     assert_eq!(
         err(r#"{"bounds": [0,0,1,1], "robot": {"kind": "tank"}, "start": [0.1,0.1], "goal": [0.2,0.2]}"#),
-        "robot.kind: unknown robot kind \"tank\" (use point, rigid, arm or asv)"
+        "robot.kind: unknown robot kind \"tank\" (use point, rigid, arm, asv or spatial-arm)"
     );
     assert_eq!(
         err(r#"{"bounds": [1,0,0,1], "robot": {"kind": "point"}, "start": [0.1,0.1], "goal": [0.2,0.2]}"#),
