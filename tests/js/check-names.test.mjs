@@ -41,5 +41,5 @@ test('values, comments, strings inside others, regexes and task kinds are not', 
 test('the names come from the core (the wasm build)', async () => {
   const { planners, kinds } = await registeredNames();
   assert.ok(planners.includes('rrt') && planners.includes('visibility-graph') && planners.length >= 13);
-  assert.deepEqual([...kinds].sort(), ['arm', 'asv', 'point', 'rigid']);
+  assert.deepEqual([...kinds].sort(), ['arm', 'asv', 'point', 'rigid', 'spatial-arm']);
 });
