@@ -215,7 +215,8 @@ test('ready carries the registry\'s capabilities and the robot kinds; loaded car
     w.terminate();
     return out;
   });
-  assert.deepEqual(got.kinds, ['point:point:position', 'rigid:polygon:position-heading', 'arm:open-chain:joints', 'asv:closed-chain:none']);
+  assert.deepEqual(got.kinds, ['point:point:position', 'rigid:polygon:position-heading', 'arm:open-chain:joints', 'asv:closed-chain:none',
+    'spatial-arm:spatial-arm:joints']);
   assert.deepEqual(got.queries, ['prm', 'prm-star', 'lazy-prm']);
   // the c-space grid and the optimum are sent exactly when the scene's capabilities say so
   const scene = (robot, cspace, optimum, solution, pose) => ({ robot, cspace, optimum, solution_file: solution, pose, grid: cspace, sent: optimum });
