@@ -78,10 +78,12 @@ impl Chain {
     }
 
     /// The world position of `p` (in the last link's frame) at `q`.
+    /// On the stack: it runs for every event a planner records (the tree is drawn at the tool).
     pub fn point_on_last(&self, q: &[Real], p: &[Real; 3]) -> [Real; 3] {
-        let mut frames = vec![Isometry3::identity(); self.rows.len() + 1];
-        self.frames(q, &mut frames);
-        let w = frames[self.rows.len()] * nalgebra::Point3::from(Vector3::new(p[0], p[1], p[2]));
+        let mut frames = [Isometry3::identity(); crate::limits::MAX_SPATIAL_JOINTS + 1];
+        let n = self.rows.len();
+        self.frames(q, &mut frames[..=n]);
+        let w = frames[n] * nalgebra::Point3::from(Vector3::new(p[0], p[1], p[2]));
         [w.x, w.y, w.z]
     }
 }

@@ -46,7 +46,6 @@ pub struct SpatialArmRobot {
     limits: Vec<[Real; 2]>,
     body: Body,
     tool: [Real; 3],
-    names: Vec<String>,
     scratch: RefCell<Scratch>,
 }
 
@@ -97,7 +96,6 @@ impl SpatialArmRobot {
                 pairs,
             },
             tool: *tool,
-            names: links.iter().map(|l| l.name.clone()).collect(),
             scratch: RefCell::new(Scratch::default()),
         })
     }
@@ -137,11 +135,6 @@ impl SpatialArmRobot {
         let t = frames[self.chain.joints()] * nalgebra::Point3::new(x, y, z);
         pts.push([t.x, t.y, t.z]);
         pts
-    }
-
-    /// The links' names.
-    pub fn link_names(&self) -> &[String] {
-        &self.names
     }
 }
 
