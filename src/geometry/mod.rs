@@ -13,6 +13,7 @@ pub mod circle;
 pub mod convex;
 pub mod exact;
 mod grid;
+pub mod hull;
 pub mod polygon;
 pub mod segment;
 mod shape;

@@ -3,33 +3,26 @@
 //! for the broad phase. The queries themselves (GJK through parry's `intersection_test`) are the
 //! arm's (`robot::spatial`); this file holds what is built once, when the scenario is read.
 
+use super::hull::Hull;
 use crate::math::Real;
 use parry3d_f64::math::{Pose, Vector};
-use parry3d_f64::shape::{ConvexPolyhedron, Cuboid, Shape as ParryShape};
+use parry3d_f64::shape::{Cuboid, Shape as ParryShape};
 
 /// A convex shape in its own frame.
 #[derive(Clone, Debug)]
 pub enum Convex {
     /// A box centred on its frame's origin, by half extents.
     Cuboid(Cuboid),
-    /// The convex hull of points.
-    Hull(ConvexPolyhedron),
+    /// The convex hull of points (its support map climbs the hull: `geometry::hull`).
+    Hull(Hull),
 }
 
 impl Convex {
-    /// The shape as a support map (for GJK).
-    pub fn support(&self) -> &dyn parry3d_f64::shape::SupportMap {
-        match self {
-            Convex::Cuboid(c) => c,
-            Convex::Hull(h) => h,
-        }
-    }
-
     /// The shape for parry's queries.
     pub fn shape(&self) -> &dyn ParryShape {
         match self {
             Convex::Cuboid(c) => c,
-            Convex::Hull(h) => h,
+            Convex::Hull(h) => &h.poly,
         }
     }
 }
@@ -100,8 +93,7 @@ impl Solid {
     /// build it.
     pub fn hull(name: &str, pts: &[[Real; 3]]) -> Result<Solid, String> {
         let vs: Vec<Vector> = pts.iter().map(|p| Vector::new(p[0], p[1], p[2])).collect();
-        let hull =
-            ConvexPolyhedron::from_convex_hull(&vs).ok_or("its convex hull could not be built (degenerate points)")?;
+        let hull = Hull::of_points(&vs).ok_or("its convex hull could not be built (degenerate points)")?;
         Ok(Solid {
             name: name.to_string(),
             convex: Convex::Hull(hull),

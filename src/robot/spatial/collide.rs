@@ -7,12 +7,14 @@
 //! primitive; a part's own placement (a box's centre) is composed on parry's side.
 
 use super::kinematics::Chain;
-use crate::geometry::solid::{Box3, Solid};
+use crate::geometry::hull::Climber;
+use crate::geometry::solid::{Box3, Convex, Solid};
 use crate::math::Real;
 use nalgebra::{Isometry3, Matrix3};
 use parry3d_f64::math::{Pose, Rotation, Vector};
 use parry3d_f64::query::details::intersection_test_support_map_support_map_with_params;
 use parry3d_f64::query::gjk::VoronoiSimplex;
+use std::cell::Cell;
 
 /// One convex part of a link (its hull, or a box fixed to it).
 #[derive(Clone, Debug)]
@@ -43,6 +45,8 @@ pub struct Scratch {
     centres: Vec<[Real; 3]>,
     /// The last separating direction per scene pair (part × obstacle), then per link pair.
     dirs: Vec<Option<Vector>>,
+    /// Per pair as `dirs`, the hull vertices each side's last support climb ended on.
+    hints: Vec<[u32; 2]>,
 }
 
 /// An oriented box: centre, axes (the columns), half extents.
@@ -149,6 +153,7 @@ fn intersects(
     ca: &[Real; 3],
     cb: &[Real; 3],
     dir: &mut Option<Vector>,
+    hints: &mut [u32; 2],
 ) -> bool {
     let pos12 = p1.inv_mul(p2);
     let start = dir.or_else(|| {
@@ -156,13 +161,24 @@ fn intersects(
         (p1.rotation.inverse() * world).try_normalize()
     });
     let mut simplex = VoronoiSimplex::new();
-    let (hit, end) = intersection_test_support_map_support_map_with_params(
-        &pos12,
-        s1.convex.support(),
-        s2.convex.support(),
-        &mut simplex,
-        start,
-    );
+    let [h1, h2] = hints;
+    let climber = |hull, hint| Climber { hull, hint: Cell::from_mut(hint) };
+    // Each pair of kinds by its own types, so that the support maps are inlined into GJK.
+    let (hit, end) = match (&s1.convex, &s2.convex) {
+        (Convex::Hull(a), Convex::Hull(b)) => {
+            let (a, b) = (climber(a, h1), climber(b, h2));
+            intersection_test_support_map_support_map_with_params(&pos12, &a, &b, &mut simplex, start)
+        }
+        (Convex::Hull(a), Convex::Cuboid(b)) => {
+            intersection_test_support_map_support_map_with_params(&pos12, &climber(a, h1), b, &mut simplex, start)
+        }
+        (Convex::Cuboid(a), Convex::Hull(b)) => {
+            intersection_test_support_map_support_map_with_params(&pos12, a, &climber(b, h2), &mut simplex, start)
+        }
+        (Convex::Cuboid(a), Convex::Cuboid(b)) => {
+            intersection_test_support_map_support_map_with_params(&pos12, a, b, &mut simplex, start)
+        }
+    };
     *dir = if hit { None } else { end.try_normalize() };
     hit
 }
@@ -197,7 +213,8 @@ impl Body {
     pub fn first_hit(&self, scene: &[Solid], s: &mut Scratch) -> Option<Hit> {
         let (m, n) = (scene.len(), self.scene_parts.len());
         s.dirs.resize(m * n + self.pairs.len(), None);
-        let Scratch { boxes, poses, centres, rots, dirs, .. } = s;
+        s.hints.resize(m * n + self.pairs.len(), [0; 2]);
+        let Scratch { boxes, poses, centres, rots, dirs, hints, .. } = s;
         let identity = Matrix3::identity();
         let obb = |i: usize| Obb { c: &centres[i], axes: &rots[self.parts[i].link], h: &self.halves[i] };
         for (k, &i) in self.scene_parts.iter().enumerate() {
@@ -208,7 +225,16 @@ impl Body {
                 }
                 let (c, h) = o.bounds.centre_half();
                 if !obb_separated(&obb(i), &Obb { c: &c, axes: &identity, h: &h })
-                    && intersects(p, part, &o.placement, o, &centres[i], &c, &mut dirs[k * m + j])
+                    && intersects(
+                        p,
+                        part,
+                        &o.placement,
+                        o,
+                        &centres[i],
+                        &c,
+                        &mut dirs[k * m + j],
+                        &mut hints[k * m + j],
+                    )
                 {
                     return Some(Hit::Scene { part: i, solid: j });
                 }
@@ -225,6 +251,7 @@ impl Body {
                     &centres[a],
                     &centres[b],
                     &mut dirs[m * n + k],
+                    &mut hints[m * n + k],
                 )
             {
                 return Some(Hit::Links { a, b });
