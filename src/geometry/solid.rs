@@ -14,7 +14,7 @@ pub enum Convex {
     /// A box centred on its frame's origin, by half extents.
     Cuboid(Cuboid),
     /// The convex hull of points (its support map climbs the hull: `geometry::hull`).
-    Hull(Hull),
+    Hull(Box<Hull>),
 }
 
 impl Convex {
@@ -93,7 +93,8 @@ impl Solid {
     /// build it.
     pub fn hull(name: &str, pts: &[[Real; 3]]) -> Result<Solid, String> {
         let vs: Vec<Vector> = pts.iter().map(|p| Vector::new(p[0], p[1], p[2])).collect();
-        let hull = Hull::of_points(&vs).ok_or("its convex hull could not be built (degenerate points)")?;
+        let hull =
+            Hull::of_points(&vs).map(Box::new).ok_or("its convex hull could not be built (degenerate points)")?;
         Ok(Solid {
             name: name.to_string(),
             convex: Convex::Hull(hull),

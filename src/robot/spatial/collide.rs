@@ -43,10 +43,17 @@ pub struct Scratch {
     poses: Vec<Pose>,
     boxes: Vec<Box3>,
     centres: Vec<[Real; 3]>,
-    /// The last separating direction per scene pair (part × obstacle), then per link pair.
-    dirs: Vec<Option<Vector>>,
-    /// Per pair as `dirs`, the hull vertices each side's last support climb ended on.
-    hints: Vec<[u32; 2]>,
+    /// Where each scene pair (part × obstacle), then each link pair, left its last test.
+    warm: Vec<Warm>,
+}
+
+/// Where a pair's last GJK test ended, to start the next one there.
+#[derive(Clone, Copy, Debug, Default)]
+struct Warm {
+    /// The separating direction it found (none after a hit).
+    dir: Option<Vector>,
+    /// The hull vertices each side's last support climb ended on.
+    hints: [u32; 2],
 }
 
 /// An oriented box: centre, axes (the columns), half extents.
@@ -138,24 +145,17 @@ fn world_box(f: &Isometry3<Real>, m: &Matrix3<Real>, local: &Box3) -> (Box3, [Re
     (out, [wc.x, wc.y, wc.z])
 }
 
-/// Whether two placed solids meet: GJK on their support maps, started along `dir` (in the first
-/// solid's frame) when there is one, else along the direction from the first's box centre to the
-/// second's (`ca`, `cb`, in the world); the direction GJK ended with is written back to `dir`.
+/// Whether two placed solids meet: GJK on their support maps, started along `warm`'s direction (in
+/// the first solid's frame) when there is one, else along the direction from the first's box
+/// centre to the second's (`ca`, `cb`, in the world), each hull's climbs from `warm`'s vertices;
+/// where GJK ended is written back to `warm`.
 /// Started from the last query's separating direction, GJK on a pair that stays apart ends in one
 /// or two iterations (SOLID's and Bullet's frame coherence). The start changes how fast GJK ends,
 /// not its answer, except within GJK's tolerance of touching.
 #[inline]
-fn intersects(
-    p1: &Pose,
-    s1: &Solid,
-    p2: &Pose,
-    s2: &Solid,
-    ca: &[Real; 3],
-    cb: &[Real; 3],
-    dir: &mut Option<Vector>,
-    hints: &mut [u32; 2],
-) -> bool {
+fn intersects(p1: &Pose, s1: &Solid, p2: &Pose, s2: &Solid, ca: &[Real; 3], cb: &[Real; 3], warm: &mut Warm) -> bool {
     let pos12 = p1.inv_mul(p2);
+    let Warm { dir, hints } = warm;
     let start = dir.or_else(|| {
         let world = Vector::new(cb[0] - ca[0], cb[1] - ca[1], cb[2] - ca[2]);
         (p1.rotation.inverse() * world).try_normalize()
@@ -212,9 +212,8 @@ impl Body {
     /// The first hit at the state last placed in `s`, scene first, or `None` when the arm is free.
     pub fn first_hit(&self, scene: &[Solid], s: &mut Scratch) -> Option<Hit> {
         let (m, n) = (scene.len(), self.scene_parts.len());
-        s.dirs.resize(m * n + self.pairs.len(), None);
-        s.hints.resize(m * n + self.pairs.len(), [0; 2]);
-        let Scratch { boxes, poses, centres, rots, dirs, hints, .. } = s;
+        s.warm.resize(m * n + self.pairs.len(), Warm::default());
+        let Scratch { boxes, poses, centres, rots, warm, .. } = s;
         let identity = Matrix3::identity();
         let obb = |i: usize| Obb { c: &centres[i], axes: &rots[self.parts[i].link], h: &self.halves[i] };
         for (k, &i) in self.scene_parts.iter().enumerate() {
@@ -225,16 +224,7 @@ impl Body {
                 }
                 let (c, h) = o.bounds.centre_half();
                 if !obb_separated(&obb(i), &Obb { c: &c, axes: &identity, h: &h })
-                    && intersects(
-                        p,
-                        part,
-                        &o.placement,
-                        o,
-                        &centres[i],
-                        &c,
-                        &mut dirs[k * m + j],
-                        &mut hints[k * m + j],
-                    )
+                    && intersects(p, part, &o.placement, o, &centres[i], &c, &mut warm[k * m + j])
                 {
                     return Some(Hit::Scene { part: i, solid: j });
                 }
@@ -250,8 +240,7 @@ impl Body {
                     &self.parts[b].solid,
                     &centres[a],
                     &centres[b],
-                    &mut dirs[m * n + k],
-                    &mut hints[m * n + k],
+                    &mut warm[m * n + k],
                 )
             {
                 return Some(Hit::Links { a, b });
