@@ -14,6 +14,7 @@ use nalgebra::{Isometry3, Matrix3};
 use parry3d_f64::math::{Pose, Rotation, Vector};
 use parry3d_f64::query::details::intersection_test_support_map_support_map_with_params;
 use parry3d_f64::query::gjk::VoronoiSimplex;
+use parry3d_f64::shape::SupportMap;
 use std::cell::Cell;
 
 /// One convex part of a link (its hull, or a box fixed to it).
@@ -145,6 +146,34 @@ fn world_box(f: &Isometry3<Real>, m: &Matrix3<Real>, local: &Box3) -> (Box3, [Re
     (out, [wc.x, wc.y, wc.z])
 }
 
+/// The gap a separating direction must leave for it to stand as GJK's answer: far above GJK's own
+/// tolerance (about 1e-13 here), so that where it stands GJK would have found the pair apart too.
+const CLEAR_GAP: Real = 1e-9;
+
+/// Whether `g2` (placed at `pos12` in `g1`'s frame) meets `g1`, and the direction to start the
+/// next test from. First the pair's last separating direction `warm`, when there is one: if `g2`
+/// lies more than [`CLEAR_GAP`] beyond `g1` along it (two support points), they are apart and that
+/// direction stands; else parry's GJK, started along `start`. The plane test proves what GJK would
+/// answer, in two support points where GJK needs at least four; GJK's own warm start only picks
+/// its first simplex point.
+#[inline]
+fn gjk<G1: SupportMap, G2: SupportMap>(
+    pos12: &Pose,
+    g1: &G1,
+    g2: &G2,
+    warm: Option<Vector>,
+    start: Option<Vector>,
+) -> (bool, Vector) {
+    if let Some(d) = warm {
+        let far_a = d.dot(g1.local_support_point(d));
+        let near_b = d.dot(g2.support_point(pos12, -d));
+        if near_b - far_a > CLEAR_GAP {
+            return (false, d);
+        }
+    }
+    intersection_test_support_map_support_map_with_params(pos12, g1, g2, &mut VoronoiSimplex::new(), start)
+}
+
 /// Whether two placed solids meet: GJK on their support maps, started along `warm`'s direction (in
 /// the first solid's frame) when there is one, else along the direction from the first's box
 /// centre to the second's (`ca`, `cb`, in the world), each hull's climbs from `warm`'s vertices;
@@ -160,24 +189,15 @@ fn intersects(p1: &Pose, s1: &Solid, p2: &Pose, s2: &Solid, ca: &[Real; 3], cb: 
         let world = Vector::new(cb[0] - ca[0], cb[1] - ca[1], cb[2] - ca[2]);
         (p1.rotation.inverse() * world).try_normalize()
     });
-    let mut simplex = VoronoiSimplex::new();
     let [h1, h2] = hints;
     let climber = |hull, hint| Climber { hull, hint: Cell::from_mut(hint) };
+    let warm = *dir;
     // Each pair of kinds by its own types, so that the support maps are inlined into GJK.
     let (hit, end) = match (&s1.convex, &s2.convex) {
-        (Convex::Hull(a), Convex::Hull(b)) => {
-            let (a, b) = (climber(a, h1), climber(b, h2));
-            intersection_test_support_map_support_map_with_params(&pos12, &a, &b, &mut simplex, start)
-        }
-        (Convex::Hull(a), Convex::Cuboid(b)) => {
-            intersection_test_support_map_support_map_with_params(&pos12, &climber(a, h1), b, &mut simplex, start)
-        }
-        (Convex::Cuboid(a), Convex::Hull(b)) => {
-            intersection_test_support_map_support_map_with_params(&pos12, a, &climber(b, h2), &mut simplex, start)
-        }
-        (Convex::Cuboid(a), Convex::Cuboid(b)) => {
-            intersection_test_support_map_support_map_with_params(&pos12, a, b, &mut simplex, start)
-        }
+        (Convex::Hull(a), Convex::Hull(b)) => gjk(&pos12, &climber(a, h1), &climber(b, h2), warm, start),
+        (Convex::Hull(a), Convex::Cuboid(b)) => gjk(&pos12, &climber(a, h1), b, warm, start),
+        (Convex::Cuboid(a), Convex::Hull(b)) => gjk(&pos12, a, &climber(b, h2), warm, start),
+        (Convex::Cuboid(a), Convex::Cuboid(b)) => gjk(&pos12, a, b, warm, start),
     };
     *dir = if hit { None } else { end.try_normalize() };
     hit
