@@ -3,8 +3,8 @@
 //! link 0's frame is the base pose.
 //!
 //! Every sine and cosine comes from `libm` (the same bits natively and in wasm; the platform's
-//! own `sin` may differ in the last place), and rotations are built as unit quaternions from
-//! them, so nalgebra only multiplies and adds.
+//! own `sin` may differ in the last place), one `sincos` of each joint's half angle, and rotations
+//! are built as unit quaternions from them, so nalgebra only multiplies and adds.
 
 use crate::math::Real;
 use crate::scenario::{DhJoint, PoseSpec};
@@ -67,8 +67,9 @@ impl Chain {
         out[0] = f;
         for (k, r) in self.rows.iter().enumerate() {
             let angle = r.theta + q[k];
-            let (s, c) = libm::sincos(angle);
+            // One `sincos`, of the half angle (the quaternion's); the whole angle's from it.
             let (hs, hc) = libm::sincos(0.5 * angle);
+            let (s, c) = (2.0 * hs * hc, 1.0 - 2.0 * hs * hs);
             let turn = UnitQuaternion::new_unchecked(Quaternion::new(hc, 0.0, 0.0, hs));
             // Rz(θ)·Tz(d)·Tx(a)·Rx(α): the translation is Rz(θ)·(a, 0, d), the rotation Rz(θ)·Rx(α).
             let step = Isometry3::from_parts(Translation3::new(r.a * c, r.a * s, r.d), turn * r.twist);
