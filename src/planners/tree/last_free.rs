@@ -18,8 +18,8 @@
 //! What Planarium adds, through the tree's machinery (not copies of it):
 //! - **each step's motion is checked**, from the last free configuration (the node, at first) to
 //!   the next, by [`SpaceInfo::check_step`](crate::space_info::SpaceInfo::check_step): rl tests
-//!   the configurations alone, so a planar arm's link could graze an obstacle's corner between two
-//!   of them, and here a path through a corner is a bug. A step whose motion is not free ends the
+//!   the configurations alone, so a point could cut an obstacle's corner between two of them, or a
+//!   planar arm's link graze one, and here a path through a corner is a bug. A step whose motion is not free ends the
 //!   connect as a colliding configuration does. How a step counts:
 //!   - a robot whose motions are checked by discrete states alone (no motion model of its own: the
 //!     spatial arm, the course's Puma) tests the configuration alone, one state check, free when
