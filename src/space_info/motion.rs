@@ -194,8 +194,49 @@ impl SpaceInfo {
     }
 }
 
+/// The slack on the resolution for one step of a walk along a line ([`SpaceInfo::check_step`]):
+/// the Robotics Library's running sum of steps puts two configurations a resolution apart up to
+/// some ulps per step taken (at most 100,000 steps: about 1e-11 relative), which must not make the
+/// step's check visit a second state (without it, a point on `narrow` made 55% more checks, seed 1:
+/// 11,247 rather than 7,277, one per configuration).
+const STEP_SLACK: Real = 1e-9;
+
 impl MotionValidator for SpaceInfo {
     fn check_motion(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Invalid> {
+        self.check_motion_at(a, b, self.resolution, scratch)
+    }
+}
+
+impl SpaceInfo {
+    /// One step of a walk along a line in steps of the resolution (RRT-Connect's `last-free`
+    /// connect, the Robotics Library's): whether the motion `a → b` is free, `a` being free (the
+    /// walk's start or its previous step's end) and `b` one resolution on (or less, the last step).
+    /// On `Err`, `scratch` holds the invalid state found (`b`, or one between).
+    ///
+    /// - A robot with no motion model of its own (its motions are checked by discrete states
+    ///   alone: the spatial arm) tests `b` alone, one state check (free when `b` is), as the
+    ///   Robotics Library counts one query per configuration tested: the states between two steps
+    ///   are not checked, as they are not by the discrete motion check at the resolution either.
+    /// - Any other robot has the step's motion checked by the motion validator, as one motion at
+    ///   the resolution (a hair of slack, `STEP_SLACK`, for the running sum's rounding), so
+    ///   nothing between two steps goes unchecked: a point tests `b` (one state check) and the
+    ///   segment exactly (the sweep is not a state check), so it still counts one check per
+    ///   configuration; a body computes clearances at `b`, at `a` again and at the bisections that
+    ///   certify the motion, each a state check, free when positive (a robot with its own step
+    ///   rule, the vehicle chain, also at the states the rule puts between).
+    pub fn check_step(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Invalid> {
+        if self.validity.robot.motion().is_none() {
+            if self.is_valid(b) {
+                return Ok(());
+            }
+            scratch.copy_from_slice(b);
+            return Err(Invalid);
+        }
+        self.check_motion_at(a, b, self.resolution * (1.0 + STEP_SLACK), scratch)
+    }
+
+    /// The motion check with states at most `resolution` apart, journalled in a bounded batch.
+    fn check_motion_at(&self, a: &[Real], b: &[Real], resolution: Real, scratch: &mut [Real]) -> Result<(), Invalid> {
         // Cut short by the deadline (or a suspended batch): refuse at once, accept nothing
         // unchecked.
         if self.stopped() {
@@ -203,7 +244,7 @@ impl MotionValidator for SpaceInfo {
             return Err(Invalid);
         }
         if !self.journal_on() {
-            return self.check_motion_now(a, b, scratch);
+            return self.check_motion_now(a, b, resolution, scratch);
         }
         // In a bounded batch: a finished check is answered from the journal, one cut short
         // resumes where it stopped, and a check that finishes is kept as one entry.
@@ -223,7 +264,7 @@ impl MotionValidator for SpaceInfo {
             return Err(Invalid);
         }
         let (before, free_before) = (self.checks(), self.free_checks());
-        let outcome = self.check_motion_now(a, b, scratch);
+        let outcome = self.check_motion_now(a, b, resolution, scratch);
         if !self.stopped() {
             let (checks, free) = (self.checks() - before, self.free_checks() - free_before);
             let entry = Entry::Motion { ok: outcome.is_ok(), checks, free, at: 0 };
@@ -231,16 +272,14 @@ impl MotionValidator for SpaceInfo {
         }
         outcome
     }
-}
 
-impl SpaceInfo {
-    /// The motion check itself.
-    fn check_motion_now(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Invalid> {
+    /// The motion check itself, with states at most `resolution` apart.
+    fn check_motion_now(&self, a: &[Real], b: &[Real], resolution: Real, scratch: &mut [Real]) -> Result<(), Invalid> {
         let d = self.distance(a, b);
         let model = self.motion_model();
         // More steps than can be checked (unreachable for states in bounds: `Problem` refuses
         // such a resolution): refuse the motion rather than check it more coarsely.
-        let Some(n) = model.steps(a, b, d, self.resolution) else {
+        let Some(n) = model.steps(a, b, d, resolution) else {
             self.interpolate(a, b, 0.5, scratch);
             return Err(Invalid);
         };

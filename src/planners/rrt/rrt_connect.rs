@@ -9,15 +9,19 @@
 //! With `connect` = `last-free` it is the Robotics Library's `RrtConCon` (rl's
 //! `rl/plan/RrtConCon.cpp` in its repository's `src`, the planner of report 001's course): both
 //! trees CONNECT, tree A toward the sample and tree B toward the node tree A added, each stepping
-//! by the scenario's resolution with one state check per configuration and keeping only the last
-//! free one ([`Tree::connect_last_free`]); solved when tree B's last configuration is within
+//! by the scenario's resolution and keeping only the last free configuration
+//! ([`Tree::connect_last_free`]: each step's motion is checked, one state check per configuration
+//! for a robot checked by discrete states alone, as rl counts, more for a body whose steps are
+//! certified by clearances); solved when tree B's last configuration is within
 //! `epsilon` of tree A's new node (rl's `areEqual`: distance ≤ epsilon); the trees swap every
 //! iteration. The path is rl's `RrtDual::getPath`: the start tree's branch to its meeting node,
 //! then the goal tree's from the parent of its own meeting node (the two are within `epsilon`) to
 //! the goal. Start and goal are tested once each, counted, in the first iteration (rl's
 //! `Planner::verify` before `solve`), so `checks` and `free_checks` are the course's collision and
-//! free queries. Ladder steps are range steps: `ladder` does nothing with `last-free` (as a
-//! sampler's `sigma` does nothing with the uniform sampler; the page hides it).
+//! free queries (for the course's robot, the spatial arm, and a point robot; see
+//! [`Tree::connect_last_free`] for a body's). Ladder steps are range steps: `ladder` does nothing
+//! with `last-free` (as a sampler's `sigma` does nothing with the uniform sampler; the page hides
+//! it).
 //!
 //! [`Rng`]: crate::rng::Rng
 
@@ -63,7 +67,7 @@ pub const CONNECT: ParamSpec = ParamSpec::choice(
     "Connect",
     &["range", "last-free"],
     0,
-    "range: both growths step by range, each motion checked and added as a node (Kuffner & LaValle); last-free: the Robotics Library's RrtConCon (report 001's course): both trees step along the line by the resolution, one state check per configuration, and only the last free configuration becomes a node.",
+    "range: both growths step by range, each motion checked and added as a node (Kuffner & LaValle); last-free: the Robotics Library's RrtConCon (report 001's course): both trees step along the line by the resolution, each step's motion checked (one state check per configuration for the course's spatial arm and a point), and only the last free configuration becomes a node.",
 );
 
 /// How close the two trees' last configurations must be to meet, in `last-free` mode.
@@ -97,6 +101,8 @@ pub struct RrtConnect {
     target: Vec<Real>,
     scratch: Vec<Real>,
     new: Vec<Real>,
+    /// Where a last-free step's motion was found not free.
+    found: Vec<Real>,
 }
 
 impl RrtConnect {
@@ -116,6 +122,7 @@ impl RrtConnect {
             target: vec![0.0; n],
             scratch: vec![0.0; n],
             new: vec![0.0; n],
+            found: vec![0.0; n],
         }
     }
 }
@@ -204,15 +211,15 @@ impl RrtConnect {
         if !cx.sample(a, &mut self.sample) {
             return None;
         }
-        let (delta, n) = (self.delta, &mut self.new);
-        let (grow, added) = self.trees[a].connect_last_free(cx, &self.sample, delta, true, &mut self.scratch, n);
+        let (delta, n, found) = (self.delta, &mut self.new, &mut self.found);
+        let (grow, added) = self.trees[a].connect_last_free(cx, &self.sample, delta, true, &mut self.scratch, n, found);
         if matches!(grow, Grow::Trapped | Grow::Rejected) {
             cx.events.at(EventKind::SampleRejected, a, cx.si.project(&self.sample), &self.sample);
             return None;
         }
         self.target.copy_from_slice(self.trees[a].state(added));
-        let (g, reached) =
-            self.trees[b].connect_last_free(cx, &self.target, delta, false, &mut self.scratch, &mut self.new);
+        let (n, found) = (&mut self.new, &mut self.found);
+        let (g, reached) = self.trees[b].connect_last_free(cx, &self.target, delta, false, &mut self.scratch, n, found);
         if matches!(g, Grow::Trapped | Grow::Rejected)
             || cx.si.distance(self.trees[b].state(reached), &self.target) > self.epsilon
         {

@@ -1,8 +1,8 @@
 //! The Robotics Library's CONNECT (`rl::plan::Rrt::connect`, used by `RrtConCon`, the planner of
 //! report 001's course): step from the selected node along the straight line toward the target by
-//! `delta`, testing each configuration with one state check, until the target is reached or a
-//! configuration collides; only the **last free configuration** becomes a node, with one edge from
-//! the node it started at; nothing when the first configuration collides.
+//! `delta`, testing each configuration, until the target is reached or a step is not free; only
+//! the **last free configuration** becomes a node, with one edge from the node it started at;
+//! nothing when the first step is not free.
 //!
 //! Followed from rl's `Rrt::connect` (`rl/plan/Rrt.cpp` in its repository's `src`):
 //! - the first configuration is `interpolate(near, target, step / d)` with `step = d` when
@@ -12,16 +12,34 @@
 //!   target is reached: the last configuration is `interpolate(near, target, 1)`; the loop stops at
 //!   the first colliding configuration or after the reached one;
 //! - every configuration tested is one `isColliding` call, which `rl::plan::SimpleModel` counts as
-//!   one query (`totalQueries`) and, when nothing was hit, one free query (`freeQueries`): here
-//!   one counted [`SpaceInfo::is_valid`](crate::space_info::SpaceInfo::is_valid), which counts
-//!   both;
+//!   one query (`totalQueries`) and, when nothing was hit, one free query (`freeQueries`);
 //! - the vertex added is the last free configuration, its edge from `near`.
 //!
 //! What Planarium adds, through the tree's machinery (not copies of it):
+//! - **each step's motion is checked**, from the last free configuration (the node, at first) to
+//!   the next, by [`SpaceInfo::check_step`](crate::space_info::SpaceInfo::check_step): rl tests
+//!   the configurations alone, so a point could cut an obstacle's corner between two of them, or a
+//!   planar arm's link graze one, and here a path through a corner is a bug. A step whose motion is not free ends the
+//!   connect as a colliding configuration does. How a step counts:
+//!   - a robot whose motions are checked by discrete states alone (no motion model of its own: the
+//!     spatial arm, the course's Puma) tests the configuration alone, one state check, free when
+//!     the configuration is: exactly rl's queries, one per configuration tested;
+//!   - a point robot tests the configuration (one state check, free when it is) and the segment
+//!     from the previous one exactly (a sweep, not a state check): still one query per
+//!     configuration, but a free configuration at the end of a segment through an obstacle's
+//!     corner ends the connect (its check counted free, as the configuration is; no check of the
+//!     connect found a collision);
+//!   - a body (planar arm, rigid body, vehicle chain) certifies the step's motion by clearances:
+//!     the configuration's, the previous configuration's again, and those of the bisections that
+//!     certify what lies between (and of the states a vehicle chain's own step rule puts there),
+//!     each a state check, free when positive: `checks` is the collision work done, at least two
+//!     per free step, and `free_checks` counts the positive clearances, not the configurations
+//!     kept; a step that is not free has one clearance of 0, the last computed, where the
+//!     collision was found (unless the bisection's depth limit, 2⁻⁴⁰ of a step, refused it);
 //! - the node is chosen by [`Tree::select`] (exhausted nodes and the weighted policy apply), and a
 //!   sample beyond that node's dynamic domain is rejected before any check;
 //! - **failure** (for the dynamic domain's radius and the exhausted nodes' count) means that no
-//!   vertex came of it: the first configuration collided, rl's `connect` returning `nullptr`.
+//!   vertex came of it: the first step was not free, rl's `connect` returning `nullptr`.
 //!   Report 001's DD-RRT pseudocode sets `q_near.radius = R` exactly when `CONNECT` does not
 //!   return a new node, and Yershova et al. ("Dynamic-Domain RRTs", ICRA 2005) make a node a
 //!   boundary node when its expansion fails, not when a long expansion that made progress ends
@@ -40,8 +58,8 @@
 //!   done again from the journal).
 //!
 //! Events, as a range step's: `Nearest`; then `Steer` from the node to the farthest configuration
-//! tested (the target when reached), `Collision` at the configuration that collided, `NodeAdded`
-//! for the last free one.
+//! tested (the target when reached), `Collision` at the state where the last step was found not
+//! free (the configuration, or a state of its motion), `NodeAdded` for the last free one.
 
 use super::Tree;
 use crate::math::Real;
@@ -55,11 +73,12 @@ pub const MAX_LAST_FREE_STEPS: usize = crate::limits::MAX_MOTION_STEPS as usize 
 impl Tree {
     /// Connect toward `target` the Robotics Library's way (see the module documentation), in steps
     /// of `delta`; `sample`: the target is a sample (its node's dynamic domain applies). `scratch`
-    /// holds the configuration tested, `new` the last free one. Returns the outcome and the node
-    /// added ([`Grow::Reached`] when it is the target, [`Grow::Advanced`] when a configuration
-    /// collided after progress), or the selected node ([`Grow::Trapped`]: the first configuration
-    /// collided, or no node may be added; [`Grow::Rejected`]: outside its domain; `Reached` at a
-    /// distance of 0).
+    /// holds the configuration tested, `new` the last free one, `found` where a step was found not
+    /// free. Returns the outcome and the node added ([`Grow::Reached`] when it is the target,
+    /// [`Grow::Advanced`] when a step was not free after progress), or the selected node
+    /// ([`Grow::Trapped`]: the first step was not free, or no node may be added;
+    /// [`Grow::Rejected`]: outside its domain; `Reached` at a distance of 0).
+    #[allow(clippy::too_many_arguments)]
     pub fn connect_last_free(
         &mut self,
         cx: &mut Context,
@@ -68,6 +87,7 @@ impl Tree {
         sample: bool,
         scratch: &mut [Real],
         new: &mut [Real],
+        found: &mut [Real],
     ) -> (Grow, u32) {
         let (near, d) = match self.begin_growth(cx, target, sample) {
             Ok(nd) => nd,
@@ -79,7 +99,8 @@ impl Tree {
         let (mut any_free, mut collided) = (false, false);
         for _ in 0..MAX_LAST_FREE_STEPS {
             cx.si.interpolate(from, target, step / d, scratch);
-            let free = cx.si.is_valid(scratch);
+            // The step's motion, from the last free configuration (the node, at first).
+            let free = cx.si.check_step(if any_free { &*new } else { from }, scratch, found).is_ok();
             if cx.si.stopped() {
                 // Out of time, or the batch was suspended (its answers are refused): add nothing.
                 return (Grow::Trapped, near);
@@ -99,11 +120,11 @@ impl Tree {
                 step = d;
             }
         }
-        // The farthest configuration tested: the one that collided, or the last free one.
+        // The farthest configuration tested: the one whose step was not free, or the last free one.
         let tested = if collided { &*scratch } else { &*new };
         cx.note_steer(self.index, near, from, tested, step, d, reached && !collided);
         if collided {
-            cx.note_collision(self.index, near, from, target, scratch);
+            cx.note_collision(self.index, near, from, target, found);
         }
         if !any_free {
             cx.sampler.note_collision(self.state(near));
