@@ -122,6 +122,10 @@ pub struct Body {
     pub pairs: Vec<(usize, usize)>,
     /// Each part's half extents in its link's frame (its oriented box's).
     pub halves: Vec<[Real; 3]>,
+    /// Each part's box centre in its link's frame.
+    pub centres: Vec<[Real; 3]>,
+    /// Whether a part sits at its link's frame (a hull) rather than placed in it (a box).
+    pub at_frame: Vec<bool>,
 }
 
 /// An isometry as parry's pose.
@@ -131,19 +135,19 @@ fn to_pose(f: &Isometry3<Real>) -> Pose {
     Pose::from_parts(Vector::new(t.x, t.y, t.z), Rotation::from_xyzw(q.i, q.j, q.k, q.w))
 }
 
-/// The world box of a box `local` given in frame `f`: its centre moved, its half extents through
-/// the absolute rotation matrix.
+/// The world box of a part whose own box has centre `c` and half extents `h` in a frame at `t`
+/// rotated by `m`: its centre moved, its half extents through the absolute rotation matrix.
 #[inline]
-fn world_box(f: &Isometry3<Real>, m: &Matrix3<Real>, local: &Box3) -> (Box3, [Real; 3]) {
-    let (c, h) = local.centre_half();
-    let wc = f * nalgebra::Point3::new(c[0], c[1], c[2]);
+fn world_box(t: &nalgebra::Vector3<Real>, m: &Matrix3<Real>, c: &[Real; 3], h: &[Real; 3]) -> (Box3, [Real; 3]) {
     let mut out = Box3 { lo: [0.0; 3], hi: [0.0; 3] };
+    let mut wc = [0.0; 3];
     for r in 0..3 {
+        wc[r] = m[(r, 0)] * c[0] + m[(r, 1)] * c[1] + m[(r, 2)] * c[2] + t[r];
         let e = m[(r, 0)].abs() * h[0] + m[(r, 1)].abs() * h[1] + m[(r, 2)].abs() * h[2];
         out.lo[r] = wc[r] - e;
         out.hi[r] = wc[r] + e;
     }
-    (out, [wc.x, wc.y, wc.z])
+    (out, wc)
 }
 
 /// The gap a separating direction must leave for it to stand as GJK's answer: far above GJK's own
@@ -221,9 +225,8 @@ impl Body {
             let pose = to_pose(f);
             let m = f.rotation.to_rotation_matrix().into_inner();
             for i in range.clone() {
-                let solid = &self.parts[i].solid;
-                s.poses[i] = if solid.placement == Pose::IDENTITY { pose } else { pose * solid.placement };
-                (s.boxes[i], s.centres[i]) = world_box(f, &m, &solid.bounds);
+                s.poses[i] = if self.at_frame[i] { pose } else { pose * self.parts[i].solid.placement };
+                (s.boxes[i], s.centres[i]) = world_box(&f.translation.vector, &m, &self.centres[i], &self.halves[i]);
             }
             s.rots[k] = m;
         }

@@ -90,6 +90,8 @@ impl SpatialArmRobot {
             limits: joints.iter().map(|j| j.limits).collect(),
             body: Body {
                 halves: parts.iter().map(|p| p.solid.bounds.centre_half().1).collect(),
+                centres: parts.iter().map(|p| p.solid.bounds.centre_half().0).collect(),
+                at_frame: parts.iter().map(|p| p.solid.placement == parry3d_f64::math::Pose::IDENTITY).collect(),
                 parts,
                 link_parts,
                 scene_parts,
