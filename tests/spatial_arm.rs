@@ -1,15 +1,39 @@
 //! The spatial arm on report 001's robot: the Puma 560's kinematics against the Robotics Library's
-//! own placement of its links, the course's scene, and the collision query's cost (printed).
+//! own placement of its links, the course's scene, and the collision query's cost (printed). The
+//! independent checker's spatial arm (tests/common/spatial.rs) is checked here against rl's link
+//! frames and known states (its GJK and its agreement with the product in tests/spatial_checker.rs),
+//! then re-checks the course planner's paths at a quarter of `delta`.
 
+mod common;
+
+use common::spatial::{self, lerp, random_state, spec, Arm, Pair};
+use planarium::events::{EventKind, STRIDE};
+use planarium::planners::{self, Params};
 use planarium::problem::Problem;
-use planarium::robot::{Spatial, SpatialArmRobot};
+use planarium::rng::Rng;
+use planarium::robot::{Spatial, SpatialArmRobot, Verdict};
+use planarium::run::{RunConfig, Session};
 use planarium::scenario::{builtin, Scenario};
+use serde_json::Value;
 
 fn puma(id: &str) -> (Scenario, Problem) {
     let sc = builtin(id).unwrap();
     let p = Problem::from_scenario(&sc).unwrap();
     (sc, p)
 }
+
+/// rl's translations of the Puma's link frames at q = 0, x y z, from its display file
+/// (`data/rl-puma560/rlsg/unimation-puma560.convex/unimation-puma560.wrl`); the scenarios turn the
+/// world by Rz(90°), which takes (x, y, z) to (−y, x, z).
+const RL_AT_ZERO: [[f64; 3]; 7] = [
+    [0.0, 0.0, 0.0],
+    [0.0, 0.0, 0.6604],
+    [0.4318, 0.1291, 0.6604],
+    [0.4115, 0.1291, 0.6604],
+    [0.4115, 0.1291, 1.0935],
+    [0.4115, 0.1291, 1.0935],
+    [0.4115, 0.1291, 1.13475],
+];
 
 /// At q = 0 every link frame is where rl's display file (`data/rl-puma560/rlsg/
 /// unimation-puma560.convex/unimation-puma560.wrl`) puts it, turned by the world's Rz(90°).
@@ -18,17 +42,7 @@ fn puma_frames_at_zero_are_rls() {
     let (sc, _) = puma("puma-rbo-wall");
     let arm = SpatialArmRobot::from_spec(&sc.robot).unwrap();
     let s = arm.skeleton_points(&[0.0; 6]);
-    // rl's translations, x y z; Rz(90°) takes (x, y, z) to (−y, x, z).
-    let rl = [
-        [0.0, 0.0, 0.0],
-        [0.0, 0.0, 0.6604],
-        [0.4318, 0.1291, 0.6604],
-        [0.4115, 0.1291, 0.6604],
-        [0.4115, 0.1291, 1.0935],
-        [0.4115, 0.1291, 1.0935],
-        [0.4115, 0.1291, 1.13475],
-    ];
-    for (k, p) in rl.iter().enumerate() {
+    for (k, p) in RL_AT_ZERO.iter().enumerate() {
         let want = [-p[1], p[0], p[2]];
         assert!(s[k].iter().zip(want).all(|(a, b)| (a - b).abs() < 1e-9), "link{k}: {:?} against {want:?}", s[k]);
     }
@@ -94,4 +108,270 @@ fn tool_steps_follow_the_connect() {
     // A planar robot has none.
     let n = Problem::from_scenario(&builtin("narrow").unwrap()).unwrap();
     assert!(n.tool_steps(&[0.1, 0.5], &[0.2, 0.5]).is_empty() && n.robot.spatial().is_none());
+}
+
+/// The checker's kinematics (its own 4×4 matrices) puts the Puma's link frames where rl's display
+/// file does at q = 0, agrees with the product's skeleton at random states, and puts the course's
+/// tool in front of the wall at the start and behind it at the goal; the checker calls both
+/// courses' start and goal free, a joint past its limit invalid, and the straight motion through
+/// the wall blocked.
+#[test]
+fn the_checkers_kinematics_and_known_states() {
+    let (sc, p) = puma("puma-rbo-wall");
+    let arm = spec(&sc);
+    let f = spatial::frames(arm, &[0.0; 6]);
+    for (k, rl) in RL_AT_ZERO.iter().enumerate() {
+        let o = spatial::apply(&f[k], [0.0; 3]);
+        let want = [-rl[1], rl[0], rl[2]];
+        assert!(o.iter().zip(want).all(|(a, b)| (a - b).abs() < 1e-9), "link{k}: {o:?} against {want:?}");
+    }
+    let product = SpatialArmRobot::from_spec(&sc.robot).unwrap();
+    let mut rng = Rng::new(7);
+    let mut worst: f64 = 0.0;
+    for _ in 0..500 {
+        let q = random_state(&sc, &mut rng);
+        let f = spatial::frames(arm, &q);
+        let mut mine: Vec<[f64; 3]> = f.iter().map(|m| spatial::apply(m, [0.0; 3])).collect();
+        mine.push(spatial::tool_point(arm, &q));
+        for (a, b) in mine.iter().zip(product.skeleton_points(&q)) {
+            worst = (0..3).map(|k| (a[k] - b[k]).abs()).fold(worst, f64::max);
+        }
+    }
+    eprintln!("link origins and tool point against the product's skeleton: at most {worst:.1e} m apart");
+    assert!(worst < 1e-12, "{worst}");
+    let goal = sc.goal.clone().unwrap();
+    let (a, b) = (spatial::tool_point(arm, &sc.start), spatial::tool_point(arm, &goal));
+    assert!(a[0] < 0.81 && b[0] > 0.89, "{a:?} {b:?}");
+    for id in ["puma-rbo-wall", "puma-boxes"] {
+        let sc = builtin(id).unwrap();
+        assert_eq!(common::state_problem(&sc, &sc.start), None, "{id}");
+        assert_eq!(common::state_problem(&sc, sc.goal.as_ref().unwrap()), None, "{id}");
+    }
+    let mut past = sc.start.clone();
+    past[1] = 0.8;
+    assert!(common::state_problem(&sc, &past).unwrap().contains("joint 1 outside"));
+    let e = common::motion_problem(&sc, &sc.start, &goal).expect("the straight motion meets the wall");
+    assert!(e.contains("meets obstacles3d["), "{e}");
+    // Where the product first calls the straight motion blocked, the checker names the same
+    // obstacle among those it sees met.
+    let ws = p.si.workspace();
+    let t = (0..=1000).map(|k| k as f64 / 1000.0).find(|t| !p.robot.is_valid(ws, &lerp(&sc.start, &goal, *t))).unwrap();
+    let q = lerp(&sc.start, &goal, t);
+    let Verdict::Collision(o) = p.robot.verdict(ws, &q) else { panic!("the wall, not the arm itself") };
+    let checker = Arm::new(&sc).unwrap();
+    let met = checker.contacts(&q, true);
+    eprintln!(
+        "straight motion, first blocked at t = {t}: the product says {:?}; the checker {:?}",
+        p.robot.describe_collision(ws, &q),
+        met.iter().map(|(c, _)| checker.describe(*c)).collect::<Vec<_>>()
+    );
+    assert!(met.iter().any(|(c, _)| matches!(c, Pair::Scene { obstacle, .. } if *obstacle == o)));
+}
+
+/// rl's steps along a connect's line of length `d` in steps of `delta`, up to the one at `end`
+/// (as tests/course_connect.rs rebuilds them).
+fn steps(end: f64, d: f64, delta: f64) -> Vec<f64> {
+    let mut step = if d <= delta { d } else { delta };
+    let mut out = vec![step];
+    while step < end {
+        step += delta;
+        if step >= d {
+            step = d;
+        }
+        out.push(step);
+    }
+    assert_eq!(step, end, "the stop is one of the line's steps");
+    out
+}
+
+/// Every configuration a last-free run tested and kept on an edge, rebuilt from its events and
+/// trees as tests/course_connect.rs does: a connect's `Steer` gives where it stopped and the
+/// line's length, a `Collision` that the stop collided, its `NodeAdded` the edge.
+fn kept_configurations(s: &Session, events: &[f64]) -> Vec<Vec<f64>> {
+    let data = s.planner_data();
+    let delta = s.problem().si.resolution;
+    let (mut pending, mut out) = (None, Vec::new());
+    for r in events.chunks(STRIDE) {
+        match r[0] as u8 {
+            k if k == EventKind::Nearest as u8 => pending = None,
+            k if k == EventKind::Steer as u8 => pending = Some((r[8], r[9], false)),
+            k if k == EventKind::Collision as u8 => {
+                if let Some(p) = &mut pending {
+                    p.2 = true;
+                }
+            }
+            k if k == EventKind::NodeAdded as u8 => {
+                let (end, d, collided) = pending.take().expect("a NodeAdded follows a Steer");
+                let tree = &data.trees[r[1] as usize];
+                let (p, n) = (tree.state(r[3] as u32), tree.state(r[2] as u32));
+                let all = steps(end, d, delta);
+                let kept = &all[..all.len() - collided as usize];
+                let last = *kept.last().unwrap();
+                out.extend(kept.iter().map(|sk| lerp(p, n, sk / last)));
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
+/// The scenario's own planner block (RRT-Connect, `connect: last-free`, its `epsilon`) run with
+/// `seed`, events recorded.
+fn course_run(sc: &Scenario, seed: u64) -> Session {
+    let block = sc.planner.as_ref().unwrap();
+    let spec = planners::find(&block.name).unwrap();
+    let params = Params::from_json(spec, &Value::Object(block.params.clone())).unwrap();
+    let config = RunConfig { planner: block.name.clone(), params, seed, record_events: true };
+    let mut s = Session::new(Problem::from_scenario(sc).unwrap(), config).unwrap();
+    s.run_to_end();
+    s
+}
+
+/// A motion of a path met between two checked states: its index and length, the stretch met
+/// (from the motion's first state, both in `delta`s), what meets what, the deepest overlap seen.
+#[derive(Debug)]
+struct Graze {
+    motion: usize,
+    deltas: f64,
+    from: f64,
+    to: f64,
+    what: Vec<String>,
+    depth: f64,
+}
+
+/// Every motion of `path` whose states every `step` (joint space, ends included) meet something by
+/// the checker, the stretch met then looked at 64 times finer (its ends and its deepest overlap,
+/// [`spatial::overlap`], exact at each state looked at).
+fn grazes(checker: &Arm, delta: f64, path: &[Vec<f64>], step: f64) -> Vec<Graze> {
+    let mut out = Vec::new();
+    for (k, w) in path.windows(2).enumerate() {
+        let len = w[0].iter().zip(&w[1]).map(|(x, y)| (y - x).powi(2)).sum::<f64>().sqrt();
+        let n = ((len / step).ceil() as usize).max(1);
+        let met: Vec<usize> = (0..=n)
+            .filter(|i| !checker.contacts(&lerp(&w[0], &w[1], *i as f64 / n as f64), false).is_empty())
+            .collect();
+        let (Some(first), Some(last)) = (met.first(), met.last()) else { continue };
+        let (i0, i1) = (first.saturating_sub(1), (last + 1).min(n));
+        let (lo, hi, m) = (i0 as f64 / n as f64, i1 as f64 / n as f64, 64 * (i1 - i0).max(1));
+        let mut g = Graze { motion: k, deltas: len / delta, from: f64::INFINITY, to: 0.0, what: vec![], depth: 0.0 };
+        for i in 0..=m {
+            let t = lo + (hi - lo) * i as f64 / m as f64;
+            let q = lerp(&w[0], &w[1], t);
+            for (c, _) in checker.contacts(&q, true) {
+                g.from = g.from.min(t * g.deltas);
+                g.to = g.to.max(t * g.deltas);
+                g.depth = g.depth.max(checker.depth(&q, c));
+                let d = checker.describe(c);
+                if !g.what.contains(&d) {
+                    g.what.push(d);
+                }
+            }
+        }
+        out.push(g);
+    }
+    out
+}
+
+/// One course run re-checked by the independent checker: the raw path's motions met between two
+/// steps at a quarter of `delta` (printed, with where, what and how deep), the smoothed path's, and
+/// the number of kept configurations. Asserted: solved, from the start to within `epsilon` of the
+/// goal; every configuration the method kept free (the product's promise for the raw path: the
+/// method tests configurations `delta` apart from a node, so the raw path may meet the wall
+/// between two of them, see below); the smoothed path free all along (at a quarter of `delta`:
+/// not a promise of the product's discrete checks, but what the runs measured show, so a graze
+/// there fails).
+fn examine(id: &str, seed: u64) -> (Vec<Graze>, Vec<Graze>, usize, usize) {
+    let sc = builtin(id).unwrap();
+    let what = format!("{id} seed {seed}");
+    let t = std::time::Instant::now();
+    let mut s = course_run(&sc, seed);
+    let ms = t.elapsed().as_secs_f64() * 1e3;
+    let r = s.result();
+    assert!(r.solved, "{what}: {}", r.status);
+    let path = s.problem().decode_path(&r.path);
+    let smoothed = s.problem().decode_path(&r.smoothed);
+    assert_eq!(path[0], sc.start, "{what}");
+    let goal = sc.goal.as_ref().unwrap();
+    assert!(path.last().unwrap().iter().zip(goal).all(|(a, b)| (a - b).abs() <= 1e-8), "{what}");
+    let events = s.drain_events();
+    let kept = kept_configurations(&s, &events);
+    assert_eq!(kept.len() as u64, r.stats.free_checks - 2, "{what}: every free configuration is kept");
+    let checker = Arm::new(&sc).unwrap();
+    for q in s.problem().decode_path(&kept) {
+        if let Some(e) = checker.problem(&q) {
+            panic!("{what}: a kept configuration: {e}");
+        }
+    }
+    if let Some(e) = common::path_problem(&sc, &smoothed) {
+        panic!("{what}: smoothed path, at a quarter of the resolution: {e}");
+    }
+    let raw = grazes(&checker, sc.resolution, &path, sc.resolution / 4.0);
+    let smooth = grazes(&checker, sc.resolution, &smoothed, sc.resolution / 4.0);
+    eprintln!(
+        "{what}: {ms:.0} ms, {} nodes, {} kept configurations free; raw path: {} motions, {} met between steps; \
+         smoothed: {} motions, {} met between steps",
+        r.stats.nodes,
+        kept.len(),
+        path.len() - 1,
+        raw.len(),
+        smoothed.len() - 1,
+        smooth.len()
+    );
+    for g in raw.iter().map(|g| ("raw", g)).chain(smooth.iter().map(|g| ("smoothed", g))) {
+        eprintln!(
+            "  {what}, {} motion {} ({:.2} δ long): met from {:.3} δ to {:.3} δ along it, {:.2e} m deep at most: {}",
+            g.0,
+            g.1.motion,
+            g.1.deltas,
+            g.1.from,
+            g.1.to,
+            g.1.depth,
+            g.1.what.join("; ")
+        );
+    }
+    (raw, smooth, path.len() - 1, smoothed.len() - 1)
+}
+
+/// The course's planner on both Puma scenarios, seeds 1–3 (a puma-rbo-wall run takes about 2 s,
+/// its re-check about 5 s): see [`examine`] for what is asserted. The raw paths are not held to
+/// the quarter step, and the re-check is shown not to be vacuous on them: puma-rbo-wall seed 2's
+/// raw motion 54 (27 steps long) has link4 meet the block-left between its 20th and 21st steps,
+/// about 0.5 mm deep.
+#[test]
+fn course_paths_pass_the_independent_checker() {
+    for id in ["puma-rbo-wall", "puma-boxes"] {
+        for seed in 1..=3 {
+            let (raw, _, _, _) = examine(id, seed);
+            if (id, seed) == ("puma-rbo-wall", 2) {
+                assert!(
+                    raw.iter().any(|g| g.motion == 54
+                        && g.what == ["link4 meets obstacles3d[1] (block-left)"]
+                        && g.from > 20.0
+                        && g.to < 21.0),
+                    "the graze of seed 2's raw motion 54 is not found (if the run changed, re-measure: \
+                     raw_path_grazes_over_seeds_1_to_20): {raw:?}"
+                );
+            }
+        }
+    }
+}
+
+/// The measurement behind the test above, seeds 1–20 (run by hand:
+/// `cargo test --release --test spatial_arm -- --ignored --nocapture`): every graze printed. It
+/// printed, on puma-rbo-wall, 4 of 1,660 raw motions met between steps (seed 2 motion 54, link4
+/// and the block-left, 5.1e-4 m deep; seed 10 motion 99, link6 and the lintel, 6.0e-4 m; seed 16
+/// motion 85, link4 and the lintel, 2.4e-4 m; seed 19 motion 10, one step long, link6's bar and
+/// the lintel over 0.08–0.93 of it, 1.2e-3 m), none of the 130 smoothed motions; on puma-boxes
+/// none of 81 raw and 20 smoothed motions.
+#[test]
+#[ignore]
+fn raw_path_grazes_over_seeds_1_to_20() {
+    for id in ["puma-rbo-wall", "puma-boxes"] {
+        let (mut raw, mut smooth, mut motions, mut smoothed) = (0, 0, 0, 0);
+        for seed in 1..=20 {
+            let (r, s, m, n) = examine(id, seed);
+            (raw, smooth, motions, smoothed) = (raw + r.len(), smooth + s.len(), motions + m, smoothed + n);
+        }
+        eprintln!("{id}, seeds 1-20: {raw} of {motions} raw motions and {smooth} of {smoothed} smoothed motions meet between steps");
+    }
 }

@@ -3,8 +3,13 @@
 //! the scenario's numbers, and motions sampled twice as finely as the planner's resolution; point
 //! robots' motions are also checked exactly. Its orientation signs come straight from
 //! `robust::orient2d` (exact, as the crate's are, but not through the crate's code), so segment,
-//! box and polygon decisions are exact; disc tests compare an `f64` distance and are not.
+//! box and polygon decisions are exact; disc tests compare an `f64` distance and are not. The
+//! spatial arm (3-D) has its own kinematics and GJK in [`spatial`], its motions sampled at a
+//! quarter of the resolution.
 #![allow(dead_code)]
+
+pub mod brute3d;
+pub mod spatial;
 
 use planarium::scenario::{ObstacleSpec, RobotSpec, Scenario};
 
@@ -197,6 +202,9 @@ pub fn state_problem(sc: &Scenario, q: &[f64]) -> Option<String> {
     if matches!(sc.robot, RobotSpec::Arm { .. }) {
         return arm_problem(sc, q);
     }
+    if let Some(arm) = spatial::Arm::new(sc) {
+        return arm.problem(q);
+    }
     let b = sc.bounds;
     if q[0] < b[0] || q[0] > b[2] || q[1] < b[1] || q[1] > b[3] {
         return Some(format!("{q:?} out of bounds"));
@@ -227,6 +235,8 @@ fn metric(sc: &Scenario, a: &[f64], b: &[f64]) -> f64 {
         // For arms, the largest joint-space step (wrap-aware): paths must start and end within 1e-9.
         RobotSpec::Arm { .. } => a.iter().zip(b).map(|(x, y)| angle_diff(*x, *y).abs()).fold(0.0, f64::max),
         RobotSpec::Point => ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt(),
+        // Euclidean over the joint angles (radians), the scenario format's `joint` metric.
+        RobotSpec::SpatialArm(_) => a.iter().zip(b).map(|(x, y)| (y - x).powi(2)).sum::<f64>().sqrt(),
         RobotSpec::Rigid { footprint, rotation_weight } => {
             let r = rotation_weight.unwrap_or_else(|| footprint.iter().map(|p| p[0].hypot(p[1])).fold(0.0, f64::max));
             ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt() + r * angle_diff(a[2], b[2]).abs()
@@ -239,6 +249,35 @@ fn metric(sc: &Scenario, a: &[f64], b: &[f64]) -> f64 {
 /// goal) it must start at the start and every motion be valid; what it sees is checked by the
 /// inspection tests.
 pub fn path_problem(sc: &Scenario, path: &[Vec<f64>]) -> Option<String> {
+    path_problem_by(sc, path, motion_problem)
+}
+
+/// Whether the crate checks this robot's motions only at discrete steps of the resolution (a
+/// spatial arm: there is no exact sweep in 3-D), so that a motion it accepts may still meet an
+/// obstacle between two of its steps, which [`motion_problem`] (finer) can find.
+pub fn discrete_motions(sc: &Scenario) -> bool {
+    matches!(sc.robot, RobotSpec::SpatialArm(_))
+}
+
+/// What the crate promises of the motion a → b, or `None`: for a robot whose motions it checks at
+/// discrete steps ([`discrete_motions`]), each state its validator checks (`n = ⌈d/resolution⌉`
+/// steps, the ends included) is free; for the others, the whole motion ([`motion_problem`]).
+pub fn promised_motion_problem(sc: &Scenario, a: &[f64], b: &[f64]) -> Option<String> {
+    let Some(arm) = spatial::Arm::new(sc) else { return motion_problem(sc, a, b) };
+    let n = ((metric(sc, a, b) / sc.resolution).ceil() as usize).max(1);
+    (0..=n).find_map(|i| arm.problem(&spatial::lerp(a, b, i as f64 / n as f64)))
+}
+
+/// [`path_problem`] with each motion held to [`promised_motion_problem`].
+pub fn promised_path_problem(sc: &Scenario, path: &[Vec<f64>]) -> Option<String> {
+    path_problem_by(sc, path, promised_motion_problem)
+}
+
+fn path_problem_by(
+    sc: &Scenario,
+    path: &[Vec<f64>],
+    motion_problem: fn(&Scenario, &[f64], &[f64]) -> Option<String>,
+) -> Option<String> {
     if path.len() < 2 {
         return Some("fewer than two states".into());
     }
@@ -258,8 +297,8 @@ pub fn path_problem(sc: &Scenario, path: &[Vec<f64>]) -> Option<String> {
     None
 }
 
-/// Why the motion a → b is invalid, or `None`: states every resolution/2, and for a point an
-/// exact segment test.
+/// Why the motion a → b is invalid, or `None`: states every resolution/2 (a spatial arm's every
+/// resolution/4, in joint space), and for a point an exact segment test.
 pub fn motion_problem(sc: &Scenario, a: &[f64], b: &[f64]) -> Option<String> {
     let n = match &sc.robot {
         RobotSpec::Arm { links, limits, .. } => {
@@ -274,9 +313,12 @@ pub fn motion_problem(sc: &Scenario, a: &[f64], b: &[f64]) -> Option<String> {
                 .sum();
             ((moved * total) / (0.001 * size)).ceil() as usize
         }
+        RobotSpec::SpatialArm(_) => (metric(sc, a, b) / (sc.resolution / 4.0)).ceil() as usize,
         _ => (metric(sc, a, b) / (sc.resolution / 2.0)).ceil() as usize,
     }
     .max(1);
+    // A spatial arm's checker is built once per motion, not per state.
+    let arm = spatial::Arm::new(sc);
     for i in 0..=n {
         let t = i as f64 / n as f64;
         let mut q: Vec<f64> = a.iter().zip(b).map(|(x, y)| x + t * (y - x)).collect();
@@ -291,8 +333,12 @@ pub fn motion_problem(sc: &Scenario, a: &[f64], b: &[f64]) -> Option<String> {
             }
             _ => {}
         }
-        if let Some(e) = state_problem(sc, &q) {
-            return Some(e);
+        let e = match &arm {
+            Some(arm) => arm.problem(&spatial::lerp(a, b, t)),
+            None => state_problem(sc, &q),
+        };
+        if e.is_some() {
+            return e;
         }
     }
     if matches!(sc.robot, RobotSpec::Point) {
@@ -324,6 +370,13 @@ pub fn self_test() {
         state_problem(&horn, &[0.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0]).is_some(),
         "curled into itself or the horn"
     );
+    let puma = planarium::scenario::builtin("puma-rbo-wall").unwrap();
+    let goal = puma.goal.clone().unwrap();
+    assert!(state_problem(&puma, &puma.start).is_none() && state_problem(&puma, &goal).is_none());
+    assert!(state_problem(&puma, &[0.0, 0.8, 0.0, 0.0, 0.0, 0.0]).is_some(), "joint limit");
+    let through = motion_problem(&puma, &puma.start, &goal).expect("straight through the wall");
+    assert!(through.contains("meets obstacles3d["), "{through}");
+    assert!(promised_motion_problem(&puma, &puma.start, &goal).is_some());
     let slot = planarium::scenario::builtin("slot").unwrap();
     assert!(state_problem(&slot, &[0.5, 0.5, std::f64::consts::FRAC_PI_2]).is_some());
     assert!(state_problem(&slot, &[0.5, 0.5, 0.0]).is_none());
