@@ -6,8 +6,8 @@
 
 mod common;
 
+use common::last_free::kept_configurations;
 use common::spatial::{self, lerp, random_state, spec, Arm, Pair};
-use planarium::events::{EventKind, STRIDE};
 use planarium::planners::{self, Params};
 use planarium::problem::Problem;
 use planarium::rng::Rng;
@@ -166,53 +166,6 @@ fn the_checkers_kinematics_and_known_states() {
         met.iter().map(|(c, _)| checker.describe(*c)).collect::<Vec<_>>()
     );
     assert!(met.iter().any(|(c, _)| matches!(c, Pair::Scene { obstacle, .. } if *obstacle == o)));
-}
-
-/// rl's steps along a connect's line of length `d` in steps of `delta`, up to the one at `end`
-/// (as tests/course_connect.rs rebuilds them).
-fn steps(end: f64, d: f64, delta: f64) -> Vec<f64> {
-    let mut step = if d <= delta { d } else { delta };
-    let mut out = vec![step];
-    while step < end {
-        step += delta;
-        if step >= d {
-            step = d;
-        }
-        out.push(step);
-    }
-    assert_eq!(step, end, "the stop is one of the line's steps");
-    out
-}
-
-/// Every configuration a last-free run tested and kept on an edge, rebuilt from its events and
-/// trees as tests/course_connect.rs does: a connect's `Steer` gives where it stopped and the
-/// line's length, a `Collision` that the stop collided, its `NodeAdded` the edge.
-fn kept_configurations(s: &Session, events: &[f64]) -> Vec<Vec<f64>> {
-    let data = s.planner_data();
-    let delta = s.problem().si.resolution;
-    let (mut pending, mut out) = (None, Vec::new());
-    for r in events.chunks(STRIDE) {
-        match r[0] as u8 {
-            k if k == EventKind::Nearest as u8 => pending = None,
-            k if k == EventKind::Steer as u8 => pending = Some((r[8], r[9], false)),
-            k if k == EventKind::Collision as u8 => {
-                if let Some(p) = &mut pending {
-                    p.2 = true;
-                }
-            }
-            k if k == EventKind::NodeAdded as u8 => {
-                let (end, d, collided) = pending.take().expect("a NodeAdded follows a Steer");
-                let tree = &data.trees[r[1] as usize];
-                let (p, n) = (tree.state(r[3] as u32), tree.state(r[2] as u32));
-                let all = steps(end, d, delta);
-                let kept = &all[..all.len() - collided as usize];
-                let last = *kept.last().unwrap();
-                out.extend(kept.iter().map(|sk| lerp(p, n, sk / last)));
-            }
-            _ => {}
-        }
-    }
-    out
 }
 
 /// The scenario's own planner block (RRT-Connect, `connect: last-free`, its `epsilon`) run with

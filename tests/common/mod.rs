@@ -9,6 +9,7 @@
 #![allow(dead_code)]
 
 pub mod brute3d;
+pub mod last_free;
 pub mod spatial;
 
 use planarium::scenario::{ObstacleSpec, RobotSpec, Scenario};
