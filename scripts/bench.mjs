@@ -47,6 +47,8 @@ const SUITE = [
   { id: 'asv-7', what: 'seven vehicles and brooms (7ASV)', runs: 10, setups: ['rrt-connect: rrt-connect --time-limit 10'] },
   ...['3ASV-easy', '3ASV', '7ASV-easy', '7ASV'].map((f) => ({ id: join(ASV, `${f}.txt`), name: f, what: `official ASV file ${f}.txt`, runs: 10,
     setups: ['rrt-connect: rrt-connect --time-limit 10'], optional: true })),
+  { id: 'puma-rbo-wall', what: "Puma 560 through the window (report 001's course: RRT-Connect, last free configuration)", wasm: true, runs: 10,
+    setups: ['rrt-connect: rrt-connect'] },
   { id: 'technion-mp', what: 'Technion HW3 goal map (4-link arm)', setups: ['rrt-connect: rrt-connect', 'rrt: rrt --goal-bias 0.2'] },
   { id: 'arm-3', what: '3-link arm of report 003', setups: ['rrt-connect: rrt-connect', 'rrt: rrt'] },
 ];
