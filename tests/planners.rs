@@ -60,7 +60,7 @@ fn builtins_for(task: TaskKind) -> Vec<(&'static str, Scenario)> {
 /// trees' and roadmaps' motions near the wall are re-checked; at most 150 motions of a run's data
 /// are re-checked independently. `None` for the planar robots.
 fn spatial_budget(name: &str, sc: &Scenario) -> Option<(u64, Option<&'static str>)> {
-    common::discrete_motions(sc).then_some(if name == "puma-boxes" { (1, None) } else { (1, Some("500")) })
+    common::spatial(sc).then_some(if name == "puma-boxes" { (1, None) } else { (1, Some("500")) })
 }
 
 /// Every planner of the registry, with the set-ups above (those must solve every built-in) or, for
@@ -88,8 +88,6 @@ fn every_planner_solves_every_builtin_with_valid_paths() {
             own.push(json!({}));
         }
         let (mut ran, mut solved) = (0, 0);
-        // Spatial arms: raw-path motions met between steps, of all; data motions likewise.
-        let mut grazes = (0, 0, 0, 0);
         for (name, sc) in builtins_for(spec.task) {
             for params in &own {
                 let extent = Problem::from_scenario(&sc).unwrap().si.space.max_extent();
@@ -124,16 +122,8 @@ fn every_planner_solves_every_builtin_with_valid_paths() {
                     assert!(r.solved || !must_solve, "{what}: {}", r.status);
                     if r.solved {
                         solved += 1;
-                        // A spatial arm's raw path is held to the crate's promise (each state its
-                        // validator checks is free; the course's raw paths do meet the wall between
-                        // two steps, tests/spatial_arm.rs) and its motions met between steps counted.
-                        if let Some(e) = common::promised_path_problem(&sc, &r.path) {
+                        if let Some(e) = common::path_problem(&sc, &r.path) {
                             panic!("{what}: raw path: {e}");
-                        }
-                        if common::discrete_motions(&sc) {
-                            let met = r.path.windows(2).filter(|w| common::motion_problem(&sc, &w[0], &w[1]).is_some());
-                            grazes.0 += met.count();
-                            grazes.1 += r.path.len() - 1;
                         }
                         if let Some(e) = common::path_problem(&sc, &r.smoothed) {
                             panic!("{what}: smoothed path: {e}");
@@ -161,15 +151,8 @@ fn every_planner_solves_every_builtin_with_valid_paths() {
                     for (e, (a, b)) in data.motions().enumerate() {
                         assert!(si.check_motion(a, b, &mut scratch).is_ok(), "{what}: motion {e} of its data invalid");
                         if e % 7 == 0 && e < most {
-                            if let Some(err) = common::promised_motion_problem(&sc, a, b) {
+                            if let Some(err) = common::motion_problem(&sc, a, b) {
                                 panic!("{what}: motion {e} of its data: {err}");
-                            }
-                            if common::discrete_motions(&sc) {
-                                if let Some(err) = common::motion_problem(&sc, a, b) {
-                                    println!("{what}: motion {e} of its data, between two steps: {err}");
-                                    grazes.2 += 1;
-                                }
-                                grazes.3 += 1;
                             }
                         }
                         *motions_checked.entry(spec.name).or_default() += 1;
@@ -178,13 +161,6 @@ fn every_planner_solves_every_builtin_with_valid_paths() {
             }
         }
         println!("{}: {ran} runs, {solved} solved", spec.name);
-        if grazes != (0, 0, 0, 0) {
-            println!(
-                "{}, spatial arms: {} of {} raw-path motions and {} of {} motions of their data re-checked meet an \
-                 obstacle between two of the validator's steps",
-                spec.name, grazes.0, grazes.1, grazes.2, grazes.3
-            );
-        }
         assert!(
             ran > 0 && solved > 0,
             "{}: planned {ran} runs and solved {solved}: its paths went unchecked",

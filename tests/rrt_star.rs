@@ -149,12 +149,9 @@ fn solves_every_builtin_with_valid_paths_and_edges() {
         assert!(names.contains(&n), "{n} is not among the built-ins with goals: {names:?}");
     }
     let setups = [json!({}), json!({"rewire": "radius"}), json!({"range_fraction": 0.05, "improve_for": 500})];
-    // A spatial arm's motions are checked at discrete steps: its edges are held to that promise,
-    // and those met between two steps (at a quarter of the resolution) counted: (met, re-checked).
-    let mut grazes = (0, 0);
     for name in names {
         let sc = builtin(name).unwrap();
-        let discrete = common::discrete_motions(&sc);
+        let discrete = common::spatial(&sc);
         for v in &setups {
             // One seed for the spatial arm: its runs and re-checks cost seconds, not milliseconds.
             for seed in 1..=if discrete { 1 } else { 3 } {
@@ -173,18 +170,11 @@ fn solves_every_builtin_with_valid_paths_and_edges() {
                     r.stats.nodes,
                     r.stats.time_ms
                 );
-                if let Some(e) = common::promised_path_problem(&sc, &r.path) {
+                if let Some(e) = common::path_problem(&sc, &r.path) {
                     panic!("{what}: raw path: {e}");
                 }
                 if let Some(e) = common::path_problem(&sc, &r.smoothed) {
                     panic!("{what}: smoothed path: {e}");
-                }
-                if discrete {
-                    let met = r.path.windows(2).filter(|w| common::motion_problem(&sc, &w[0], &w[1]).is_some()).count();
-                    println!(
-                        "{what}: {met} of {} raw-path motions meet an obstacle between two steps",
-                        r.path.len() - 1
-                    );
                 }
                 let si = &s.problem().si;
                 let path_cost = planners::smoothing::path_cost(si, s.planning_path(true));
@@ -198,22 +188,14 @@ fn solves_every_builtin_with_valid_paths_and_edges() {
                 for (e, (a, b)) in data.trees[0].edges().enumerate() {
                     assert!(si.check_motion(a, b, &mut scratch).is_ok(), "{what}: edge {e} invalid");
                     if e % 11 == 0 {
-                        if let Some(err) = common::promised_motion_problem(&sc, a, b) {
+                        if let Some(err) = common::motion_problem(&sc, a, b) {
                             panic!("{what}: edge {e}: {err}");
-                        }
-                        if discrete {
-                            if let Some(err) = common::motion_problem(&sc, a, b) {
-                                println!("{what}: edge {e}, between two steps: {err}");
-                                grazes.0 += 1;
-                            }
-                            grazes.1 += 1;
                         }
                     }
                 }
             }
         }
     }
-    println!("spatial arm: {} of {} edges re-checked meet an obstacle between two steps", grazes.0, grazes.1);
 }
 
 /// Catches: cost changes not propagated to a rewired node's descendants, wrong edge lengths kept

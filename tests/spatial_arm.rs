@@ -225,14 +225,13 @@ fn grazes(checker: &Arm, delta: f64, path: &[Vec<f64>], step: f64) -> Vec<Graze>
     out
 }
 
-/// One course run re-checked by the independent checker: the raw path's motions met between two
-/// steps at a quarter of `delta` (printed, with where, what and how deep), the smoothed path's, and
-/// the number of kept configurations. Asserted: solved, from the start to within `epsilon` of the
-/// goal; every configuration the method kept free (the product's promise for the raw path: the
-/// method tests configurations `delta` apart from a node, so the raw path may meet the wall
-/// between two of them, see below); the smoothed path free all along (at a quarter of `delta`:
-/// not a promise of the product's discrete checks, but what the runs measured show, so a graze
-/// there fails).
+/// One course run re-checked by the independent checker at a quarter of `delta`. Asserted: solved,
+/// from the start to within `epsilon` of the goal; every configuration the method kept free; the
+/// raw path and the smoothed path free all along (both certified by the product); and, on the
+/// path the trees gave before it was certified (the method tests configurations `delta` apart,
+/// so it may meet the wall between two of them), the motions the checker finds met between
+/// steps are as many as the product repaired. Returns those motions (printed, with where, what
+/// and how deep), the smoothed path's, and the numbers of motions.
 fn examine(id: &str, seed: u64) -> (Vec<Graze>, Vec<Graze>, usize, usize) {
     let sc = builtin(id).unwrap();
     let what = format!("{id} seed {seed}");
@@ -258,14 +257,29 @@ fn examine(id: &str, seed: u64) -> (Vec<Graze>, Vec<Graze>, usize, usize) {
     if let Some(e) = common::path_problem(&sc, &smoothed) {
         panic!("{what}: smoothed path, at a quarter of the resolution: {e}");
     }
-    let raw = grazes(&checker, sc.resolution, &path, sc.resolution / 4.0);
+    // The raw path is certified between its configurations (`run::certify`): the checker agrees
+    // at a quarter of the resolution. The path the trees gave, before that (its states that are
+    // tree nodes), is re-checked for the motions that were repaired.
+    if let Some(e) = common::path_problem(&sc, &path) {
+        panic!("{what}: raw path, at a quarter of the resolution: {e}");
+    }
+    let kept_states = s.problem().decode_path(&kept);
+    let trees: Vec<Vec<f64>> = path
+        .iter()
+        .filter(|q| {
+            **q == sc.start || kept_states.contains(q) || q.iter().zip(goal).all(|(a, b)| (a - b).abs() <= 1e-8)
+        })
+        .cloned()
+        .collect();
+    let raw = grazes(&checker, sc.resolution, &trees, sc.resolution / 4.0);
+    assert_eq!(r.stats.repaired, Some(raw.len() as u64), "{what}: the motions repaired are the motions that grazed");
     let smooth = grazes(&checker, sc.resolution, &smoothed, sc.resolution / 4.0);
     eprintln!(
         "{what}: {ms:.0} ms, {} nodes, {} kept configurations free; raw path: {} motions, {} met between steps; \
          smoothed: {} motions, {} met between steps",
         r.stats.nodes,
         kept.len(),
-        path.len() - 1,
+        trees.len() - 1,
         raw.len(),
         smoothed.len() - 1,
         smooth.len()
@@ -282,14 +296,13 @@ fn examine(id: &str, seed: u64) -> (Vec<Graze>, Vec<Graze>, usize, usize) {
             g.1.what.join("; ")
         );
     }
-    (raw, smooth, path.len() - 1, smoothed.len() - 1)
+    (raw, smooth, trees.len() - 1, smoothed.len() - 1)
 }
 
 /// The course's planner on both Puma scenarios, seeds 1–3 (a puma-rbo-wall run takes about 2 s,
-/// its re-check about 5 s): see [`examine`] for what is asserted. The raw paths are not held to
-/// the quarter step, and the re-check is shown not to be vacuous on them: puma-rbo-wall seed 2's
-/// raw motion 54 (27 steps long) has link4 meet the block-left between its 20th and 21st steps,
-/// about 0.5 mm deep.
+/// its re-check about 5 s): see [`examine`] for what is asserted. The re-check is shown not to be
+/// vacuous on the trees' path before certification: puma-rbo-wall seed 2's motion 54 (27 steps
+/// long) has link4 meet the block-left between its 20th and 21st steps, about 0.5 mm deep.
 #[test]
 fn course_paths_pass_the_independent_checker() {
     for id in ["puma-rbo-wall", "puma-boxes"] {
@@ -310,8 +323,9 @@ fn course_paths_pass_the_independent_checker() {
 }
 
 /// The measurement behind the test above, seeds 1–20 (run by hand:
-/// `cargo test --release --test spatial_arm -- --ignored --nocapture`): every graze printed. It
-/// printed, on puma-rbo-wall, 4 of 1,660 raw motions met between steps (seed 2 motion 54, link4
+/// `cargo test --release --test spatial_arm -- --ignored --nocapture`), with what [`examine`]
+/// asserts on every run: every graze of the trees' paths printed, each repaired. It
+/// printed, on puma-rbo-wall, 4 of 1,660 trees' path motions met between steps (seed 2 motion 54, link4
 /// and the block-left, 5.1e-4 m deep; seed 10 motion 99, link6 and the lintel, 6.0e-4 m; seed 16
 /// motion 85, link4 and the lintel, 2.4e-4 m; seed 19 motion 10, one step long, link6's bar and
 /// the lintel over 0.08–0.93 of it, 1.2e-3 m), none of the 130 smoothed motions; on puma-boxes

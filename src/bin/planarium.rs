@@ -285,6 +285,13 @@ fn plan(m: &ArgMatches) -> Result<(), String> {
         }
         if r.solved {
             println!("  path: {} states, cost {:.4}", r.path.len(), st.cost.unwrap_or(0.0));
+            if let Some(n) = st.repaired {
+                println!(
+                    "  path certified between its configurations: {n} motion{} met an obstacle between two \
+                     checked steps and took a detour",
+                    if n == 1 { "" } else { "s" }
+                );
+            }
             println!("  smoothed: {} states, cost {:.4}", r.smoothed.len(), st.smoothed_cost.unwrap_or(0.0));
             if let (Some(a), Some(b)) = (st.cost_fk, st.smoothed_cost_fk) {
                 println!("  cost in report 004's unit (fk): {a:.2}, smoothed {b:.2}");

@@ -53,6 +53,14 @@ pub trait MotionModel {
     fn has_motion_clearance(&self) -> bool {
         false
     }
+    /// Whether a walk along a line in steps of the resolution (the Robotics Library's connect,
+    /// RRT-Connect's `last-free`) tests each step's configuration alone, one query per
+    /// configuration, as the robot's course counted (the spatial arm), rather than each step's
+    /// motion. The motions between steps are then certified on the path found, after planning
+    /// (`run::certify`).
+    fn walks_by_states(&self) -> bool {
+        false
+    }
 }
 
 /// The motion model of a robot that has none of its own: discrete checks at the resolution.

@@ -7,6 +7,7 @@
 //! single-steps) or [`Session::run_to_end`] (the CLI, tests, benchmarks).
 
 pub mod bench;
+mod certify;
 pub mod course_grade;
 mod fingerprint;
 mod optimum;

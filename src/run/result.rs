@@ -43,6 +43,11 @@ pub struct Stats {
     /// The smoothed path's cost in the same unit.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub smoothed_cost_fk: Option<Real>,
+    /// For a path whose motions the planner tested only at their configurations (the spatial
+    /// arm's course connect): how many of its motions met an obstacle between two of them when it
+    /// was certified, and were replaced by a detour.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub repaired: Option<u64>,
     /// What the sampler spent.
     pub sampler: SamplerSummary,
 }

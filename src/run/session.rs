@@ -93,6 +93,8 @@ pub struct Session {
     smoothed: Vec<Vec<Real>>,
     /// Why the planner gave up, when it did.
     reason: Option<String>,
+    /// Motions of the raw path replaced by a detour when it was certified (see `certify.rs`).
+    repaired: Option<usize>,
     /// Bounded batches suspended so far.
     suspensions: u64,
     /// What the last snapshot cost a node, and how many more bounded batches take one whatever it
@@ -176,6 +178,7 @@ impl Session {
             path: Vec::new(),
             smoothed: Vec::new(),
             reason: None,
+            repaired: None,
             suspensions: 0,
             snapshot_ms_per_node: 0.0,
             risky: 0,
@@ -281,6 +284,7 @@ impl Session {
             self.smoothed.clear();
             self.smoothing_ms = 0.0;
             self.reason = None;
+            self.repaired = None;
             self.suspensions += 1;
             return self.status;
         }
@@ -408,6 +412,22 @@ impl Session {
         self.planning_checks = Some((self.problem.si.checks(), self.problem.si.free_checks()));
         let t = Instant::now();
         let mut rng = Rng::new(self.config.seed ^ SMOOTHING_STREAM);
+        // A path whose motions were tested only at their configurations is certified first.
+        let path = if self.problem.si.motion_model().walks_by_states() {
+            match super::certify::certify(&self.problem, &path, &mut rng) {
+                Ok(c) => {
+                    self.repaired = Some(c.repaired);
+                    c.path
+                }
+                Err(reason) => {
+                    self.status = Status::NoPath;
+                    self.reason = Some(reason);
+                    return;
+                }
+            }
+        } else {
+            path
+        };
         let attempts = self.config.params.real("shortcut_attempts") as usize;
         // An inspection path's detours are what it is for: only shortcuts that keep every point
         // it sees are taken.
@@ -516,6 +536,7 @@ impl Session {
             continuous_coverage: self.coverage_by(&self.path, planners::inspection::continuous_coverage),
             cost_fk: self.cost_fk(&self.path),
             smoothed_cost_fk: self.cost_fk(&self.smoothed),
+            repaired: self.repaired.map(|r| r as u64),
             sampler: SamplerSummary::of(
                 self.sampler.name(),
                 self.spec.groups.iter().any(|g| g.name == crate::sampler::SAMPLER_GROUP.name),

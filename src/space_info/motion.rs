@@ -213,10 +213,10 @@ impl SpaceInfo {
     /// walk's start or its previous step's end) and `b` one resolution on (or less, the last step).
     /// On `Err`, `scratch` holds the invalid state found (`b`, or one between).
     ///
-    /// - A robot with no motion model of its own (its motions are checked by discrete states
-    ///   alone: the spatial arm) tests `b` alone, one state check (free when `b` is), as the
-    ///   Robotics Library counts one query per configuration tested: the states between two steps
-    ///   are not checked, as they are not by the discrete motion check at the resolution either.
+    /// - A robot whose walks test states alone ([`MotionModel::walks_by_states`]: the spatial
+    ///   arm, whose course counted one query per configuration tested), or one with no motion
+    ///   model, tests `b` alone, one state check (free when `b` is): the states between two steps
+    ///   are not checked here, and the path found is certified after planning (`run::certify`).
     /// - Any other robot has the step's motion checked by the motion validator, as one motion at
     ///   the resolution (a hair of slack, `STEP_SLACK`, for the running sum's rounding), so
     ///   nothing between two steps goes unchecked: a point tests `b` (one state check) and the
@@ -225,7 +225,7 @@ impl SpaceInfo {
     ///   certify the motion, each a state check, free when positive (a robot with its own step
     ///   rule, the vehicle chain, also at the states the rule puts between).
     pub fn check_step(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Invalid> {
-        if self.validity.robot.motion().is_none() {
+        if self.validity.robot.motion().is_none_or(|m| m.walks_by_states()) {
             if self.is_valid(b) {
                 return Ok(());
             }

@@ -253,25 +253,10 @@ pub fn path_problem(sc: &Scenario, path: &[Vec<f64>]) -> Option<String> {
     path_problem_by(sc, path, motion_problem)
 }
 
-/// Whether the crate checks this robot's motions only at discrete steps of the resolution (a
-/// spatial arm: there is no exact sweep in 3-D), so that a motion it accepts may still meet an
-/// obstacle between two of its steps, which [`motion_problem`] (finer) can find.
-pub fn discrete_motions(sc: &Scenario) -> bool {
+/// Whether the scenario's robot is a spatial arm (its runs and re-checks cost seconds, not
+/// milliseconds: the walks give it fewer seeds and iterations).
+pub fn spatial(sc: &Scenario) -> bool {
     matches!(sc.robot, RobotSpec::SpatialArm(_))
-}
-
-/// What the crate promises of the motion a → b, or `None`: for a robot whose motions it checks at
-/// discrete steps ([`discrete_motions`]), each state its validator checks (`n = ⌈d/resolution⌉`
-/// steps, the ends included) is free; for the others, the whole motion ([`motion_problem`]).
-pub fn promised_motion_problem(sc: &Scenario, a: &[f64], b: &[f64]) -> Option<String> {
-    let Some(arm) = spatial::Arm::new(sc) else { return motion_problem(sc, a, b) };
-    let n = ((metric(sc, a, b) / sc.resolution).ceil() as usize).max(1);
-    (0..=n).find_map(|i| arm.problem(&spatial::lerp(a, b, i as f64 / n as f64)))
-}
-
-/// [`path_problem`] with each motion held to [`promised_motion_problem`].
-pub fn promised_path_problem(sc: &Scenario, path: &[Vec<f64>]) -> Option<String> {
-    path_problem_by(sc, path, promised_motion_problem)
 }
 
 fn path_problem_by(
@@ -377,7 +362,6 @@ pub fn self_test() {
     assert!(state_problem(&puma, &[0.0, 0.8, 0.0, 0.0, 0.0, 0.0]).is_some(), "joint limit");
     let through = motion_problem(&puma, &puma.start, &goal).expect("straight through the wall");
     assert!(through.contains("meets obstacles3d["), "{through}");
-    assert!(promised_motion_problem(&puma, &puma.start, &goal).is_some());
     let slot = planarium::scenario::builtin("slot").unwrap();
     assert!(state_problem(&slot, &[0.5, 0.5, std::f64::consts::FRAC_PI_2]).is_some());
     assert!(state_problem(&slot, &[0.5, 0.5, 0.0]).is_none());

@@ -13,7 +13,7 @@ use crate::math::Real;
 use nalgebra::{Isometry3, Matrix3};
 use parry3d_f64::math::{Pose, Rotation, Vector};
 use parry3d_f64::query::details::intersection_test_support_map_support_map_with_params;
-use parry3d_f64::query::gjk::VoronoiSimplex;
+use parry3d_f64::query::gjk::{closest_points, CsoPoint, GJKResult, VoronoiSimplex};
 use parry3d_f64::shape::SupportMap;
 use std::cell::Cell;
 
@@ -207,6 +207,58 @@ fn intersects(p1: &Pose, s1: &Solid, p2: &Pose, s2: &Solid, ca: &[Real; 3], cb: 
     hit
 }
 
+/// What a lower bound on a distance gives away to rounding: the plane test's two support points
+/// are exact, their dot products err by some ulps of a metre.
+const GAP_SLACK: Real = 1e-12;
+
+/// A lower bound on the distance between `g1` and `g2` (placed at `pos12` in `g1`'s frame), capped
+/// at `cap`: the gap between the two along a direction (how far `g2`'s nearest support point lies
+/// beyond `g1`'s farthest), which no direction overstates. First along the pair's last
+/// separating direction `warm`; when that leaves less than `cap`, along the direction between
+/// the closest points GJK finds, which gives the distance itself up to GJK's tolerance. 0 when
+/// GJK finds them meeting.
+fn gap<G1: SupportMap, G2: SupportMap>(pos12: &Pose, g1: &G1, g2: &G2, warm: Option<Vector>, cap: Real) -> Real {
+    let along = |d: Vector| d.dot(g2.support_point(pos12, -d)) - d.dot(g1.local_support_point(d)) - GAP_SLACK;
+    if let Some(d) = warm {
+        if along(d) >= cap {
+            return cap;
+        }
+    }
+    let start = warm.or_else(|| pos12.translation.try_normalize()).unwrap_or(Vector::X);
+    let mut simplex = VoronoiSimplex::new();
+    simplex.reset(CsoPoint::from_shapes(pos12, g1, g2, start));
+    match closest_points(pos12, g1, g2, Real::MAX, true, &mut simplex) {
+        GJKResult::ClosestPoints(p1, p2, _) => (p2 - p1).try_normalize().map_or(0.0, |n| along(n).clamp(0.0, cap)),
+        _ => 0.0,
+    }
+}
+
+/// [`gap`] between two placed solids, each pair of kinds by its own types; the hulls' climbs
+/// start from `warm`'s vertices, which are left as they were (so that a clearance never changes
+/// what the next validity query does).
+fn solid_gap(p1: &Pose, s1: &Solid, p2: &Pose, s2: &Solid, warm: &Warm, cap: Real) -> Real {
+    let pos12 = p1.inv_mul(p2);
+    let [mut h1, mut h2] = warm.hints;
+    let climber = |hull, hint| Climber { hull, hint: Cell::from_mut(hint) };
+    let w = warm.dir;
+    match (&s1.convex, &s2.convex) {
+        (Convex::Hull(a), Convex::Hull(b)) => gap(&pos12, &climber(a, &mut h1), &climber(b, &mut h2), w, cap),
+        (Convex::Hull(a), Convex::Cuboid(b)) => gap(&pos12, &climber(a, &mut h1), b, w, cap),
+        (Convex::Cuboid(a), Convex::Hull(b)) => gap(&pos12, a, &climber(b, &mut h2), w, cap),
+        (Convex::Cuboid(a), Convex::Cuboid(b)) => gap(&pos12, a, b, w, cap),
+    }
+}
+
+/// The distance between two boxes (0 when they meet): never more than between what they hold.
+fn box_gap(a: &Box3, b: &Box3) -> Real {
+    let mut sq = 0.0;
+    for k in 0..3 {
+        let g = (a.lo[k] - b.hi[k]).max(b.lo[k] - a.hi[k]).max(0.0);
+        sq += g * g;
+    }
+    sq.sqrt()
+}
+
 impl Body {
     /// Place every part at state `q` (frames, poses, world boxes) into `s`.
     pub fn place(&self, chain: &Chain, q: &[Real], s: &mut Scratch) {
@@ -270,5 +322,33 @@ impl Body {
             }
         }
         None
+    }
+
+    /// A lower bound on the arm's clearance at the state last placed in `s`, found free by
+    /// [`first_hit`](Body::first_hit), capped at `cap`: the least gap between a part that may
+    /// touch the scene and an obstacle, and half the least gap between two parts of a tested
+    /// link pair (both may move, each at most as far as any point of the arm). Pairs whose
+    /// boxes lie `cap` apart are not looked at further.
+    pub fn clearance(&self, scene: &[Solid], s: &Scratch, cap: Real) -> Real {
+        let (m, n) = (scene.len(), self.scene_parts.len());
+        let mut least = cap;
+        for (k, &i) in self.scene_parts.iter().enumerate() {
+            for (j, o) in scene.iter().enumerate() {
+                if box_gap(&s.boxes[i], &o.bounds) >= least {
+                    continue;
+                }
+                let warm = s.warm.get(k * m + j).copied().unwrap_or_default();
+                least = least.min(solid_gap(&s.poses[i], &self.parts[i].solid, &o.placement, o, &warm, least));
+            }
+        }
+        for (k, &(a, b)) in self.pairs.iter().enumerate() {
+            if box_gap(&s.boxes[a], &s.boxes[b]) >= 2.0 * least {
+                continue;
+            }
+            let warm = s.warm.get(m * n + k).copied().unwrap_or_default();
+            let (pa, pb) = (&self.parts[a].solid, &self.parts[b].solid);
+            least = least.min(0.5 * solid_gap(&s.poses[a], pa, &s.poses[b], pb, &warm, 2.0 * least));
+        }
+        least
     }
 }

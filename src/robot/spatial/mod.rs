@@ -6,8 +6,10 @@
 //! Euclidean over them, the course's. Valid when every joint is within its limits, no link that
 //! may touch the scene meets a 3-D obstacle, and no tested pair of links meets (the scenario lists
 //! the pairs never tested, and the links exempt from the scene). Obstacles are closed: touching
-//! is a collision, up to GJK's tolerance. Motions are checked at the scenario's resolution
-//! (discrete checks: the course's `delta` steps), there being no exact sweep in 3-D here.
+//! is a collision, up to GJK's tolerance. Motions are certified between states checked at the
+//! scenario's resolution: a lower bound on the clearance against a bound on how far any point of
+//! the arm moves ([`MotionModel`]); the course's connect tests its `delta` steps' configurations
+//! alone, and its path is certified after planning (`run::certify`).
 //!
 //! The kinematics ([`kinematics`]) is nalgebra's; the collision query ([`collide`]) parry3d's,
 //! with the same bits natively, in Node and in the browser.
@@ -15,7 +17,7 @@
 mod collide;
 mod kinematics;
 
-use super::{Robot, Spatial, Verdict};
+use super::{MotionModel, Robot, Spatial, Verdict};
 use crate::geometry::solid::Solid;
 use crate::geometry::Workspace;
 use crate::math::{Real, Vec2};
@@ -46,6 +48,9 @@ pub struct SpatialArmRobot {
     limits: Vec<[Real; 2]>,
     body: Body,
     tool: [Real; 3],
+    /// Per joint, a bound on how far any point of the arm lies from the joint's axis (at any
+    /// state): how fast it can move, in metres per radian of that joint.
+    reach: Vec<Real>,
     scratch: RefCell<Scratch>,
 }
 
@@ -85,7 +90,9 @@ impl SpatialArmRobot {
                 }
             }
         }
+        let reach = reach(joints, &link_parts, &parts);
         Ok(SpatialArmRobot {
+            reach,
             chain: Chain::new(base, joints),
             limits: joints.iter().map(|j| j.limits).collect(),
             body: Body {
@@ -140,6 +147,61 @@ impl SpatialArmRobot {
     }
 }
 
+/// Per joint `j`, a bound on the distance from joint `j`'s axis to any point of the links it
+/// moves, whatever the state: a point of link `k ≥ j` lies within the sum of the DH steps'
+/// lengths `√(a² + d²)` from joint `j` to link `k`, plus its part's farthest corner from link
+/// `k`'s origin (by the triangle inequality along the chain).
+fn reach(joints: &[crate::scenario::DhJoint], link_parts: &[std::ops::Range<usize>], parts: &[Part]) -> Vec<Real> {
+    let radius = |k: usize| {
+        link_parts.get(k).map_or(0.0, |r| {
+            parts[r.clone()].iter().fold(0.0, |m: Real, p| {
+                let (c, h) = p.solid.bounds.centre_half();
+                let far = (0..3).map(|i| (c[i].abs() + h[i]).powi(2)).sum::<Real>().sqrt();
+                m.max(far)
+            })
+        })
+    };
+    (0..joints.len())
+        .map(|j| {
+            // Joint j (0-based) turns about link j's z axis and moves links j + 1 ...
+            let mut along = 0.0;
+            let mut most: Real = 0.0;
+            for k in j + 1..=joints.len() {
+                let row = &joints[k - 1];
+                along += (row.a * row.a + row.d * row.d).sqrt();
+                most = most.max(along + radius(k));
+            }
+            most
+        })
+        .collect()
+}
+
+impl MotionModel for SpatialArmRobot {
+    /// The least gap between the arm and the scene, or half the least between two tested links,
+    /// capped at `cap`; 0 when a joint is outside its limits or the arm collides (by the same
+    /// query as validity). A lower bound: each gap is measured along a separating direction.
+    fn clearance(&self, ws: &Workspace, q: &[Real], cap: Real) -> Option<Real> {
+        if !self.within_limits(q) {
+            return Some(0.0);
+        }
+        let mut s = self.scratch.borrow_mut();
+        self.body.place(&self.chain, q, &mut s);
+        if self.body.first_hit(&ws.solids, &mut s).is_some() {
+            return Some(0.0);
+        }
+        Some(self.body.clearance(&ws.solids, &s, cap))
+    }
+    /// `Σ_j reach_j · |b_j − a_j|`: along a straight motion in joint space no point of the arm
+    /// travels farther (its speed is at most the sum of each joint's rate times the point's
+    /// distance from that joint's axis).
+    fn displacement_bound(&self, a: &[Real], b: &[Real]) -> Option<Real> {
+        Some(self.reach.iter().zip(a.iter().zip(b)).map(|(r, (x, y))| r * (y - x).abs()).sum())
+    }
+    fn walks_by_states(&self) -> bool {
+        true
+    }
+}
+
 impl Robot for SpatialArmRobot {
     fn caps(&self) -> &'static RobotKind {
         &KIND
@@ -179,6 +241,9 @@ impl Robot for SpatialArmRobot {
         vec![self.skeleton_points(q).iter().map(|p| Vec2::new(p[0], p[1])).collect()]
     }
     fn spatial(&self) -> Option<&dyn Spatial> {
+        Some(self)
+    }
+    fn motion(&self) -> Option<&dyn MotionModel> {
         Some(self)
     }
 }

@@ -217,3 +217,62 @@ fn a_run_plans_around_the_wall() {
         }
     }
 }
+
+#[test]
+fn clearance_is_the_gap_to_the_wall() {
+    // At q = 0 the hand's far face is at x = 1.5: the wall's face 0.5 beyond it.
+    let p = problem(&scenario(2.0, json!({})));
+    let arm = SpatialArmRobot::from_spec(&p.scenario.robot).unwrap();
+    let ws = p.si.workspace();
+    let c = arm.clearance(ws, &[0.0, 0.0], 1.0).unwrap();
+    assert!((c - 0.5).abs() < 1e-9, "{c}");
+    assert_eq!(arm.clearance(ws, &[0.0, 0.0], 0.1), Some(0.1), "capped");
+    // Touching (and past the limits) is no clearance at all.
+    assert_eq!(arm.clearance(ws, &[3.5, 0.0], 1.0), Some(0.0));
+    let p = problem(&scenario(1.5, json!({})));
+    assert_eq!(arm.clearance(p.si.workspace(), &[0.0, 0.0], 1.0), Some(0.0));
+}
+
+/// The certificate the motion check rests on, on the Puma and its course scene: every state whose
+/// arm moved less than a state's clearance from it (by the displacement bound) is free, and the
+/// bound is never below how far the tool centre point really travels.
+#[test]
+fn puma_clearance_and_displacement_certify_motions() {
+    let p = Problem::from_scenario(&crate::scenario::builtin("puma-rbo-wall").unwrap()).unwrap();
+    let arm = SpatialArmRobot::from_spec(&p.scenario.robot).unwrap();
+    let ws = p.si.workspace();
+    let mut rng = crate::rng::Rng::new(7);
+    let lims = arm.limits.clone();
+    let draw = |rng: &mut crate::rng::Rng| -> Vec<f64> {
+        lims.iter().map(|[lo, hi]| lo + (hi - lo) * rng.uniform01()).collect()
+    };
+    let (mut certified, mut near) = (0, 0);
+    for _ in 0..300 {
+        let a = draw(&mut rng);
+        let c = arm.clearance(ws, &a, 0.2).unwrap();
+        assert_eq!(c > 0.0, arm.is_valid(ws, &a));
+        if c == 0.0 {
+            continue;
+        }
+        near += (c < 0.2) as usize;
+        let b = draw(&mut rng);
+        // The furthest fraction towards b the bound certifies, and states up to it.
+        let full = arm.displacement_bound(&a, &b).unwrap();
+        let reach = (c / full).min(1.0);
+        let mut last = arm.tool_point(&a);
+        let mut travelled = 0.0;
+        for i in 1..=40 {
+            let t = reach * i as f64 / 40.0;
+            let q: Vec<f64> = a.iter().zip(&b).map(|(x, y)| x + t * (y - x)).collect();
+            let tool = arm.tool_point(&q);
+            travelled += (0..3).map(|k| (tool[k] - last[k]).powi(2)).sum::<f64>().sqrt();
+            last = tool;
+            assert!(travelled <= full * t + 1e-12, "the tool travelled {travelled} > bound {}", full * t);
+            if t < reach {
+                certified += 1;
+                assert!(arm.is_valid(ws, &q), "a state within clearance {c} of a free state collides: {q:?}");
+            }
+        }
+    }
+    assert!(certified > 1000 && near > 20, "only {certified} states certified, {near} near the scene");
+}
