@@ -207,6 +207,14 @@ fn intersects(p1: &Pose, s1: &Solid, p2: &Pose, s2: &Solid, ca: &[Real; 3], cb: 
     hit
 }
 
+impl Scratch {
+    /// Each part's pose at the state last placed (tests: what the 3-D view's frames must agree with).
+    #[cfg(test)]
+    pub fn poses(&self) -> &[Pose] {
+        &self.poses
+    }
+}
+
 impl Body {
     /// Place every part at state `q` (frames, poses, world boxes) into `s`.
     pub fn place(&self, chain: &Chain, q: &[Real], s: &mut Scratch) {
