@@ -156,12 +156,45 @@ pub struct EventLog {
     data: Vec<f64>,
     /// Whether events are recorded.
     pub enabled: bool,
+    /// Records drained so far (the node log's record numbers count from the run's first).
+    drained: usize,
+    /// The node log: off (`None`), or every `NodeAdded` record's full states, for a view that needs
+    /// more than the records carry (a spatial arm's tool in 3-D, `Session::drain_nodes`).
+    nodes: Option<NodeLog>,
+}
+
+/// Every `NodeAdded` record's states: `[record, tree, id, parent, q…, parent's q…]` per node, where
+/// `record` numbers the record from the run's first. Drawing only: nothing a planner reads.
+#[derive(Clone, Debug, Default)]
+pub struct NodeLog {
+    /// Numbers per state.
+    pub dims: usize,
+    /// The entries, flat.
+    pub data: Vec<f64>,
+}
+
+impl NodeLog {
+    /// Numbers per entry.
+    pub fn stride(&self) -> usize {
+        4 + 2 * self.dims
+    }
 }
 
 impl EventLog {
     /// A log that records (or not).
     pub fn new(enabled: bool) -> Self {
-        EventLog { data: Vec::new(), enabled }
+        EventLog { data: Vec::new(), enabled, drained: 0, nodes: None }
+    }
+    /// Keep the node log of states of `dims` numbers from now on (`0`: not).
+    pub fn log_nodes(&mut self, dims: usize) {
+        self.nodes = (dims > 0).then(|| NodeLog { dims, data: Vec::new() });
+    }
+    /// Take the node log's entries so far (empty when it is off).
+    pub fn drain_nodes(&mut self) -> NodeLog {
+        match &mut self.nodes {
+            Some(n) => NodeLog { dims: n.dims, data: std::mem::take(&mut n.data) },
+            None => NodeLog::default(),
+        }
     }
     /// Record one event: ids, workspace points of the state and its parent, and the first two
     /// coordinates of each state.
@@ -179,6 +212,14 @@ impl EventLog {
         pq: &[Real],
     ) {
         if self.enabled {
+            if let Some(n) = &mut self.nodes {
+                if kind == EventKind::NodeAdded && q.len() == n.dims && pq.len() == n.dims {
+                    let record = (self.drained + self.data.len() / STRIDE) as f64;
+                    n.data.extend_from_slice(&[record, tree as f64, id as f64, parent as f64]);
+                    n.data.extend_from_slice(q);
+                    n.data.extend_from_slice(pq);
+                }
+            }
             let c = |s: &[Real], i: usize| s.get(i).copied().unwrap_or(0.0);
             self.data.extend_from_slice(&[
                 kind as u8 as f64,
@@ -243,9 +284,20 @@ impl EventLog {
     /// Forget the records after the first `events` (a suspended batch's, see [`crate::journal`]).
     pub fn truncate(&mut self, events: usize) {
         self.data.truncate(events * STRIDE);
+        // The node log's entries of the records dropped (they are the last ones).
+        let end = (self.drained + events) as f64;
+        if let Some(n) = &mut self.nodes {
+            let stride = n.stride();
+            let mut keep = n.data.len() / stride;
+            while keep > 0 && n.data[(keep - 1) * stride] >= end {
+                keep -= 1;
+            }
+            n.data.truncate(keep * stride);
+        }
     }
     /// Take every waiting record, leaving the log empty.
     pub fn drain(&mut self) -> Vec<f64> {
+        self.drained += self.data.len() / STRIDE;
         std::mem::take(&mut self.data)
     }
     /// The waiting records.

@@ -165,6 +165,31 @@ impl Problem {
             .collect()
     }
 
+    /// The trees as a spatial arm's tool sweeps them, from a run's node log
+    /// ([`crate::run::Session::drain_nodes`]): per node, flat, `[tree, id, n, x, y, z, …]`: the
+    /// tool centre point at `n` steps of the motion from its parent (as [`tool_steps`](Problem::tool_steps),
+    /// at most [`limits::MAX_TOOL_POINTS_PER_EDGE`] of them, evenly spread, both ends kept), the
+    /// node's own last; a root (no parent) is its one point. Empty for other robots.
+    pub fn tool_tree(&self, log: &crate::events::NodeLog) -> Vec<Real> {
+        let Some(sp) = self.robot.spatial() else { return Vec::new() };
+        let (dims, stride) = (log.dims, log.stride());
+        let most = limits::MAX_TOOL_POINTS_PER_EDGE;
+        let mut out = Vec::new();
+        for e in log.data.chunks_exact(stride) {
+            let (q, pq) = (&e[4..4 + dims], &e[4 + dims..]);
+            let pts = if e[3] < 0.0 { vec![sp.tool_point(q)] } else { self.tool_steps(pq, q) };
+            let pts = if pts.is_empty() { vec![sp.tool_point(q)] } else { pts };
+            let n = pts.len().min(most);
+            out.extend_from_slice(&[e[1], e[2], n as Real]);
+            for k in 0..n {
+                // k·(len − 1)/(n − 1), rounded down: 0 first, the last point last.
+                let i = if n == 1 { pts.len() - 1 } else { k * (pts.len() - 1) / (n - 1) };
+                out.extend_from_slice(&pts[i]);
+            }
+        }
+        out
+    }
+
     /// A planning path as scenario states.
     pub fn decode_path(&self, path: &[Vec<Real>]) -> Vec<Vec<Real>> {
         path.iter().map(|q| self.robot.decode(q)).collect()

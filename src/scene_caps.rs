@@ -21,6 +21,9 @@ pub struct SceneCaps {
     pub solution_file: bool,
     /// What of a start or goal may be dragged.
     pub pose: Pose,
+    /// A 3-D view: the robot has the [`Spatial`](crate::robot::Spatial) capability (its parts'
+    /// meshes and link frames, `wasm::Scene::spatial_json` and `link_frames`).
+    pub view3d: bool,
 }
 
 impl SceneCaps {
@@ -33,13 +36,14 @@ impl SceneCaps {
             optimum: p.goal.is_some() && robot.body && p.scenario.obstacles.len() <= optimum_max_obstacles,
             solution_file: robot.solution_file,
             pose: robot.pose,
+            view3d: p.robot.spatial().is_some(),
         }
     }
-    /// As JSON `{robot: {…the kind's record}, cspace, optimum, solution_file, pose}`.
+    /// As JSON `{robot: {…the kind's record}, cspace, optimum, solution_file, pose, view3d}`.
     pub fn to_json(&self) -> serde_json::Value {
         serde_json::json!({
             "robot": self.robot.to_json(), "cspace": self.cspace, "optimum": self.optimum,
-            "solution_file": self.solution_file, "pose": self.pose.as_str(),
+            "solution_file": self.solution_file, "pose": self.pose.as_str(), "view3d": self.view3d,
         })
     }
 }
@@ -68,6 +72,7 @@ mod tests {
                 "{id}"
             );
             assert_eq!(c.solution_file, kind == "asv", "{id}");
+            assert_eq!(c.view3d, kind == "spatial-arm", "{id}");
         }
         assert!(!caps("narrow", 0).optimum, "the obstacle bound holds");
         assert!(caps("arm-2", 500).cspace && !caps("arm-3", 500).cspace);

@@ -294,6 +294,51 @@ impl Scene {
             _ => Vec::new(),
         }
     }
+    /// For a robot in 3-D, what a 3-D view draws, once, as JSON: `{links, tool, parts: [{link,
+    /// name, vertices, triangles}], obstacles: [{name, vertices, triangles}]}`: each part's triangle
+    /// mesh in its link's frame (placed by [`link_frames`](Scene::link_frames)), the scene's 3-D
+    /// obstacles' in the world, flat (`vertices` x, y, z…; `triangles` indices, counter-clockwise
+    /// seen from outside), the tool centre point in the last link's frame; `null` for other robots.
+    pub fn spatial_json(&self) -> String {
+        let Some(sp) = self.inner.robot.spatial() else { return "null".into() };
+        let parts: Vec<serde_json::Value> = sp
+            .part_meshes()
+            .iter()
+            .map(|p| {
+                let mut m = p.mesh.to_json();
+                m["link"] = p.link.into();
+                m["name"] = p.name.clone().into();
+                m
+            })
+            .collect();
+        let obstacles: Vec<serde_json::Value> = self
+            .inner
+            .si
+            .workspace()
+            .solids
+            .iter()
+            .map(|s| {
+                let mut m = crate::geometry::mesh::Mesh::of_solid(s).to_json();
+                m["name"] = s.name.clone().into();
+                m
+            })
+            .collect();
+        serde_json::json!({
+            "links": self.inner.robot.external_dims() + 1,
+            "tool": sp.tool(),
+            "parts": parts,
+            "obstacles": obstacles,
+        })
+        .to_string()
+    }
+    /// For a robot in 3-D: every link's frame at scenario state `q` (link 0, the base, first), 16
+    /// numbers each, a 4×4 matrix column-major; empty for other robots or a `q` that is not a state.
+    pub fn link_frames(&self, q: &[f64]) -> Vec<f64> {
+        match (self.inner.robot.spatial(), self.state(q)) {
+            (Some(sp), Some(q)) => sp.link_frames(&q).concat(),
+            _ => Vec::new(),
+        }
+    }
     /// What scenario state `q` collides with, in words ("link6's bar meets the lintel"), or ""
     /// when it is free or the robot cannot say. Not counted.
     pub fn collision(&self, q: &[f64]) -> String {
@@ -366,6 +411,17 @@ impl Run {
     /// Take the events recorded since the last call (flat records, see `www/run/events.js`).
     pub fn drain_events(&mut self) -> Vec<f64> {
         self.inner.drain_events()
+    }
+    /// Keep the added nodes' states from now on, or not, for [`drain_tool_tree`](Run::drain_tool_tree)
+    /// (a 3-D view's trees). Drawing only: the run is the same.
+    pub fn log_nodes(&mut self, on: bool) {
+        self.inner.log_nodes(on)
+    }
+    /// For a robot in 3-D, the nodes added since the last call as the tool sweeps their edges:
+    /// flat `[tree, id, n, x, y, z…]` per node (`Problem::tool_tree`); empty for other robots.
+    pub fn drain_tool_tree(&mut self) -> Vec<f64> {
+        let log = self.inner.drain_nodes();
+        self.inner.problem().tool_tree(&log)
     }
     /// After the run, another query on its roadmap (PRM, PRM*, Lazy PRM): `start` and `goal` are
     /// scenario states. JSON `{path, points, cost}` (`path` empty when the roadmap does not join

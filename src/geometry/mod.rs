@@ -6,7 +6,8 @@
 //! [`circle`] (segment/circle). All obstacles are closed sets: touching is a collision.
 //! [`convex`] holds the floating-point constructions on convex polygons (clipping, centroid,
 //! hexagons) that the hexagonal decomposition builds its cells with. [`solid`] holds the 3-D
-//! convex solids (parry3d shapes) of a spatial arm's scene and links.
+//! convex solids (parry3d shapes) of a spatial arm's scene and links, [`mesh`] their triangle meshes
+//! for the page's 3-D view.
 
 mod aabb;
 pub mod circle;
@@ -14,6 +15,7 @@ pub mod convex;
 pub mod exact;
 mod grid;
 pub mod hull;
+pub mod mesh;
 pub mod polygon;
 pub mod segment;
 mod shape;

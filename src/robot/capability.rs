@@ -125,4 +125,23 @@ pub trait Spatial {
     fn skeleton(&self, q: &[Real]) -> Vec<[Real; 3]>;
     /// The tool centre point at `q`, in the world.
     fn tool_point(&self, q: &[Real]) -> [Real; 3];
+    /// The tool centre point in the last link's frame.
+    fn tool(&self) -> [Real; 3];
+    /// Every part the arm collides as (its links' hulls and boxes) as a triangle mesh in its
+    /// link's frame: what a 3-D view draws, placed by [`link_frames`](Spatial::link_frames).
+    fn part_meshes(&self) -> Vec<PartMesh>;
+    /// Every link's frame in the world at `q` (link 0, the base, first; `joints + 1` of them),
+    /// each a 4×4 homogeneous matrix, column-major (WebGL's order).
+    fn link_frames(&self, q: &[Real]) -> Vec<[Real; 16]>;
+}
+
+/// One part of a spatial arm, for drawing.
+#[derive(Clone, Debug)]
+pub struct PartMesh {
+    /// The link it is fixed to (0: the base).
+    pub link: usize,
+    /// Its name ("link6's bar").
+    pub name: String,
+    /// Its mesh, in the link's frame.
+    pub mesh: crate::geometry::mesh::Mesh,
 }

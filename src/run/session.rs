@@ -517,6 +517,17 @@ impl Session {
         self.events.drain()
     }
 
+    /// Keep every added node's full state and its parent's from now on, or not (a 3-D view draws
+    /// the tree at the spatial arm's tool: [`Problem::tool_tree`]). Drawing only: the run is the same.
+    pub fn log_nodes(&mut self, on: bool) {
+        self.events.log_nodes(if on { self.problem.si.dims() } else { 0 });
+    }
+
+    /// Take the node log since the last call (see [`log_nodes`](Session::log_nodes)).
+    pub fn drain_nodes(&mut self) -> crate::events::NodeLog {
+        self.events.drain_nodes()
+    }
+
     /// Statistics so far.
     pub fn stats(&self) -> Stats {
         let si = &self.problem.si;

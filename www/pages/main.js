@@ -14,6 +14,7 @@ import { BUTTONS } from '../run/controller.js';
 import { View } from '../draw/view.js';
 import { PALETTE } from '../draw/palette.js';
 import { CSpaceView } from '../draw/cspace.js';
+import { View3dSlot } from '../draw/view3d-slot.js';
 import { Editor } from '../ui/editor.js';
 import { ObstacleEditor } from '../ui/obstacle-editor.js';
 import { wireExports } from '../ui/exports.js';
@@ -50,7 +51,7 @@ import { dragsPosition } from '../draw/capabilities.js';
 const $ = (id) => document.getElementById(id);
 const ui = {
   scenario: $('scenario'), file: $('file'), error: $('error'), errorText: $('error-text'), errorClose: $('error-close'),
-  stage: $('stage'), canvas: $('canvas'), cspace: $('cspace'), course: $('scenario-course'), name: $('scenario-name'),
+  stage: $('stage'), canvas: $('canvas'), cspace: $('cspace'), view3d: $('view3d'), course: $('scenario-course'), name: $('scenario-name'),
   notes: $('scenario-notes'), legend: $('legend'), endpoints: $('endpoints'), download: $('download-solution'),
   panel: $('panel'), stepSize: $('step-size'), speed: $('speed'), speedOut: $('speed-out'),
   animSpeed: $('anim-speed'), animOut: $('anim-speed-out'), animRaw: $('anim-raw'), overlays: $('overlays'),
@@ -65,6 +66,9 @@ const clearError = () => { ui.defaultScenario.hidden = true; errors.clear(); };
 const playback = new Playback();
 const view = new View(ui.canvas, playback.store, playback.model);
 const cspace = new CSpaceView(ui.cspace, playback.store, PALETTE, playback.model);
+// A robot in 3-D (the core's caps.view3d) gets a 3-D view beside the top view; www/draw3d/ is
+// imported only then.
+const view3d = new View3dSlot(ui.view3d, playback.store, PALETTE, () => syncStage());
 const chart = new Chart(ui.chart, playback.model, PALETTE);
 const updateStatsList = createStats(ui.stats);
 const explain = new ExplainPanel($('explain'), playback.store, view);
@@ -81,7 +85,7 @@ let optimum = null;      // its shortest path's cost when that is the robot's op
 
 const player = new Player({
   playback,
-  views: [view, cspace, explain],
+  views: [view, cspace, explain, view3d],
   chart,
   rate: () => speedRate(ui.speed),
   fps: () => animFps(ui.animSpeed),
@@ -127,6 +131,7 @@ const player = new Player({
     frame() {
       if (!chart.kind && playback.model.costs.length) syncChart(); // a planner that reports costs
       cspace.render(view.robotState);
+      view3d.render(performance.now(), player.fps());
       chart.render(lane.iterationNow);
       updateRunStatus();
       // the stats say what is drawn: refreshed when the playback revealed more
@@ -288,7 +293,7 @@ const markCustom = (label) => markCustomScenario(ui.scenario, label);
 // Display
 
 /** @param {import('../run/messages.js').LoadedReply} msg */
-function showScenario({ scenario, start, goal, space, cspace: grid, optimum: best, caps }) {
+function showScenario({ scenario, start, goal, space, cspace: grid, optimum: best, caps, spatial }) {
   loaded = scenario;
   loadedCaps = caps || null;
   optimum = best && best.exact && Number.isFinite(best.cost) ? best.cost : null;
@@ -300,8 +305,14 @@ function showScenario({ scenario, start, goal, space, cspace: grid, optimum: bes
   editor.setScenario(scenario, space, src.edit);
   obstacleEditor.loaded(src.edit);
   ui.cspace.hidden = !cspace.active;
-  ui.stage.classList.toggle('dual', cspace.active);
+  view3d.setScene(spatial || null, !!caps?.view3d);
   buildLegend();
+  syncStage();
+}
+
+/** The stage holds the top view and, beside it, the c-space or the 3-D view when there is one. */
+function syncStage() {
+  ui.stage.classList.toggle('dual', cspace.active || view3d.active);
   onResize();
 }
 
@@ -320,8 +331,8 @@ function showInvalid(error, edit) {
     editor.setScenario(null, null, false);
     obstacleEditor.loaded(false);
     ui.cspace.hidden = true;
-    ui.stage.classList.remove('dual');
-    onResize();
+    view3d.setScene(null, false);
+    syncStage();
   }
   controller.fire('invalid');
 }
@@ -491,7 +502,11 @@ createTrials({
 linkViews({ view, cspace, canvas: ui.canvas, cspaceCanvas: ui.cspace, stage: ui.stage, model: playback.model });
 
 // Size: the views follow the stage (and the device pixel ratio).
-const onResize = fitViews(ui.stage, view, cspace);
+// The second view is the c-space's or the 3-D view's (never both: a spatial arm has no c-space view).
+const onResize = fitViews(ui.stage, view, {
+  get active() { return cspace.active || view3d.active; },
+  resize(w, h, dpr) { if (cspace.active) cspace.resize(w, h, dpr); if (view3d.active) view3d.resize(w, h, dpr); },
+});
 
 Object.defineProperty(window, 'planarium', {
   value: Object.freeze({
@@ -516,6 +531,17 @@ Object.defineProperty(window, 'planarium', {
     query: () => (view.query ? structuredClone(view.query) : null),
     /** Css px within the workspace canvas of the world point (x, y), or null. */
     toCanvas: (x, y) => (view.layout ? [view.layout.sx(x) / view.layout.dpr, view.layout.sy(y) / view.layout.dpr] : null),
+    /** The 3-D view, for tests: whether it is drawn, css px of a world point with its camera, pixels, colour counts. */
+    view3d: Object.freeze({
+      ready: () => !!(view3d.active && view3d.view?.matrices),
+      error: () => view3d.error,
+      toCanvas: (p) => view3d.view?.toCanvas(p) ?? null,
+      pixels: (x, y, r) => (view3d.view ? [...view3d.view.pixels(x, y, r)] : null),
+      countColours: (colours, tol) => view3d.view?.countColours(colours, tol) ?? null,
+      viewProj: () => (view3d.view?.matrices ? [...view3d.view.matrices.viewProj] : null),
+      /** Resolves with the requestAnimationFrame deltas (ms) of the next `n` frames the view draws while it turns. */
+      orbitFrameTimes: (n) => view3d.view?.orbitFrameTimes(n) ?? Promise.resolve([]),
+    }),
   }),
   writable: false,
   configurable: false,

@@ -98,6 +98,7 @@ export class Lane {
   onEvents(msg) {
     if (this.done) return; // one run, one result: nothing after the result
     this.playback.push(msg.data);
+    for (const v of this.views) v.takeEvents?.(msg); // what a view needs beside the records (the 3-D view's tool curves)
     this.stats = msg.stats;
     if (msg.tries) this.tries = msg.tries;
     if (msg.status !== 'running') this.finalStatus = msg.status;
@@ -113,7 +114,7 @@ export class Lane {
     if (this.done) return;
     this.result = msg.result;
     this.done = true;
-    for (const v of this.views) v.setResult(msg.result, msg.frames, msg.rawFrames);
+    for (const v of this.views) v.setResult(msg.result, msg.frames, msg.rawFrames, msg.path3d);
     this.hooks.revealed?.();
     this.hooks.changed?.();
   }

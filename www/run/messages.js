@@ -54,7 +54,7 @@
 /**
  * What the core decided for a loaded scene (src/scene_caps.rs): the robot kind's record, whether the
  * page gets a configuration-space view, the optimum, a solution file, and which pose can be dragged.
- * @typedef {{robot: any, cspace: boolean, optimum: boolean, solution_file: boolean, pose: string}} SceneCaps
+ * @typedef {{robot: any, cspace: boolean, optimum: boolean, solution_file: boolean, pose: string, view3d?: boolean}} SceneCaps
  */
 
 /**
@@ -64,7 +64,28 @@
  * from the lowest second coordinate, over the space's two dimensions); for a point or rigid robot
  * the visibility graph's optimum; what the core decided for it (`caps`, the core's `scene_caps`).
  * @typedef {{type: 'loaded', scenario: any, start: Float64Array, goal: Float64Array, space: SpaceDim[],
- *   cspace?: {n: number, grid: Uint8Array, dims: SpaceDim[]}, optimum?: Optimum, caps?: SceneCaps}} LoadedReply
+ *   cspace?: {n: number, grid: Uint8Array, dims: SpaceDim[]}, optimum?: Optimum, caps?: SceneCaps,
+ *   spatial?: Spatial}} LoadedReply
+ */
+
+/**
+ * A part or an obstacle as a triangle mesh (flat: `vertices` x, y, z…, `triangles` i, j, k…).
+ * @typedef {{vertices: number[], triangles: number[], name: string, link?: number}} Mesh3d
+ */
+
+/**
+ * What the 3-D view draws of a scene (`caps.view3d`): the core's `Scene.spatial_json` (links, the
+ * tool centre point in the last link's frame, the parts' meshes in their links' frames, the 3-D
+ * obstacles' in the world) and the link frames at start and goal (`Scene.link_frames`, 16 numbers
+ * a link, column-major; the goal's empty without a goal).
+ * @typedef {{links: number, tool: number[], parts: Mesh3d[], obstacles: Mesh3d[], start: Float64Array,
+ *   goal: Float64Array}} Spatial
+ */
+
+/**
+ * A solved path for the 3-D view: the tool's curve through every animation frame (x, y, z…) and
+ * the link frames of `count` poses (`links` × 16 numbers each).
+ * @typedef {{tool: Float64Array, frames: Float64Array, count: number, links: number}} Path3d
  */
 
 /**
@@ -77,8 +98,9 @@
  * @typedef {{type: 'ready', builtins: any[], planners: any, eventKinds: Record<string, number>, robotKinds?: any[]}
  *   | LoadedReply
  *   | {type: 'invalid', error: ScenarioError}
- *   | {type: 'events', data: Float64Array, stats: RunStats, status: string, tries?: {seen: number, sent: number}}
- *   | {type: 'result', result: RunResult, frames: Float64Array, rawFrames: Float64Array}
+ *   | {type: 'events', data: Float64Array, stats: RunStats, status: string, tries?: {seen: number, sent: number},
+ *       tree3d?: Float64Array}
+ *   | {type: 'result', result: RunResult, frames: Float64Array, rawFrames: Float64Array, path3d?: Path3d}
  *   | {type: 'status', status: string}
  *   | {type: 'ack', ack: number}
  *   | {type: 'asv-solution', text: string}

@@ -30,21 +30,27 @@
 // Messages out {type, run, ...}:
 //   ready     {builtins, planners, eventKinds, robotKinds}   planners: the registry (each with `caps`,
 //                                            its capabilities); robotKinds: the robot kinds' records
-//   loaded    {scenario, start, goal, space, caps, cspace?, optimum?}  normalised scenario; start/goal
+//   loaded    {scenario, start, goal, space, caps, cspace?, optimum?, spatial?}  normalised scenario; start/goal
 //                                            outlines (flat Float64Arrays); space: the planning space [{lo, hi, wraps}];
 //                                            caps: what the core decided (scene_caps: {robot, cspace,
 //                                            optimum, solution_file, pose});
 //                                            cspace {n, grid: Uint8Array (transferred), dims} for a
 //                                            2-D arm: n×n validity, rows from the lowest 2nd coordinate;
 //                                            optimum {cost, exact} | {error}: the visibility graph's,
-//                                            when caps.optimum
+//                                            when caps.optimum; spatial {links, tool, parts, obstacles,
+//                                            start, goal} when caps.view3d: the 3-D view's meshes
+//                                            (Scene.spatial_json) and the start's and goal's link frames
 //   invalid   {error: {path, message, line, column, text}}
-//   events    {data: Float64Array, stats, status, tries: {seen, sent}}   transferred, once per batch;
+//   events    {data: Float64Array, stats, status, tries: {seen, sent}, tree3d?}   transferred, once per batch;
+//                                            tree3d (caps.view3d): the batch's nodes as the tool sweeps
+//                                            their edges (Run.drain_tool_tree: [tree, id, n, x, y, z…]);
 //                                            the sampler's raw tries (SAMPLE_TRY) are all sent up to
 //                                            TRY_KEEP a run, then thinned (one in 2, 4, 8… as their
 //                                            number doubles), so a validity-checking sampler's
 //                                            millions of draws cannot swamp the page
-//   result    {result, frames: Float64Array, rawFrames: Float64Array}
+//   result    {result, frames: Float64Array, rawFrames: Float64Array, path3d?}   path3d (caps.view3d,
+//                                            solved): {tool, frames, count, links}: the tool's curve
+//                                            and the link frames of at most PATH_POSES_3D poses
 //   status    {status}
 //   ack       {ack}                          the message carrying `ack` was read
 //   asv-solution {text}
@@ -68,7 +74,8 @@ const BATCH_MS = 12;          // one batch of planning, then yield to the messag
 const FRAME_SPACING = 0.004;  // animation frames along the path, in the robot's metric
 const CSPACE_N = 128;         // cells per side of the configuration-space grid
 const OPTIMUM_S = 0.5;        // the visibility graph's time for the cost chart's reference line…
-const OPTIMUM_MAX = 500;      // …on maps of at most this many obstacles (its graph is quadratic: 1,000 rects take 1.3 s natively)
+const OPTIMUM_MAX = 500;
+const PATH_POSES_3D = 2000;   // the 3-D view's arm animation: at most this many poses of a path      // …on maps of at most this many obstacles (its graph is quadratic: 1,000 rects take 1.3 s natively)
 
 let scene = null;       // current Scene (runs are made from it: the scenario is never re-read as text)
 let setup = { planner: 'rrt-connect', params: {}, seed: 1 };
@@ -77,6 +84,8 @@ let runId = 0;
 let running = false;
 let dead = false;
 let tries = { seen: 0, sent: 0 }; // the current run's raw tries: drawn by the core, sent to the page
+let view3d = false;     // the scene has a 3-D view (caps.view3d): runs log their nodes for its trees
+let toolOffset = [0, 0, 0]; // its tool centre point in the last link's frame
 let stepping = null;    // a `step` in progress: {token, target} (it runs in bounded batches too)
 let stepToken = 0;
 
@@ -101,20 +110,61 @@ function ensureRun() {
   if (!run) {
     if (!scene) throw new Error('no scenario loaded');
     run = scene.run(setup.planner, JSON.stringify(setup.params), setup.seed);
+    if (view3d) run.log_nodes(true);
   }
   return run;
 }
 
 function flush(status) {
   const data = thinTries(run.drain_events(), tries);
-  post({ type: 'events', run: runId, data, stats: JSON.parse(run.stats_json()), status, tries: { ...tries } }, [data.buffer]);
+  /** @type {WorkerOut} */
+  const events = { type: 'events', run: runId, data, stats: JSON.parse(run.stats_json()), status, tries: { ...tries } };
+  const transfer = [data.buffer];
+  if (view3d) {
+    events.tree3d = run.drain_tool_tree();
+    transfer.push(events.tree3d.buffer);
+  }
+  post(events, transfer);
   if (status !== 'running') {
     running = false;
     const result = JSON.parse(run.result_json());
     const frames = result.solved ? run.path_frames(false, FRAME_SPACING) : new Float64Array(0);
     const rawFrames = result.solved ? run.path_frames(true, FRAME_SPACING) : new Float64Array(0);
-    post({ type: 'result', run: runId, result, frames, rawFrames }, [frames.buffer, rawFrames.buffer]);
+    const path3d = view3d && result.solved ? pathIn3d(frames) : undefined;
+    const moved = path3d ? [path3d.tool.buffer, path3d.frames.buffer] : [];
+    post({ type: 'result', run: runId, result, frames, rawFrames, path3d }, [...moved, frames.buffer, rawFrames.buffer]);
   }
+}
+
+/**
+ * For the 3-D view, a solved path from its animation frames (`Run.path_frames`: dims, count, then
+ * each frame's state and outline): the tool's curve through every frame, and the link frames of at
+ * most PATH_POSES_3D of them, evenly spread, for the arm's animation.
+ * @param {Float64Array} frames
+ * @returns {import('../run/messages.js').Path3d}
+ */
+function pathIn3d(frames) {
+  const dims = frames[0] | 0;
+  const count = frames[1] | 0;
+  const stride = Math.max(1, Math.ceil(count / PATH_POSES_3D));
+  const tool = [];
+  const poses = [];
+  let links = 0;
+  let at = 2;
+  for (let f = 0; f < count && at + dims <= frames.length; f++) {
+    const lf = scene.link_frames(frames.subarray(at, at + dims));
+    links = lf.length / 16;
+    const m = lf.subarray(lf.length - 16); // the last link's frame takes the tool centre point to the world
+    const [x, y, z] = toolOffset;
+    for (let r = 0; r < 3; r++) tool.push(m[r] * x + m[4 + r] * y + m[8 + r] * z + m[12 + r]);
+    if (f % stride === 0 || f === count - 1) poses.push(lf);
+    at += dims;
+    const polys = frames[at++] | 0; // the outline: [n_polygons, n_1, x, y…, …]
+    for (let p = 0; p < polys; p++) at += 1 + 2 * (frames[at] | 0);
+  }
+  const flat = new Float64Array(poses.length * links * 16);
+  poses.forEach((p, i) => flat.set(p, i * links * 16));
+  return { tool: Float64Array.from(tool), frames: flat, count: poses.length, links };
 }
 
 function loop(id) {
@@ -195,6 +245,16 @@ function load(make) {
   // line when it is the robot's optimum.
   if (caps.optimum) {
     try { msg.optimum = JSON.parse(scene.optimum_json(OPTIMUM_S)); } catch (e) { rethrowPanic(e); }
+  }
+  // A robot in 3-D (caps.view3d): its parts' meshes and the scene's solids, once, and the link
+  // frames at the start and goal, for the page's 3-D view.
+  view3d = !!caps.view3d;
+  if (view3d) {
+    const goalFrames = sc.goal ? scene.link_frames(new Float64Array(sc.goal)) : new Float64Array(0);
+    const startFrames = scene.link_frames(new Float64Array(sc.start));
+    msg.spatial = { ...JSON.parse(scene.spatial_json()), start: startFrames, goal: goalFrames };
+    toolOffset = msg.spatial.tool;
+    transfer.push(startFrames.buffer, goalFrames.buffer);
   }
   post(msg, transfer);
 }

@@ -259,6 +259,14 @@ fn box_gap(a: &Box3, b: &Box3) -> Real {
     sq.sqrt()
 }
 
+impl Scratch {
+    /// Each part's pose at the state last placed (tests: what the 3-D view's frames must agree with).
+    #[cfg(test)]
+    pub fn poses(&self) -> &[Pose] {
+        &self.poses
+    }
+}
+
 impl Body {
     /// Place every part at state `q` (frames, poses, world boxes) into `s`.
     pub fn place(&self, chain: &Chain, q: &[Real], s: &mut Scratch) {

@@ -17,7 +17,8 @@
 mod collide;
 mod kinematics;
 
-use super::{MotionModel, Robot, Spatial, Verdict};
+use super::{MotionModel, PartMesh, Robot, Spatial, Verdict};
+use crate::geometry::mesh::Mesh;
 use crate::geometry::solid::Solid;
 use crate::geometry::Workspace;
 use crate::math::{Real, Vec2};
@@ -202,6 +203,37 @@ impl MotionModel for SpatialArmRobot {
     }
 }
 
+#[cfg(test)]
+impl SpatialArmRobot {
+    /// Each part's world vertices at `q` as the collision query places them (a hull's points, a
+    /// box's corners): what a drawn mesh must agree with.
+    fn placed_vertices(&self, q: &[Real]) -> Vec<Vec<[Real; 3]>> {
+        use crate::geometry::solid::Convex;
+        use parry3d_f64::math::Vector;
+        let mut s = self.scratch.borrow_mut();
+        self.body.place(&self.chain, q, &mut s);
+        let poses = s.poses();
+        self.body
+            .parts
+            .iter()
+            .enumerate()
+            .map(|(i, p)| {
+                let local: Vec<Vector> = match &p.solid.convex {
+                    Convex::Hull(h) => h.poly.points().to_vec(),
+                    Convex::Cuboid(c) => (0..8)
+                        .map(|k| {
+                            let h = c.half_extents;
+                            let sign = |b: usize| if k & (1 << b) != 0 { 1.0 } else { -1.0 };
+                            Vector::new(sign(0) * h.x, sign(1) * h.y, sign(2) * h.z)
+                        })
+                        .collect(),
+                };
+                local.iter().map(|v| poses[i].transform_point(*v)).map(|w| [w.x, w.y, w.z]).collect()
+            })
+            .collect()
+    }
+}
+
 impl Robot for SpatialArmRobot {
     fn caps(&self) -> &'static RobotKind {
         &KIND
@@ -254,6 +286,28 @@ impl Spatial for SpatialArmRobot {
     }
     fn tool_point(&self, q: &[Real]) -> [Real; 3] {
         self.chain.point_on_last(q, &self.tool)
+    }
+    fn tool(&self) -> [Real; 3] {
+        self.tool
+    }
+    fn part_meshes(&self) -> Vec<PartMesh> {
+        self.body
+            .parts
+            .iter()
+            .map(|p| PartMesh { link: p.link, name: p.solid.name.clone(), mesh: Mesh::of_solid(&p.solid) })
+            .collect()
+    }
+    fn link_frames(&self, q: &[Real]) -> Vec<[Real; 16]> {
+        let mut frames = vec![nalgebra::Isometry3::identity(); self.chain.joints() + 1];
+        self.chain.frames(q, &mut frames);
+        frames
+            .iter()
+            .map(|f| {
+                let mut m = [0.0; 16];
+                m.copy_from_slice(f.to_homogeneous().as_slice());
+                m
+            })
+            .collect()
     }
 }
 

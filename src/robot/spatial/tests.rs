@@ -276,3 +276,175 @@ fn puma_clearance_and_displacement_certify_motions() {
     }
     assert!(certified > 1000 && near > 20, "only {certified} states certified, {near} near the scene");
 }
+
+/// `m · v` for a 4×4 column-major matrix and a point.
+fn apply(m: &[f64; 16], v: [f64; 3]) -> [f64; 3] {
+    [0, 1, 2].map(|r| m[r] * v[0] + m[4 + r] * v[1] + m[8 + r] * v[2] + m[12 + r])
+}
+
+/// The 3-D view's data agrees with the collision query: every vertex of every part's mesh, moved
+/// by its link's frame, is a vertex of the part as the query places it (and every vertex of the
+/// placed part is one of the mesh's), at random states of the Puma; the last frame takes the tool
+/// to the tool centre point; each link frame's origin is the skeleton's.
+#[test]
+fn meshes_moved_by_the_link_frames_are_where_the_kinematics_puts_the_parts() {
+    for id in ["puma-rbo-wall", "puma-boxes"] {
+        let p = Problem::from_scenario(&crate::scenario::builtin(id).unwrap()).unwrap();
+        let arm = SpatialArmRobot::from_spec(&p.scenario.robot).unwrap();
+        let meshes = arm.part_meshes();
+        assert!(meshes.len() >= 7, "{id}: {} parts", meshes.len());
+        let mut rng = crate::rng::Rng::new(3);
+        for _ in 0..20 {
+            let q: Vec<f64> = arm.limits.iter().map(|[lo, hi]| rng.uniform(*lo, *hi)).collect();
+            let frames = arm.link_frames(&q);
+            assert_eq!(frames.len(), q.len() + 1);
+            let placed = arm.placed_vertices(&q);
+            for (i, m) in meshes.iter().enumerate() {
+                let drawn: Vec<[f64; 3]> = m.mesh.vertices.iter().map(|v| apply(&frames[m.link], *v)).collect();
+                let near = |a: &[f64; 3], b: &[f64; 3]| a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-9);
+                for d in &drawn {
+                    assert!(placed[i].iter().any(|w| near(d, w)), "{id}: {}'s vertex {d:?} is not the query's", m.name);
+                }
+                for w in &placed[i] {
+                    // a hull point inside a face is not a vertex of the hull's mesh: only the extreme ones
+                    let on_hull = drawn.iter().any(|d| near(d, w));
+                    assert!(
+                        on_hull || m.mesh.vertices.len() < placed[i].len(),
+                        "{id}: {}'s vertex {w:?} is not drawn",
+                        m.name
+                    );
+                }
+            }
+            let tool = apply(frames.last().unwrap(), arm.tool());
+            let tcp = arm.tool_point(&q);
+            assert!(tool.iter().zip(tcp).all(|(a, b)| (a - b).abs() < 1e-12), "{tool:?} vs {tcp:?}");
+            let skeleton = arm.skeleton_points(&q);
+            for (f, s) in frames.iter().zip(&skeleton) {
+                assert!((0..3).all(|k| (f[12 + k] - s[k]).abs() < 1e-12), "{f:?} vs {s:?}");
+            }
+        }
+    }
+}
+
+/// Every triangle of every part's and obstacle's mesh faces outwards (its normal points away from
+/// every other vertex: the solids are convex), none is degenerate, and a hull's mesh is closed
+/// (each edge in two triangles, once each way).
+#[test]
+fn mesh_triangles_face_outwards() {
+    use crate::geometry::mesh::Mesh;
+    for id in ["puma-rbo-wall", "puma-boxes"] {
+        let p = Problem::from_scenario(&crate::scenario::builtin(id).unwrap()).unwrap();
+        let arm = SpatialArmRobot::from_spec(&p.scenario.robot).unwrap();
+        let mut meshes: Vec<(String, Mesh)> = arm.part_meshes().into_iter().map(|m| (m.name, m.mesh)).collect();
+        meshes.extend(p.si.workspace().solids.iter().map(|s| (s.name.clone(), Mesh::of_solid(s))));
+        assert!(meshes.len() > 8);
+        for (name, m) in &meshes {
+            assert!(m.triangles.len() >= 4, "{id}: {name}");
+            let mut edges = std::collections::HashSet::new();
+            for t in &m.triangles {
+                let n = m.normal(*t);
+                let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+                assert!(len > 1e-12, "{id}: {name}: a degenerate triangle {t:?}");
+                let a = m.vertices[t[0] as usize];
+                for v in &m.vertices {
+                    let d = (0..3).map(|k| n[k] / len * (v[k] - a[k])).sum::<f64>();
+                    assert!(d < 1e-9, "{id}: {name}: triangle {t:?} faces inwards ({d})");
+                }
+                for k in 0..3 {
+                    assert!(edges.insert((t[k], t[(k + 1) % 3])), "{id}: {name}: edge twice the same way");
+                }
+            }
+            assert!(edges.iter().all(|&(a, b)| edges.contains(&(b, a))), "{id}: {name}: the mesh is not closed");
+        }
+    }
+    // A box's winding, by hand: its +z face's normal is +z.
+    let b = Mesh::of_box([0.0; 3], [1.0, 2.0, 3.0]);
+    assert_eq!(b.vertices.len(), 8);
+    assert_eq!(b.triangles.len(), 12);
+    let up = b.triangles.iter().filter(|t| t.iter().all(|&i| b.vertices[i as usize][2] == 3.0)).count();
+    assert_eq!(up, 2);
+    for t in b.triangles.iter().filter(|t| t.iter().all(|&i| b.vertices[i as usize][2] == 3.0)) {
+        assert!(b.normal(*t)[2] > 0.0);
+    }
+}
+
+/// The node log gives each added node's tool curve from its parent, ending at its own tool point,
+/// and does not change the run: the same records and path with the log as without.
+#[test]
+fn the_tool_tree_follows_the_nodes_and_leaves_the_run_alone() {
+    use crate::run::{RunConfig, Session};
+    let sc = crate::scenario::builtin("puma-rbo-wall").unwrap();
+    let config = || RunConfig {
+        planner: "rrt-connect".into(),
+        params: crate::planners::Params::from_json(crate::planners::find("rrt-connect").unwrap(), &json!({})).unwrap(),
+        seed: 2,
+        record_events: true,
+    };
+    let mut plain = Session::new(Problem::from_scenario(&sc).unwrap(), config()).unwrap();
+    let mut logged = Session::new(Problem::from_scenario(&sc).unwrap(), config()).unwrap();
+    logged.log_nodes(true);
+    let (mut a, mut b, mut tree) = (Vec::new(), Vec::new(), Vec::new());
+    for _ in 0..20 {
+        let (s1, s2) = (plain.step(20, f64::INFINITY), logged.step(20, f64::INFINITY));
+        a.extend(plain.drain_events());
+        b.extend(logged.drain_events());
+        let log = logged.drain_nodes();
+        tree.extend(logged.problem().tool_tree(&log));
+        assert_eq!(s1, s2);
+        if s1.is_finished() {
+            break;
+        }
+    }
+    assert_eq!(a, b, "the node log changes no record");
+    assert_eq!(plain.planning_path(true), logged.planning_path(true));
+    // Each NODE_ADDED record has its entry, in order, its last point its tool point.
+    let added: Vec<&[f64]> = b
+        .chunks_exact(crate::events::STRIDE)
+        .filter(|r| r[0] == crate::events::EventKind::NodeAdded as u8 as f64)
+        .collect();
+    assert!(added.len() > 10, "{} nodes", added.len());
+    let (mut at, mut n) = (0, 0);
+    let arm = logged.problem();
+    while at < tree.len() {
+        let (t, id, k) = (tree[at], tree[at + 1], tree[at + 2] as usize);
+        assert!((1..=crate::limits::MAX_TOOL_POINTS_PER_EDGE).contains(&k));
+        let r = added[n];
+        assert_eq!((t, id), (r[1], r[2]), "entry {n}");
+        let last = &tree[at + 3 + 3 * (k - 1)..at + 6 + 3 * (k - 1)];
+        // seen from above, the last point is the record's (x, y): the tool's projection
+        assert!((last[0] - r[4]).abs() < 1e-12 && (last[1] - r[5]).abs() < 1e-12, "{last:?} vs {r:?}");
+        if r[3] >= 0.0 {
+            assert!(k > 1, "an edge has its parent's end too");
+            let first = &tree[at + 3..at + 6];
+            assert!((first[0] - r[6]).abs() < 1e-12 && (first[1] - r[7]).abs() < 1e-12, "starts at the parent's tool");
+        }
+        at += 3 + 3 * k;
+        n += 1;
+    }
+    assert_eq!(n, added.len());
+    assert!(arm.robot.spatial().is_some());
+}
+
+/// A suspended batch's records go, and their node log entries with them; records drained before
+/// are counted, so the entries kept are the right ones.
+#[test]
+fn the_node_log_follows_truncation() {
+    use crate::events::{EventKind, EventLog};
+    let mut log = EventLog::new(true);
+    log.log_nodes(2);
+    let p = crate::math::Vec2::new(0.0, 0.0);
+    let add =
+        |log: &mut EventLog, id: i64| log.push(EventKind::NodeAdded, 0, id, 0, p, p, &[id as f64, 0.0], &[0.0, 0.0]);
+    add(&mut log, 1);
+    log.at(EventKind::Sample, 0, p, &[0.0, 0.0]);
+    assert_eq!(log.drain().len(), 2 * crate::events::STRIDE);
+    add(&mut log, 2);
+    log.at(EventKind::Sample, 0, p, &[0.0, 0.0]);
+    add(&mut log, 3);
+    log.truncate(2); // record 4 (node 3) goes
+    let n = log.drain_nodes();
+    let ids: Vec<f64> = n.data.chunks_exact(n.stride()).map(|e| e[2]).collect();
+    assert_eq!(ids, [1.0, 2.0]);
+    let records: Vec<f64> = n.data.chunks_exact(n.stride()).map(|e| e[0]).collect();
+    assert_eq!(records, [0.0, 2.0]);
+}

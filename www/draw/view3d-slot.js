@@ -1,0 +1,115 @@
+// Where the 3-D view plugs into the page: a view of the lane (drawRecords, clearRun, setResult,
+// like the C-space view) that loads www/draw3d/ with a dynamic import() only when the core says the
+// loaded scene has a 3-D view (its `caps.view3d`: the robot's Spatial capability), so a 2-D
+// scenario never fetches it. It keeps what the worker sends for the 3-D view (the trees' tool
+// curves with each events batch, the path's tool curve and poses with the result) and hands each
+// node to the view when its NODE_ADDED record is revealed, so the trees grow with the replay.
+
+import { EventKind } from '../run/events.js';
+
+export class View3dSlot {
+  /**
+   * @param {HTMLCanvasElement} canvas the 3-D view's canvas (hidden while there is none)
+   * @param {{record: (i: number) => Float64Array}} store the revealed records
+   * @param {Record<string, any>} palette
+   * @param {() => void} [onActive] called when the view appears or goes (the page resizes the stage)
+   */
+  constructor(canvas, store, palette, onActive = () => {}) {
+    this.canvas = canvas;
+    this.store = store;
+    this.palette = palette;
+    this.onActive = onActive;
+    this.view = null;       // the View3D, once loaded
+    this.active = false;    // the loaded scene has a 3-D view
+    this.spatial = null;    // the worker's drawing data for it
+    this.generation = 0;    // loads, so a late import does not show an old scene
+    this.nodes = new Map(); // `${tree}:${id}` → [points (Float64Array), at, n]: tool curves not yet revealed
+    this.path = null;       // {tool, frames, links, stride}
+    this.showResult = false;
+    this.dirty = false;
+    this.error = '';
+  }
+
+  /** A scene was loaded: `spatial` (the `loaded` reply's, present when `caps.view3d`) or null. */
+  async setScene(spatial, view3d) {
+    const gen = ++this.generation;
+    this.spatial = view3d && spatial ? spatial : null;
+    this.active = !!this.spatial;
+    this.canvas.hidden = !this.active;
+    this.clearRun();
+    this.onActive();
+    if (!this.active) return;
+    try {
+      if (!this.view) {
+        const { View3D } = await import('../draw3d/view3d.js');
+        if (gen !== this.generation) return;
+        this.view ??= new View3D(this.canvas, this.palette);
+        if (this.size) this.view.resize(...this.size);
+      }
+      if (gen !== this.generation) return;
+      this.view.setScene(this.spatial);
+      this.error = '';
+    } catch (e) {
+      this.error = String(e?.message || e);
+      console.error(`3-D view: ${this.error}`);
+    }
+  }
+
+  resize(w, h, dpr) {
+    this.size = [w, h, dpr];
+    this.view?.resize(w, h, dpr);
+  }
+
+  /** An events batch: keep its tool curves (`tree3d`: [tree, id, n, x, y, z…] per node). */
+  takeEvents(msg) {
+    const d = msg.tree3d;
+    if (!this.active || !d) return;
+    for (let at = 0; at + 2 < d.length;) {
+      const n = d[at + 2] | 0;
+      if (n < 1 || at + 3 + 3 * n > d.length) break;
+      this.nodes.set(`${d[at]}:${d[at + 1]}`, [d, at + 3, n]);
+      at += 3 + 3 * n;
+    }
+  }
+
+  /** Records [from, to) were revealed: their nodes join the drawn trees. */
+  drawRecords(from, to) {
+    if (!this.active) return;
+    for (let i = from; i < to; i++) {
+      const r = this.store.record(i);
+      if (r[0] !== EventKind.NODE_ADDED) continue;
+      const key = `${r[1]}:${r[2]}`;
+      const node = this.nodes.get(key);
+      if (!node) continue;
+      this.nodes.delete(key);
+      this.view?.addNode(r[1], node[0], node[1], node[2]);
+    }
+  }
+
+  clearRun() {
+    this.nodes.clear();
+    this.path = null;
+    this.showResult = false;
+    this.poseIndex = -1;
+    this.view?.clearRun();
+  }
+
+  /** The result: the path's tool curve and poses (the worker's `path3d`), shown once finished. */
+  setResult(result, frames, rawFrames, path3d) {
+    this.path = result?.solved && path3d ? path3d : null;
+  }
+
+  finishRun() {
+    if (this.path) this.view?.setPath(this.path.tool);
+  }
+
+  /** Each page frame: once solved, the arm at the path pose of the page's animation (`fps` poses a second). */
+  render(time, fps) {
+    if (!this.view || !this.showResult || !this.path || !this.path.count) return;
+    const { frames, count, links } = this.path;
+    const k = Math.floor((time / 1000) * fps) % count;
+    if (k === this.poseIndex) return;
+    this.poseIndex = k;
+    this.view.setPose(frames.subarray(k * links * 16, (k + 1) * links * 16));
+  }
+}

@@ -1,0 +1,320 @@
+// The 3-D view of a spatial arm (report 001's Puma 560), drawn with the project's own WebGL2
+// renderer (gl.js; no library): the arm's parts as flat-shaded meshes placed by the core's link
+// frames (start pose in the start colour, the goal pose as a ghost in the goal colour, the path's
+// poses animated once solved), the scene's 3-D obstacles (translucent, so the tool is seen through
+// the wall; the trees and path are drawn over them), a floor grid and axes, the two trees as
+// the tool sweeps them (each edge through its `delta` steps, in the trees' colours of the top view)
+// and the path as the tool's curve. An orbit camera (camera.js) opens framed on the problem: the
+// start and goal tool points and the obstacles nearest them (the course's window).
+//
+// Every number drawn comes from the core through the worker (www/draw/view3d-slot.js hands them
+// over): meshes once per scenario (`Scene.spatial_json`), link frames (`Scene.link_frames`), the
+// trees' tool curves (`Run.drain_tool_tree`). Nothing here computes kinematics.
+
+import { programs, meshBuffers, LineBuffer, identity, transformPoint, project, rgb, sub, dot } from './gl.js';
+import { OrbitCamera } from './camera.js';
+
+/** Parts of the last link (the tool's) are drawn this much darker, so the tool stands out. */
+const TOOL_SHADE = 0.6;
+/** The trees' opacity once a path is shown. */
+const TREE_FADED = 0.04;
+const GRID = '#c3c8cf';
+/** @type {Array<[string, number[]]>} the axes' colours and directions (x red, y green, z blue) */
+const AXES = [['#d62728', [1, 0, 0]], ['#2ca02c', [0, 1, 0]], ['#1f77b4', [0, 0, 1]]];
+
+export class View3D {
+  /** @param {HTMLCanvasElement} canvas @param {Record<string, any>} palette */
+  constructor(canvas, palette) {
+    this.canvas = canvas;
+    this.palette = palette;
+    const gl = canvas.getContext('webgl2', { antialias: true, preserveDrawingBuffer: true });
+    if (!gl) throw new Error('this browser has no WebGL2: the 3-D view is not available');
+    this.gl = gl;
+    this.progs = programs(gl);
+    this.camera = new OrbitCamera(canvas, () => this.requestRender());
+    this.parts = [];      // {link, buffers, tool}
+    this.obstacles = [];  // buffers
+    this.trees = [new LineBuffer(gl, this.progs.line), new LineBuffer(gl, this.progs.line)];
+    this.nodes = [new LineBuffer(gl, this.progs.line), new LineBuffer(gl, this.progs.line)];
+    this.grid = new LineBuffer(gl, this.progs.line);
+    this.axes = AXES.map(() => new LineBuffer(gl, this.progs.line));
+    this.path = new LineBuffer(gl, this.progs.line);
+    this.start = null;    // link frames (Float64Array, 16 a link)
+    this.goal = null;
+    this.pose = null;     // the animated path pose's link frames, or null
+    this.size = [1, 1, 1];
+    this.pending = false;
+    this.onFrame = null;  // (time) => void, after each frame drawn (tests and the frame-time log)
+  }
+
+  /**
+   * The scenario's drawing: `spatial` as the worker sends it ({links, tool, parts, obstacles} and
+   * the start and goal link frames).
+   */
+  setScene(spatial) {
+    const gl = this.gl;
+    for (const p of [...this.parts, ...this.obstacles]) p.buffers.buffers.forEach((b) => gl.deleteBuffer(b));
+    const { mesh } = this.progs;
+    const last = spatial.links - 1;
+    this.parts = spatial.parts.map((p) => ({ link: p.link, tool: p.link === last, buffers: meshBuffers(gl, mesh, p.vertices, p.triangles) }));
+    this.obstacles = spatial.obstacles.map((o) => ({ buffers: meshBuffers(gl, mesh, o.vertices, o.triangles), box: boxOf(o.vertices) }));
+    this.tool = spatial.tool;
+    this.start = spatial.start;
+    this.goal = spatial.goal && spatial.goal.length ? spatial.goal : null;
+    this.clearRun();
+    this.buildFloor(spatial);
+    this.frameProblem();
+  }
+
+  /** The tool centre point at link frames `frames` (the last link's frame applied to the tool). */
+  toolAt(frames) {
+    return transformPoint(frames.subarray(frames.length - 16), this.tool);
+  }
+
+  /** A floor grid under everything (at the lowest point of the obstacles and the arm's base) and axes at the origin. */
+  buildFloor(spatial) {
+    const pts = [];
+    for (const o of spatial.obstacles) for (let i = 0; i < o.vertices.length; i += 3) pts.push(o.vertices.slice(i, i + 3));
+    const base = spatial.start.subarray(0, 16);
+    for (const p of spatial.parts) {
+      if (p.link !== 0) continue;
+      for (let i = 0; i < p.vertices.length; i += 3) pts.push(transformPoint(base, p.vertices, [0, 0, 0], i));
+    }
+    pts.push(this.toolAt(spatial.start));
+    if (this.goal) pts.push(this.toolAt(this.goal));
+    const lo = [0, 1, 2].map((k) => Math.min(...pts.map((p) => p[k])));
+    const hi = [0, 1, 2].map((k) => Math.max(...pts.map((p) => p[k])));
+    this.size = hi.map((h, k) => h - lo[k]);
+    const span = Math.max(this.size[0], this.size[1], 0.5);
+    const step = 10 ** Math.floor(Math.log10(span / 4));
+    const z = lo[2];
+    const [x0, x1] = [Math.floor((lo[0] - span * 0.25) / step) * step, Math.ceil((hi[0] + span * 0.25) / step) * step];
+    const [y0, y1] = [Math.floor((lo[1] - span * 0.25) / step) * step, Math.ceil((hi[1] + span * 0.25) / step) * step];
+    this.grid.clear();
+    const lines = [];
+    for (let x = x0, i = 0; x <= x1 + step / 2 && i < 400; x += step, i++) lines.push(x, y0, z, x, y1, z);
+    for (let y = y0, i = 0; y <= y1 + step / 2 && i < 400; y += step, i++) lines.push(x0, y, z, x1, y, z);
+    this.grid.push(lines);
+    const a = step * 2;
+    this.axes.forEach((b, k) => { b.clear(); b.push([0, 0, z, ...AXES[k][1].map((d, i) => d * a + (i === 2 ? z : 0))]); });
+  }
+
+  /**
+   * Open framed on the problem: the box around the start and goal tool points and the obstacles
+   * nearest either (within a third of the scene's size: the course's window round the tool).
+   */
+  frameProblem() {
+    const pts = [this.toolAt(this.start)];
+    if (this.goal) pts.push(this.toolAt(this.goal));
+    const reach = Math.max(...this.size) / 3;
+    for (const o of this.obstacles) {
+      if (pts.slice(0, 2).some((p) => boxDistance(o.box, p) <= reach)) pts.push(o.box.lo, o.box.hi);
+    }
+    const lo = [0, 1, 2].map((k) => Math.min(...pts.map((p) => p[k])));
+    const hi = [0, 1, 2].map((k) => Math.max(...pts.map((p) => p[k])));
+    const centre = lo.map((l, k) => (l + hi[k]) / 2);
+    const radius = Math.max(0.05, Math.hypot(...sub(hi, lo)) / 2);
+    this.camera.frame(centre, radius);
+  }
+
+  /** Forget the run's trees and path. */
+  clearRun() {
+    for (const b of [...this.trees, ...this.nodes, this.path]) b.clear();
+    this.pose = null;
+    this.requestRender();
+  }
+
+  /**
+   * A node added to tree `tree`: its edge as the tool sweeps it, `n` points (flat x, y, z) from
+   * `at` in `pts`, the node's own last.
+   */
+  addNode(tree, pts, at, n) {
+    const t = tree === 1 ? 1 : 0;
+    for (let k = 0; k + 1 < n; k++) this.trees[t].push(pts, at + 3 * k, at + 3 * k + 6);
+    this.nodes[t].push(pts, at + 3 * (n - 1), at + 3 * n);
+    this.requestRender();
+  }
+
+  /** The solved path: the tool's curve (flat x, y, z…). */
+  setPath(curve) {
+    this.path.clear();
+    for (let i = 0; i + 5 < curve.length; i += 3) this.path.push(curve, i, i + 6);
+    this.requestRender();
+  }
+
+  /** The arm drawn at a path pose (link frames), or `null`: at the start. */
+  setPose(frames) {
+    if (frames === this.pose) return;
+    this.pose = frames;
+    this.requestRender();
+  }
+
+  resize(w, h, dpr) {
+    this.canvas.style.width = `${w}px`;
+    this.canvas.style.height = `${h}px`;
+    this.canvas.width = Math.max(1, Math.round(w * dpr));
+    this.canvas.height = Math.max(1, Math.round(h * dpr));
+    const was = this.camera.aspect;
+    this.camera.aspect = w / Math.max(1, h);
+    if (was !== this.camera.aspect && this.camera.home && !this.camera.touched) this.frameProblem();
+    this.requestRender();
+  }
+
+  requestRender() {
+    if (this.pending) return;
+    this.pending = true;
+    requestAnimationFrame((t) => { this.pending = false; this.render(); this.onFrame?.(t); });
+  }
+
+  /** Draw everything now. */
+  render() {
+    const gl = this.gl;
+    const { mesh, line } = this.progs;
+    gl.viewport(0, 0, this.canvas.width, this.canvas.height);
+    const [br, bg, bb] = rgb(this.palette.background);
+    gl.clearColor(br, bg, bb, 1);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    gl.enable(gl.DEPTH_TEST);
+    gl.disable(gl.BLEND);
+    const { view, proj } = this.camera.matrices();
+    this.matrices = this.camera.matrices();
+    // Lines: the floor, the axes, the trees, the path.
+    gl.useProgram(line.p);
+    gl.uniformMatrix4fv(line.u.view, false, new Float32Array(view));
+    gl.uniformMatrix4fv(line.u.proj, false, new Float32Array(proj));
+    gl.uniform1f(line.u.pointSize, 3 * (window.devicePixelRatio || 1));
+    gl.uniform1f(line.u.alpha, 1);
+    /** @param {LineBuffer} buf @param {string} colour @param {number} [mode] @param {number} [alpha] */
+    const lines = (buf, colour, mode = gl.LINES, alpha = 1) => {
+      if (!buf.length) return;
+      buf.upload();
+      gl.uniform3fv(line.u.colour, rgb(colour));
+      gl.uniform1f(line.u.alpha, alpha);
+      gl.bindVertexArray(buf.vao);
+      gl.drawArrays(mode, 0, buf.length);
+    };
+    lines(this.grid, GRID);
+    this.axes.forEach((b, k) => lines(b, AXES[k][0]));
+    const P = this.palette;
+    // The arm: at the animated path pose once solved, else at the start; the goal as a ghost.
+    gl.useProgram(mesh.p);
+    gl.uniformMatrix4fv(mesh.u.view, false, new Float32Array(view));
+    gl.uniformMatrix4fv(mesh.u.proj, false, new Float32Array(proj));
+    const arm = (frames, colour, alpha) => {
+      if (!frames) return;
+      for (const p of this.parts) {
+        const c = rgb(colour).map((v) => (p.tool ? v * TOOL_SHADE : v));
+        this.drawMesh(p.buffers, frames.subarray(p.link * 16, p.link * 16 + 16), c, alpha);
+      }
+    };
+    arm(this.pose || this.start, this.pose ? P.robotT : P.start, 1);
+    // Translucent last, without writing depth: the goal's ghost and the obstacles (the tool is seen through the wall).
+    gl.enable(gl.BLEND);
+    gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
+    gl.depthMask(false);
+    arm(this.goal, P.goal, 0.35);
+    for (const o of this.obstacles) this.drawMesh(o.buffers, IDENTITY, rgb(P.obstacle), 0.55);
+    // The trees over the translucent walls (which write no depth), so a branch behind the wall keeps
+    // its tree's colour; the opaque arm still hides what is behind it. Once a path is shown the
+    // trees fade (a solved course run has some 14,000 nodes: they would bury the arm) and the path,
+    // the tool's curve, is drawn over everything.
+    gl.useProgram(line.p);
+    const faded = this.path.length > 0;
+    const a = faded ? TREE_FADED : 1;
+    if (!faded) gl.disable(gl.BLEND);
+    lines(this.trees[0], P.tree0, gl.LINES, a);
+    lines(this.trees[1], P.tree1, gl.LINES, a);
+    lines(this.nodes[0], P.tree0, gl.POINTS, a);
+    lines(this.nodes[1], P.tree1, gl.POINTS, a);
+    gl.depthMask(true);
+    gl.disable(gl.BLEND);
+    gl.disable(gl.DEPTH_TEST);
+    lines(this.path, P.smoothPath);
+    gl.bindVertexArray(null);
+  }
+
+  drawMesh(buffers, model, colour, alpha) {
+    const gl = this.gl;
+    const { mesh } = this.progs;
+    gl.uniformMatrix4fv(mesh.u.model, false, new Float32Array(model));
+    gl.uniform3fv(mesh.u.colour, colour);
+    gl.uniform1f(mesh.u.alpha, alpha);
+    gl.bindVertexArray(buffers.vao);
+    gl.drawArrays(gl.TRIANGLES, 0, buffers.count);
+  }
+
+  // ---- For tests (window.planarium.view3d) ----
+
+  /**
+   * Turn the camera a little every animation frame for `n` frames, drawing each, and resolve with
+   * the requestAnimationFrame deltas (ms): the frame time while orbiting.
+   */
+  orbitFrameTimes(n) {
+    return new Promise((resolve) => {
+      const times = [];
+      let last = null;
+      const step = (t) => {
+        if (last !== null) times.push(t - last);
+        last = t;
+        if (times.length >= n) { resolve(times); return; }
+        this.camera.rotate(4, 0);
+        this.render();
+        requestAnimationFrame(step);
+      };
+      requestAnimationFrame(step);
+    });
+  }
+
+  /** Css px within the canvas of world point `p`, with the camera of the last frame drawn. */
+  toCanvas(p) {
+    const { viewProj } = this.matrices || this.camera.matrices();
+    const [x, y, , w] = project(viewProj, p);
+    if (!(w > 0)) return null;
+    return [((x + 1) / 2) * this.canvas.clientWidth, ((1 - y) / 2) * this.canvas.clientHeight];
+  }
+
+  /** The pixels (device px, RGBA) of the square of side 2r + 1 around css px (x, y). */
+  pixels(x, y, r) {
+    const gl = this.gl;
+    const dpr = this.canvas.width / Math.max(1, this.canvas.clientWidth);
+    const [cx, cy] = [Math.round(x * dpr), Math.round(this.canvas.height - y * dpr)];
+    const side = 2 * r + 1;
+    const out = new Uint8Array(side * side * 4);
+    gl.readPixels(cx - r, cy - r, side, side, gl.RGBA, gl.UNSIGNED_BYTE, out);
+    return out;
+  }
+
+  /** How many pixels of the whole canvas are within `tol` of each colour ('#rrggbb'). */
+  countColours(colours, tol = 6) {
+    const gl = this.gl;
+    const [w, h] = [this.canvas.width, this.canvas.height];
+    const px = new Uint8Array(w * h * 4);
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    const want = colours.map((c) => rgb(c).map((v) => v * 255));
+    const counts = want.map(() => 0);
+    for (let i = 0; i < px.length; i += 4) {
+      want.forEach(([r, g, b], k) => {
+        if (Math.abs(px[i] - r) <= tol && Math.abs(px[i + 1] - g) <= tol && Math.abs(px[i + 2] - b) <= tol) counts[k]++;
+      });
+    }
+    return counts;
+  }
+}
+
+const IDENTITY = identity();
+
+/** The box around flat points. */
+function boxOf(v) {
+  const lo = [Infinity, Infinity, Infinity];
+  const hi = [-Infinity, -Infinity, -Infinity];
+  for (let i = 0; i + 2 < v.length; i += 3) {
+    for (let k = 0; k < 3; k++) { lo[k] = Math.min(lo[k], v[i + k]); hi[k] = Math.max(hi[k], v[i + k]); }
+  }
+  return { lo, hi };
+}
+
+/** The distance from point `p` to box `b` (0 inside). */
+function boxDistance(b, p) {
+  const d = [0, 1, 2].map((k) => Math.max(b.lo[k] - p[k], 0, p[k] - b.hi[k]));
+  return Math.sqrt(dot(d, d));
+}
