@@ -317,6 +317,7 @@ pub const KIND: RobotKind = RobotKind {
     course_cost: Some("fk"),
     pose: Pose::Joints,
     solution_file: false,
+    default_range: None,
 };
 
 impl Robot for ArmRobot {

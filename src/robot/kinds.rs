@@ -81,6 +81,9 @@ pub struct RobotKind {
     /// Its solved paths can be written as the course's solution file, and are animated in that
     /// file's primitive steps.
     pub solution_file: bool,
+    /// The range-step planners' default step when a run leaves `range` at 0, where OMPL's (0.2 ×
+    /// the space's extent) does not serve the robot; `None`: OMPL's.
+    pub default_range: Option<crate::math::Real>,
 }
 
 impl RobotKind {
@@ -90,6 +93,7 @@ impl RobotKind {
             "name": self.name, "label": self.label, "drawn": self.drawn.as_str(), "body": self.body,
             "sensor": self.sensor, "cspace": self.cspace, "course_cost": self.course_cost,
             "pose": self.pose.as_str(), "solution_file": self.solution_file,
+            "default_range": self.default_range,
         })
     }
 }

@@ -20,6 +20,7 @@ pub const KIND: RobotKind = RobotKind {
     course_cost: None,
     pose: Pose::Position,
     solution_file: false,
+    default_range: None,
 };
 
 impl Robot for PointRobot {

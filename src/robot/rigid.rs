@@ -82,6 +82,7 @@ pub const KIND: RobotKind = RobotKind {
     course_cost: None,
     pose: Pose::PositionHeading,
     solution_file: false,
+    default_range: None,
 };
 
 impl Robot for RigidRobot {

@@ -127,6 +127,10 @@ impl SpaceInfo {
     pub fn robot_kind(&self) -> &'static str {
         self.validity.robot.kind()
     }
+    /// The robot kind's record (what its kind can do, its defaults).
+    pub fn robot_caps(&self) -> &'static crate::robot::kinds::RobotKind {
+        self.validity.robot.caps()
+    }
     /// Where a state is drawn in the workspace.
     #[inline]
     pub fn project(&self, q: &[Real]) -> Vec2 {

@@ -16,14 +16,14 @@ pub const RANGE: ParamSpec = ParamSpec::real(
     0.0,
     1e6,
     0.0,
-    "Longest motion added in one step, in the robot's metric (0: 0.2 × the space's extent, as OMPL).",
+    "Longest motion added in one step, in the robot's metric (0: 0.2 × the space's extent, as OMPL; a spatial arm's own default, 0.2 rad).",
 );
 
-/// The range a planner uses, resolving 0 to OMPL's default.
+/// The range a planner uses, resolving 0 to the robot kind's default, else OMPL's.
 pub fn resolve_range(si: &crate::space_info::SpaceInfo, range: f64) -> f64 {
     if range > 0.0 {
         range
     } else {
-        0.2 * si.space.max_extent()
+        si.robot_caps().default_range.unwrap_or_else(|| 0.2 * si.space.max_extent())
     }
 }

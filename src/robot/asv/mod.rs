@@ -232,6 +232,7 @@ pub const KIND: RobotKind = RobotKind {
     course_cost: None,
     pose: Pose::None,
     solution_file: true,
+    default_range: None,
 };
 
 impl Robot for AsvRobot {

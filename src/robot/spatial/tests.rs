@@ -448,3 +448,16 @@ fn the_node_log_follows_truncation() {
     let records: Vec<f64> = n.data.chunks_exact(n.stride()).map(|e| e[0]).collect();
     assert_eq!(records, [0.0, 2.0]);
 }
+
+/// A range of 0 means the kind's own default for a spatial arm (OMPL's 0.2 × the extent is
+/// 2.8 rad on the Puma, too long a step to thread its window), OMPL's for the others.
+#[test]
+fn the_default_range_is_the_kinds() {
+    use crate::planners::rrt::resolve_range;
+    let puma = Problem::from_scenario(&crate::scenario::builtin("puma-rbo-wall").unwrap()).unwrap();
+    assert!(0.2 * puma.si.space.max_extent() > 2.5);
+    assert_eq!(resolve_range(&puma.si, 0.0), 0.2);
+    assert_eq!(resolve_range(&puma.si, 0.05), 0.05);
+    let narrow = Problem::from_scenario(&crate::scenario::builtin("narrow").unwrap()).unwrap();
+    assert_eq!(resolve_range(&narrow.si, 0.0), 0.2 * narrow.si.space.max_extent());
+}
