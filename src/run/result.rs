@@ -21,7 +21,8 @@ pub struct Stats {
     pub cost: Option<Real>,
     /// Smoothed path cost (`null` when unsolved).
     pub smoothed_cost: Option<Real>,
-    /// Smoothing time, milliseconds.
+    /// Time after planning, milliseconds: smoothing, and certifying the path first where the planner
+    /// tested configurations alone (`repaired`).
     pub smoothing_ms: f64,
     /// Inspection: the fraction of points the raw path sees (before a path exists: the best
     /// branch's so far); `null` for other tasks.
