@@ -100,7 +100,9 @@ impl Tree {
         for _ in 0..MAX_LAST_FREE_STEPS {
             cx.si.interpolate(from, target, step / d, scratch);
             // The step's motion, from the last free configuration (the node, at first).
-            let free = cx.si.check_step(if any_free { &*new } else { from }, scratch, found).is_ok();
+            // Past the first step, it continues from the previous step's end (its clearance is
+            // carried).
+            let free = cx.si.check_step(if any_free { &*new } else { from }, scratch, any_free, found).is_ok();
             if cx.si.stopped() {
                 // Out of time, or the batch was suspended (its answers are refused): add nothing.
                 return (Grow::Trapped, near);
