@@ -150,7 +150,7 @@ fn an_arms_carried_motion_clearance_is_a_lower_bound() {
     let arm = ArmRobot::from_spec(&p.scenario.robot).unwrap();
     let ws = p.si.workspace();
     let mut rng = crate::rng::Rng::new(7);
-    let mut state = |rng: &mut crate::rng::Rng| [0; 3].map(|_| rng.uniform(-crate::math::PI, crate::math::PI));
+    let state = |rng: &mut crate::rng::Rng| [0; 3].map(|_| rng.uniform(-crate::math::PI, crate::math::PI));
     let (mut compared, mut collinear) = (0, 0);
     for k in 0..4000 {
         let (pa, q) = (state(&mut rng), state(&mut rng));
