@@ -65,6 +65,9 @@ pub enum Entry {
         free: u64,
         /// For an invalid motion, where the state found is in the arena.
         at: usize,
+        /// For a walk's step certified by clearances, the clearance at its end, carried into the
+        /// next step (0: none).
+        end: Real,
     },
     /// A unit of work that leaves words of bits (a sensor's look, a sweep made of looks).
     Bits {
@@ -207,7 +210,9 @@ impl Journal {
         }
         self.cut(mark);
         let e = match (e, state) {
-            (Entry::Motion { ok, checks, free, .. }, Some(q)) => Entry::Motion { ok, checks, free, at: self.store(q) },
+            (Entry::Motion { ok, checks, free, end, .. }, Some(q)) => {
+                Entry::Motion { ok, checks, free, at: self.store(q), end }
+            }
             (e, _) => e,
         };
         self.push(e);

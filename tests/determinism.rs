@@ -95,8 +95,8 @@ fn runs_on_a_simulated_clock_match_the_pinned_fingerprints() {
 
 /// The same, beyond the pinned runs: every robot's way of checking motions (the point's exact
 /// sweep, the arm's and the rigid body's clearances, the vehicle chain's own sampler), RRT*'s
-/// rewiring, inspection's sensor sweeps, the samplers that check states, and the tree variants,
-/// each compared with the same run in one go.
+/// rewiring, inspection's sensor sweeps, the samplers that check states, the tree variants, and
+/// the last-free connect's walks on bodies, each compared with the same run in one go.
 #[test]
 fn every_robot_and_planner_gives_the_same_run_in_suspended_batches() {
     let cases = [
@@ -122,6 +122,11 @@ fn every_robot_and_planner_gives_the_same_run_in_suspended_batches() {
         ("slot", "lazy-prm", serde_json::json!({ "max_iterations": 1500 })),
         ("arm-2", "prm-star", serde_json::json!({ "connect": "radius" })),
         ("zigzag", "visibility-graph", serde_json::json!({ "batch": 8 })),
+        // The last-free connect on bodies: each step carries its end's clearance into the next.
+        ("arm-3", "rrt-connect", serde_json::json!({ "connect": "last-free" })),
+        ("horn-10", "rrt-connect", serde_json::json!({ "connect": "last-free" })),
+        ("slot", "rrt-connect", serde_json::json!({ "connect": "last-free" })),
+        ("asv-3-easy", "rrt-connect", serde_json::json!({ "connect": "last-free" })),
     ];
     let mut suspended = 0;
     for (name, planner, params) in &cases {

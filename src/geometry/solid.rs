@@ -6,7 +6,7 @@
 use super::hull::Hull;
 use crate::math::Real;
 use parry3d_f64::math::{Pose, Vector};
-use parry3d_f64::shape::{Cuboid, Shape as ParryShape};
+use parry3d_f64::shape::Cuboid;
 
 /// A convex shape in its own frame.
 #[derive(Clone, Debug)]
@@ -15,16 +15,6 @@ pub enum Convex {
     Cuboid(Cuboid),
     /// The convex hull of points (its support map climbs the hull: `geometry::hull`).
     Hull(Box<Hull>),
-}
-
-impl Convex {
-    /// The shape for parry's queries.
-    pub fn shape(&self) -> &dyn ParryShape {
-        match self {
-            Convex::Cuboid(c) => c,
-            Convex::Hull(h) => &h.poly,
-        }
-    }
 }
 
 /// An axis-aligned box in 3-D, closed: `lo ..= hi`.

@@ -154,6 +154,16 @@ impl ArmRobot {
         self.links.get(k).copied().unwrap_or(self.tip)
     }
 
+    /// How far joint `i` turns along the straight joint-space motion `a → b` (the shorter way for a
+    /// joint without limits).
+    fn joint_travel(&self, i: usize, a: &[Real], b: &[Real]) -> Real {
+        if self.limits[i].is_some() {
+            (b[i] - a[i]).abs()
+        } else {
+            angle_diff(a[i], b[i]).abs()
+        }
+    }
+
     /// How fast each segment, and each pair of segments relative to each other, can move along the
     /// straight joint-space motion `a → b`, per unit of the motion's parameter `t ∈ [0, 1]`.
     ///
@@ -168,13 +178,7 @@ impl ArmRobot {
         let segs = self.point_count() - 1;
         let MotionRates { a: ra, b: rb, seg, rel, segs: rs, dq, prefix, .. } = rates;
         dq.clear();
-        dq.extend((0..n).map(|i| {
-            if self.limits[i].is_some() {
-                (b[i] - a[i]).abs()
-            } else {
-                angle_diff(a[i], b[i]).abs()
-            }
-        }));
+        dq.extend((0..n).map(|i| self.joint_travel(i, a, b)));
         // R(m, k), by prefix sums of the segment lengths.
         prefix.clear();
         prefix.push(0.0);
@@ -373,7 +377,32 @@ impl MotionModel for ArmRobot {
         }
         Some(self.clearance_at(ws, q, cap, &mut rates))
     }
+    /// Every rate of [`set_motion`](ArmRobot::set_motion) is a sum of joint travels `|Δq_m|`
+    /// times lengths `R ≥ 0`, so when each joint travels at most `μ` times as far along `a → b` as
+    /// along `pa → pb`, every rate is at most `μ` times its value there (a joint still along
+    /// `pa → pb` must be still along `a → b`, else `None`). For two steps of one walk along a line,
+    /// `μ` is the ratio of their lengths (1 but for rounding, less for the shorter last step).
+    fn motion_rate_ratio(&self, pa: &[Real], pb: &[Real], a: &[Real], b: &[Real]) -> Option<Real> {
+        let mut mu: Real = 0.0;
+        for i in 0..self.links.len() {
+            let (was, now) = (self.joint_travel(i, pa, pb), self.joint_travel(i, a, b));
+            if now == 0.0 {
+                continue;
+            }
+            if was.is_nan() || was <= 0.0 || now.is_nan() {
+                return None;
+            }
+            mu = mu.max(now / was);
+        }
+        Some(mu * (1.0 + RATE_SLACK))
+    }
 }
+
+/// The slack by which [`MotionModel::motion_rate_ratio`] is rounded up: the rates are sums of at
+/// most [`MAX_LINKS`](crate::limits::MAX_LINKS) + 1 products, each rounded (relative error below
+/// 2⁻⁵³ a term), and the ratio and the carried clearance `c / μ` are rounded once more each; 1e-12
+/// is above (66 + 2)·2⁻⁵² ≈ 1.5e-14 with room to spare, and far below any clearance that decides.
+const RATE_SLACK: Real = 1e-12;
 
 /// The cost of `path` in report 004's unit: the sum over its motions of the Euclidean norm of the
 /// difference of the stacked link-end points (the `fk` metric), for an arm of `links`.

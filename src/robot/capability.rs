@@ -61,6 +61,16 @@ pub trait MotionModel {
     fn walks_by_states(&self) -> bool {
         false
     }
+    /// A factor `μ` by which every constraint of [`motion_clearance`](MotionModel::motion_clearance)
+    /// closes at most `μ` times as fast along the motion `a → b` as along `pa → pb`, so that a
+    /// state's motion clearance `c` on `pa → pb` (a lower bound on each constraint's distance over
+    /// its rate) is at least `c / μ` on `a → b`: a walk along a line carries its step's end
+    /// clearance into the next step ([`SpaceInfo::check_step`](crate::space_info::SpaceInfo::check_step))
+    /// rather than computing it again. Rounded up. `None` (the default): not known, the clearance
+    /// is computed again.
+    fn motion_rate_ratio(&self, _pa: &[Real], _pb: &[Real], _a: &[Real], _b: &[Real]) -> Option<Real> {
+        None
+    }
 }
 
 /// The motion model of a robot that has none of its own: discrete checks at the resolution.

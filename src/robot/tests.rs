@@ -140,6 +140,48 @@ mod arm {
     }
 }
 
+/// The arm's motion clearance carried from one motion to another by
+/// [`MotionModel::motion_rate_ratio`] never exceeds the clearance computed on the other motion
+/// (it is a lower bound, so a walk's carried step stays certified), and for two steps along one
+/// line it is that clearance but for rounding.
+#[test]
+fn an_arms_carried_motion_clearance_is_a_lower_bound() {
+    let p = arm::problem("");
+    let arm = ArmRobot::from_spec(&p.scenario.robot).unwrap();
+    let ws = p.si.workspace();
+    let mut rng = crate::rng::Rng::new(7);
+    let state = |rng: &mut crate::rng::Rng| [0; 3].map(|_| rng.uniform(-crate::math::PI, crate::math::PI));
+    let (mut compared, mut collinear) = (0, 0);
+    for k in 0..4000 {
+        let (pa, q) = (state(&mut rng), state(&mut rng));
+        if !p.si.is_valid(&q) {
+            continue;
+        }
+        let pb: Vec<Real> = pa.iter().map(|v| v + rng.uniform(-0.1, 0.1)).collect();
+        // Half the time a motion along the same line (the walk's next step, shorter or longer),
+        // else any other.
+        let along = k % 2 == 0;
+        let (a, b): (Vec<Real>, Vec<Real>) = if along {
+            let s = rng.uniform(0.2, 1.5);
+            (pb.clone(), pb.iter().zip(&pa).map(|(y, x)| y + s * (y - x)).collect())
+        } else {
+            let a: Vec<Real> = state(&mut rng).to_vec();
+            let b = a.iter().map(|v| v + rng.uniform(-0.1, 0.1)).collect();
+            (a, b)
+        };
+        let Some(mu) = arm.motion_rate_ratio(&pa, &pb, &a, &b) else { continue };
+        let before = arm.motion_clearance(ws, &pa, &pb, &q, Real::INFINITY).unwrap();
+        let now = arm.motion_clearance(ws, &a, &b, &q, Real::INFINITY).unwrap();
+        assert!(before / mu <= now, "{pa:?} → {pb:?}, then {a:?} → {b:?} at {q:?}: {before} / {mu} > {now}");
+        if along && now.is_finite() {
+            assert!(before / mu >= now * (1.0 - 1e-9), "along a line: {before} / {mu} against {now}");
+            collinear += 1;
+        }
+        compared += 1;
+    }
+    assert!(compared > 1000 && collinear > 500, "{compared} compared, {collinear} along a line");
+}
+
 mod capabilities {
     use super::super::*;
     use super::{bar, ws};

@@ -20,6 +20,8 @@ mod deadline;
 mod explain;
 mod motion;
 mod sight;
+#[cfg(test)]
+mod tests;
 
 pub use deadline::{Deadline, CLOCK_EVERY, SLOW_LOOK_MS};
 
@@ -44,6 +46,9 @@ pub struct SpaceInfo {
     free: Cell<u64>,
     /// Scratch for the clearances along a motion (reused, so checking does not allocate).
     clearances: RefCell<Vec<Real>>,
+    /// The last step of a walk along a line: its motion and the clearance at its end, carried
+    /// into the next step (see [`SpaceInfo::check_step`]).
+    carry: RefCell<motion::Carry>,
     /// The run's deadline (see [`Deadline`]), and whether work was cut short by it.
     deadline: Cell<Deadline>,
     interrupted: Cell<bool>,
@@ -70,6 +75,7 @@ impl SpaceInfo {
             checks: Cell::new(0),
             free: Cell::new(0),
             clearances: RefCell::new(Vec::new()),
+            carry: RefCell::new(motion::Carry::default()),
             deadline: Cell::new(Deadline::NONE),
             interrupted: Cell::new(false),
             ticks: Cell::new(0),

@@ -58,6 +58,26 @@ enum Clearance<'m> {
     Workspace,
 }
 
+/// The last step of a walk along a line ([`SpaceInfo::check_step`]) found free by clearances:
+/// its motion `a → b` and the clearance computed at `b`, which is the next step's start.
+#[derive(Debug, Default)]
+pub(super) struct Carry {
+    /// Whether the last step checked was certified free by clearances (else nothing is carried).
+    valid: bool,
+    a: Vec<Real>,
+    b: Vec<Real>,
+    /// The clearance at `b` on `a → b` (capped there), positive.
+    clear: Real,
+}
+
+/// A motion checked as one step of a walk ([`SpaceInfo::check_step`]), with the clearance carried
+/// into its start from the previous step, if any: a lower bound of the clearance at `a` in the
+/// units the step is certified in, before the step's cap.
+#[derive(Clone, Copy, Debug)]
+struct Step {
+    carried: Option<Real>,
+}
+
 /// Deepest bisection when certifying one interval (2^-40 of a resolution step).
 const MAX_DEPTH: u32 = 40;
 
@@ -123,6 +143,8 @@ impl SpaceInfo {
     /// Like the discrete check, but computing each state's clearance (capped at the per-step
     /// displacement) and then certifying every interval between checked states. `disp` bounds
     /// any body point's travel over the motion in the clearances' units (1 along the motion).
+    /// A walk's `step` takes the clearance at `a` carried from the previous step, when there is
+    /// one, rather than computing it, and carries the one at `b` into the next step when free.
     #[allow(clippy::too_many_arguments)]
     fn check_certified(
         &self,
@@ -132,6 +154,7 @@ impl SpaceInfo {
         n: usize,
         disp: Real,
         m: Clearance,
+        step: Option<Step>,
         scratch: &mut [Real],
     ) -> Result<(), Invalid> {
         let cap = disp / n as Real;
@@ -153,7 +176,11 @@ impl SpaceInfo {
                     Ok(())
                 }
             })?;
-            clear[0] = self.clearance_checked(model, m, a, cap);
+            // Carried: a lower bound of the clearance at `a`, capped as a computed one is.
+            clear[0] = match step.and_then(|s| s.carried) {
+                Some(c) => c.min(cap),
+                None => self.clearance_checked(model, m, a, cap),
+            };
             for i in 0..n {
                 if clear[i] + clear[i + 1] <= cap {
                     let (t0, t1) = (i as Real / n as Real, (i + 1) as Real / n as Real);
@@ -162,6 +189,9 @@ impl SpaceInfo {
             }
             Ok(())
         })();
+        if step.is_some() && outcome.is_ok() {
+            self.keep_carry(a, b, clear[n]);
+        }
         self.clearances.replace(clear);
         outcome
     }
@@ -203,7 +233,7 @@ const STEP_SLACK: Real = 1e-9;
 
 impl MotionValidator for SpaceInfo {
     fn check_motion(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Invalid> {
-        self.check_motion_at(a, b, self.resolution, scratch)
+        self.check_motion_at(a, b, self.resolution, None, scratch)
     }
 }
 
@@ -221,10 +251,20 @@ impl SpaceInfo {
     ///   the resolution (a hair of slack, `STEP_SLACK`, for the running sum's rounding), so
     ///   nothing between two steps goes unchecked: a point tests `b` (one state check) and the
     ///   segment exactly (the sweep is not a state check), so it still counts one check per
-    ///   configuration; a body computes clearances at `b`, at `a` again and at the bisections that
-    ///   certify the motion, each a state check, free when positive (a robot with its own step
-    ///   rule, the vehicle chain, also at the states the rule puts between).
-    pub fn check_step(&self, a: &[Real], b: &[Real], scratch: &mut [Real]) -> Result<(), Invalid> {
+    ///   configuration; a body computes clearances at `b` and at the bisections that certify the
+    ///   motion, each a state check, free when positive (a robot with its own step rule, the
+    ///   vehicle chain, also at the states the rule puts between), and at `a` on the walk's first
+    ///   step only.
+    ///
+    /// `continues`: `a` is the end of the step checked just before, by this method, in the same
+    /// walk, and found free. Its clearance, computed by that step, is then carried rather than
+    /// computed again: a workspace clearance (rigid body, vehicle chain) does not depend on the
+    /// motion, and a clearance along the motion (planar arm) is divided by the motion model's
+    /// [`motion_rate_ratio`](crate::robot::MotionModel::motion_rate_ratio) of the two steps (their
+    /// lengths' ratio, along one line). A walk's first step has `continues` false, so nothing is
+    /// carried from one walk into another (a batch replays each walk alone, see
+    /// [`crate::journal`]).
+    pub fn check_step(&self, a: &[Real], b: &[Real], continues: bool, scratch: &mut [Real]) -> Result<(), Invalid> {
         if self.validity.robot.motion().is_none_or(|m| m.walks_by_states()) {
             if self.is_valid(b) {
                 return Ok(());
@@ -232,11 +272,48 @@ impl SpaceInfo {
             scratch.copy_from_slice(b);
             return Err(Invalid);
         }
-        self.check_motion_at(a, b, self.resolution * (1.0 + STEP_SLACK), scratch)
+        let carried = if continues { self.carried(a, b) } else { None };
+        self.carry.borrow_mut().valid = false;
+        let step = Some(Step { carried });
+        self.check_motion_at(a, b, self.resolution * (1.0 + STEP_SLACK), step, scratch)
     }
 
-    /// The motion check with states at most `resolution` apart, journalled in a bounded batch.
-    fn check_motion_at(&self, a: &[Real], b: &[Real], resolution: Real, scratch: &mut [Real]) -> Result<(), Invalid> {
+    /// The clearance the last step carries into the step `a → b`, when that step ended at `a`
+    /// (see [`SpaceInfo::check_step`]).
+    fn carried(&self, a: &[Real], b: &[Real]) -> Option<Real> {
+        let c = self.carry.borrow();
+        if !c.valid || c.b != a {
+            return None;
+        }
+        let model = self.motion_model();
+        if model.has_motion_clearance() {
+            model.motion_rate_ratio(&c.a, &c.b, a, b).map(|mu| c.clear / mu)
+        } else {
+            Some(c.clear)
+        }
+    }
+
+    /// Keep the clearance `clear` at the end of the step `a → b`, found free, for the next step.
+    fn keep_carry(&self, a: &[Real], b: &[Real], clear: Real) {
+        let mut c = self.carry.borrow_mut();
+        c.valid = clear > 0.0;
+        c.clear = clear;
+        c.a.clear();
+        c.a.extend_from_slice(a);
+        c.b.clear();
+        c.b.extend_from_slice(b);
+    }
+
+    /// The motion check with states at most `resolution` apart, journalled in a bounded batch
+    /// (a walk's `step` with the clearance it carries to the next: replayed with it).
+    fn check_motion_at(
+        &self,
+        a: &[Real],
+        b: &[Real],
+        resolution: Real,
+        step: Option<Step>,
+        scratch: &mut [Real],
+    ) -> Result<(), Invalid> {
         // Cut short by the deadline (or a suspended batch): refuse at once, accept nothing
         // unchecked.
         if self.stopped() {
@@ -244,19 +321,23 @@ impl SpaceInfo {
             return Err(Invalid);
         }
         if !self.journal_on() {
-            return self.check_motion_now(a, b, resolution, scratch);
+            return self.check_motion_now(a, b, resolution, step, scratch);
         }
         // In a bounded batch: a finished check is answered from the journal, one cut short
         // resumes where it stopped, and a check that finishes is kept as one entry.
         let mark = self.journal.borrow().mark();
         let done = match self.journal.borrow().peek() {
-            Some(&Entry::Motion { ok, checks, free, at }) => Some((ok, checks, free, at)),
+            Some(&Entry::Motion { ok, checks, free, at, end }) => Some((ok, checks, free, at, end)),
             _ => None,
         };
-        if let Some((ok, checks, free, at)) = done {
+        if let Some((ok, checks, free, at, end)) = done {
             self.journal.borrow_mut().take();
             self.count_checks(checks);
             self.count_free(free);
+            if step.is_some() && end > 0.0 {
+                // The clearance the step carried to the next, as when it was computed.
+                self.keep_carry(a, b, end);
+            }
             if ok {
                 return Ok(());
             }
@@ -264,17 +345,28 @@ impl SpaceInfo {
             return Err(Invalid);
         }
         let (before, free_before) = (self.checks(), self.free_checks());
-        let outcome = self.check_motion_now(a, b, resolution, scratch);
+        let outcome = self.check_motion_now(a, b, resolution, step, scratch);
         if !self.stopped() {
             let (checks, free) = (self.checks() - before, self.free_checks() - free_before);
-            let entry = Entry::Motion { ok: outcome.is_ok(), checks, free, at: 0 };
+            let end = match (step, &*self.carry.borrow()) {
+                (Some(_), c) if c.valid => c.clear,
+                _ => 0.0,
+            };
+            let entry = Entry::Motion { ok: outcome.is_ok(), checks, free, at: 0, end };
             self.journal.borrow_mut().compact(mark, entry, outcome.is_err().then_some(&*scratch));
         }
         outcome
     }
 
     /// The motion check itself, with states at most `resolution` apart.
-    fn check_motion_now(&self, a: &[Real], b: &[Real], resolution: Real, scratch: &mut [Real]) -> Result<(), Invalid> {
+    fn check_motion_now(
+        &self,
+        a: &[Real],
+        b: &[Real],
+        resolution: Real,
+        step: Option<Step>,
+        scratch: &mut [Real],
+    ) -> Result<(), Invalid> {
         let d = self.distance(a, b);
         let model = self.motion_model();
         // More steps than can be checked (unreachable for states in bounds: `Problem` refuses
@@ -304,8 +396,10 @@ impl SpaceInfo {
                 }
                 Ok(())
             }
-            Mode::AlongMotion => self.check_certified(model, a, b, n, 1.0, Clearance::Motion(a, b), scratch),
-            Mode::InWorkspace { disp } => self.check_certified(model, a, b, n, disp, Clearance::Workspace, scratch),
+            Mode::AlongMotion => self.check_certified(model, a, b, n, 1.0, Clearance::Motion(a, b), step, scratch),
+            Mode::InWorkspace { disp } => {
+                self.check_certified(model, a, b, n, disp, Clearance::Workspace, step, scratch)
+            }
             Mode::Discrete => self.check_discrete(a, b, n, scratch),
         }
     }

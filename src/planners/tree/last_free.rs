@@ -30,11 +30,12 @@
 //!     corner ends the connect (its check counted free, as the configuration is; no check of the
 //!     connect found a collision);
 //!   - a body (planar arm, rigid body, vehicle chain) certifies the step's motion by clearances:
-//!     the configuration's, the previous configuration's again, and those of the bisections that
+//!     the configuration's, the previous configuration's (computed on the first step only: a
+//!     continuing step carries it from the step before), and those of the bisections that
 //!     certify what lies between (and of the states a vehicle chain's own step rule puts there),
-//!     each a state check, free when positive: `checks` is the collision work done, at least two
-//!     per free step, and `free_checks` counts the positive clearances, not the configurations
-//!     kept; a step that is not free has one clearance of 0, the last computed, where the
+//!     each a state check, free when positive: `checks` is the collision work done, at least one
+//!     per free step (two on the first), and `free_checks` counts the positive clearances, not the
+//!     configurations kept; a step that is not free has one clearance of 0, the last computed, where the
 //!     collision was found (unless the bisection's depth limit, 2⁻⁴⁰ of a step, refused it);
 //! - the node is chosen by [`Tree::select`] (exhausted nodes and the weighted policy apply), and a
 //!   sample beyond that node's dynamic domain is rejected before any check;
@@ -100,7 +101,9 @@ impl Tree {
         for _ in 0..MAX_LAST_FREE_STEPS {
             cx.si.interpolate(from, target, step / d, scratch);
             // The step's motion, from the last free configuration (the node, at first).
-            let free = cx.si.check_step(if any_free { &*new } else { from }, scratch, found).is_ok();
+            // Past the first step, it continues from the previous step's end (its clearance is
+            // carried).
+            let free = cx.si.check_step(if any_free { &*new } else { from }, scratch, any_free, found).is_ok();
             if cx.si.stopped() {
                 // Out of time, or the batch was suspended (its answers are refused): add nothing.
                 return (Grow::Trapped, near);
