@@ -78,7 +78,7 @@ test('puma-rbo-wall: six sliders pose the arm; into the wall it says what meets 
     const s = page.locator(`#pose-q${i + 1}`);
     const [lo, hi] = puma.robot.joints[i].limits;
     assert.ok(Math.abs(Number(await s.getAttribute('min')) - lo) < 1e-12 && Math.abs(Number(await s.getAttribute('max')) - hi) < 1e-12, `joint ${i + 1} within its limits`);
-    assert.equal(await page.locator(`label[for=pose-q${i + 1}]`).first().locator('span').first().textContent(), `Joint ${i + 1}`, 'labelled');
+    assert.equal(await page.getByRole('slider', { name: `Joint ${i + 1}`, exact: true }).getAttribute('id'), `pose-q${i + 1}`, 'named for screen readers');
   }
   assert.deepEqual((await pose()).q, puma.start, 'the sliders start at the start pose');
   assert.match(await page.locator('#pose-q3').getAttribute('aria-valuetext'), /^90° \(1\.571 rad\)$/, 'degrees and radians, read out too');

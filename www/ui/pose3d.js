@@ -99,7 +99,9 @@ export class PosePanel {
     for (let i = 0; i < n; i++) {
       const [lo, hi] = this.limits[i];
       const id = `pose-q${i + 1}`;
-      const input = el('input', { id, type: 'range', min: String(lo), max: String(hi), step: String(STEP), value: String(this.q[i]) });
+      // named "Joint i" (the label around it would add the value and the limits to its name), its limits as its description
+      const input = el('input', { id, type: 'range', min: String(lo), max: String(hi), step: String(STEP), value: String(this.q[i]),
+        'aria-label': `Joint ${i + 1}`, 'aria-describedby': `${id}-limits` });
       const out = el('output', { htmlFor: id });
       input.addEventListener('input', () => {
         this.q[i] = Math.min(hi, Math.max(lo, Number(Number(input.value).toFixed(9))));
@@ -109,7 +111,7 @@ export class PosePanel {
       this.sliders.push({ input, out });
       grid.append(el('label', { className: 'pose-joint', htmlFor: id },
         el('span', { text: `Joint ${i + 1}` }), input, out,
-        el('span', { className: 'pose-limits', text: `${degrees(lo)} … ${degrees(hi)}` })));
+        el('span', { id: `${id}-limits`, className: 'pose-limits', text: `limits ${degrees(lo)} … ${degrees(hi)}` })));
     }
     this.status = el('p', { id: 'pose-status', className: 'pose-status', role: 'status' });
     this.message = el('p', { id: 'pose-message', className: 'hint pose-message', role: 'status' });
