@@ -46,6 +46,10 @@ const PAIRS = [
   ['cellOpen', 'cellVisited', 'open and closed cells (A*, Dijkstra)'],
   ['cellOpen', 'cellBlocked', 'open and step-blocked cells'],
   ['cellOpen', 'cellFree', 'open and free cells'],
+  ['posed', 'posedCollides', 'an arm posed free and in collision'],
+  ['posedCollides', 'obstacle', 'an arm in collision and an obstacle'],
+  ['posedCollides', 'start', 'an arm in collision and the start'],
+  ['posed', 'obstacle', 'an arm posed and an obstacle'],
 ];
 const MIN_DELTA_E = 12;
 

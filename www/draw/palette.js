@@ -70,6 +70,10 @@ export const PALETTE = Object.freeze({
   // The informed set (Informed RRT*): its latest ellipse, the earlier ones faint
   informed: '#6a3d9a',
   densityPick: '#882255',
+  // The 3-D view's arm posed by hand (www/ui/pose3d.js): blue when free, red when it collides (the
+  // panel's text says which, for colour-blind users too)
+  posed: '#0072b2',
+  posedCollides: '#e8112d',
 });
 
 // How each event kind is drawn. `layer`: 'under', 'tree', 'over' (persistent, incremental),

@@ -28,12 +28,15 @@ export class View3dSlot {
     this.showResult = false;
     this.dirty = false;
     this.error = '';
+    this.manual = null;     // the arm posed by hand (www/ui/pose3d.js): {frames, colour, ghost}
+    this.posing = false;    // posed since the run began: the path's animation waits for the next run
   }
 
   /** A scene was loaded: `spatial` (the `loaded` reply's, present when `caps.view3d`) or null. */
   async setScene(spatial, view3d) {
     const gen = ++this.generation;
     this.spatial = view3d && spatial ? spatial : null;
+    this.manual = null;
     this.active = !!this.spatial;
     this.canvas.hidden = !this.active;
     this.clearRun();
@@ -48,6 +51,7 @@ export class View3dSlot {
       }
       if (gen !== this.generation) return;
       this.view.setScene(this.spatial);
+      this.view.setManual(this.manual);
       this.error = '';
     } catch (e) {
       this.error = String(e?.message || e);
@@ -86,7 +90,24 @@ export class View3dSlot {
     }
   }
 
+  /**
+   * The arm posed by hand (link frames from the core, drawn in `colour`, the start as a ghost when
+   * `ghost`), or null. Posing by hand (`byHand`: a slider moved, a pose loaded) stops the path's
+   * animation until the next run; a pose kept across a load does not.
+   * @param {{frames: Float64Array, colour: string, ghost: boolean} | null} manual
+   * @param {boolean} byHand
+   */
+  setManual(manual, byHand) {
+    this.manual = manual;
+    if (!byHand) { this.view?.setManual(manual); return; }
+    this.posing = true;
+    this.poseIndex = -1;
+    this.view?.setPose(null);
+    this.view?.setManual(manual);
+  }
+
   clearRun() {
+    this.posing = false;
     this.nodes.clear();
     this.path = null;
     this.showResult = false;
@@ -105,7 +126,7 @@ export class View3dSlot {
 
   /** Each page frame: once solved, the arm at the path pose of the page's animation (`fps` poses a second). */
   render(time, fps) {
-    if (!this.view || !this.showResult || !this.path || !this.path.count) return;
+    if (!this.view || !this.showResult || !this.path || !this.path.count || this.posing) return;
     const { frames, count, links } = this.path;
     const k = Math.floor((time / 1000) * fps) % count;
     if (k === this.poseIndex) return;

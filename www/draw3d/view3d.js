@@ -42,6 +42,7 @@ export class View3D {
     this.start = null;    // link frames (Float64Array, 16 a link)
     this.goal = null;
     this.pose = null;     // the animated path pose's link frames, or null
+    this.manual = null;   // the pose set by hand (www/ui/pose3d.js): {frames, colour, ghost}, or null
     this.size = [1, 1, 1];
     this.pending = false;
     this.onFrame = null;  // (time) => void, after each frame drawn (tests and the frame-time log)
@@ -61,6 +62,7 @@ export class View3D {
     this.tool = spatial.tool;
     this.start = spatial.start;
     this.goal = spatial.goal && spatial.goal.length ? spatial.goal : null;
+    this.manual = null;
     this.clearRun();
     this.buildFloor(spatial);
     this.frameProblem();
@@ -149,6 +151,16 @@ export class View3D {
     this.requestRender();
   }
 
+  /**
+   * The arm posed by hand: its link frames, drawn in `colour` ('#rrggbb'), with the start as a
+   * ghost when `ghost`; `null`: back to the start. A path pose (`setPose`) is drawn over it.
+   * @param {{frames: Float64Array, colour: string, ghost: boolean} | null} manual
+   */
+  setManual(manual) {
+    this.manual = manual;
+    this.requestRender();
+  }
+
   resize(w, h, dpr) {
     this.canvas.style.width = `${w}px`;
     this.canvas.style.height = `${h}px`;
@@ -196,7 +208,8 @@ export class View3D {
     lines(this.grid, GRID);
     this.axes.forEach((b, k) => lines(b, AXES[k][0]));
     const P = this.palette;
-    // The arm: at the animated path pose once solved, else at the start; the goal as a ghost.
+    // The arm: at the animated path pose once solved, else as posed by hand, else at the start;
+    // the goal as a ghost (and the start, when the arm is posed elsewhere).
     gl.useProgram(mesh.p);
     gl.uniformMatrix4fv(mesh.u.view, false, new Float32Array(view));
     gl.uniformMatrix4fv(mesh.u.proj, false, new Float32Array(proj));
@@ -207,12 +220,14 @@ export class View3D {
         this.drawMesh(p.buffers, frames.subarray(p.link * 16, p.link * 16 + 16), c, alpha);
       }
     };
-    arm(this.pose || this.start, this.pose ? P.robotT : P.start, 1);
+    const hand = !this.pose && this.manual;
+    arm(this.pose || (hand ? hand.frames : this.start), this.pose ? P.robotT : hand ? hand.colour : P.start, 1);
     // Translucent last, without writing depth: the goal's ghost and the obstacles (the tool is seen through the wall).
     gl.enable(gl.BLEND);
     gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
     gl.depthMask(false);
     arm(this.goal, P.goal, 0.35);
+    if (hand && hand.ghost) arm(this.start, P.start, 0.35);
     for (const o of this.obstacles) this.drawMesh(o.buffers, IDENTITY, rgb(P.obstacle), 0.55);
     // The trees over the translucent walls (which write no depth), so a branch behind the wall keeps
     // its tree's colour; the opaque arm still hides what is behind it. Once a path is shown the

@@ -17,6 +17,7 @@ import { CSpaceView } from '../draw/cspace.js';
 import { View3dSlot } from '../draw/view3d-slot.js';
 import { Editor } from '../ui/editor.js';
 import { ObstacleEditor } from '../ui/obstacle-editor.js';
+import { PosePanel } from '../ui/pose3d.js';
 import { wireExports } from '../ui/exports.js';
 import { fitViews, downloadText, keepInView } from '../draw/stage.js';
 import { createPanel, taskOf } from '../ui/panel.js';
@@ -306,6 +307,7 @@ function showScenario({ scenario, start, goal, space, cspace: grid, optimum: bes
   obstacleEditor.loaded(src.edit);
   ui.cspace.hidden = !cspace.active;
   view3d.setScene(spatial || null, !!caps?.view3d);
+  posePanel.setScene(scenario, space, caps, src.edit);
   buildLegend();
   syncStage();
 }
@@ -332,6 +334,7 @@ function showInvalid(error, edit) {
     obstacleEditor.loaded(false);
     ui.cspace.hidden = true;
     view3d.setScene(null, false);
+    posePanel.setScene(null, null, null, false);
     syncStage();
   }
   controller.fire('invalid');
@@ -404,6 +407,10 @@ const editor = new Editor({
     send('edit', JSON.stringify(scenario));
   },
 });
+
+// A spatial arm posed by hand under the 3-D view (pose3d.js): its sliders, whether the pose is
+// free, and Set as start / goal through the editor above.
+const posePanel = new PosePanel({ root: $('pose3d'), slot: view3d, editor, palette: PALETTE });
 
 // Obstacles and bounds: drawn, moved, resized, deleted; undo/redo; saved as JSON (obstacle-editor.js)
 
@@ -541,6 +548,8 @@ Object.defineProperty(window, 'planarium', {
       viewProj: () => (view3d.view?.matrices ? [...view3d.view.matrices.viewProj] : null),
       /** Resolves with the requestAnimationFrame deltas (ms) of the next `n` frames the view draws while it turns. */
       orbitFrameTimes: (n) => view3d.view?.orbitFrameTimes(n) ?? Promise.resolve([]),
+      /** The pose panel: {q (radians), status, collision, message}. */
+      pose: () => posePanel.state(),
     }),
   }),
   writable: false,

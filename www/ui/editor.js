@@ -153,6 +153,23 @@ export class Editor {
     return set;
   }
 
+  /**
+   * Set the start or goal to joint angles `q` (the 3-D view's pose panel, www/ui/pose3d.js), as a
+   * slider's commit does: the edited scenario goes to the worker. False when there is no such
+   * endpoint to edit now (no scenario, another one loading, a robot not posed by joints).
+   * @param {'start' | 'goal'} which
+   * @param {number[]} q
+   */
+  setEndpoint(which, q) {
+    if (!this.scenario || this.stale || !this.jointed || !Array.isArray(this.scenario[which])) return false;
+    if (this.scenario[which].length !== q.length) return false;
+    this.scenario[which] = q.slice();
+    this.syncSliders();
+    this.onPreview(which, this.scenario[which]);
+    this.commit();
+    return true;
+  }
+
   commit() {
     if (this.restore) this.restore.disabled = !this.changed();
     this.beforeCommit?.(); // the obstacle editor's undo history
