@@ -37,6 +37,51 @@ pub struct ParamSpec {
     pub default: f64,
     /// What it does.
     pub doc: &'static str,
+    /// When it applies (none: always). A parameter that does not apply is read by nothing in that
+    /// set-up: the page hides it, the CLI's help says when it applies and a run that sets it
+    /// anyway notes so.
+    pub applies: Option<Condition>,
+}
+
+/// The set-up under which a parameter applies: another parameter of the same planner (its own, a
+/// group's, or the run's) has one of some values.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Condition {
+    /// Choice parameter `.0` is one of `.1`.
+    OneOf(&'static str, &'static [&'static str]),
+    /// Number parameter `.0` is above 0 (a variant that 0 turns off).
+    Positive(&'static str),
+}
+
+impl Condition {
+    /// The parameter it reads.
+    pub fn param(&self) -> &'static str {
+        match *self {
+            Condition::OneOf(p, _) | Condition::Positive(p) => p,
+        }
+    }
+    /// Whether it holds for `values`.
+    pub fn holds(&self, values: &dyn ParamValues) -> bool {
+        match *self {
+            Condition::OneOf(p, these) => these.contains(&values.choice(p)),
+            Condition::Positive(p) => values.real(p) > 0.0,
+        }
+    }
+    /// In words, with `flag` writing a parameter's name (`connect`, or `--connect` on the CLI):
+    /// "connect range", "dd_radius above 0".
+    pub fn describe(&self, flag: impl Fn(&str) -> String) -> String {
+        match *self {
+            Condition::OneOf(p, these) => format!("{} {}", flag(p), these.join(" or ")),
+            Condition::Positive(p) => format!("{} above 0", flag(p)),
+        }
+    }
+    /// As JSON for the page: `{"param", "one_of": [names]}` or `{"param", "above": 0}`.
+    pub fn to_json(&self) -> Value {
+        match *self {
+            Condition::OneOf(p, these) => json!({"param": p, "one_of": these}),
+            Condition::Positive(p) => json!({"param": p, "above": 0}),
+        }
+    }
 }
 
 impl ParamSpec {
@@ -49,7 +94,7 @@ impl ParamSpec {
         default: f64,
         doc: &'static str,
     ) -> Self {
-        ParamSpec { name, label, kind: ParamKind::Real, min, max, default, doc }
+        ParamSpec { name, label, kind: ParamKind::Real, min, max, default, doc, applies: None }
     }
     /// An integer parameter.
     pub const fn int(
@@ -60,7 +105,7 @@ impl ParamSpec {
         default: f64,
         doc: &'static str,
     ) -> Self {
-        ParamSpec { name, label, kind: ParamKind::Int, min, max, default, doc }
+        ParamSpec { name, label, kind: ParamKind::Int, min, max, default, doc, applies: None }
     }
     /// A choice parameter.
     pub const fn choice(
@@ -70,7 +115,28 @@ impl ParamSpec {
         default: usize,
         doc: &'static str,
     ) -> Self {
-        ParamSpec { name, label, kind: ParamKind::Choice(options), min: 0.0, max: 0.0, default: default as f64, doc }
+        ParamSpec {
+            name,
+            label,
+            kind: ParamKind::Choice(options),
+            min: 0.0,
+            max: 0.0,
+            default: default as f64,
+            doc,
+            applies: None,
+        }
+    }
+    /// The same parameter, applying only when choice parameter `param` is one of `values`.
+    pub const fn only_when(self, param: &'static str, values: &'static [&'static str]) -> Self {
+        ParamSpec { applies: Some(Condition::OneOf(param, values)), ..self }
+    }
+    /// The same parameter, applying only when number parameter `param` is above 0.
+    pub const fn only_when_positive(self, param: &'static str) -> Self {
+        ParamSpec { applies: Some(Condition::Positive(param)), ..self }
+    }
+    /// Whether it applies under `values` (a parameter without a condition always does).
+    pub fn applies_with(&self, values: &dyn ParamValues) -> bool {
+        self.applies.is_none_or(|c| c.holds(values))
     }
     /// The spec as JSON for the page.
     pub fn to_json(&self) -> Value {
@@ -84,7 +150,8 @@ impl ParamSpec {
             _ => json!(self.default),
         };
         json!({"name": self.name, "label": self.label, "kind": kind, "min": self.min, "max": self.max,
-               "default": default, "options": options, "doc": self.doc})
+               "default": default, "options": options, "doc": self.doc,
+               "applies": self.applies.map(|c| c.to_json())})
     }
     /// Check a value against the spec: a known name for a choice, a number in range (whole for an
     /// integer) otherwise. The value to keep, or what is wrong with it.

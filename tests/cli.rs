@@ -68,3 +68,42 @@ fn a_reader_that_closes_the_pipe_ends_the_command_quietly() {
     assert!(!err.contains("panicked"), "a panic on the closed pipe: {err}");
     assert!(first.starts_with(b"{"), "{}", String::from_utf8_lossy(&first));
 }
+
+#[test]
+fn a_parameter_that_does_not_apply_is_said_so_in_help_and_noted_when_passed() {
+    let (ok, help, _) = planarium(&["plan", "--help"]);
+    assert!(ok);
+    let line = |flag: &str| help.lines().find(|l| l.trim_start().starts_with(flag)).unwrap_or("").to_string();
+    assert!(line("--range ").contains("(rrt-connect: with --connect range)"), "{}", line("--range "));
+    assert!(line("--epsilon ").contains("(with --connect last-free)"), "{}", line("--epsilon "));
+    assert!(line("--sigma ").contains("(with --sampler gaussian or bridge)"), "{}", line("--sigma "));
+    // Passed where it does nothing: a note on stderr, not an error; the run goes on.
+    let (ok, _, err) = planarium(&[
+        "plan",
+        "scenarios/puma-rbo-wall.json",
+        "--range",
+        "0.5",
+        "--epsilon",
+        "1e-9",
+        "--max-iterations",
+        "3",
+    ]);
+    assert!(ok, "{err}");
+    let notes: Vec<&str> = err.lines().filter(|l| l.starts_with("note: ")).collect();
+    assert_eq!(
+        notes,
+        ["note: --range does nothing here: rrt-connect uses it only with --connect range (--connect is last-free)"]
+    );
+    let (ok, _, err) = planarium(&[
+        "plan",
+        "scenarios/puma-rbo-wall.json",
+        "--connect",
+        "range",
+        "--epsilon",
+        "1e-9",
+        "--max-iterations",
+        "3",
+    ]);
+    assert!(ok, "{err}");
+    assert!(err.contains("note: --epsilon does nothing here"), "{err}");
+}

@@ -32,11 +32,39 @@ fn all_param_specs() -> Vec<&'static planners::ParamSpec> {
     out
 }
 
+/// When parameter `name` applies, for the help: "(with --sampler gaussian or bridge)" when every
+/// planner taking it says the same, else per planner ("(rrt-connect: with --connect range)");
+/// none when it always applies.
+fn applies_note(name: &str) -> Option<String> {
+    let flag = |n: &str| format!("--{}", param_flag(n));
+    let takers: Vec<(&str, Option<planarium::params::Condition>)> =
+        planners::REGISTRY.iter().filter_map(|p| p.param(name).map(|s| (p.name, s.applies))).collect();
+    let first = takers.first()?.1;
+    if takers.iter().all(|t| t.1 == first) {
+        return first.map(|c| format!("(with {})", c.describe(flag)));
+    }
+    let mut parts: Vec<(Vec<&str>, planarium::params::Condition)> = Vec::new();
+    for (planner, c) in takers {
+        let Some(c) = c else { continue };
+        match parts.iter_mut().find(|p| p.1 == c) {
+            Some(p) => p.0.push(planner),
+            None => parts.push((vec![planner], c)),
+        }
+    }
+    let parts: Vec<String> =
+        parts.iter().map(|(ps, c)| format!("{}: with {}", ps.join(", "), c.describe(flag))).collect();
+    Some(format!("({})", parts.join("; ")))
+}
+
 fn with_param_flags(mut cmd: Command) -> Command {
     for p in all_param_specs() {
         let id: &'static str = p.name;
+        let help = match applies_note(p.name) {
+            Some(note) => format!("{} {note}", p.doc),
+            None => p.doc.to_string(),
+        };
         cmd = cmd.arg(
-            Arg::new(id).long(param_flag(p.name)).value_name("VALUE").help(p.doc).help_heading("Planner parameters"),
+            Arg::new(id).long(param_flag(p.name)).value_name("VALUE").help(help).help_heading("Planner parameters"),
         );
     }
     cmd
@@ -171,6 +199,23 @@ fn params_for(spec: &'static PlannerSpec, sc: &Scenario, m: &ArgMatches) -> Resu
                 let why = e.split_once(": ").map_or(e.as_str(), |(_, w)| w);
                 format!("--{} {v}: {why}", param_flag(p.name))
             })?;
+        }
+    }
+    // Not an error (scripts pass full parameter sets), but a flag nothing reads is said so.
+    for p in all_param_specs() {
+        let Some(own) = spec.param(p.name).filter(|_| m.get_one::<String>(p.name).is_some()) else { continue };
+        if let Some(c) = own.applies.filter(|_| !own.applies_with(&params)) {
+            let flag = |n: &str| format!("--{}", param_flag(n));
+            let now = match c {
+                planarium::params::Condition::OneOf(q, _) => format!("--{} is {}", param_flag(q), params.choice(q)),
+                planarium::params::Condition::Positive(q) => format!("--{} is {}", param_flag(q), params.real(q)),
+            };
+            eprintln!(
+                "note: --{} does nothing here: {} uses it only with {} ({now})",
+                param_flag(p.name),
+                spec.name,
+                c.describe(flag)
+            );
         }
     }
     Ok(params)

@@ -111,8 +111,10 @@ pub const PARAMS: &[ParamSpec] = &[
         0,
         "random-walk: take walk_steps random steps, then descend again (Barraquand–Latombe); give-up: stop at the first local minimum.",
     ),
-    ParamSpec::int("walk_steps", "Walk steps", 1.0, 1e6, 100.0, "Random steps of one escape."),
-    ParamSpec::int("max_escapes", "Most escapes", 0.0, 1e6, 40.0, "Random walks before the planner gives up at a local minimum."),
+    ParamSpec::int("walk_steps", "Walk steps", 1.0, 1e6, 100.0, "Random steps of one escape.")
+        .only_when("escape", &["random-walk"]),
+    ParamSpec::int("max_escapes", "Most escapes", 0.0, 1e6, 40.0, "Random walks before the planner gives up at a local minimum.")
+        .only_when("escape", &["random-walk"]),
     ParamSpec::int("field_grid", "Heat-map grid", 0.0, 400.0, 40.0, "The heat map samples the field on this many × this many points over the workspace (0: none)."),
 ];
 

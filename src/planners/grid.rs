@@ -82,7 +82,8 @@ pub const PARAMS: &[ParamSpec] = &[
         0,
         "yes: 8 neighbours, a diagonal only when both cells beside it are free (don't cross corners); no: 4 neighbours; cross-corners: a diagonal whenever the motion itself is free.",
     ),
-    ParamSpec::real("weight", "Heuristic weight", 0.0, 100.0, 1.0, "A*: the weight of h (1: a shortest path; more: faster, possibly longer)."),
+    ParamSpec::real("weight", "Heuristic weight", 0.0, 100.0, 1.0, "A*: the weight of h (1: a shortest path; more: faster, possibly longer).")
+        .only_when("search", &["astar"]),
 ];
 
 /// The most cells a grid may have.

@@ -20,7 +20,7 @@ pub mod tree;
 pub mod visibility;
 
 pub use crate::params::{ParamGroup, ParamKind, ParamSpec};
-pub use params::Params;
+pub use params::{condition_problems, Params};
 pub use tree::{PlannerData, Tree};
 
 use crate::events::{EventKind, EventLog};

@@ -35,18 +35,43 @@ use crate::motion::MotionValidator;
 use crate::nn::KdTree;
 use crate::status::Grow;
 
+const DD_RADIUS: ParamSpec = ParamSpec::real("dd_radius", "Domain radius", 0.0, 1e6, 0.0, "Dynamic-Domain RRT: radius given to a node whose expansion fails; samples beyond their nearest node's radius are rejected unchecked (0: off).");
+const DD_ADAPTIVE: ParamSpec = ParamSpec::real("dd_adaptive", "Domain adaptation", 0.0, 0.99, 0.0, "Adaptive Dynamic-Domain: a radius grows by this fraction on success and shrinks by it on failure (0: fixed radius).").only_when_positive("dd_radius");
+const DD_MIN_RADIUS: ParamSpec = ParamSpec::real(
+    "dd_min_radius",
+    "Smallest domain",
+    0.0,
+    1e6,
+    0.0,
+    "Adaptive Dynamic-Domain: the smallest radius (0: the motion resolution).",
+)
+.only_when_positive("dd_radius");
+const EXHAUSTED: ParamSpec = ParamSpec::int(
+    "exhausted",
+    "Exhausted after",
+    0.0,
+    1e6,
+    0.0,
+    "Exhausted nodes: failed expansions after which a node is exhausted (0: off).",
+);
+const EXHAUSTED_POLICY: ParamSpec = ParamSpec::choice("exhausted_policy", "Exhausted policy", &["drop", "weighted"], 0, "drop: exhausted nodes leave nearest-neighbour selection; weighted: pick the lowest distance-plus-failures score H.").only_when_positive("exhausted");
+const LADDER: ParamSpec = ParamSpec::int("ladder", "Ladder steps", 0.0, 64.0, 0.0, "When a step collides, try up to this many steps that move only a random half of the coordinates (report 000's ladder move, generalised; 0: off; range steps only: nothing with RRT-Connect's last-free connect).");
+
 /// The tree variants' parameters, shared by RRT and RRT-Connect.
-pub static TREE_PARAMS: &[ParamSpec] = &[
-    ParamSpec::real("dd_radius", "Domain radius", 0.0, 1e6, 0.0, "Dynamic-Domain RRT: radius given to a node whose expansion fails; samples beyond their nearest node's radius are rejected unchecked (0: off)."),
-    ParamSpec::real("dd_adaptive", "Domain adaptation", 0.0, 0.99, 0.0, "Adaptive Dynamic-Domain: a radius grows by this fraction on success and shrinks by it on failure (0: fixed radius)."),
-    ParamSpec::real("dd_min_radius", "Smallest domain", 0.0, 1e6, 0.0, "Adaptive Dynamic-Domain: the smallest radius (0: the motion resolution)."),
-    ParamSpec::int("exhausted", "Exhausted after", 0.0, 1e6, 0.0, "Exhausted nodes: failed expansions after which a node is exhausted (0: off)."),
-    ParamSpec::choice("exhausted_policy", "Exhausted policy", &["drop", "weighted"], 0, "drop: exhausted nodes leave nearest-neighbour selection; weighted: pick the lowest distance-plus-failures score H."),
-    ParamSpec::int("ladder", "Ladder steps", 0.0, 64.0, 0.0, "When a step collides, try up to this many steps that move only a random half of the coordinates (report 000's ladder move, generalised; 0: off; range steps only: nothing with RRT-Connect's last-free connect)."),
-];
+pub static TREE_PARAMS: &[ParamSpec] = &[DD_RADIUS, DD_ADAPTIVE, DD_MIN_RADIUS, EXHAUSTED, EXHAUSTED_POLICY, LADDER];
 
 /// The tree variants as a group of the page's parameter panel.
 pub const TREE_GROUP: ParamGroup = ParamGroup { name: "tree", label: "Tree variants", params: TREE_PARAMS };
+
+/// The same parameters for RRT-Connect, whose `connect` decides whether ladder steps are taken:
+/// ladder steps are range steps, and the last-free connect takes none.
+pub static CONNECT_TREE_PARAMS: &[ParamSpec] =
+    &[DD_RADIUS, DD_ADAPTIVE, DD_MIN_RADIUS, EXHAUSTED, EXHAUSTED_POLICY, LADDER.only_when("connect", &["range"])];
+
+/// The tree variants as RRT-Connect takes them: the group of the same name (values set in the page
+/// are shared with RRT's), `ladder` applying with `connect` = `range` only.
+pub const CONNECT_TREE_GROUP: ParamGroup =
+    ParamGroup { name: TREE_GROUP.name, label: TREE_GROUP.label, params: CONNECT_TREE_PARAMS };
 
 /// How a tree chooses the node to grow, from [`TREE_PARAMS`].
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

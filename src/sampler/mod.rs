@@ -70,7 +70,7 @@ pub static SAMPLER_PARAMS: &[ParamSpec] = &[
         1.0,
         0.05,
         "Gaussian and bridge samplers: standard deviation, as a fraction of each coordinate's range.",
-    ),
+    ).only_when("sampler", &["gaussian", "bridge"]),
     ParamSpec::real(
         "collision_sigma",
         "Collision sigma",
@@ -78,7 +78,7 @@ pub static SAMPLER_PARAMS: &[ParamSpec] = &[
         1.0,
         0.03,
         "Near-collision sampler: standard deviation around the last collision point (fraction of each range).",
-    ),
+    ).only_when("sampler", &["near-collision"]),
     ParamSpec::real(
         "random_sigma",
         "Random sigma",
@@ -86,7 +86,7 @@ pub static SAMPLER_PARAMS: &[ParamSpec] = &[
         10.0,
         0.5,
         "Near-collision sampler: standard deviation around a random centre (fraction of each range).",
-    ),
+    ).only_when("sampler", &["near-collision"]),
     ParamSpec::int(
         "perseverance",
         "Perseverance",
@@ -94,7 +94,7 @@ pub static SAMPLER_PARAMS: &[ParamSpec] = &[
         1e6,
         20.0,
         "Near-collision sampler: samples around one centre before re-centring at random.",
-    ),
+    ).only_when("sampler", &["near-collision"]),
     ParamSpec::real(
         "uniform_share",
         "Uniform share",
@@ -102,7 +102,7 @@ pub static SAMPLER_PARAMS: &[ParamSpec] = &[
         1.0,
         0.1,
         "Gaussian, bridge, obstacle and near-collision samplers: probability of a plain uniform sample instead (the hybrid form; 0: the pure sampler).",
-    ),
+    ).only_when("sampler", &["gaussian", "bridge", "obstacle", "near-collision"]),
     ParamSpec::int(
         "sampler_tries",
         "Sampler tries",
@@ -110,7 +110,7 @@ pub static SAMPLER_PARAMS: &[ParamSpec] = &[
         1e4,
         100.0,
         "Attempts (of one or two draws) a validity-checking sampler makes for one sample before giving up.",
-    ),
+    ).only_when("sampler", &["gaussian", "bridge", "obstacle"]),
 ];
 
 /// The sampler parameters as a group of the page's parameter panel.

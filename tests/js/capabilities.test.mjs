@@ -94,18 +94,27 @@ test('every robot kind has a drawing and a pose the editor knows', () => {
   assert.equal(plannerCaps('none-such').queries, false);
 });
 
-test('parameters shown only where they act name parameters the registry declares (APPLIES)', async () => {
-  const { APPLIES } = await import('../../www/ui/panel.js');
-  const declared = new Set(registry.planners.flatMap((p) => [...p.params, ...p.groups.flatMap((g) => g.params)]).map((s) => s.name));
-  for (const name of Object.keys(APPLIES)) assert.ok(declared.has(name), `APPLIES names ${name}, which no planner declares`);
-  // RRT-Connect's last-free connect: epsilon acts only in it, ladder steps (range steps) only outside it;
-  // a planner without `connect` (RRT) shows its ladder.
-  const connect = registry.planners.find((p) => p.params.some((s) => s.name === 'epsilon')).params.find((s) => s.name === 'connect');
-  assert.deepEqual(connect.options, ['range', 'last-free']);
-  const values = (v) => (name) => v[name];
-  assert.equal(APPLIES.epsilon(values({ connect: 'last-free' })), true);
-  assert.equal(APPLIES.epsilon(values({ connect: 'range' })), false);
-  assert.equal(APPLIES.ladder(values({ connect: 'last-free' })), false);
-  assert.equal(APPLIES.ladder(values({ connect: 'range' })), true);
-  assert.equal(APPLIES.ladder(values({})), true);
+test('a parameter is shown where it acts by the registry\'s condition (applies), not by its name', async () => {
+  const { applies } = await import('../../www/ui/panel.js');
+  const rc = registry.planners.find((p) => p.params.some((s) => s.name === 'epsilon'));
+  const own = (n) => rc.params.find((s) => s.name === n);
+  const ladder = rc.groups.flatMap((g) => g.params).find((s) => s.name === 'ladder');
+  const values = (v) => (name) => v[name] ?? [...rc.params, ...rc.groups.flatMap((g) => g.params)].find((s) => s.name === name)?.default;
+  // RRT-Connect's last-free connect: epsilon acts only in it, range and ladder steps only outside it.
+  assert.equal(applies(own('epsilon'), values({ connect: 'last-free' })), true);
+  assert.equal(applies(own('epsilon'), values({ connect: 'range' })), false);
+  assert.equal(applies(own('range'), values({ connect: 'last-free' })), false);
+  assert.equal(applies(own('range'), values({})), true);
+  assert.equal(applies(ladder, values({ connect: 'last-free' })), false);
+  assert.equal(applies(ladder, values({ connect: 'range' })), true);
+  // A planner without `connect` (RRT) shows its ladder; dynamic-domain adaptation needs a radius.
+  const rrt = registry.planners.find((p) => p.name === 'rrt');
+  const tree = rrt.groups.find((g) => g.params.some((s) => s.name === 'ladder')).params;
+  assert.equal(tree.find((s) => s.name === 'ladder').applies, null);
+  const adaptive = tree.find((s) => s.name === 'dd_adaptive');
+  assert.equal(applies(adaptive, (n) => ({ dd_radius: 0 })[n]), false);
+  assert.equal(applies(adaptive, (n) => ({ dd_radius: 0.2 })[n]), true);
+  // The panel reads conditions, never parameter names.
+  const panel = readFileSync(join(ROOT, 'www', 'ui', 'panel.js'), 'utf8');
+  for (const name of ['connect', 'sampler', 'dd_radius', 'exhausted', 'epsilon', 'ladder']) assert.doesNotMatch(panel, new RegExp(`['"]${name}['"]`), name);
 });

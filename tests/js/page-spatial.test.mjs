@@ -53,3 +53,23 @@ test('puma-rbo-wall: a run in the worker gives the native counts for seed 1', as
   await nextFrames();
   await page.screenshot({ path: join(shots, 'page-puma-solved.png') });
 });
+
+test('puma-rbo-wall: range is not offered in last-free mode; switching connect shows it and hides epsilon, values kept', async () => {
+  await pickScenario('puma-rbo-wall', "Puma 560 through a window (report 001's course)");
+  assert.equal(await page.inputValue('#param-connect'), 'last-free');
+  const shown = (name) => page.isVisible(`#param-${name}`);
+  assert.equal(await shown('range'), false, 'range is not used by the last-free connect');
+  assert.equal(await shown('ladder'), false, 'ladder steps are range steps');
+  assert.equal(await shown('epsilon'), true);
+  await page.selectOption('#param-connect', 'range');
+  assert.equal(await shown('range'), true, 'range steps the range connect');
+  assert.equal(await shown('ladder'), true);
+  assert.equal(await shown('epsilon'), false, 'epsilon is the last-free connect\'s');
+  await page.fill('#param-range', '0.3');
+  await page.dispatchEvent('#param-range', 'change');
+  await page.selectOption('#param-connect', 'last-free');
+  assert.equal(await shown('range'), false);
+  assert.equal(await shown('epsilon'), true);
+  await page.selectOption('#param-connect', 'range');
+  assert.equal(await page.inputValue('#param-range'), '0.3', 'the value is kept while hidden');
+});

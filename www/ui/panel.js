@@ -3,7 +3,9 @@
 // task: 'goal' | 'inspection'}], run_params: [ParamSpec]}), as OMPL generates parameter UIs from
 // declareParam. No planner is named in this file.
 //
-// ParamSpec: {name, label, kind: 'real' | 'int' | 'choice', min, max, default, options, doc}.
+// ParamSpec: {name, label, kind: 'real' | 'int' | 'choice', min, max, default, options, doc, applies}.
+// `applies` (null: always) is when the parameter acts: a parameter that does not act under the
+// values chosen is hidden, its value kept (see `applies`).
 // A planner's own parameters come first, then one fieldset per shared group (the sampler, the tree
 // variants), then the run's limits. Values set in a group are shared by every planner that has
 // the group (a planner's own parameter of the same name is already left out of its group).
@@ -20,23 +22,19 @@ import { readSeed, blockSeedProblem } from './seed.js';
 export const MAIN_PARAMS = 3;
 
 /**
- * Parameters that only act under another's value (their doc strings say so): shown only then.
- * `values(name)` gives a parameter's value (set, or its default).
- * @type {Record<string, (values: (name: string) => any) => boolean>}
+ * Whether a parameter applies under the values chosen, from its spec's `applies` (the core's
+ * condition: `{param, one_of: [names]}` or `{param, above: 0}`; null: always). `value(name)` gives
+ * a parameter's value (set, or its default).
+ * @param {{applies?: {param: string, one_of?: string[], above?: number} | null}} spec
+ * @param {(name: string) => any} value
  */
-export const APPLIES = Object.freeze({
-  sigma: (v) => ['gaussian', 'bridge'].includes(v('sampler')),
-  collision_sigma: (v) => v('sampler') === 'near-collision',
-  random_sigma: (v) => v('sampler') === 'near-collision',
-  perseverance: (v) => v('sampler') === 'near-collision',
-  sampler_tries: (v) => ['gaussian', 'bridge', 'obstacle'].includes(v('sampler')),
-  uniform_share: (v) => ['gaussian', 'bridge', 'obstacle', 'near-collision'].includes(v('sampler')),
-  dd_adaptive: (v) => Number(v('dd_radius')) > 0,
-  dd_min_radius: (v) => Number(v('dd_radius')) > 0,
-  exhausted_policy: (v) => Number(v('exhausted')) > 0,
-  epsilon: (v) => v('connect') === 'last-free',
-  ladder: (v) => v('connect') !== 'last-free',
-});
+export function applies(spec, value) {
+  const c = spec.applies;
+  if (!c) return true;
+  if (Array.isArray(c.one_of)) return c.one_of.includes(value(c.param));
+  if (typeof c.above === 'number') return Number(value(c.param)) > c.above;
+  return true;
+}
 
 /** Parse an input's text for `spec`: {ok, value} or {ok: false, why}. Empty text: {ok, value: undefined}. */
 export function parseParam(spec, text) {
@@ -83,7 +81,7 @@ export function createPanel(root, registry, onChange, { prefix = '', seed: withS
   };
   for (const p of planners) for (const g of groupsOf(p)) state.groups[g.name] ||= {};
   const controls = [];
-  const fields = new Map(); // parameter name → its label, for APPLIES
+  const fields = new Map(); // parameter name → {label, spec}, for `applies`
   const id = (name) => `${prefix}${name}`;
 
   const plannerSelect = el('select', { id: id('planner') });
@@ -169,11 +167,11 @@ export function createPanel(root, registry, onChange, { prefix = '', seed: withS
     });
     controls.push(input);
     const label = el('label', { className: 'field', htmlFor: fid }, el('span', { text: spec.label }), input, hint);
-    fields.set(spec.name, label);
+    fields.set(spec.name, { label, spec });
     return label;
   }
 
-  /** Show only the parameters that act under the values chosen (APPLIES). */
+  /** Show only the parameters that act under the values chosen (their specs' `applies`). */
   function syncApplies() {
     const p = current();
     const value = (name) => {
@@ -185,7 +183,12 @@ export function createPanel(root, registry, onChange, { prefix = '', seed: withS
       }
       return undefined;
     };
-    for (const [name, label] of fields) label.hidden = !!APPLIES[name] && !APPLIES[name](value);
+    const run = (name) => {
+      const spec = runParams.find((q) => q.name === name);
+      return spec ? state.run[name] ?? spec.default : undefined;
+    };
+    const any = (name) => value(name) ?? run(name);
+    for (const { label, spec } of fields.values()) label.hidden = !applies(spec, any);
   }
 
   function renderOptions() {

@@ -30,7 +30,8 @@ pub const CONNECT: ParamSpec = ParamSpec::choice(
 
 /// The `k` of the k-nearest rule (OMPL's PRM default, 10).
 pub const K: ParamSpec =
-    ParamSpec::int("k", "k", 1.0, 1000.0, 10.0, "k-nearest: vertices a new milestone is connected to.");
+    ParamSpec::int("k", "k", 1.0, 1000.0, 10.0, "k-nearest: vertices a new milestone is connected to.")
+        .only_when("connect", &["k-nearest"]);
 
 /// The radius of the radius rule.
 pub const RADIUS: ParamSpec = ParamSpec::real(
@@ -40,7 +41,8 @@ pub const RADIUS: ParamSpec = ParamSpec::real(
     1e6,
     0.0,
     "radius: connect to the vertices within this distance, in the robot's metric (0: 0.2 × the space's extent).",
-);
+)
+.only_when("connect", &["radius"]);
 
 /// The rule `params` choose among [`CONNECT`], [`K`] and [`RADIUS`].
 pub fn fixed_rule(si: &SpaceInfo, params: &Params) -> Neighbours {

@@ -20,8 +20,9 @@
 //! `Planner::verify` before `solve`), so `checks` and `free_checks` are the course's collision and
 //! free queries (for the course's robot, the spatial arm, and a point robot; see
 //! [`Tree::connect_last_free`] for a body's). Ladder steps are range steps: `ladder` does nothing
-//! with `last-free` (as a sampler's `sigma` does nothing with the uniform sampler; the page hides
-//! it).
+//! with `last-free`, and `range` nothing (as a sampler's `sigma` does nothing with the uniform
+//! sampler): their declarations say so ([`ParamSpec::only_when`]), so the page hides them and the
+//! CLI notes them.
 //!
 //! [`Rng`]: crate::rng::Rng
 
@@ -29,7 +30,7 @@ use super::{resolve_range, RANGE};
 use crate::events::EventKind;
 use crate::math::Real;
 use crate::planners::caps::{self, Capabilities, Draws, Family};
-use crate::planners::tree::{TreeOptions, TREE_GROUP};
+use crate::planners::tree::{TreeOptions, CONNECT_TREE_GROUP};
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::sampler::SAMPLER_GROUP;
 use crate::space_info::SpaceInfo;
@@ -41,7 +42,7 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     label: "RRT-Connect",
     summary: "Two trees, from start and goal, taking turns to grow toward each other.",
     params: PARAMS,
-    groups: &[SAMPLER_GROUP, TREE_GROUP],
+    groups: &[SAMPLER_GROUP, CONNECT_TREE_GROUP],
     task: TaskKind::Goal,
     caps: Capabilities {
         family: Family::Tree,
@@ -78,10 +79,12 @@ pub const EPSILON: ParamSpec = ParamSpec::real(
     1e-3,
     1e-8,
     "last-free: the trees meet when the other tree's last configuration is within this distance of the new node (the Robotics Library's epsilon; the gap between them is not checked, so keep it far below the resolution).",
-);
+)
+.only_when("connect", &["last-free"]);
 
-/// RRT-Connect's parameters.
-pub const PARAMS: &[ParamSpec] = &[RANGE, CONNECT, EPSILON];
+/// RRT-Connect's parameters: `range` steps the `range` connect only (last-free steps by the
+/// scenario's resolution), `epsilon` is last-free's alone.
+pub const PARAMS: &[ParamSpec] = &[RANGE.only_when("connect", &["range"]), CONNECT, EPSILON];
 
 /// The RRT-Connect planner.
 #[derive(Clone)]
