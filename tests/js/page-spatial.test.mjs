@@ -36,6 +36,19 @@ test('puma-rbo-wall: the course planner, the arm from above, joint sliders withi
   console.log(`skeletons from above: start ${start}, goal ${goal} pixels`);
   assert.ok(start > 100 && goal > 100, `start ${start}, goal ${goal}`);
   await page.screenshot({ path: join(shots, 'page-puma-loaded.png') });
+  // A slider pushed to its limit keeps the joint within it (rounding 0.785398 to four places
+  // would leave it: 0.7854).
+  const k = sc.robot.joints.findIndex((j) => Math.abs(Number(j.limits[1].toFixed(4)) - j.limits[1]) > 0 && Number(j.limits[1].toFixed(4)) > j.limits[1]);
+  assert.ok(k >= 0, 'a joint whose upper limit rounds up');
+  await page.$eval(`#start-q${k + 1}`, (el) => {
+    el.value = el.max;
+    el.dispatchEvent(new Event('input', { bubbles: true }));
+    el.dispatchEvent(new Event('change', { bubbles: true }));
+  });
+  const hi = sc.robot.joints[k].limits[1];
+  await page.waitForFunction(([k, hi]) => Math.abs(window.planarium.scenario().start[k] - hi) < 1e-3, [k, hi]);
+  const moved = await page.evaluate(() => window.planarium.scenario().start);
+  assert.ok(moved[k] <= hi, `joint ${k + 1} at ${moved[k]}, past its limit ${hi}`);
 });
 
 test('puma-rbo-wall: a run in the worker gives the native counts for seed 1', async () => {

@@ -142,7 +142,8 @@ export class Editor {
       const out = el('output', { htmlFor: id, text: v.toFixed(2) });
       input.addEventListener('input', () => {
         if (this.stale) return;
-        this.scenario[which][i] = tidy(Number(input.value), 1);
+        // rounded, but never past a limit (a joint at its limit rounded up would leave it)
+        this.scenario[which][i] = Math.min(hi, Math.max(lo, tidy(Number(input.value), 1)));
         out.textContent = Number(input.value).toFixed(2);
         this.onPreview(which, this.scenario[which]);
       });
