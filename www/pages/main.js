@@ -18,6 +18,7 @@ import { View3dSlot } from '../draw/view3d-slot.js';
 import { Editor } from '../ui/editor.js';
 import { ObstacleEditor } from '../ui/obstacle-editor.js';
 import { PosePanel } from '../ui/pose3d.js';
+import { BoxesPanel } from '../ui/boxes3d.js';
 import { wireExports } from '../ui/exports.js';
 import { fitViews, downloadText, keepInView } from '../draw/stage.js';
 import { createPanel, taskOf } from '../ui/panel.js';
@@ -121,6 +122,7 @@ const player = new Player({
         restoreScenario(link);
         return;
       }
+      boxesPanel.refused(error);
       showInvalid(error, src.edit);
     },
     error(message) { showError(message); },
@@ -308,6 +310,7 @@ function showScenario({ scenario, start, goal, space, cspace: grid, optimum: bes
   ui.cspace.hidden = !cspace.active;
   view3d.setScene(spatial || null, !!caps?.view3d);
   posePanel.setScene(scenario, space, caps, src.edit);
+  boxesPanel.setScene(scenario, caps, src.edit);
   buildLegend();
   syncStage();
 }
@@ -335,6 +338,7 @@ function showInvalid(error, edit) {
     ui.cspace.hidden = true;
     view3d.setScene(null, false);
     posePanel.setScene(null, null, null, false);
+    boxesPanel.setScene(null, null, false);
     syncStage();
   }
   controller.fire('invalid');
@@ -411,6 +415,8 @@ const editor = new Editor({
 // A spatial arm posed by hand under the 3-D view (pose3d.js): its sliders, whether the pose is
 // free, and Set as start / goal through the editor above.
 const posePanel = new PosePanel({ root: $('pose3d'), slot: view3d, editor, palette: PALETTE });
+// Its scene's boxes as numbers (boxes3d.js), each edit checked by the core and sent through the editor.
+const boxesPanel = new BoxesPanel({ root: $('boxes3d'), editor });
 
 // Obstacles and bounds: drawn, moved, resized, deleted; undo/redo; saved as JSON (obstacle-editor.js)
 
@@ -550,6 +556,8 @@ Object.defineProperty(window, 'planarium', {
       orbitFrameTimes: (n) => view3d.view?.orbitFrameTimes(n) ?? Promise.resolve([]),
       /** The pose panel: {q (radians), status, collision, message}. */
       pose: () => posePanel.state(),
+      /** The scene boxes panel: {rows: [{values, error}], status}. */
+      boxes: () => boxesPanel.state(),
     }),
   }),
   writable: false,

@@ -30,7 +30,8 @@ export function angleText(rad) {
 
 let core = null; // the core's module on this thread, once imported
 
-async function loadCore() {
+/** The core's wasm module on the page's thread (imported once, shared with ui/boxes3d.js). */
+export async function loadCore() {
   core ??= import('../pkg/planarium.js').then(async (m) => { await m.default(); return m; });
   return core;
 }
