@@ -5,21 +5,24 @@
 //   </planarium-playground>
 //
 // Attributes (the share-link grammar of ui/links.js, one key per attribute): scenario, planner, seed,
-// speed, anim, overlays, step-size, raw-path, autoplay, click, controls; `params` for planner
+// speed, anim, overlays, step-size, raw-path, camera, autoplay, click, controls; `params` for planner
 // parameters in link form ("range=0.1&goal_bias=0.2"); `link` for a whole share link's hash (the
 // other attributes win over it); `fill` to fill the element's height (embed.html) instead of
 // taking the height the scenario's aspect ratio gives the element's width.
 //
-// Shadow DOM; the canvas scales to the element's width and keeps the scenario's aspect ratio. Keys
+// Shadow DOM; the canvas scales to the element's width and keeps the scenario's aspect ratio (a spatial
+// arm's scene: its 3-D view beside it, the two side by side or stacked, with a link's camera). Keys
 // (space run / pause, → step, ← step back, r reset; only those whose control is shown) act only
 // while the element has focus: no listener on the document. The planning worker is loaded from
 // this module's folder (worker.js next to it), so the page must come from the same origin as this
 // file (a worker cannot be started across origins; use embed.html in an iframe there).
 // Read-only state for scripts and tests: el.state, el.status, el.result(), el.stats(), el.nodeCount,
-// el.shownIterations, el.controls; and el.run(), pause(), step(), back(), reset().
+// el.shownIterations, el.controls, el.view3dState(); and el.run(), pause(), step(), back(), reset().
 
 import { Playback } from './run/playback.js';
 import { View } from './draw/view.js';
+import { View3dSlot } from './draw/view3d-slot.js';
+import { PALETTE } from './draw/palette.js';
 import { Player } from './run/player.js';
 import { fitViews } from './draw/stage.js';
 import { speedRate, animFps, describeSpeed } from './ui/controls.js';
@@ -28,7 +31,7 @@ import { applyPageLimits } from './run/limits.js';
 import { shown } from './ui/text.js';
 import { readSeed } from './ui/seed.js';
 
-const KEYS = ['scenario', 'planner', 'seed', 'speed', 'anim', 'overlays', 'step-size', 'raw-path', 'autoplay', 'click', 'controls'];
+const KEYS = ['scenario', 'planner', 'seed', 'speed', 'anim', 'overlays', 'step-size', 'raw-path', 'camera', 'autoplay', 'click', 'controls'];
 const FLAGS = ['raw-path', 'autoplay', 'click'];
 const LABELS = { run: 'Run', pause: 'Pause', step: 'Step', back: 'Step back', reset: 'Reset' };
 const TITLES = {
@@ -43,7 +46,9 @@ const CSS = `
 :host(:focus) { outline: none; }
 :host(:focus-visible) .stage canvas { outline: 2px solid #e67e00; outline-offset: 1px; }
 :host([fill]) { display: flex; flex-direction: column; height: 100%; }
-.stage { position: relative; display: flex; align-items: center; justify-content: center; overflow: hidden; width: 100%; min-height: 40px; }
+.stage { position: relative; display: flex; align-items: center; justify-content: center; overflow: hidden; width: 100%; min-height: 40px;
+  column-gap: 6px; row-gap: 6px; }
+.stage.stacked { flex-direction: column; }
 :host([fill]) .stage { flex: 1 1 auto; min-height: 0; }
 canvas { display: block; background: #eef0f3; border-radius: 4px; }
 .start { position: absolute; inset: 0; margin: auto; width: max-content; height: max-content; padding: 0.5rem 1.1rem;
@@ -99,7 +104,12 @@ export class PlanariumPlayground extends HTMLElement {
     this.startButton = el('button', { className: 'start', type: 'button', textContent: '▶ Run', hidden: true });
     this.startButton.dataset.control = 'start';
     this.stage = el('div', { className: 'stage' });
-    this.stage.append(this.canvas, this.startButton);
+    // a spatial arm's 3-D view beside the top view (www/draw3d/, imported only for such a scene)
+    this.canvas3d = el('canvas', { hidden: true });
+    this.canvas3d.setAttribute('role', 'img');
+    this.canvas3d.setAttribute('part', 'view3d');
+    this.canvas3d.setAttribute('aria-label', 'The arm in 3-D: drag to turn, wheel or pinch to zoom, double-click to frame the problem');
+    this.stage.append(this.canvas, this.canvas3d, this.startButton);
     this.bar = el('div', { className: 'bar' });
     this.message = el('p', { className: 'message', hidden: true });
     this.message.setAttribute('role', 'alert');
@@ -118,6 +128,7 @@ export class PlanariumPlayground extends HTMLElement {
     this.stage.addEventListener('click', () => this.startOnClick());
     this.playback = new Playback();
     this.view = new View(this.canvas, this.playback.store, this.playback.model);
+    this.view3d = new View3dSlot(this.canvas3d, this.playback.store, PALETTE, () => { this.sizeStage?.(); this.resize?.(); });
     this.resize = null;
   }
 
@@ -127,7 +138,7 @@ export class PlanariumPlayground extends HTMLElement {
     if (this.player) return;
     this.player = new Player({
       playback: this.playback,
-      views: [this.view],
+      views: [this.view, this.view3d],
       rate: () => speedRate(this.speedInput || { value: String(this.share?.view.speed ?? VIEW_DEFAULTS.speed), max: '100' }),
       fps: () => animFps({ value: String(this.share?.view.anim ?? VIEW_DEFAULTS.anim) }),
       hooks: {
@@ -137,6 +148,7 @@ export class PlanariumPlayground extends HTMLElement {
         error: (message) => this.say(message),
         stopped: (message, fatal, why) => this.onStopped(message, fatal, why),
         changed: () => this.sync(),
+        frame: () => this.view3d.render(performance.now(), this.player.fps()),
       },
     });
     this.player.controller.onChange(() => this.sync());
@@ -145,14 +157,18 @@ export class PlanariumPlayground extends HTMLElement {
       const w = this.stage.clientWidth;
       if (!w) return;
       // Layout.fit keeps a 10 px margin around the bounds
-      const h = (w - 20) / this.aspect + 20;
+      const h = this.view3d.active ? (w - 6) / 2 : (w - 20) / this.aspect + 20; // the 3-D view beside: two squares
       const cap = Math.max(160, (window.innerHeight || 800) * 0.85);
       this.stage.style.height = `${Math.round(Math.min(h, cap))}px`;
     };
     this.hostObserver = new ResizeObserver(() => this.sizeStage());
     this.hostObserver.observe(this);
     this.sizeStage();
-    this.resize ||= fitViews(this.stage, this.view, { active: false });
+    const slot = this.view3d;
+    this.resize ||= fitViews(this.stage, this.view, {
+      get active() { return slot.active; },
+      resize(w, h, dpr) { if (slot.active) slot.resize(w, h, dpr); },
+    });
     this.player.start();
   }
 
@@ -272,6 +288,9 @@ export class PlanariumPlayground extends HTMLElement {
     this.aspect = (x1 - x0) / (y1 - y0) || 1;
     this.canvas.setAttribute('aria-label', shown(`${msg.scenario.name || 'Scenario'}: the planner's trees and the path`));
     this.view.setScenario(msg.scenario, msg.start, msg.goal);
+    this.view3d.setCamera(this.share.view.camera ?? null); // a link's camera (once per restore)
+    this.share.view.camera = null;
+    this.view3d.setScene(msg.spatial || null, !!msg.caps?.view3d);
     this.sizeStage();
     this.resize();
     const { block, problems } = setupFor(this.share, msg.scenario, this.registry);
@@ -437,6 +456,11 @@ export class PlanariumPlayground extends HTMLElement {
   get shownIterations() { return this.player?.shownIterations ?? 0; }
   get controls() { return [...this.shown]; }
   result() { return this.player?.lane.result ? structuredClone(this.player.lane.result) : null; }
+  /** The 3-D view: {active, ready, camera: {target, yaw, pitch, distance} | null}. */
+  view3dState() {
+    const v = this.view3d.view;
+    return { active: this.view3d.active, ready: !!(this.view3d.active && v?.matrices), camera: v ? v.camera.state() : null };
+  }
   stats() { return this.player ? this.player.stats() : null; }
   run() { return this.act('run'); }
   pause() { return this.act('pause'); }

@@ -11,6 +11,7 @@ import {
   readShare, writeShare, decodeScenario, encodeScenario, parsePairs, toBase64url, boundedProblems,
   MAX_PAIRS, MAX_PROBLEMS, MAX_HASH_CHARS, MAX_SCENARIO_BYTES, VIEW_DEFAULTS,
 } from '../../www/ui/links.js';
+import { CAMERA, readCamera, writeCamera, roundCamera } from '../../www/ui/camera-link.js';
 import { mulberry32 } from './seeded.mjs';
 
 const SEED = 0x5eed13;
@@ -25,7 +26,7 @@ const pick = (xs) => xs[int(xs.length)];
 const B64 = 'ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_';
 const ODD = ['\u202e', '\u202d', '\u200f', '\ud800', '\udfff', '\u0000', '<img src=x onerror=alert(1)>', '</script>',
   '%', '%E0%A4%A', '%zz', '%C0%80', '%ED%A0%80', '=', '&&', '#', '+', ' ', '\n', 'é', '😀', '\ufeff', ':'];
-const KEYS = ['scenario', 'planner', 'seed', 'overlays', 'speed', 'anim', 'raw-path', 'step-size', 'autoplay', 'click',
+const KEYS = ['scenario', 'planner', 'seed', 'overlays', 'speed', 'anim', 'raw-path', 'step-size', 'camera', 'autoplay', 'click',
   'controls', 'range', 'goal_bias', 'max_iterations', 'sampler'];
 
 /** A small scenario-like JSON text (the reader does not validate it: any text must come back). */
@@ -43,12 +44,17 @@ async function validLink() {
   const seed = int(1e6);
   const speed = int(101);
   const builtin = rand() < 0.3;
+  // a 3-D view's camera in a third of them: anywhere within its bounds, the yaw any number of turns
+  const camera = rand() < 0.33 ? {
+    target: [0, 1, 2].map(() => (rand() - 0.5) * 10 ** int(7)), yaw: (rand() - 0.5) * 40,
+    pitch: CAMERA.minPitch + rand() * (CAMERA.maxPitch - CAMERA.minPitch), distance: CAMERA.minDistance + rand() * 50,
+  } : null;
   const hash = await writeShare({
     scenario: builtin ? { id: 'narrow' } : { text },
     config: { planner: 'rrt', params: { range: +(rand() + 0.01).toFixed(3) }, seed },
-    view: { speed, stepSize: 1 + int(50) },
+    view: { speed, stepSize: 1 + int(50), camera },
   }, registry);
-  return { hash: `#${hash}`, text: builtin ? null : text, seed, speed };
+  return { hash: `#${hash}`, text: builtin ? null : text, seed, speed, camera: camera && roundCamera(camera) };
 }
 
 /** One mutation of `hash`, by kind. */
@@ -150,6 +156,7 @@ test(`share-link reader: ${INPUTS} seeded inputs, no throw, bounded work and pro
       assert.deepEqual(share.scenario, valid.text === null ? { id: 'narrow' } : { text: valid.text });
       assert.equal(share.seed, valid.seed);
       assert.equal(share.view.speed ?? VIEW_DEFAULTS.speed, valid.speed);
+      assert.deepEqual(share.view.camera ?? null, valid.camera, 'the camera reads back as written');
       readBack++;
     }
     // the pieces alone
@@ -205,4 +212,45 @@ test('reproductions: 524,288 empty pairs, a link cut mid-base64, long keys are e
   // the writer: a lone surrogate in a value (encodeURIComponent throws on it) is written as U+FFFD
   const odd = await writeShare({ scenario: { id: 'narrow' }, extra: [['note', 'a\ud800b']] }, registry);
   assert.equal(odd, 'scenario=narrow&note=a%EF%BF%BDb');
+});
+
+test('the camera in a link: six numbers within the orbit camera\'s bounds, else a problem naming the number and the view framed', async () => {
+  const ok = await readShare('#scenario=puma-boxes&camera=0.1,-0.2,0.5,7,0.3,2.5');
+  assert.deepEqual(ok.problems, []);
+  assert.equal(ok.view.camera.yaw, 7 - 2 * Math.PI, 'the yaw is wrapped into (-π, π]');
+  assert.deepEqual(ok.view.camera.target, [0.1, -0.2, 0.5]);
+  const cases = [
+    ['1,2,3', /six numbers .*found 3/],
+    ['0,0,0,0,0,0,0', /found 7/],
+    ['0,0,0,0,1.56,1', /pitch must be from -1.45 to 1.55/],
+    ['0,0,0,0,-1.46,1', /pitch must be from -1.45 to 1.55/],
+    ['0,0,0,0,0,0', /distance must be from 0.001 to 10000/],
+    ['0,0,0,0,0,10001', /distance must be from 0.001 to 10000/],
+    ['2e6,0,0,0,0,1', /tx must be within/],
+    ['0,0,-1e7,0,0,1', /tz must be within/],
+    ['0,0,0,1001,0,1', /yaw must be within/],
+    ['0,0,0,NaN,0,1', /yaw is not a number/],
+    ['0,Infinity,0,0,0,1', /ty is not a number/],
+    ['0,1e999,0,0,0,1', /ty is not a number/],
+    ['0,0x10,0,0,0,1', /ty is not a number/],
+    [' ,0,0,0,0,1', /tx is not a number/],
+    [`${'1'.repeat(200)},0,0,0,0,1`, /characters long/],
+  ];
+  for (const [value, why] of cases) {
+    const r = await readShare(`#camera=${encodeURIComponent(value)}`);
+    assert.equal(r.view.camera, undefined, value);
+    assert.equal(r.problems.length, 1, value);
+    assert.match(r.problems[0], why, value);
+    assert.match(r.problems[0], /the view is framed on the problem\.$/);
+    assert.ok(r.problems[0].length < 200);
+  }
+  assert.match((await readShare('#camera')).problems[0], /"camera" needs a value/);
+  // the writer keeps what it writes within the bounds, so the page's link always reads back
+  const wild = { target: [5e6, -5e6, 0], yaw: 1e9, pitch: 3, distance: 1e7 };
+  const back = readCamera(writeCamera(wild));
+  assert.ok(back.camera, 'a camera beyond the bounds is written within them');
+  assert.deepEqual(back.camera.target, [CAMERA.maxTarget, -CAMERA.maxTarget, 0]);
+  assert.equal(back.camera.pitch, CAMERA.maxPitch);
+  assert.equal(back.camera.distance, CAMERA.maxDistance);
+  assert.ok(Math.abs(back.camera.yaw) <= Math.PI);
 });

@@ -4,6 +4,8 @@
 // scenario never fetches it. It keeps what the worker sends for the 3-D view (the trees' tool
 // curves with each events batch, the path's tool curve and poses with the result) and hands each
 // node to the view when its NODE_ADDED record is revealed, so the trees grow with the replay.
+// The camera: a share link's is put in place once its scene is drawn (`setCamera`), an edit of
+// the scene keeps the one the user turned to, and `onCamera` hears of each turn (the share link).
 
 import { EventKind } from '../run/events.js';
 
@@ -30,11 +32,27 @@ export class View3dSlot {
     this.error = '';
     this.manual = null;     // the arm posed by hand (www/ui/pose3d.js): {frames, colour, ghost}
     this.posing = false;    // posed since the run began: the path's animation waits for the next run
+    this.pendingCamera = null; // a link's camera, put in place when its scene is drawn
+    this.onCamera = () => {};  // the user turned or zoomed the camera (or a link's was put in place)
+  }
+
+  /** A link's camera ({target, yaw, pitch, distance}) for the next scene loaded, or null: framed on the problem. */
+  setCamera(camera) {
+    this.pendingCamera = camera;
+  }
+
+  /** The camera when the user turned it or a link set it (null: framed on the problem, as a link need not say). */
+  camera() {
+    const c = this.active ? this.view?.camera : null;
+    return c && c.touched ? c.state() : null;
   }
 
   /** A scene was loaded: `spatial` (the `loaded` reply's, present when `caps.view3d`) or null. */
-  async setScene(spatial, view3d) {
+  async setScene(spatial, view3d, edited = false) {
     const gen = ++this.generation;
+    // a link's camera, else (an edit of the scene) the one the user turned to
+    const camera = this.pendingCamera ?? (edited ? this.camera() : null);
+    this.pendingCamera = null;
     this.spatial = view3d && spatial ? spatial : null;
     this.manual = null;
     this.active = !!this.spatial;
@@ -46,11 +64,18 @@ export class View3dSlot {
       if (!this.view) {
         const { View3D } = await import('../draw3d/view3d.js');
         if (gen !== this.generation) return;
-        this.view ??= new View3D(this.canvas, this.palette);
+        if (!this.view) {
+          const view = new View3D(this.canvas, this.palette);
+          const redraw = view.camera.onChange;
+          view.camera.onChange = () => { redraw(); if (view.camera.touched) this.onCamera(); };
+          this.view = view;
+        }
         if (this.size) this.view.resize(...this.size);
       }
       if (gen !== this.generation) return;
+      if (!camera) this.view.camera.touched = false; // framed on the new problem, and again on a resize
       this.view.setScene(this.spatial);
+      if (camera) this.view.camera.setState(camera);
       this.view.setManual(this.manual);
       this.error = '';
     } catch (e) {

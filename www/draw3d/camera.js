@@ -1,13 +1,15 @@
 // The 3-D view's orbit camera: it looks at a target from a distance, turned by an azimuth about
 // the world's z (up) and an elevation above the floor. Drag turns it, the wheel zooms, two fingers
 // pinch-zoom, a double click (or double tap) frames the problem again. It only changes numbers and
-// asks for a redraw (`onChange`).
+// asks for a redraw (`onChange`). A share link carries it (`state()` / `setState()`, within the
+// bounds of ui/camera-link.js, which are its own).
 
 import { lookAt, perspective, multiply } from './gl.js';
+import { CAMERA, wrapAngle } from '../ui/camera-link.js';
 
 const FOV = (40 * Math.PI) / 180;
-const MIN_ELEVATION = -1.45;
-const MAX_ELEVATION = 1.55;
+const MIN_ELEVATION = CAMERA.minPitch;
+const MAX_ELEVATION = CAMERA.maxPitch;
 
 export class OrbitCamera {
   /** @param {HTMLCanvasElement} canvas @param {() => void} onChange */
@@ -31,7 +33,23 @@ export class OrbitCamera {
     if (keep) this.home = { centre: [...centre], radius };
     this.target = [...centre];
     const half = Math.min(FOV, FOV * this.aspect) / 2;
-    this.distance = Math.max(1e-3, (radius / Math.sin(half)) * 1.05);
+    this.distance = Math.min(CAMERA.maxDistance, Math.max(CAMERA.minDistance, (radius / Math.sin(half)) * 1.05));
+    this.onChange();
+  }
+
+  /** The camera as a share link carries it: {target, yaw (azimuth, within ±π), pitch (elevation), distance}. */
+  state() {
+    return { target: [...this.target], yaw: wrapAngle(this.azimuth), pitch: this.elevation, distance: this.distance };
+  }
+
+  /** Put the camera where `c` says (a link's camera, already bounded); it then stays through resizes. */
+  setState(c) {
+    const clamp = (v, lo, hi) => Math.min(hi, Math.max(lo, v));
+    this.target = c.target.map((v) => clamp(v, -CAMERA.maxTarget, CAMERA.maxTarget));
+    this.azimuth = wrapAngle(c.yaw);
+    this.elevation = clamp(c.pitch, MIN_ELEVATION, MAX_ELEVATION);
+    this.distance = clamp(c.distance, CAMERA.minDistance, CAMERA.maxDistance);
+    this.touched = true;
     this.onChange();
   }
 
@@ -58,7 +76,7 @@ export class OrbitCamera {
 
   zoom(factor) {
     this.touched = true;
-    this.distance = Math.min(1e4, Math.max(1e-3, this.distance * factor));
+    this.distance = Math.min(CAMERA.maxDistance, Math.max(CAMERA.minDistance, this.distance * factor));
     this.onChange();
   }
 

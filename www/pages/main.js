@@ -71,6 +71,7 @@ const cspace = new CSpaceView(ui.cspace, playback.store, PALETTE, playback.model
 // A robot in 3-D (the core's caps.view3d) gets a 3-D view beside the top view; www/draw3d/ is
 // imported only then.
 const view3d = new View3dSlot(ui.view3d, playback.store, PALETTE, () => syncStage());
+view3d.onCamera = () => scheduleShare(); // the camera goes in the share link
 const chart = new Chart(ui.chart, playback.model, PALETTE);
 const updateStatsList = createStats(ui.stats);
 const explain = new ExplainPanel($('explain'), playback.store, view);
@@ -264,6 +265,7 @@ function applyView(share) {
   ui.animSpeed.value = String(share.view.anim ?? VIEW_DEFAULTS.anim);
   ui.animRaw.checked = share.view.rawPath ?? VIEW_DEFAULTS.rawPath;
   ui.stepSize.value = String(share.view.stepSize ?? VIEW_DEFAULTS.stepSize);
+  view3d.setCamera(share.view.camera ?? null);
   updateOutputs();
   syncOptions();
 }
@@ -277,7 +279,7 @@ const share = wireShareHash({
     overlays: overlayOptions(),
     view: {
       speed: Number(ui.speed.value), anim: Number(ui.animSpeed.value), rawPath: ui.animRaw.checked,
-      stepSize: stepSize(),
+      stepSize: stepSize(), camera: view3d.camera(),
     },
   }),
   saveName: () => loaded?.name || 'scenario', download: downloadText, showError,
@@ -308,7 +310,7 @@ function showScenario({ scenario, start, goal, space, cspace: grid, optimum: bes
   editor.setScenario(scenario, space, src.edit);
   obstacleEditor.loaded(src.edit);
   ui.cspace.hidden = !cspace.active;
-  view3d.setScene(spatial || null, !!caps?.view3d);
+  view3d.setScene(spatial || null, !!caps?.view3d, src.edit);
   posePanel.setScene(scenario, space, caps, src.edit);
   boxesPanel.setScene(scenario, caps, src.edit);
   buildLegend();
@@ -556,6 +558,8 @@ Object.defineProperty(window, 'planarium', {
       orbitFrameTimes: (n) => view3d.view?.orbitFrameTimes(n) ?? Promise.resolve([]),
       /** The pose panel: {q (radians), status, collision, message}. */
       pose: () => posePanel.state(),
+      /** The camera: {target, yaw, pitch, distance} ({framed: true} added while framed on the problem). */
+      camera: () => (view3d.view ? { ...view3d.view.camera.state(), framed: !view3d.view.camera.touched } : null),
       /** The scene boxes panel: {rows: [{values, error}], status}. */
       boxes: () => boxesPanel.state(),
     }),

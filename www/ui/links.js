@@ -19,6 +19,9 @@
 //   anim       robot animation slider, 0…100 (default 50)
 //   raw-path   the robot follows the raw path (flag)
 //   step-size  iterations per step / step back (default 1)
+//   camera     the 3-D view's camera (a spatial arm's scene): tx,ty,tz,yaw,pitch,distance, its orbit
+//              target in metres, yaw and pitch in radians (pitch -1.45 … 1.55), distance 0.001 … 10000
+//              metres (ui/camera-link.js); written only once the camera was turned or zoomed
 // embed.html and <planarium-playground> only:
 //   autoplay   run as soon as the scenario is loaded
 //   click      run on the first click on the canvas
@@ -38,13 +41,14 @@ import { parseParam, plannerFits, taskOf } from './panel.js';
 import { OVERLAYS } from '../draw/palette.js';
 import { shown } from './text.js';
 import { readSeed, blockSeedProblem } from './seed.js';
+import { readCamera, writeCamera } from './camera-link.js';
 
 export const VIEW_DEFAULTS = Object.freeze({ speed: 30, anim: 50, rawPath: false, stepSize: 1 });
 export const CONTROLS = Object.freeze(['run', 'pause', 'step', 'back', 'reset', 'speed', 'seed']);
 export const DEFAULT_CONTROLS = Object.freeze(['run', 'pause', 'step', 'back', 'reset']);
 /** Keys that are not planner parameters (a parameter of that name could not be shared). */
 export const RESERVED = Object.freeze(['scenario', 'planner', 'seed', 'overlays', 'speed', 'anim', 'raw-path',
-  'step-size', 'autoplay', 'click', 'controls']);
+  'step-size', 'camera', 'autoplay', 'click', 'controls']);
 
 /** The largest scenario (UTF-8 bytes of its JSON, decompressed) a link may carry: no built-in is near it. */
 export const MAX_SCENARIO_BYTES = 4 << 20;
@@ -285,7 +289,7 @@ function overlayById(name) {
 /**
  * Read a link's hash (with or without `#`). `builtins`: [{id, name, ...}] to check a built-in's id
  * against (optional). Returns {scenario: {id} | {text} | null, planner, seed, params: [[key, text]],
- * overlays: {option: bool} (only those named), view: {speed?, anim?, rawPath?, stepSize?},
+ * overlays: {option: bool} (only those named), view: {speed?, anim?, rawPath?, stepSize?, camera?},
  * autoplay, click, controls: [names] | null, problems: [text]}.
  */
 export async function readShare(hash, { builtins = null } = {}) {
@@ -345,6 +349,13 @@ export async function readShare(hash, { builtins = null } = {}) {
         const v = wholeNumber(value, 1, 1000000);
         if (v === null) problems.push(`step-size=${cut(value)}: it must be a whole number from 1 to 1000000; left at 1.`);
         else share.view.stepSize = v;
+        break;
+      }
+      case 'camera': {
+        if (!needs(key, value)) break;
+        const r = readCamera(value);
+        if (r.why) problems.push(`camera=${cut(value)}: ${r.why}; the view is framed on the problem.`);
+        else share.view.camera = r.camera;
         break;
       }
       case 'autoplay': case 'click': {
@@ -461,11 +472,12 @@ export function overlayOptions(overlays = {}) {
 /**
  * The hash (without `#`) for a state: `scenario` {id} or {text} (the JSON of an edited or opened
  * scenario), `config` {planner, params, seed} (the panel's), `overlays` {option: bool}, `view`
- * {speed, anim, rawPath, stepSize}; `registry` to leave out parameters at their defaults. `extra`:
+ * {speed, anim, rawPath, stepSize, camera}; `registry` to leave out parameters at their defaults. `extra`:
  * more [key, value | null] pairs (embed options). `encoded`: a cache (Map) of scenario texts'
  * encodings.
  * @param {{scenario: {id?: string, text?: string}, config?: any, overlays?: Record<string, boolean>,
- *   view?: {speed?: number, anim?: number, rawPath?: boolean, stepSize?: number}, extra?: Array<[string, any]>}} state
+ *   view?: {speed?: number, anim?: number, rawPath?: boolean, stepSize?: number,
+ *     camera?: {target: number[], yaw: number, pitch: number, distance: number} | null}, extra?: Array<[string, any]>}} state
  * @param {any} registry
  * @param {Map<string, string> | null} [encoded]
  */
@@ -501,6 +513,7 @@ export async function writeShare({ scenario, config, overlays = {}, view = {}, e
   if (view.anim !== undefined && view.anim !== VIEW_DEFAULTS.anim) pairs.push(['anim', view.anim]);
   if (view.rawPath) pairs.push(['raw-path', null]);
   if (view.stepSize !== undefined && view.stepSize !== VIEW_DEFAULTS.stepSize) pairs.push(['step-size', view.stepSize]);
+  if (view.camera) pairs.push(['camera', writeCamera(view.camera)]);
   pairs.push(...extra);
   return pairs.map(([k, v]) => (v === null ? encodeValue(k) : `${encodeValue(k)}=${encodeValue(v)}`)).join('&');
 }
