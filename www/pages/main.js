@@ -320,6 +320,7 @@ function showScenario({ scenario, start, goal, space, cspace: grid, optimum: bes
 /** The stage holds the top view and, beside it, the c-space or the 3-D view when there is one. */
 function syncStage() {
   ui.stage.classList.toggle('dual', cspace.active || view3d.active);
+  $('export-3d-note').hidden = !view3d.active;
   onResize();
 }
 
@@ -430,6 +431,7 @@ wireExports({
   view, stem: () => (loaded?.name || 'planarium').replace(/[^\w.-]+/g, '-').toLowerCase(),
   legend: () => [...view.legend(panel?.planner()?.name), ...cellLegend(panel?.planner()?.name), ...explain.legend(panel?.planner()?.name)],
   animFps: () => player.fps(),
+  view3d: () => (view3d.active ? view3d : null), // PNG and WebM: the 3-D view beside the top view
 });
 
 function syncDownload() {

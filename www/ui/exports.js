@@ -19,6 +19,7 @@ import { fixWebm } from './webm.js';
 import { GifWriter, hexRgb } from './gif.js';
 import { LEGEND_TEXT, frameShown, legendLayout, measure } from './export-legend.js';
 import { sceneSvgSteps } from './export-svg.js';
+import { render3d, beside } from './export3d.js';
 import { EXPORT_BATCH, redrawSteps } from '../draw/redraw.js';
 import { shown } from './text.js';
 
@@ -252,7 +253,7 @@ function capArea(view, width, pixels) {
  * an ExportView (the visible canvas is untouched). `legend`: items [{label, color, shape}] drawn
  * under it; `transparent`: no background.
  */
-export async function pngBlob(view, width, { legend = null, transparent = false, progress = null, cancelled = () => false } = {}) {
+export async function pngBlob(view, width, { legend = null, transparent = false, progress = null, cancelled = () => false, view3d = null } = {}) {
   const ev = new ExportView(view, transparent);
   try {
     ev.follow(width);
@@ -260,7 +261,8 @@ export async function pngBlob(view, width, { legend = null, transparent = false,
     ev.follow(width); // what came meanwhile (a run still going)
     await ev.catchUp({ what: 'The PNG', progress, cancelled });
     ev.drawLikeSource();
-    const out = withLegend(ev.canvas, legend, ev.dpr, transparent);
+    // a spatial arm's 3-D view beside it, rendered now at the picture's height (export3d.js)
+    const out = withLegend(beside(ev.canvas, render3d(view3d, ev.canvas.height), transparent), legend, ev.dpr, transparent);
     return await new Promise((resolve, reject) => out.toBlob((b) => (b ? resolve(b) : reject(new Error('the PNG could not be made (too big for this browser?)'))), 'image/png'));
   } finally { ev.dispose(); }
 }
@@ -284,7 +286,7 @@ export function webmType() {
  * resolves to {blob, width, height, note}: the WebM made seekable (webm.js), or as recorded with
  * a note when that failed.
  */
-export async function recordWebm(view, { width, fps = 30, animFps = () => 10, progress = null, cancelled = () => false }) {
+export async function recordWebm(view, { width, fps = 30, animFps = () => 10, progress = null, cancelled = () => false, view3d = null }) {
   const type = webmType();
   if (!type) throw new Error('this browser cannot record WebM (no MediaRecorder)');
   const ev = new ExportView(view);
@@ -293,9 +295,25 @@ export async function recordWebm(view, { width, fps = 30, animFps = () => 10, pr
     await ev.catchUp({ what: 'The recording', progress, cancelled });
   } catch (e) { ev.dispose(); throw e; }
   ev.draw(performance.now(), animFps());
-  const stream = ev.canvas.captureStream(0);
+  // a spatial arm's 3-D view beside the top view: each frame composed on a canvas of their own
+  // (the 3-D view as the page draws it, scaled to the video's height; an even width for the encoder)
+  const side = () => render3d(view3d, ev.canvas.height, true);
+  const first = side();
+  const frameCanvas = first ? document.createElement('canvas') : ev.canvas;
+  if (first) { // the size of the first frame for the whole video (the page's 3-D view may be resized meanwhile)
+    const pic = beside(ev.canvas, first);
+    frameCanvas.width = pic.width & ~1;
+    frameCanvas.height = pic.height & ~1;
+  }
+  const compose = () => {
+    if (frameCanvas === ev.canvas) return;
+    const pic = beside(ev.canvas, side() ?? first);
+    frameCanvas.getContext('2d').drawImage(pic, 0, 0, frameCanvas.width, frameCanvas.height);
+  };
+  compose();
+  const stream = frameCanvas.captureStream(0);
   const track = stream.getVideoTracks()[0];
-  const pixels = ev.canvas.width * ev.canvas.height;
+  const pixels = frameCanvas.width * frameCanvas.height;
   const rec = new MediaRecorder(stream, { mimeType: type, videoBitsPerSecond: Math.round(Math.min(25e6, Math.max(1e6, pixels * 2.5))) });
   const chunks = [];
   rec.ondataavailable = (e) => { if (e.data.size) chunks.push(e.data); };
@@ -307,6 +325,7 @@ export async function recordWebm(view, { width, fps = 30, animFps = () => 10, pr
       ev.follow(width);
       await ev.catchUp({ what: 'The recording', cancelled: () => stopped });
       ev.draw(performance.now(), animFps());
+      compose();
       track.requestFrame();
     } catch (e) { if (!(e instanceof ExportCancelled)) failed ??= e; }
     drawing = false;
@@ -315,14 +334,14 @@ export async function recordWebm(view, { width, fps = 30, animFps = () => 10, pr
   track.requestFrame();
   const timer = setInterval(frame, 1000 / fps);
   return {
-    width: ev.canvas.width,
-    height: ev.canvas.height,
+    width: frameCanvas.width,
+    height: frameCanvas.height,
     stop: () => new Promise((resolve) => {
       clearInterval(timer);
       stopped = true;
       rec.onstop = async () => {
         stream.getTracks().forEach((t) => t.stop());
-        const size = { width: ev.canvas.width, height: ev.canvas.height };
+        const size = { width: frameCanvas.width, height: frameCanvas.height };
         ev.dispose();
         const raw = new Blob(chunks, { type: 'video/webm' });
         try {
@@ -334,7 +353,7 @@ export async function recordWebm(view, { width, fps = 30, animFps = () => 10, pr
       };
       if (!drawing) {
         ev.follow(width);
-        if (!ev.owed) { ev.draw(performance.now(), animFps()); track.requestFrame(); }
+        if (!ev.owed) { ev.draw(performance.now(), animFps()); compose(); track.requestFrame(); }
       }
       rec.stop();
     }),
@@ -399,7 +418,7 @@ export async function recordGif(view, { width, frames, fps = LIMITS.gif.fps, ani
  * #export-status) to `view`. `stem()` names the files, `legend()` gives the legend's items,
  * `animFps()` the robot animation's frames per second.
  */
-export function wireExports({ view, stem, legend = () => [], animFps = () => 10 }) {
+export function wireExports({ view, stem, legend = () => [], animFps = () => 10, view3d = () => null }) {
   /** @param {string} id @returns {any} the page's element (an input or button) */
   const $ = (id) => document.getElementById(id);
   const status = $('export-status');
@@ -444,11 +463,13 @@ export function wireExports({ view, stem, legend = () => [], animFps = () => 10 
 
   stepped($('export-png'), 'PNG', async (ctl) => {
     const asked = field('png-width', LIMITS.png.min, LIMITS.png.max, 1600, 'PNG width');
-    const width = capArea(view, asked.value, LIMITS.png.pixels);
+    const side = view3d();
+    // with the 3-D view beside it, the top view is the width asked and the picture about twice as wide
+    const width = capArea(view, asked.value, LIMITS.png.pixels / (side ? 2 : 1));
     const capped = width < asked.value ? `at most ${LIMITS.png.pixels / 1e6} million pixels: ${width} px wide` : '';
     const o = options();
-    downloadBlob(await pngBlob(view, width, { ...o, ...ctl }), `${stem()}-${width}.png`);
-    return [`PNG, ${width} px wide${o.legend ? ', with legend' : ''}${o.transparent ? ', transparent' : ''}`, asked.note, capped];
+    downloadBlob(await pngBlob(view, width, { ...o, ...ctl, view3d: side }), `${stem()}-${width}.png`);
+    return [`PNG, ${width} px wide${side ? ', the 3-D view beside the top view' : ''}${o.legend ? ', with legend' : ''}${o.transparent ? ', transparent' : ''}`, asked.note, capped];
   });
 
   stepped($('export-svg'), 'SVG', async (ctl) => {
@@ -511,10 +532,11 @@ export function wireExports({ view, stem, legend = () => [], animFps = () => 10 
     record.textContent = 'Cancel recording';
     record.setAttribute('aria-pressed', 'true');
     try {
-      let width = capArea(view, asked.value, LIMITS.video.pixels);
+      const side = view3d();
+      let width = capArea(view, asked.value, LIMITS.video.pixels / (side ? 2 : 1));
       width -= width % 2; // video encoders want even sizes
       recording = await recordWebm(view, {
-        width, animFps, cancelled: () => prep.cancel,
+        width, animFps, cancelled: () => prep.cancel, view3d: side,
         progress: (share) => { if (!prep.cancel) say(`Drawing the run before recording: ${pct(share)}… (press Cancel recording to stop)`); },
       });
       record.textContent = 'Stop and save';
