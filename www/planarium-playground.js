@@ -109,7 +109,7 @@ export class PlanariumPlayground extends HTMLElement {
     this.canvas3d.setAttribute('role', 'img');
     this.canvas3d.setAttribute('part', 'view3d');
     this.canvas3d.setAttribute('aria-label', 'The arm in 3-D: drag to turn, wheel or pinch to zoom, double-click to frame the problem');
-    this.stage.append(this.canvas, this.canvas3d, this.startButton);
+    this.stage.append(this.canvas, this.startButton); // the 3-D canvas joins only for a scene that has one
     this.bar = el('div', { className: 'bar' });
     this.message = el('p', { className: 'message', hidden: true });
     this.message.setAttribute('role', 'alert');
@@ -290,6 +290,8 @@ export class PlanariumPlayground extends HTMLElement {
     this.view.setScenario(msg.scenario, msg.start, msg.goal);
     this.view3d.setCamera(this.share.view.camera ?? null); // a link's camera (once per restore)
     this.share.view.camera = null;
+    if (!msg.caps?.view3d) this.canvas3d.remove(); // a host page's `canvas` selectors find the top view alone
+    else if (!this.canvas3d.isConnected) this.canvas.after(this.canvas3d);
     this.view3d.setScene(msg.spatial || null, !!msg.caps?.view3d);
     this.sizeStage();
     this.resize();
