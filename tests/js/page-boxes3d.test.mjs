@@ -49,6 +49,9 @@ async function openPuma() {
   await fx.pickScenario('puma-rbo-wall', PUMA_NAME);
   await page.waitForFunction(() => window.planarium.view3d.ready(), null, { timeout: 20000 });
   await page.waitForFunction(() => window.planarium.view3d.pose().status.startsWith('Free'), null, { timeout: 20000 });
+  await page.waitForSelector('#box3d-0-cx', { state: 'attached' });
+  // the panel opens with a click on its title (closed at first; the test browser may have opened it)
+  if (!(await page.$eval('#boxes3d details', (d) => d.open))) await page.click('#boxes3d summary');
   await page.waitForSelector('#box3d-0-cx');
 }
 

@@ -68,6 +68,7 @@ export class BoxesPanel {
     this.status = null;
     this.pending = null; // {index, field}: the edit sent, whose message waits for the reload
     this.generation = 0;
+    this.open = false;   // the panel's <details> is open
     root.hidden = true;
   }
 
@@ -124,11 +125,14 @@ export class BoxesPanel {
     this.status = el('p', { id: 'box3d-status', className: 'hint', role: 'status' });
     const add = el('button', { id: 'box3d-add', type: 'button', text: 'Add box', title: `A ${NEW_SIZE} m cube in a corner of the scene's extent` });
     add.addEventListener('click', () => this.add());
-    this.root.replaceChildren(
-      el('h2', { id: 'h-boxes3d', text: 'Scene boxes' }),
+    // closed at first (the views keep their height), open across reloads once opened
+    const details = el('details', { open: this.open },
+      el('summary', {}, el('h2', { id: 'h-boxes3d', text: `Scene boxes (${list.length})` })),
       el('p', { className: 'hint', text: 'The scene\'s obstacles in metres: each box\'s centre and full size, axis-aligned (the file\'s obstacles3d; a box has no rotation). Enter or leaving a field applies it; the core checks it as it checks a file.' }),
       el('div', { className: 'box3d-scroll' }, el('table', { className: 'box3d-table' }, el('thead', {}, head), body)),
       el('div', { className: 'row' }, add), this.status);
+    details.addEventListener('toggle', () => { this.open = details.open; });
+    this.root.replaceChildren(details);
     this.rows.forEach((_, i) => this.mark(i, null, ''));
     this.fill(list);
   }
