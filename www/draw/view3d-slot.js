@@ -7,6 +7,9 @@
 
 import { EventKind } from '../run/events.js';
 
+/** What stands in the 3-D view's place when the browser cannot draw it. */
+export const NO_WEBGL2 = 'This browser has no WebGL2; the view from above still works.';
+
 export class View3dSlot {
   /**
    * @param {HTMLCanvasElement} canvas the 3-D view's canvas (hidden while there is none)
@@ -30,6 +33,30 @@ export class View3dSlot {
     this.error = '';
     this.manual = null;     // the arm posed by hand (www/ui/pose3d.js): {frames, colour, ghost}
     this.posing = false;    // posed since the run began: the path's animation waits for the next run
+    this.unavailable = false; // the browser has no WebGL2: a note stands in the view's place
+    this.note = null;       // that note (a <p> after the canvas), made when needed
+  }
+
+  /** Show the note instead of the canvas (no WebGL2), or the canvas. */
+  showNote(text) {
+    if (text && !this.note) {
+      this.note = document.createElement('p');
+      this.note.className = 'view3d-none';
+      this.note.setAttribute('role', 'note');
+      this.canvas.after(this.note);
+      if (this.size) this.sizeNote();
+    }
+    if (this.note) {
+      this.note.textContent = text || '';
+      this.note.hidden = !text;
+    }
+    this.canvas.hidden = !this.active || !!text;
+  }
+
+  sizeNote() {
+    if (!this.note || !this.size) return;
+    this.note.style.width = `${this.size[0]}px`;
+    this.note.style.height = `${this.size[1]}px`;
   }
 
   /** A scene was loaded: `spatial` (the `loaded` reply's, present when `caps.view3d`) or null. */
@@ -38,10 +65,10 @@ export class View3dSlot {
     this.spatial = view3d && spatial ? spatial : null;
     this.manual = null;
     this.active = !!this.spatial;
-    this.canvas.hidden = !this.active;
+    this.showNote(this.active && this.unavailable ? NO_WEBGL2 : '');
     this.clearRun();
     this.onActive();
-    if (!this.active) return;
+    if (!this.active || this.unavailable) return;
     try {
       if (!this.view) {
         const { View3D } = await import('../draw3d/view3d.js');
@@ -55,6 +82,11 @@ export class View3dSlot {
       this.error = '';
     } catch (e) {
       this.error = String(e?.message || e);
+      if (e?.noWebGL2) {
+        this.unavailable = true;
+        this.showNote(NO_WEBGL2);
+        return;
+      }
       console.error(`3-D view: ${this.error}`);
     }
   }
@@ -62,6 +94,7 @@ export class View3dSlot {
   resize(w, h, dpr) {
     this.size = [w, h, dpr];
     this.view?.resize(w, h, dpr);
+    this.sizeNote();
   }
 
   /** An events batch: keep its tool curves (`tree3d`: [tree, id, n, x, y, z…] per node). */

@@ -28,7 +28,7 @@ export class View3D {
     this.canvas = canvas;
     this.palette = palette;
     const gl = canvas.getContext('webgl2', { antialias: true, preserveDrawingBuffer: true });
-    if (!gl) throw new Error('this browser has no WebGL2: the 3-D view is not available');
+    if (!gl) throw Object.assign(new Error('this browser has no WebGL2: the 3-D view is not available'), { noWebGL2: true });
     this.gl = gl;
     this.progs = programs(gl);
     this.camera = new OrbitCamera(canvas, () => this.requestRender());

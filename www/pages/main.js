@@ -19,7 +19,7 @@ import { Editor } from '../ui/editor.js';
 import { ObstacleEditor } from '../ui/obstacle-editor.js';
 import { PosePanel } from '../ui/pose3d.js';
 import { wireExports } from '../ui/exports.js';
-import { fitViews, downloadText, keepInView } from '../draw/stage.js';
+import { fitViews, downloadText, keepInView, PhoneStage } from '../draw/stage.js';
 import { createPanel, taskOf } from '../ui/panel.js';
 import { Playback } from '../run/playback.js';
 import { Chart } from '../draw/chart.js';
@@ -312,10 +312,13 @@ function showScenario({ scenario, start, goal, space, cspace: grid, optimum: bes
   syncStage();
 }
 
-/** The stage holds the top view and, beside it, the c-space or the 3-D view when there is one. */
+/**
+ * The stage holds the top view and, beside it, the c-space or the 3-D view when there is one (on
+ * a phone, the 3-D view alone with a button for the view from above: `phoneStage`).
+ */
 function syncStage() {
   ui.stage.classList.toggle('dual', cspace.active || view3d.active);
-  onResize();
+  phoneStage.setSpatial(view3d.active); // sizes the views again
 }
 
 function showInvalid(error, edit) {
@@ -510,10 +513,14 @@ linkViews({ view, cspace, canvas: ui.canvas, cspaceCanvas: ui.cspace, stage: ui.
 
 // Size: the views follow the stage (and the device pixel ratio).
 // The second view is the c-space's or the 3-D view's (never both: a spatial arm has no c-space view).
+// The 3-D view takes the larger share of the stage: the top view of a spatial arm is a sketch.
 const onResize = fitViews(ui.stage, view, {
   get active() { return cspace.active || view3d.active; },
+  get share() { return view3d.active ? 0.64 : 0.5; },
+  solo: () => phoneStage.solo(),
   resize(w, h, dpr) { if (cspace.active) cspace.resize(w, h, dpr); if (view3d.active) view3d.resize(w, h, dpr); },
 });
+const phoneStage = new PhoneStage(ui.stage, $('view-swap'), $('run-bar'), () => onResize());
 
 Object.defineProperty(window, 'planarium', {
   value: Object.freeze({
@@ -548,6 +555,13 @@ Object.defineProperty(window, 'planarium', {
       viewProj: () => (view3d.view?.matrices ? [...view3d.view.matrices.viewProj] : null),
       /** Resolves with the requestAnimationFrame deltas (ms) of the next `n` frames the view draws while it turns. */
       orbitFrameTimes: (n) => view3d.view?.orbitFrameTimes(n) ?? Promise.resolve([]),
+      /** The orbit camera: {azimuth, elevation, distance}. */
+      camera: () => {
+        const c = view3d.view?.camera;
+        return c ? { azimuth: c.azimuth, elevation: c.elevation, distance: c.distance } : null;
+      },
+      /** Add `edges` synthetic tree edges (straight, `steps` points each) round the tool: the frame-time measure's load. */
+      loadEdges: (edges, steps) => addTestEdges(view3d.view, edges, steps),
       /** The pose panel: {q (radians), status, collision, message}. */
       pose: () => posePanel.state(),
     }),
@@ -562,3 +576,25 @@ syncOptions();
 syncButtons();
 updateStats();
 player.start();
+
+/**
+ * For the frame-time measure: `edges` straight edges of `steps` points each (`steps` - 1 segments),
+ * from a seeded walk round the start's tool point, added to the two trees of the 3-D view `v`.
+ * Returns how many were added.
+ */
+function addTestEdges(v, edges, steps) {
+  if (!v || !v.start) return 0;
+  const n = Math.max(2, Math.min(64, steps | 0));
+  const count = Math.max(0, Math.min(1e6, edges | 0));
+  const c = v.toolAt(v.start);
+  let s = 12345;
+  const rand = () => ((s = (Math.imul(s, 1103515245) + 12345) >>> 0) / 2 ** 32) - 0.5;
+  const pts = new Float64Array(3 * n);
+  for (let e = 0; e < count; e++) {
+    const a = [c[0] + rand(), c[1] + rand(), c[2] + rand() * 0.6];
+    const d = [rand() * 0.1, rand() * 0.1, rand() * 0.1];
+    for (let k = 0; k < n; k++) for (let i = 0; i < 3; i++) pts[3 * k + i] = a[i] + (d[i] * k) / (n - 1);
+    v.addNode(e & 1, pts, 0, n);
+  }
+  return count;
+}
