@@ -43,7 +43,21 @@ test('100,000 tree edges in the 3-D view: drawn, and the frame time while orbiti
     const [t0, t1] = await page.evaluate((c) => window.planarium.view3d.countColours(c, 40), [PALETTE.tree0, PALETTE.tree1]);
     console.log(`tree pixels ${t0}/${t1}`);
     assert.ok(t0 > 50 && t1 > 50 && t0 + t1 > 5000, 'both trees are drawn (tree 1, drawn last, covers much of tree 0)');
+    // what the GPU is sent while orbiting: the draw calls a frame (not one per edge) and no buffer upload
+    await page.evaluate(() => {
+      const P = WebGL2RenderingContext.prototype;
+      const counts = { draws: 0, uploads: 0 };
+      window.__glCounts = counts;
+      for (const [name, key] of [['drawArrays', 'draws'], ['bufferData', 'uploads'], ['bufferSubData', 'uploads']]) {
+        const f = P[name];
+        P[name] = function (...a) { counts[key]++; return f.apply(this, a); };
+      }
+    });
     const times = await page.evaluate((n) => window.planarium.view3d.orbitFrameTimes(n), frames);
+    const gl = await page.evaluate(() => window.__glCounts);
+    console.log(`while orbiting ${frames} frames: ${gl.draws} draw calls, ${gl.uploads} buffer uploads`);
+    assert.equal(gl.uploads, 0, 'no buffer is uploaded again while the camera turns');
+    assert.ok(gl.draws <= frames * 60, 'a few dozen draw calls a frame, not one per edge');
     console.log(`${edges} edges of ${steps - 1} segment(s) (${edges * (steps - 1)} segments; added in ${added[1].toFixed(0)} ms), tree pixels ${t0}/${t1}, orbiting ${times.length} frames at 1280×800: ${quantiles(times)}`);
     await page.screenshot({ path: join(SHOTS, `view3d-edges-${steps - 1}.png`) });
   }
