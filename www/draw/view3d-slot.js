@@ -166,4 +166,27 @@ export class View3dSlot {
     this.poseIndex = k;
     this.view.setPose(frames.subarray(k * links * 16, (k + 1) * links * 16));
   }
+
+  /**
+   * For the frame-time measure (tests): `edges` straight edges of `steps` points each (`steps` - 1
+   * segments), from a seeded walk round the start's tool point, added to the view's two trees.
+   * Returns how many were added.
+   */
+  addTestEdges(edges, steps) {
+    const v = this.view;
+    if (!v || !v.start) return 0;
+    const n = Math.max(2, Math.min(64, steps | 0));
+    const count = Math.max(0, Math.min(1e6, edges | 0));
+    const c = v.toolAt(v.start);
+    let s = 12345;
+    const rand = () => ((s = (Math.imul(s, 1103515245) + 12345) >>> 0) / 2 ** 32) - 0.5;
+    const pts = new Float64Array(3 * n);
+    for (let e = 0; e < count; e++) {
+      const a = [c[0] + rand(), c[1] + rand(), c[2] + rand() * 0.6];
+      const d = [rand() * 0.1, rand() * 0.1, rand() * 0.1];
+      for (let k = 0; k < n; k++) for (let i = 0; i < 3; i++) pts[3 * k + i] = a[i] + (d[i] * k) / (n - 1);
+      v.addNode(e & 1, pts, 0, n);
+    }
+    return count;
+  }
 }

@@ -561,7 +561,7 @@ Object.defineProperty(window, 'planarium', {
         return c ? { azimuth: c.azimuth, elevation: c.elevation, distance: c.distance } : null;
       },
       /** Add `edges` synthetic tree edges (straight, `steps` points each) round the tool: the frame-time measure's load. */
-      loadEdges: (edges, steps) => addTestEdges(view3d.view, edges, steps),
+      loadEdges: (edges, steps) => view3d.addTestEdges(edges, steps),
       /** The pose panel: {q (radians), status, collision, message}. */
       pose: () => posePanel.state(),
     }),
@@ -576,25 +576,3 @@ syncOptions();
 syncButtons();
 updateStats();
 player.start();
-
-/**
- * For the frame-time measure: `edges` straight edges of `steps` points each (`steps` - 1 segments),
- * from a seeded walk round the start's tool point, added to the two trees of the 3-D view `v`.
- * Returns how many were added.
- */
-function addTestEdges(v, edges, steps) {
-  if (!v || !v.start) return 0;
-  const n = Math.max(2, Math.min(64, steps | 0));
-  const count = Math.max(0, Math.min(1e6, edges | 0));
-  const c = v.toolAt(v.start);
-  let s = 12345;
-  const rand = () => ((s = (Math.imul(s, 1103515245) + 12345) >>> 0) / 2 ** 32) - 0.5;
-  const pts = new Float64Array(3 * n);
-  for (let e = 0; e < count; e++) {
-    const a = [c[0] + rand(), c[1] + rand(), c[2] + rand() * 0.6];
-    const d = [rand() * 0.1, rand() * 0.1, rand() * 0.1];
-    for (let k = 0; k < n; k++) for (let i = 0; i < 3; i++) pts[3 * k + i] = a[i] + (d[i] * k) / (n - 1);
-    v.addNode(e & 1, pts, 0, n);
-  }
-  return count;
-}
