@@ -9,6 +9,9 @@
 
 import { EventKind } from '../run/events.js';
 
+/** What stands in the 3-D view's place when the browser cannot draw it. */
+export const NO_WEBGL2 = 'This browser has no WebGL2; the view from above still works.';
+
 export class View3dSlot {
   /**
    * @param {HTMLCanvasElement} canvas the 3-D view's canvas (hidden while there is none)
@@ -32,6 +35,8 @@ export class View3dSlot {
     this.error = '';
     this.manual = null;     // the arm posed by hand (www/ui/pose3d.js): {frames, colour, ghost}
     this.posing = false;    // posed since the run began: the path's animation waits for the next run
+    this.unavailable = false; // the browser has no WebGL2: a note stands in the view's place
+    this.note = null;       // that note (a <p> after the canvas), made when needed
     this.pendingCamera = null; // a link's camera, put in place when its scene is drawn
     this.onCamera = () => {};  // the user turned or zoomed the camera (or a link's was put in place)
   }
@@ -47,6 +52,28 @@ export class View3dSlot {
     return c && c.touched ? c.state() : null;
   }
 
+  /** Show the note instead of the canvas (no WebGL2), or the canvas. */
+  showNote(text) {
+    if (text && !this.note) {
+      this.note = document.createElement('p');
+      this.note.className = 'view3d-none';
+      this.note.setAttribute('role', 'note');
+      this.canvas.after(this.note);
+      if (this.size) this.sizeNote();
+    }
+    if (this.note) {
+      this.note.textContent = text || '';
+      this.note.hidden = !text;
+    }
+    this.canvas.hidden = !this.active || !!text;
+  }
+
+  sizeNote() {
+    if (!this.note || !this.size) return;
+    this.note.style.width = `${this.size[0]}px`;
+    this.note.style.height = `${this.size[1]}px`;
+  }
+
   /** A scene was loaded: `spatial` (the `loaded` reply's, present when `caps.view3d`) or null. */
   async setScene(spatial, view3d, edited = false) {
     const gen = ++this.generation;
@@ -56,10 +83,10 @@ export class View3dSlot {
     this.spatial = view3d && spatial ? spatial : null;
     this.manual = null;
     this.active = !!this.spatial;
-    this.canvas.hidden = !this.active;
+    this.showNote(this.active && this.unavailable ? NO_WEBGL2 : '');
     this.clearRun();
     this.onActive();
-    if (!this.active) return;
+    if (!this.active || this.unavailable) return;
     try {
       if (!this.view) {
         const { View3D } = await import('../draw3d/view3d.js');
@@ -80,6 +107,11 @@ export class View3dSlot {
       this.error = '';
     } catch (e) {
       this.error = String(e?.message || e);
+      if (e?.noWebGL2) {
+        this.unavailable = true;
+        this.showNote(NO_WEBGL2);
+        return;
+      }
       console.error(`3-D view: ${this.error}`);
     }
   }
@@ -87,6 +119,7 @@ export class View3dSlot {
   resize(w, h, dpr) {
     this.size = [w, h, dpr];
     this.view?.resize(w, h, dpr);
+    this.sizeNote();
   }
 
   /** An events batch: keep its tool curves (`tree3d`: [tree, id, n, x, y, z…] per node). */
@@ -157,5 +190,28 @@ export class View3dSlot {
     if (k === this.poseIndex) return;
     this.poseIndex = k;
     this.view.setPose(frames.subarray(k * links * 16, (k + 1) * links * 16));
+  }
+
+  /**
+   * For the frame-time measure (tests): `edges` straight edges of `steps` points each (`steps` - 1
+   * segments), from a seeded walk round the start's tool point, added to the view's two trees.
+   * Returns how many were added.
+   */
+  addTestEdges(edges, steps) {
+    const v = this.view;
+    if (!v || !v.start) return 0;
+    const n = Math.max(2, Math.min(64, steps | 0));
+    const count = Math.max(0, Math.min(1e6, edges | 0));
+    const c = v.toolAt(v.start);
+    let s = 12345;
+    const rand = () => ((s = (Math.imul(s, 1103515245) + 12345) >>> 0) / 2 ** 32) - 0.5;
+    const pts = new Float64Array(3 * n);
+    for (let e = 0; e < count; e++) {
+      const a = [c[0] + rand(), c[1] + rand(), c[2] + rand() * 0.6];
+      const d = [rand() * 0.1, rand() * 0.1, rand() * 0.1];
+      for (let k = 0; k < n; k++) for (let i = 0; i < 3; i++) pts[3 * k + i] = a[i] + (d[i] * k) / (n - 1);
+      v.addNode(e & 1, pts, 0, n);
+    }
+    return count;
   }
 }

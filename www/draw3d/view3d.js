@@ -28,7 +28,7 @@ export class View3D {
     this.canvas = canvas;
     this.palette = palette;
     const gl = canvas.getContext('webgl2', { antialias: true, preserveDrawingBuffer: true });
-    if (!gl) throw new Error('this browser has no WebGL2: the 3-D view is not available');
+    if (!gl) throw Object.assign(new Error('this browser has no WebGL2: the 3-D view is not available'), { noWebGL2: true });
     this.gl = gl;
     this.progs = programs(gl);
     this.camera = new OrbitCamera(canvas, () => this.requestRender());
@@ -261,8 +261,9 @@ export class View3D {
   // ---- For tests (window.planarium.view3d) ----
 
   /**
-   * Turn the camera a little every animation frame for `n` frames, drawing each, and resolve with
-   * the requestAnimationFrame deltas (ms): the frame time while orbiting.
+   * Turn the camera a little every animation frame for `n` frames, and resolve with the
+   * requestAnimationFrame deltas (ms): the frame time while orbiting. Each turn asks for one frame
+   * (`requestRender`), as a drag does; drawing here as well drew every frame twice.
    */
   orbitFrameTimes(n) {
     return new Promise((resolve) => {
@@ -273,7 +274,6 @@ export class View3D {
         last = t;
         if (times.length >= n) { resolve(times); return; }
         this.camera.rotate(4, 0);
-        this.render();
         requestAnimationFrame(step);
       };
       requestAnimationFrame(step);

@@ -34,7 +34,7 @@ const ui = {
   scenario: $('scenario'), setups: $('setups'), runs: $('runs'), workers: $('workers'),
   run: $('bench-run'), cancel: $('bench-cancel'), progress: $('bench-progress'), status: $('bench-status'),
   error: $('bench-error'), table: $('bench-table'), caption: $('bench-caption'), plots: $('plots'),
-  csv: $('export-csv'), json: $('export-json'), ompl: $('export-ompl'), file: $('file'), list: $('setup-list'),
+  csv: $('export-csv'), json: $('export-json'), ompl: $('export-ompl'), course: $('export-course'), courseTable: $('course-table'), file: $('file'), list: $('setup-list'),
   buildLabel: $('build-label'), buildPanel: $('build-panel'), add: $('add-setup'), buildNote: $('build-note'),
   advanced: $('advanced'), logAxes: $('log-axes'), plotOptions: $('plot-options'), pop: $('run-pop'),
 };
@@ -69,7 +69,8 @@ function showError(text) {
 function rowOf(seed, result) {
   const s = result.stats;
   return { seed, solved: result.solved, status: result.status, time_ms: s.time_ms, iterations: s.iterations, nodes: s.nodes,
-    checks: s.checks, cost: s.cost, smoothed_cost: s.smoothed_cost, smoothing_ms: s.smoothing_ms };
+    checks: s.checks, free_checks: s.free_checks ?? 0, cost: s.cost, smoothed_cost: s.smoothed_cost, smoothing_ms: s.smoothing_ms,
+    ...(s.cost_fk != null ? { cost_fk: s.cost_fk } : {}), ...(s.smoothed_cost_fk != null ? { smoothed_cost_fk: s.smoothed_cost_fk } : {}) };
 }
 
 /**
@@ -108,7 +109,7 @@ function setRunning(on) {
   ui.cancel.disabled = !on;
   ui.scenario.disabled = on;
   ui.file.disabled = on;
-  for (const b of [ui.csv, ui.json, ui.ompl]) b.disabled = on || !report;
+  for (const b of [ui.csv, ui.json, ui.ompl, ui.course]) b.disabled = on || !report;
 }
 
 function start() {
@@ -163,7 +164,7 @@ function finish(problem) {
   const secs = ((performance.now() - j.started) / 1000).toFixed(1);
   if (problem) showError(problem);
   ui.status.textContent = problem ? `${j.done} of ${j.total} runs done` : `${j.total} runs in ${secs} s`;
-  for (const b of [ui.csv, ui.json, ui.ompl]) b.disabled = false;
+  for (const b of [ui.csv, ui.json, ui.ompl, ui.course]) b.disabled = false;
   show(report);
 }
 
@@ -215,6 +216,19 @@ function show(r) {
     });
     return tr;
   }));
+  // report 001's table: solved, avgT, stdT, avgNodes, avgQueries (means over all runs, as the CLI's)
+  ui.courseTable.tBodies[0].replaceChildren(...full.setups.map((s) => {
+    const m = s.summary;
+    const tr = document.createElement('tr');
+    [s.label, `${(100 * m.success_rate).toFixed(0)}%`, num(m.time_ms.mean), num(m.time_ms.std), num(m.nodes.mean), num(m.checks.mean)].forEach((c, i) => {
+      const td = document.createElement(i ? 'td' : 'th');
+      if (!i) td.scope = 'row';
+      td.textContent = c;
+      tr.append(td);
+    });
+    return tr;
+  }));
+  ui.courseTable.hidden = false;
   const ran = seedsRun(r);
   const partial = asked && asked.done < asked.total ? ` (stopped after ${asked.done} of ${asked.total} runs)` : '';
   ui.caption.textContent = shown(`${r.scenario}: ${ran}${partial}; medians over all runs, costs over solved runs`);
@@ -284,10 +298,10 @@ function onPlotMove(e) {
   e.currentTarget.classList.toggle('pointing', !!hitDot(dots, e.clientX - box.left, e.clientY - box.top));
 }
 
-function exportAs(format, ext) {
+function exportAs(format, ext, kind = 'bench') {
   if (!report) return;
   try {
-    downloadText(benchExport(JSON.stringify(report), format), `${report.scenario_id}-bench.${ext}`);
+    downloadText(benchExport(JSON.stringify(report), format), `${report.scenario_id}-${kind}.${ext}`);
   } catch (e) {
     showError(String(e.message ?? e));
   }
@@ -459,6 +473,7 @@ ui.cancel.addEventListener('click', cancel);
 ui.csv.addEventListener('click', () => exportAs('csv', 'csv'));
 ui.json.addEventListener('click', () => exportAs('json', 'json'));
 ui.ompl.addEventListener('click', () => exportAs('ompl', 'log'));
+ui.course.addEventListener('click', () => exportAs('course', 'csv', 'course'));
 ui.add.addEventListener('click', addSetup);
 ui.setups.addEventListener('input', setupsChanged);
 ui.runs.addEventListener('change', () => writeHash());

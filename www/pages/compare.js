@@ -18,6 +18,7 @@ import { createPanel, taskOf } from '../ui/panel.js';
 import { Playback } from '../run/playback.js';
 import { Chart } from '../draw/chart.js';
 import { Lane } from '../run/lane.js';
+import { View3dSlot } from '../draw/view3d-slot.js';
 import { createStats } from '../ui/stats.js';
 import { createOverlays } from '../draw/overlays.js';
 import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend, removeCustomScenarios, markCustomScenario } from '../ui/controls.js';
@@ -70,14 +71,16 @@ function makeSide(key) {
   const playback = new Playback();
   const view = new View($(`${key}-canvas`), playback.store, playback.model);
   const chart = new Chart($(`${key}-chart`), playback.model, PALETTE);
+  // a spatial arm (the core's caps.view3d): the lane shows it in 3-D instead of the top view
+  const view3d = new View3dSlot($(`${key}-view3d`), playback.store, PALETTE, () => fit());
   const side = {
-    key, playback, view, chart, panel: null, loadedGen: -1, ready: false,
+    key, playback, view, view3d, chart, panel: null, loadedGen: -1, ready: false,
     stats: createStats($(`${key}-stats`), `${key}-`),
     title: $(`${key}-title`), chartBox: $(`${key}-chart-box`), chartTitle: $(`${key}-chart-title`),
   };
   side.lane = new Lane({
     playback,
-    views: [view],
+    views: [view, view3d],
     chart,
     hooks: {
       ready: (msg) => onReady(side, msg),
@@ -104,7 +107,8 @@ function makeSide(key) {
   const stage = $(`${key}-stage`);
   const fit = () => {
     const r = stage.getBoundingClientRect();
-    view.resize(Math.max(40, r.width), Math.max(40, r.height), window.devicePixelRatio || 1);
+    $(`${key}-canvas`).hidden = view3d.active;
+    (view3d.active ? view3d : view).resize(Math.max(40, r.width), Math.max(40, r.height), window.devicePixelRatio || 1);
   };
   new ResizeObserver(fit).observe(stage);
   fit();
@@ -175,6 +179,7 @@ function onLoaded(side, msg) {
   ui.course.textContent = builtins.find((b) => b.id === ui.scenario.value)?.course || '';
   for (const s of sides) {
     s.view.setScenario(s.loaded.scenario, s.loaded.start, s.loaded.goal);
+    s.view3d.setScene(s.loaded.spatial || null, !!s.loaded.caps?.view3d);
     s.panel.setTask(taskOf(scenario));
     if (applyDefaults) s.panel.apply(scenario.planner);
   }
@@ -415,6 +420,7 @@ function frame(time) {
   for (const s of sides) {
     if (!s.chart.kind && s.playback.model.costs.length) syncSide(s);
     s.view.render(time, animFps(ui.animSpeed));
+    s.view3d.render(time, animFps(ui.animSpeed));
     s.chart.render(s.lane.iterationNow);
   }
   requestAnimationFrame(frame);
@@ -570,6 +576,9 @@ Object.defineProperty(window, 'planarium', {
     /** The last "Run 20 seeds": {first, last, lines, a, b (success, medians), better: {metric: 'a' | 'b' | null}, rows}. */
     seeds: () => (seedSummary ? structuredClone(seedSummary) : null),
     seedsRunning: () => !!seedJob,
+    /** A lane's 3-D view: {active, ready, error}; how many of its pixels are near each colour. */
+    view3d: (key = 'a') => { const v = laneOf(key).view3d; return { active: v.active, ready: !!v.view?.matrices, error: v.error }; },
+    view3dColours: (key, colours, tol) => laneOf(key).view3d.view?.countColours(colours, tol) ?? null,
   }),
   writable: false,
   configurable: false,

@@ -20,7 +20,7 @@ import { ObstacleEditor } from '../ui/obstacle-editor.js';
 import { PosePanel } from '../ui/pose3d.js';
 import { BoxesPanel } from '../ui/boxes3d.js';
 import { wireExports } from '../ui/exports.js';
-import { fitViews, downloadText, keepInView } from '../draw/stage.js';
+import { fitViews, downloadText, keepInView, PhoneStage } from '../draw/stage.js';
 import { createPanel, taskOf } from '../ui/panel.js';
 import { Playback } from '../run/playback.js';
 import { Chart } from '../draw/chart.js';
@@ -317,11 +317,14 @@ function showScenario({ scenario, start, goal, space, cspace: grid, optimum: bes
   syncStage();
 }
 
-/** The stage holds the top view and, beside it, the c-space or the 3-D view when there is one. */
+/**
+ * The stage holds the top view and, beside it, the c-space or the 3-D view when there is one (on
+ * a phone, the 3-D view alone with a button for the view from above: `phoneStage`).
+ */
 function syncStage() {
   ui.stage.classList.toggle('dual', cspace.active || view3d.active);
   $('export-3d-note').hidden = !view3d.active;
-  onResize();
+  phoneStage.setSpatial(view3d.active); // sizes the views again
 }
 
 function showInvalid(error, edit) {
@@ -520,10 +523,14 @@ linkViews({ view, cspace, canvas: ui.canvas, cspaceCanvas: ui.cspace, stage: ui.
 
 // Size: the views follow the stage (and the device pixel ratio).
 // The second view is the c-space's or the 3-D view's (never both: a spatial arm has no c-space view).
+// The 3-D view takes the larger share of the stage: the top view of a spatial arm is a sketch.
 const onResize = fitViews(ui.stage, view, {
   get active() { return cspace.active || view3d.active; },
+  get share() { return view3d.active ? 0.64 : 0.5; },
+  solo: () => phoneStage.solo(),
   resize(w, h, dpr) { if (cspace.active) cspace.resize(w, h, dpr); if (view3d.active) view3d.resize(w, h, dpr); },
 });
+const phoneStage = new PhoneStage(ui.stage, $('view-swap'), $('run-bar'), () => onResize());
 
 Object.defineProperty(window, 'planarium', {
   value: Object.freeze({
@@ -558,10 +565,18 @@ Object.defineProperty(window, 'planarium', {
       viewProj: () => (view3d.view?.matrices ? [...view3d.view.matrices.viewProj] : null),
       /** Resolves with the requestAnimationFrame deltas (ms) of the next `n` frames the view draws while it turns. */
       orbitFrameTimes: (n) => view3d.view?.orbitFrameTimes(n) ?? Promise.resolve([]),
+      /** Add `edges` synthetic tree edges (straight, `steps` points each) round the tool: the frame-time measure's load. */
+      loadEdges: (edges, steps) => view3d.addTestEdges(edges, steps),
       /** The pose panel: {q (radians), status, collision, message}. */
       pose: () => posePanel.state(),
-      /** The camera: {target, yaw, pitch, distance} ({framed: true} added while framed on the problem). */
-      camera: () => (view3d.view ? { ...view3d.view.camera.state(), framed: !view3d.view.camera.touched } : null),
+      /**
+       * The camera: {target, yaw, pitch, distance} as a link carries it, {framed: true} while framed
+       * on the problem, and the orbit's raw {azimuth, elevation}.
+       */
+      camera: () => {
+        const c = view3d.view?.camera;
+        return c ? { ...c.state(), framed: !c.touched, azimuth: c.azimuth, elevation: c.elevation } : null;
+      },
       /** The scene boxes panel: {rows: [{values, error}], status}. */
       boxes: () => boxesPanel.state(),
     }),

@@ -1,0 +1,82 @@
+// The 3-D view's frame time while orbiting with 100,000 tree edges drawn (headless chromium,
+// WebGL2 through SwiftShader, a software renderer: a GPU is far faster). The edges are synthetic
+// (window.planarium.view3d.loadEdges: straight edges round the tool); the test checks they are
+// drawn (the trees' colours cover the view) and logs the requestAnimationFrame deltas while the
+// camera turns: measured and reported (docs/performance.md), never asserted. Then the default
+// puma-rbo-wall run in the page's worker against `planarium plan puma-rbo-wall` (the same run:
+// nodes and checks equal), both times logged.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { join } from 'node:path';
+import { existsSync } from 'node:fs';
+import { execFileSync } from 'node:child_process';
+import { pageFixture, SHOTS, ROOT } from './browser.mjs';
+import { PALETTE } from '../../www/draw/palette.js';
+
+const fx = await pageFixture();
+
+const quantiles = (times) => {
+  const s = [...times].sort((a, b) => a - b);
+  const q = (f) => s[Math.min(s.length - 1, Math.floor(f * s.length))];
+  return `median ${q(0.5).toFixed(1)} ms, p95 ${q(0.95).toFixed(1)} ms, max ${s[s.length - 1].toFixed(1)} ms`;
+};
+
+test('100,000 tree edges in the 3-D view: drawn, and the frame time while orbiting logged', async () => {
+  const page = fx.page;
+  await fx.pickScenario('puma-rbo-wall', "Puma 560 through a window (report 001's course)");
+  await page.waitForFunction(() => window.planarium.view3d.ready(), null, { timeout: 20000 });
+  const empty = await page.evaluate(() => window.planarium.view3d.orbitFrameTimes(40));
+  console.log(`no tree, ${empty.length} frames: ${quantiles(empty)}`);
+  for (const [edges, steps, frames] of [[100000, 2, 20], [100000, 6, 10]]) {
+    // a fresh load: the trees empty
+    await page.selectOption('#scenario', 'narrow');
+    await fx.waitState('idle');
+    await fx.pickScenario('puma-rbo-wall', "Puma 560 through a window (report 001's course)");
+    await page.waitForFunction(() => window.planarium.view3d.ready(), null, { timeout: 20000 });
+    const added = await page.evaluate(({ edges, steps }) => {
+      const t0 = performance.now();
+      const n = window.planarium.view3d.loadEdges(edges, steps);
+      return [n, performance.now() - t0];
+    }, { edges, steps });
+    assert.equal(added[0], edges);
+    await fx.nextFrames();
+    const [t0, t1] = await page.evaluate((c) => window.planarium.view3d.countColours(c, 40), [PALETTE.tree0, PALETTE.tree1]);
+    console.log(`tree pixels ${t0}/${t1}`);
+    assert.ok(t0 > 50 && t1 > 50 && t0 + t1 > 5000, 'both trees are drawn (tree 1, drawn last, covers much of tree 0)');
+    // what the GPU is sent while orbiting: the draw calls a frame (not one per edge) and no buffer upload
+    await page.evaluate(() => {
+      const P = WebGL2RenderingContext.prototype;
+      const counts = { draws: 0, uploads: 0 };
+      window.__glCounts = counts;
+      for (const [name, key] of [['drawArrays', 'draws'], ['bufferData', 'uploads'], ['bufferSubData', 'uploads']]) {
+        const f = P[name];
+        P[name] = function (...a) { counts[key]++; return f.apply(this, a); };
+      }
+    });
+    const times = await page.evaluate((n) => window.planarium.view3d.orbitFrameTimes(n), frames);
+    const gl = await page.evaluate(() => window.__glCounts);
+    console.log(`while orbiting ${frames} frames: ${gl.draws} draw calls, ${gl.uploads} buffer uploads`);
+    assert.equal(gl.uploads, 0, 'no buffer is uploaded again while the camera turns');
+    assert.ok(gl.draws <= frames * 60, 'a few dozen draw calls a frame, not one per edge');
+    console.log(`${edges} edges of ${steps - 1} segment(s) (${edges * (steps - 1)} segments; added in ${added[1].toFixed(0)} ms), tree pixels ${t0}/${t1}, orbiting ${times.length} frames at 1280×800: ${quantiles(times)}`);
+    await page.screenshot({ path: join(SHOTS, `view3d-edges-${steps - 1}.png`) });
+  }
+  assert.deepEqual(fx.errors, []);
+});
+
+test('the default puma-rbo-wall run in the page\'s worker against the native CLI: the same run, the times logged', async () => {
+  const page = fx.page;
+  await fx.pickScenario('puma-rbo-wall', "Puma 560 through a window (report 001's course)");
+  await page.click('#speed-instant');
+  await page.click('#run');
+  await fx.waitStatus('solved', 300000);
+  const stats = await page.evaluate(() => window.planarium.result().stats);
+  const cli = join(ROOT, 'target/release/planarium');
+  if (!existsSync(cli)) { console.log(`worker: ${stats.time_ms.toFixed(1)} ms (no native CLI built to compare)`); return; }
+  const native = [];
+  for (let i = 0; i < 3; i++) native.push(JSON.parse(execFileSync(cli, ['plan', 'puma-rbo-wall', '--json'], { encoding: 'utf8' })));
+  const n = native[0].stats;
+  assert.deepEqual([stats.nodes, stats.checks, stats.free_checks, stats.iterations], [n.nodes, n.checks, n.free_checks, n.iterations], 'the same run');
+  const best = Math.min(...native.map((r) => r.stats.time_ms));
+  console.log(`default puma-rbo-wall (seed 1): ${n.nodes} nodes, ${n.checks} checks; worker ${stats.time_ms.toFixed(1)} ms, native ${native.map((r) => r.stats.time_ms.toFixed(1)).join(' / ')} ms: worker / native (best) ${(stats.time_ms / best).toFixed(2)}`);
+});
