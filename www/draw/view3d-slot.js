@@ -30,6 +30,7 @@ export class View3dSlot {
     this.error = '';
     this.manual = null;     // the arm posed by hand (www/ui/pose3d.js): {frames, colour, ghost}
     this.posing = false;    // posed since the run began: the path's animation waits for the next run
+    this.step = null;       // the explain panel's step in 3-D (setStep)
   }
 
   /** A scene was loaded: `spatial` (the `loaded` reply's, present when `caps.view3d`) or null. */
@@ -44,9 +45,12 @@ export class View3dSlot {
     if (!this.active) return;
     try {
       if (!this.view) {
-        const { View3D } = await import('../draw3d/view3d.js');
+        const [{ View3D }, { Actors3D }] = await Promise.all([import('../draw3d/view3d.js'), import('../draw3d/actors3d.js')]);
         if (gen !== this.generation) return;
-        this.view ??= new View3D(this.canvas, this.palette);
+        if (!this.view) {
+          this.view = new View3D(this.canvas, this.palette);
+          this.view.actors = new Actors3D(this.view);
+        }
         if (this.size) this.view.resize(...this.size);
       }
       if (gen !== this.generation) return;
@@ -106,7 +110,19 @@ export class View3dSlot {
     this.view?.setManual(manual);
   }
 
+  /**
+   * The explain panel's step in 3-D (draw3d/actors3d.js): ghosts of the sample and of the
+   * configuration checked, the collision's arm and contact point; null: none.
+   * @param {import('../draw3d/actors3d.js').Actors3DData | null} data
+   */
+  setStep(data) {
+    this.step = data;
+    this.view?.actors?.set(data);
+  }
+
   clearRun() {
+    this.step = null;
+    this.view?.actors?.set(null);
     this.posing = false;
     this.nodes.clear();
     this.path = null;

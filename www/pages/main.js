@@ -411,6 +411,9 @@ const editor = new Editor({
 // A spatial arm posed by hand under the 3-D view (pose3d.js): its sliders, whether the pose is
 // free, and Set as start / goal through the editor above.
 const posePanel = new PosePanel({ root: $('pose3d'), slot: view3d, editor, palette: PALETTE });
+// The explain panel tells a spatial arm's step in its joints and shows it in the 3-D view, with the
+// pose panel's copy of the core (link frames, what collides and where).
+explain.setArm(() => posePanel.scene, view3d);
 
 // Obstacles and bounds: drawn, moved, resized, deleted; undo/redo; saved as JSON (obstacle-editor.js)
 
@@ -531,6 +534,8 @@ Object.defineProperty(window, 'planarium', {
     model: () => modelSummary(playback.model, chart),
     /** The explain panel: {line, caption, events} of the last event shown. */
     explain: () => explain.state(),
+    /** The explain panel's step in the 3-D view: {sample, step, collision: {links, at, words} | null}, or null. */
+    explain3d: () => explain.state3d(),
     /** The last record revealed, as numbers (null before any). */
     lastEvent: () => (playback.store.length ? [...playback.store.record(playback.store.length - 1)] : null),
     cells: () => cellSummary(playback.model.cells),
@@ -548,6 +553,8 @@ Object.defineProperty(window, 'planarium', {
       viewProj: () => (view3d.view?.matrices ? [...view3d.view.matrices.viewProj] : null),
       /** Resolves with the requestAnimationFrame deltas (ms) of the next `n` frames the view draws while it turns. */
       orbitFrameTimes: (n) => view3d.view?.orbitFrameTimes(n) ?? Promise.resolve([]),
+      /** Draw the explain panel's step (ghost arms, collision mark) or not, at once (tests compare the pixels). */
+      showStep: (on) => { if (view3d.view?.actors) { view3d.view.actors.hidden = !on; view3d.view.render(); } },
       /** The pose panel: {q (radians), status, collision, message}. */
       pose: () => posePanel.state(),
     }),
