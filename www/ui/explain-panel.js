@@ -188,7 +188,7 @@ export class ExplainPanel {
 
   /**
    * The step in 3-D as drawn (tests and the page's API): the tool centre point of each ghost arm
-   * (null: not drawn), and what collides, where.
+   * (null: not drawn) and its link frames' origins, and what collides, where.
    */
   state3d() {
     const slot = this.arm?.slot;
@@ -201,9 +201,17 @@ export class ExplainPanel {
       const m = f.subarray(f.length - 16);
       return [0, 1, 2].map((r) => m[r] * offset[0] + m[4 + r] * offset[1] + m[8 + r] * offset[2] + m[12 + r]);
     };
+    // every link frame's origin (the joints, inside the links' hulls)
+    const origins = (g) => {
+      const f = g?.frames;
+      const out = [];
+      for (let k = 0; f && k + 16 <= f.length; k += 16) out.push([f[k + 12], f[k + 13], f[k + 14]]);
+      return out;
+    };
     return {
       sample: tool(d.sample),
       step: tool(d.step),
+      joints: { sample: origins(d.sample), step: origins(d.step), collision: origins(d.collision) },
       collision: d.collision ? { links: d.collision.links, at: d.collision.at, words: d.collision.words, tool: tool(d.collision) } : null,
     };
   }
