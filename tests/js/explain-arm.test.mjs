@@ -100,3 +100,26 @@ test('explain: the Puma in last-free mode is told in its joints from the core\'s
   run.free();
   scene.free();
 });
+
+test('arm states: entries are matched to their records in order, kept bounded, and a kind that disagrees stops the matching', () => {
+  const rec = (kind) => Float64Array.of(kind, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0);
+  const recs = [rec(K.SAMPLE), rec(K.SAMPLE_TRY), rec(K.NEAREST), rec(K.SOLVED), rec(K.COLLISION)];
+  const store = { record: (i) => recs[i] };
+  const batch = (kinds) => Float64Array.from([2, ...kinds.flatMap((k, j) => [k, j, j, j + 0.5, -j, -j - 0.5])]);
+  const m = new StateMirror(2);
+  m.push(batch([K.SAMPLE, K.NEAREST, K.COLLISION]));
+  m.assign(store, 0, 3);
+  assert.deepEqual([...m.get(0).q], [0, 0.5]);
+  assert.equal(m.get(1), undefined, 'a raw try has no entry');
+  assert.deepEqual([...m.get(2).pq], [-1, -1.5]);
+  m.assign(store, 3, 5);
+  assert.equal(m.get(4).extra, 2);
+  assert.equal(m.get(0), undefined, 'only the last 2 kept');
+  assert.equal(m.mismatches, 0);
+  const n = new StateMirror();
+  n.push(batch([K.NEAREST, K.SAMPLE]));
+  n.assign(store, 0, 5);
+  assert.equal(n.mismatches, 1, 'a sample\'s record met a nearest entry');
+  assert.equal(n.get(0), undefined);
+  assert.equal(n.get(2), undefined, 'nothing matched after a disagreement');
+});

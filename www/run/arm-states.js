@@ -7,7 +7,7 @@
 // revealed, and each entry's kind is checked against its record's.
 //
 // Bounded: the entries not yet revealed wait with their batches (as the records do), and of those
-// revealed only the last KEEP are kept (a step's records are the last few: the panel reads a long
+// revealed only the last KEEP are kept, each copied out of its batch (about 250 bytes for six joints) (a step's records are the last few: the panel reads a long
 // reveal from its last step only, run/explain.js).
 
 import { EventKind as K } from './events.js';
@@ -69,7 +69,8 @@ export class StateMirror {
       const d = b.data;
       return {
         kind: d[o],
-        entry: { q: d.subarray(o + 2, o + 2 + b.dims), pq: d.subarray(o + 2 + b.dims, o + stride), extra: d[o + 1] },
+        // copies (not views), so that an entry kept does not keep its whole batch alive
+        entry: { q: d.slice(o + 2, o + 2 + b.dims), pq: d.slice(o + 2 + b.dims, o + stride), extra: d[o + 1] },
       };
     }
     return null;
