@@ -161,6 +161,30 @@ pub struct EventLog {
     /// The node log: off (`None`), or every `NodeAdded` record's full states, for a view that needs
     /// more than the records carry (a spatial arm's tool in 3-D, `Session::drain_nodes`).
     nodes: Option<NodeLog>,
+    /// The state log: off (`None`), or the full states of the records a growth step is explained
+    /// by (`EventLog::STATE_KINDS`), for an explain panel whose robot has more than the two
+    /// coordinates a record carries (a spatial arm's six joints, `Session::drain_states`).
+    states: Option<StateLog>,
+}
+
+/// The full states of the records of [`EventLog::STATE_KINDS`], in order: per record of those
+/// kinds exactly one entry `[record, kind, extra, q…, pq…]` (`record` numbered from the run's
+/// first; `q`, `pq` the record's state and its parent's or target's, see
+/// [`EventLog::STATE_KINDS`]; `extra` NaN, or for a last-free connect's `Steer` the state checks
+/// its configurations took). Explaining only: nothing a planner reads.
+#[derive(Clone, Debug, Default)]
+pub struct StateLog {
+    /// Numbers per state.
+    pub dims: usize,
+    /// The entries, flat.
+    pub data: Vec<f64>,
+}
+
+impl StateLog {
+    /// Numbers per entry.
+    pub fn stride(&self) -> usize {
+        3 + 2 * self.dims
+    }
 }
 
 /// Every `NodeAdded` record's states: `[record, tree, id, parent, q…, parent's q…]` per node, where
@@ -183,7 +207,24 @@ impl NodeLog {
 impl EventLog {
     /// A log that records (or not).
     pub fn new(enabled: bool) -> Self {
-        EventLog { data: Vec::new(), enabled, drained: 0, nodes: None }
+        EventLog { data: Vec::new(), enabled, drained: 0, nodes: None, states: None }
+    }
+    /// The kinds whose records get a state log entry: `Sample` and `SampleRejected` (the sample,
+    /// twice), `Nearest` (the node's state, the target's), `Steer` (the farthest state tested, the
+    /// node's), `Collision` (where the motion was found not free, the state it started from),
+    /// `NodeAdded` (the node's, its parent's), `TreesConnected` (the meeting state, twice).
+    pub const STATE_KINDS: [EventKind; 7] = [
+        EventKind::Sample,
+        EventKind::SampleRejected,
+        EventKind::Nearest,
+        EventKind::Steer,
+        EventKind::Collision,
+        EventKind::NodeAdded,
+        EventKind::TreesConnected,
+    ];
+    /// Keep the state log of states of `dims` numbers from now on (`0`: not).
+    pub fn log_states(&mut self, dims: usize) {
+        self.states = (dims > 0).then(|| StateLog { dims, data: Vec::new() });
     }
     /// Keep the node log of states of `dims` numbers from now on (`0`: not).
     pub fn log_nodes(&mut self, dims: usize) {
@@ -194,6 +235,50 @@ impl EventLog {
         match &mut self.nodes {
             Some(n) => NodeLog { dims: n.dims, data: std::mem::take(&mut n.data) },
             None => NodeLog::default(),
+        }
+    }
+    /// Take the state log's entries so far (empty when it is off).
+    pub fn drain_states(&mut self) -> StateLog {
+        match &mut self.states {
+            Some(n) => StateLog { dims: n.dims, data: std::mem::take(&mut n.data) },
+            None => StateLog::default(),
+        }
+    }
+    /// The state log entry of the record about to be made (when `kind` is one of
+    /// [`STATE_KINDS`](EventLog::STATE_KINDS)): `q`, `pq`, or NaN when they are not states of the
+    /// log's size, so that every such record has exactly one entry, in order.
+    fn log_state(&mut self, kind: EventKind, q: &[Real], pq: &[Real]) {
+        let record = (self.drained + self.data.len() / STRIDE) as f64;
+        if let Some(s) = &mut self.states {
+            if Self::STATE_KINDS.contains(&kind) {
+                s.data.extend_from_slice(&[record, kind as u8 as f64, f64::NAN]);
+                if q.len() == s.dims && pq.len() == s.dims {
+                    s.data.extend_from_slice(q);
+                    s.data.extend_from_slice(pq);
+                } else {
+                    s.data.resize(s.data.len() + 2 * s.dims, f64::NAN);
+                }
+            }
+        }
+    }
+    /// Give the last record, made by [`values`](EventLog::values) or [`mark`](EventLog::mark)
+    /// (which carry no states), its states in the state log: `q`, `pq`, and `extra` (see
+    /// [`StateLog`]). Nothing when the log is off, the last record has no entry, or the states
+    /// are not of its size.
+    pub fn attach(&mut self, q: &[Real], pq: &[Real], extra: f64) {
+        if !self.enabled || self.data.is_empty() {
+            return;
+        }
+        let last = (self.drained + self.data.len() / STRIDE - 1) as f64;
+        if let Some(s) = &mut self.states {
+            let (stride, dims) = (s.stride(), s.dims);
+            let n = s.data.len() / stride;
+            if n > 0 && s.data[(n - 1) * stride] == last && q.len() == dims && pq.len() == dims {
+                let e = &mut s.data[(n - 1) * stride..];
+                e[2] = extra;
+                e[3..3 + dims].copy_from_slice(q);
+                e[3 + dims..].copy_from_slice(pq);
+            }
         }
     }
     /// Record one event: ids, workspace points of the state and its parent, and the first two
@@ -220,6 +305,7 @@ impl EventLog {
                     n.data.extend_from_slice(pq);
                 }
             }
+            self.log_state(kind, q, pq);
             let c = |s: &[Real], i: usize| s.get(i).copied().unwrap_or(0.0);
             self.data.extend_from_slice(&[
                 kind as u8 as f64,
@@ -248,6 +334,7 @@ impl EventLog {
     #[inline]
     pub fn mark(&mut self, kind: EventKind, tree: usize, id: i64, parent: f64, p: Vec2, a: f64, b: f64) {
         if self.enabled {
+            self.log_state(kind, &[], &[]);
             self.data.extend_from_slice(&[
                 kind as u8 as f64,
                 tree as f64,
@@ -269,8 +356,20 @@ impl EventLog {
     #[inline]
     pub fn values(&mut self, kind: EventKind, tree: usize, id: i64, parent: i64, v: [f64; 8]) {
         if self.enabled {
+            self.log_state(kind, &[], &[]);
             self.data.extend_from_slice(&[kind as u8 as f64, tree as f64, id as f64, parent as f64]);
             self.data.extend_from_slice(&v);
+        }
+    }
+    /// Set the `extra` number of the last record's state log entry (see [`StateLog`]), if it has one.
+    pub fn set_extra(&mut self, extra: f64) {
+        let last = (self.drained + self.data.len() / STRIDE) as f64 - 1.0;
+        if let Some(s) = &mut self.states {
+            let stride = s.stride();
+            let n = s.data.len() / stride;
+            if n > 0 && s.data[(n - 1) * stride] == last {
+                s.data[(n - 1) * stride + 2] = extra;
+            }
         }
     }
     /// Number of records waiting.
@@ -293,6 +392,14 @@ impl EventLog {
                 keep -= 1;
             }
             n.data.truncate(keep * stride);
+        }
+        if let Some(s) = &mut self.states {
+            let stride = s.stride();
+            let mut keep = s.data.len() / stride;
+            while keep > 0 && s.data[(keep - 1) * stride] >= end {
+                keep -= 1;
+            }
+            s.data.truncate(keep * stride);
         }
     }
     /// Take every waiting record, leaving the log empty.

@@ -190,6 +190,31 @@ impl Problem {
         out
     }
 
+    /// A run's state log ([`crate::run::Session::drain_states`]) in scenario states, flat: `[dims,
+    /// then per entry kind, extra, q…, pq…]` (`dims` numbers a state; states the log could not
+    /// give are NaN), for an explain panel. Empty when the log is empty.
+    pub fn explain_states(&self, log: &crate::events::StateLog) -> Vec<Real> {
+        let (dims, stride) = (log.dims, log.stride());
+        if log.data.is_empty() || dims == 0 {
+            return Vec::new();
+        }
+        let ext = self.robot.external_dims();
+        let mut out = Vec::with_capacity(1 + log.data.len() / stride * (2 + 2 * ext));
+        out.push(ext as Real);
+        for e in log.data.chunks_exact(stride) {
+            out.extend_from_slice(&e[1..3]);
+            for q in [&e[3..3 + dims], &e[3 + dims..]] {
+                let x = if q.iter().all(|v| v.is_finite()) { self.robot.decode(q) } else { Vec::new() };
+                if x.len() == ext {
+                    out.extend_from_slice(&x);
+                } else {
+                    out.resize(out.len() + ext, Real::NAN);
+                }
+            }
+        }
+        out
+    }
+
     /// A planning path as scenario states.
     pub fn decode_path(&self, path: &[Vec<Real>]) -> Vec<Vec<Real>> {
         path.iter().map(|q| self.robot.decode(q)).collect()

@@ -346,6 +346,20 @@ impl Scene {
             .and_then(|q| self.inner.robot.describe_collision(self.inner.si.workspace(), &q))
             .unwrap_or_default()
     }
+    /// For a robot in 3-D: what collides at scenario state `q` and where, flat `[link, other,
+    /// obstacle, x, y, z]`: the link (0 the base) of the part hit, the other link (-1: a scene
+    /// obstacle), the obstacle's index in `obstacles3d` (-1: two links), a world point where they
+    /// meet; empty when the arm is free, for other robots, or a `q` that is not a state. Not counted.
+    pub fn contact(&self, q: &[f64]) -> Vec<f64> {
+        let (Some(sp), Some(q)) = (self.inner.robot.spatial(), self.state(q)) else { return Vec::new() };
+        match sp.contact(self.inner.si.workspace(), &q) {
+            Some(c) => {
+                let idx = |v: Option<usize>| v.map_or(-1.0, |i| i as f64);
+                vec![c.link as f64, idx(c.other), idx(c.solid), c.at[0], c.at[1], c.at[2]]
+            }
+            None => Vec::new(),
+        }
+    }
     fn state(&self, q: &[f64]) -> Option<Vec<f64>> {
         if q.len() != self.inner.robot.external_dims() || q.iter().any(|v| !v.is_finite()) {
             return None;
@@ -416,6 +430,19 @@ impl Run {
     /// (a 3-D view's trees). Drawing only: the run is the same.
     pub fn log_nodes(&mut self, on: bool) {
         self.inner.log_nodes(on)
+    }
+    /// Keep the full states of the records a growth step is explained by from now on, or not, for
+    /// [`drain_states`](Run::drain_states) (an explain panel for a robot of more than two
+    /// coordinates). Explaining only: the run is the same.
+    pub fn log_states(&mut self, on: bool) {
+        self.inner.log_states(on)
+    }
+    /// The state log since the last call (`Problem::explain_states`): flat `[dims, then per
+    /// record of a growth step's kinds (Sample, SampleRejected, Nearest, Steer, Collision,
+    /// NodeAdded, TreesConnected), in order: kind, extra, q…, pq…]`; empty when there is none.
+    pub fn drain_states(&mut self) -> Vec<f64> {
+        let log = self.inner.drain_states();
+        self.inner.problem().explain_states(&log)
     }
     /// For a robot in 3-D, the nodes added since the last call as the tool sweeps their edges:
     /// flat `[tree, id, n, x, y, z…]` per node (`Problem::tool_tree`); empty for other robots.

@@ -138,6 +138,7 @@ impl Context<'_> {
                 -1,
                 [p.x, p.y, t.x, t.y, d, domain, sample as u8 as f64, 0.0],
             );
+            self.events.attach(from, target, f64::NAN);
         }
     }
     /// Log a growth step's steering: from node `near` (state `from`) a step of `step` (the range
@@ -162,6 +163,7 @@ impl Context<'_> {
                 -1,
                 [p.x, p.y, q.x, q.y, step, range, reached as u8 as f64, 0.0],
             );
+            self.events.attach(new, from, f64::NAN);
         }
     }
     /// Log a ladder step from node `near` (state `from`) to `step` after a full step collided:
@@ -177,6 +179,7 @@ impl Context<'_> {
                 moved as i64,
                 [p.x, p.y, q.x, q.y, len, len, 0.0, attempt as f64],
             );
+            self.events.attach(step, from, f64::NAN);
         }
     }
     /// Log a blocked motion from node `from` (state `a`) toward `b`, found invalid at `at`, with

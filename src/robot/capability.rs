@@ -143,6 +143,22 @@ pub trait Spatial {
     /// Every link's frame in the world at `q` (link 0, the base, first; `joints + 1` of them),
     /// each a 4×4 homogeneous matrix, column-major (WebGL's order).
     fn link_frames(&self, q: &[Real]) -> Vec<[Real; 16]>;
+    /// What collides at `q` and where ([`Contact`]); `None` when the arm is free (joint limits
+    /// are not checked). For drawing and explaining.
+    fn contact(&self, ws: &Workspace, q: &[Real]) -> Option<Contact>;
+}
+
+/// What collides at a state and where ([`Spatial::contact`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Contact {
+    /// The link (0: the base) of the part hit.
+    pub link: usize,
+    /// The other link, when two links meet.
+    pub other: Option<usize>,
+    /// The scene obstacle's index, when the arm meets the scene.
+    pub solid: Option<usize>,
+    /// A world point where they meet.
+    pub at: [Real; 3],
 }
 
 /// One part of a spatial arm, for drawing.

@@ -26,7 +26,7 @@ pub mod spatial;
 
 pub use arm::{fk_path_cost, ArmRobot};
 pub use asv::AsvRobot;
-pub use capability::{DiscreteOnly, MotionModel, OwnSampler, PartMesh, Sensor, Spatial, WorkspaceBody};
+pub use capability::{Contact, DiscreteOnly, MotionModel, OwnSampler, PartMesh, Sensor, Spatial, WorkspaceBody};
 pub use point::PointRobot;
 pub use rigid::RigidRobot;
 pub use spatial::SpatialArmRobot;

@@ -457,6 +457,7 @@ impl Session {
         self.events.enabled = on;
         if !on {
             self.events.drain();
+            self.events.drain_states();
         }
     }
 
@@ -521,6 +522,18 @@ impl Session {
     /// the tree at the spatial arm's tool: [`Problem::tool_tree`]). Drawing only: the run is the same.
     pub fn log_nodes(&mut self, on: bool) {
         self.events.log_nodes(if on { self.problem.si.dims() } else { 0 });
+    }
+
+    /// Keep the full states of the records a growth step is explained by from now on, or not
+    /// ([`crate::events::StateLog`]; an explain panel for a robot of more than two coordinates).
+    /// Explaining only: the run is the same.
+    pub fn log_states(&mut self, on: bool) {
+        self.events.log_states(if on { self.problem.si.dims() } else { 0 });
+    }
+
+    /// Take the state log since the last call (see [`log_states`](Session::log_states)).
+    pub fn drain_states(&mut self) -> crate::events::StateLog {
+        self.events.drain_states()
     }
 
     /// Take the node log since the last call (see [`log_nodes`](Session::log_nodes)).

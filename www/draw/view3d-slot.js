@@ -39,6 +39,7 @@ export class View3dSlot {
     this.note = null;       // that note (a <p> after the canvas), made when needed
     this.pendingCamera = null; // a link's camera, put in place when its scene is drawn
     this.onCamera = () => {};  // the user turned or zoomed the camera (or a link's was put in place)
+    this.step = null;       // the explain panel's step in 3-D (setStep)
   }
 
   /** A link's camera ({target, yaw, pitch, distance}) for the next scene loaded, or null: framed on the problem. */
@@ -89,12 +90,13 @@ export class View3dSlot {
     if (!this.active || this.unavailable) return;
     try {
       if (!this.view) {
-        const { View3D } = await import('../draw3d/view3d.js');
+        const [{ View3D }, { Actors3D }] = await Promise.all([import('../draw3d/view3d.js'), import('../draw3d/actors3d.js')]);
         if (gen !== this.generation) return;
         if (!this.view) {
           const view = new View3D(this.canvas, this.palette);
           const redraw = view.camera.onChange;
           view.camera.onChange = () => { redraw(); if (view.camera.touched) this.onCamera(); };
+          view.actors = new Actors3D(view);
           this.view = view;
         }
         if (this.size) this.view.resize(...this.size);
@@ -164,7 +166,19 @@ export class View3dSlot {
     this.view?.setManual(manual);
   }
 
+  /**
+   * The explain panel's step in 3-D (draw3d/actors3d.js): ghosts of the sample and of the
+   * configuration checked, the collision's arm and contact point; null: none.
+   * @param {import('../draw3d/actors3d.js').Actors3DData | null} data
+   */
+  setStep(data) {
+    this.step = data;
+    this.view?.actors?.set(data);
+  }
+
   clearRun() {
+    this.step = null;
+    this.view?.actors?.set(null);
     this.posing = false;
     this.nodes.clear();
     this.path = null;

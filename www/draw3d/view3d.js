@@ -46,6 +46,8 @@ export class View3D {
     this.size = [1, 1, 1];
     this.pending = false;
     this.onFrame = null;  // (time) => void, after each frame drawn (tests and the frame-time log)
+    /** @type {import('./actors3d.js').Actors3D | null} the explain panel's actors (actors3d.js), drawn by its hooks */
+    this.actors = null;
   }
 
   /**
@@ -228,6 +230,7 @@ export class View3D {
     gl.depthMask(false);
     arm(this.goal, P.goal, 0.35);
     if (hand && hand.ghost) arm(this.start, P.start, 0.35);
+    if (!this.pose) this.actors?.drawGhosts();
     for (const o of this.obstacles) this.drawMesh(o.buffers, IDENTITY, rgb(P.obstacle), 0.55);
     // The trees over the translucent walls (which write no depth), so a branch behind the wall keeps
     // its tree's colour; the opaque arm still hides what is behind it. Once a path is shown the
@@ -245,6 +248,7 @@ export class View3D {
     gl.disable(gl.BLEND);
     gl.disable(gl.DEPTH_TEST);
     lines(this.path, P.smoothPath);
+    if (!this.pose) this.actors?.drawMarks(lines);
     gl.bindVertexArray(null);
   }
 

@@ -423,6 +423,9 @@ const editor = new Editor({
 const posePanel = new PosePanel({ root: $('pose3d'), slot: view3d, editor, palette: PALETTE });
 // Its scene's boxes as numbers (boxes3d.js), each edit checked by the core and sent through the editor.
 const boxesPanel = new BoxesPanel({ root: $('boxes3d'), editor });
+// The explain panel tells a spatial arm's step in its joints and shows it in the 3-D view, with the
+// pose panel's copy of the core (link frames, what collides and where).
+explain.setArm(() => posePanel.scene, view3d);
 
 // Obstacles and bounds: drawn, moved, resized, deleted; undo/redo; saved as JSON (obstacle-editor.js)
 
@@ -548,6 +551,8 @@ Object.defineProperty(window, 'planarium', {
     model: () => modelSummary(playback.model, chart),
     /** The explain panel: {line, caption, events} of the last event shown. */
     explain: () => explain.state(),
+    /** The explain panel's step in the 3-D view: {sample, step, collision: {links, at, words} | null}, or null. */
+    explain3d: () => explain.state3d(),
     /** The last record revealed, as numbers (null before any). */
     lastEvent: () => (playback.store.length ? [...playback.store.record(playback.store.length - 1)] : null),
     cells: () => cellSummary(playback.model.cells),
@@ -567,6 +572,8 @@ Object.defineProperty(window, 'planarium', {
       orbitFrameTimes: (n) => view3d.view?.orbitFrameTimes(n) ?? Promise.resolve([]),
       /** Add `edges` synthetic tree edges (straight, `steps` points each) round the tool: the frame-time measure's load. */
       loadEdges: (edges, steps) => view3d.addTestEdges(edges, steps),
+      /** Draw the explain panel's step (ghost arms, collision mark) or not, at once (tests compare the pixels). */
+      showStep: (on) => { if (view3d.view?.actors) { view3d.view.actors.hidden = !on; view3d.view.render(); } },
       /** The pose panel: {q (radians), status, collision, message}. */
       pose: () => posePanel.state(),
       /**

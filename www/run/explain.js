@@ -27,6 +27,9 @@ export function optionsOf(config) {
     share: NARROW_SAMPLERS.includes(p.sampler) && (p.uniform_share === undefined || Number(p.uniform_share) > 0),
     goalBias: p.goal_bias === undefined ? undefined : Number(p.goal_bias),
     connect: p.extend === 'connect',
+    // RRT-Connect's `connect` choice: the Robotics Library's RrtConCon (step by the resolution, only
+    // the last free configuration added) rather than range steps
+    lastFree: p.connect === 'last-free',
     domain: Number(p.dd_radius) > 0,
     exhausted: Number(p.exhausted) > 0,
     ladder: Number(p.ladder) > 0,
@@ -45,6 +48,11 @@ export function num(v) {
   return s.replace('-', '−');
 }
 const pt = (x, y) => `(${num(x)}, ${num(y)})`;
+
+/** An angle in whole degrees, as the captions write a joint: "−40°". */
+export const deg = (rad) => `${Math.round((rad * 180) / Math.PI) || 0}°`.replace('-', '−');
+/** A configuration of joint angles: "q = (12°, −40°, 95°, 0°, 30°, −10°)". */
+export const joints = (q) => `q = (${Array.from(q, deg).join(', ')})`;
 
 /** What blocked a motion, from a COLLISION record's id (src/space_info/explain.rs, SpaceInfo::blocked_at). */
 export function blockerText(id) {
@@ -89,6 +97,11 @@ export class Explainer {
     this.stepStart = caps.samples || this.density;       // readStore: steps begin at a SAMPLE or SELECT
     this.rangeDrawn = planeIsWorkspace(robot);
     this.complete = (caps.draws === 'cells' && complete(options)) || this.grid;
+    this.lastFree = this.connects && !!options.lastFree; // RRT-Connect's last-free connect
+    /** @type {{get: (i: number) => ({q: ArrayLike<number>, pq: ArrayLike<number>, extra: number} | undefined)} | null} full states by record index (run/arm-states.js) */
+    this.states = null;
+    /** @type {{collision: (q: ArrayLike<number>) => string} | null} the core's words for what collides at a state */
+    this.describe = null;
     this.reset();
   }
 
@@ -118,8 +131,11 @@ export class Explainer {
    * store: no copy is made). Then `line` is the pseudocode line's id and `caption` the step's
    * words.
    */
-  read(r, o = 0) {
+  read(r, o = 0, st = undefined) {
     this.events++;
+    // A robot of more than two coordinates (a spatial arm) is told in its joints, from the core's
+    // state log (`st`: this record's full states, when the panel has them).
+    const arm = st && st.q.length > 2 && Number.isFinite(st.q[0]) ? st : null;
     const kind = r[o], tree = r[o + 1], id = r[o + 2], parent = r[o + 3];
     const x = r[o + 4], y = r[o + 5], px = r[o + 6], py = r[o + 7], c0 = r[o + 8], c1 = r[o + 9], pc0 = r[o + 10], pc1 = r[o + 11];
     const A = this.actors;
@@ -145,9 +161,11 @@ export class Explainer {
         }
         const tries = this.line === 'try' ? A.tries : undefined;
         this.connecting = false;
-        this.begin(id === 1 ? `sample q_goal ${pt(x, y)} (goal bias)` : id === 2 ? `sample ${pt(x, y)} (uniform share)` : `sample ${pt(x, y)}`);
+        const at = arm ? joints(arm.q) : pt(x, y);
+        this.begin(id === 1 ? `sample q_goal ${at} (goal bias)` : id === 2 ? `sample ${at} (uniform share)` : `sample ${at}`);
         if (tries) this.actors.tries = tries;
         this.actors.sample = [x, y];
+        if (arm) this.actors.sampleQ = arm.q;
         this.line = id === 1 ? 'goal' : id === 2 ? 'share' : 'sample';
         if (this.connects) this.parts[0] += ` for the ${TREE_NAME(this.planner, tree)}`;
         break;
@@ -157,13 +175,17 @@ export class Explainer {
         if (!toSample && this.connects) {
           if (!this.connecting) {
             const sample = A.sample;
-            this.begin(`CONNECT the ${TREE_NAME(this.planner, tree)} toward ${pt(px, py)}`);
+            const sampleQ = A.sampleQ;
+            this.begin(`CONNECT the ${TREE_NAME(this.planner, tree)} toward ${arm ? `the new node's ${joints(arm.pq)}` : pt(px, py)}`);
             if (sample) this.actors.sample = sample;
+            if (sampleQ) this.actors.sampleQ = sampleQ;
           }
           this.connecting = true;
         }
-        this.then(`nearest #${id} at ${num(c0)}`);
+        this.then(`nearest #${id} at ${num(c0)}${arm ? ' rad' : ''}`);
         const N = this.actors;
+        N.stepQ = undefined;
+        N.collisionQ = undefined;
         N.near = [x, y];
         N.target = [px, py];
         N.nearId = id;
@@ -185,13 +207,36 @@ export class Explainer {
           this.line = this.connecting ? 'c-ladder' : 'ladder';
           break;
         }
-        this.then(`step ${num(c0)}${pc0 === 1 ? ' (reaches it)' : ''}`);
+        if (arm && this.lastFree) {
+          // The Robotics Library's connect: configurations a resolution apart along the line, each
+          // one query (`extra`: the state checks the connect took), up to the farthest tested.
+          const n = Number.isFinite(arm.extra) ? arm.extra : NaN;
+          this.then(`step along the line by the resolution: ${Number.isFinite(n) ? `${n} configuration${n === 1 ? '' : 's'} checked (${n} quer${n === 1 ? 'y' : 'ies'})` : 'configurations checked'}, ${num(c0)} of ${num(c1)} rad${pc0 === 1 ? ' (reaches it)' : ''}, the farthest ${joints(arm.q)}`);
+          A.stepQ = arm.q;
+        } else {
+          this.then(`step ${num(c0)}${arm ? ` rad to ${joints(arm.q)}` : ''}${pc0 === 1 ? ' (reaches it)' : ''}`);
+          if (arm) A.stepQ = arm.q;
+        }
         A.edge = [px, py, x, y];
         if (this.rangeDrawn) A.range = [px, py, c1];
         this.line = this.connecting ? 'c-steer' : 'steer';
         break;
       case K.COLLISION:
-        this.then(`${blockerText(id)} at ${pt(x, y)}`);
+        if (arm) {
+          const q = arm.q;
+          const describe = this.describe;
+          let words = null;
+          const lead = `${this.lastFree ? 'the configuration ' : ''}${joints(q)} collides`;
+          // The core's words ("link4 meets the slab"), asked for only when the caption is shown.
+          this.then(describe ? () => {
+            words ??= describe.collision(q) || blockerText(id);
+            return `${lead}: ${words}`;
+          } : `${lead}: ${blockerText(id)}`);
+          A.collisionQ = q;
+          A.stepQ = q;
+        } else {
+          this.then(`${blockerText(id)} at ${pt(x, y)}`);
+        }
         A.collision = [x, y];
         A.blocked = true;
         this.line = this.lazy ? 'lazy-check' : this.connecting ? 'c-check' : 'check';
@@ -209,7 +254,7 @@ export class Explainer {
           }
           break;
         }
-        if (parent < 0) { this.begin(`the ${TREE_NAME(this.planner, tree)} starts at ${pt(x, y)}`); this.line = 'init'; break; }
+        if (parent < 0) { this.begin(`the ${TREE_NAME(this.planner, tree)} starts at ${arm ? joints(arm.q) : pt(x, y)}`); this.line = 'init'; break; }
         if (this.cells) {
           this.begin(`${this.complete ? 'along the shortest way: step to' : 'step to cell centre'} ${pt(x, y)} (node #${id})`);
           A.edge = [px, py, x, y];
@@ -228,7 +273,11 @@ export class Explainer {
           this.line = tree === 1 ? 'walk' : 'add';
           break;
         }
-        if (this.choosesParent && A.nearId !== undefined && parent !== A.nearId) {
+        if (arm && this.lastFree) {
+          this.then(`only the last free configuration ${joints(arm.q)} becomes a node: #${id} under #${parent}`);
+        } else if (arm) {
+          this.then(`add #${id} under #${parent} at ${joints(arm.q)}`);
+        } else if (this.choosesParent && A.nearId !== undefined && parent !== A.nearId) {
           this.then(`add #${id} under #${parent} (cheaper than #${A.nearId})`);
         } else {
           this.then(`add #${id} under #${parent}`);
@@ -245,7 +294,7 @@ export class Explainer {
           this.then('invalid: rejected');
           this.line = 'valid';
         } else {
-          this.then('sample dropped');
+          this.then(this.lastFree ? 'not even the first configuration is free: no node, the sample is dropped' : 'sample dropped');
           if (this.line !== 'check') this.line = 'sample';
         }
         break;
@@ -278,7 +327,7 @@ export class Explainer {
         this.line = 'exhausted';
         break;
       case K.TREES_CONNECTED:
-        this.then(`the trees meet at ${pt(x, y)}`);
+        this.then(arm ? `the trees join: #${id} of the ${TREE_NAME(this.planner, tree)} and #${parent} of the other${this.lastFree ? ' (within ε)' : ''}, at ${joints(arm.q)}` : `the trees meet at ${pt(x, y)}`);
         A.met = [x, y];
         this.line = 'met';
         break;
@@ -360,7 +409,7 @@ export class Explainer {
   }
 
   /** The caption of the step so far (joined when asked for: a bulk reveal reads thousands of records). */
-  get caption() { return this.parts.join(' → '); }
+  get caption() { return this.parts.map((p) => (typeof p === 'function' ? p() : p)).join(' → '); }
 
   /**
    * Read records [from, to) of `store` (a RecordStore). A long reveal (Instant, a step of many
@@ -382,8 +431,9 @@ export class Explainer {
       this.reset();
       this.events = start;
     }
+    let i = start;
     for (const [d, o0, o1] of store.spans(start, to)) {
-      for (let o = o0; o < o1; o += STRIDE) this.read(d, o);
+      for (let o = o0; o < o1; o += STRIDE, i++) this.read(d, o, this.states?.get(i));
     }
     return start > from;
   }

@@ -126,6 +126,7 @@ export class Lane {
   onQuery(msg) {
     if (!this.done) return;
     this.playback.push(msg.data);
+    for (const v of this.views) v.takeEvents?.(msg);
     this.reveal(this.playback.revealAll());
     this.hooks.query?.(msg.answer);
     this.hooks.changed?.();

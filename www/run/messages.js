@@ -99,12 +99,12 @@
  *   | LoadedReply
  *   | {type: 'invalid', error: ScenarioError}
  *   | {type: 'events', data: Float64Array, stats: RunStats, status: string, tries?: {seen: number, sent: number},
- *       tree3d?: Float64Array}
+ *       tree3d?: Float64Array, states?: Float64Array}
  *   | {type: 'result', result: RunResult, frames: Float64Array, rawFrames: Float64Array, path3d?: Path3d}
  *   | {type: 'status', status: string}
  *   | {type: 'ack', ack: number}
  *   | {type: 'asv-solution', text: string}
- *   | {type: 'query', data: Float64Array, answer: QueryAnswer}
+ *   | {type: 'query', data: Float64Array, answer: QueryAnswer, states?: Float64Array}
  *   | {type: 'seed', seed: number}
  *   | {type: 'error' | 'crashed', message: string}} WorkerReply
  * @typedef {WorkerReply & {run?: number}} WorkerOut

@@ -9,12 +9,14 @@ import { plannerCaps } from '../draw/capabilities.js';
 /**
  * @typedef {{id: string, text: string, indent?: number, when?: (o: Options) => boolean}} Line
  * @typedef {{sampler?: string, goalBias?: number, share?: boolean, connect?: boolean, domain?: boolean, exhausted?: boolean,
- *   weighted?: boolean, ladder?: boolean, escape?: string, vertices?: boolean, search?: string}} Options
+ *   weighted?: boolean, ladder?: boolean, lastFree?: boolean, escape?: string, vertices?: boolean, search?: string}} Options
  * @typedef {{title: string, lines: Line[], choosesParent?: boolean}} Pseudocode  (choosesParent: what the Explainer says of a parent that is not the nearest node)
  */
 
 const descent = (o) => !o.search || o.search === 'descent'; // hex-potential: the report's search
 export const complete = (o) => !descent(o); // hex-potential: A* or Dijkstra over the same cells
+const lastFree = (o) => !!o.lastFree; // RRT-Connect's `connect: last-free` (the Robotics Library's RrtConCon)
+const range = (o) => !o.lastFree;
 const sampled = (o) => o.goalBias === undefined || o.goalBias > 0; // unset: the planner's default, which may bias
 const SAMPLER_LINES = /** @type {Line[]} */ ([
   { id: 'goal', text: 'with probability goal_bias: q_rand ← q_goal', indent: 2, when: sampled },
@@ -56,23 +58,32 @@ export const PSEUDOCODE = {
   },
   'tree-rrt-connect': {
     title: 'RRT-Connect (Kuffner & LaValle 2000)',
+    // `connect: last-free`: the Robotics Library's RrtConCon (report 001's course), with its own lines
     lines: [
       { id: 'init', text: 'T_a ← {q_start}, T_b ← {q_goal}' },
       { id: 'loop', text: 'repeat' },
       { id: 'sample', text: 'q_rand ← SAMPLE()', indent: 1 },
       ...SAMPLER_LINES,
-      { id: 'nearest', text: 'EXTEND(T_a, q_rand): q_near ← NEAREST(T_a, q_rand)', indent: 1 },
+      { id: 'nearest', text: 'EXTEND(T_a, q_rand): q_near ← NEAREST(T_a, q_rand)', indent: 1, when: range },
+      { id: 'nearest', text: 'CONNECT(T_a, q_rand): q_near ← NEAREST(T_a, q_rand)', indent: 1, when: lastFree },
       ...VARIANT_LINES,
-      { id: 'steer', text: 'q_new ← STEER(q_near, q_rand, range)', indent: 2 },
-      { id: 'check', text: 'if not MOTION_FREE(q_near, q_new): reject', indent: 2 },
-      { ...LADDER, indent: 3 },
-      { id: 'add', text: 'add q_new to T_a', indent: 2 },
+      { id: 'steer', text: 'q_new ← STEER(q_near, q_rand, range)', indent: 2, when: range },
+      { id: 'check', text: 'if not MOTION_FREE(q_near, q_new): reject', indent: 2, when: range },
+      { id: 'steer', text: 'for q ← q_near + δ, q_near + 2δ, … along the line to q_rand (δ: the resolution):', indent: 2, when: lastFree },
+      { id: 'check', text: 'if q collides (one query each): stop', indent: 3, when: lastFree },
+      { ...LADDER, indent: 3, when: (o) => !!o.ladder && range(o) },
+      { id: 'add', text: 'add q_new to T_a', indent: 2, when: range },
+      { id: 'add', text: 'only the last free q becomes q_new, added to T_a under q_near (none free: next iteration)', indent: 2, when: lastFree },
       { id: 'c-nearest', text: 'CONNECT(T_b, q_new): q_near ← NEAREST(T_b, q_new)', indent: 1 },
-      { id: 'c-steer', text: 'repeat: q ← STEER(q_near, q_new, range)', indent: 2 },
-      { id: 'c-check', text: 'until blocked: MOTION_FREE fails', indent: 2 },
-      { ...LADDER, id: 'c-ladder', text: 'else try up to L steps moving a random half of the coordinates (ladder): add the first free one, and stop', indent: 3 },
-      { id: 'c-add', text: 'add q to T_b', indent: 2 },
-      { id: 'met', text: 'if q = q_new: the trees meet: return PATH', indent: 1 },
+      { id: 'c-steer', text: 'repeat: q ← STEER(q_near, q_new, range)', indent: 2, when: range },
+      { id: 'c-check', text: 'until blocked: MOTION_FREE fails', indent: 2, when: range },
+      { id: 'c-steer', text: 'for q ← q_near + δ, q_near + 2δ, … along the line to q_new:', indent: 2, when: lastFree },
+      { id: 'c-check', text: 'if q collides (one query each): stop', indent: 3, when: lastFree },
+      { ...LADDER, id: 'c-ladder', text: 'else try up to L steps moving a random half of the coordinates (ladder): add the first free one, and stop', indent: 3, when: (o) => !!o.ladder && range(o) },
+      { id: 'c-add', text: 'add q to T_b', indent: 2, when: range },
+      { id: 'c-add', text: 'only the last free q becomes a node of T_b, under q_near', indent: 2, when: lastFree },
+      { id: 'met', text: 'if q = q_new: the trees meet: return PATH', indent: 1, when: range },
+      { id: 'met', text: 'if |q − q_new| ≤ ε: the trees meet: return PATH', indent: 1, when: lastFree },
       { id: 'swap', text: 'swap T_a and T_b', indent: 1 },
     ],
   },

@@ -9,6 +9,7 @@ import { el } from './dom.js';
 import { Explainer, optionsOf, pseudocode } from '../run/explain.js';
 import { PALETTE } from '../draw/palette.js';
 import { emits } from '../draw/capabilities.js';
+import { StateMirror } from '../run/arm-states.js';
 
 /** The actors' colours (also in the legend): apart from the tree blue and the obstacle brown. */
 // (Purple: apart from the trees' blue and pink and from the best path's vermillion, which a paused
@@ -23,6 +24,10 @@ export class ExplainPanel {
   constructor(root, store, view) {
     this.store = store;
     this.view = view;
+    this.states = new StateMirror(); // a spatial arm's full states, from the core's state log
+    /** @type {{scene: () => any, slot: import('../draw/view3d-slot.js').View3dSlot} | null} the 3-D view and the page thread's core */
+    this.arm = null;
+    this.shown3d = null;
     this.explainer = new Explainer();
     this.title = el('p', { id: 'explain-title', className: 'explain-title' });
     this.code = el('ol', { id: 'explain-code', className: 'explain-code' });
@@ -47,6 +52,7 @@ export class ExplainPanel {
     const options = { ...optionsOf(config), ...scene };
     const code = pseudocode(planner, options);
     this.explainer = new Explainer(planner, robotKind || '', options);
+    this.wire();
     this.items.clear();
     this.title.textContent = code ? code.title : `${planner}: no pseudocode yet`;
     this.code.replaceChildren(...(code ? code.lines : []).map((l) => {
@@ -56,6 +62,22 @@ export class ExplainPanel {
       return li;
     }));
     this.clearRun();
+  }
+
+  /**
+   * A robot in 3-D: `scene()` gives the page thread's core Scene of the loaded scenario (the pose
+   * panel's: `collision`, `contact`, `link_frames`), `slot` the 3-D view that draws the step.
+   */
+  setArm(scene, slot) {
+    this.arm = { scene, slot };
+    this.wire();
+  }
+
+  /** The explainer reads the state log, and the core's words for a collision. */
+  wire() {
+    this.explainer.states = this.states;
+    const scene = this.arm?.scene;
+    this.explainer.describe = scene ? { collision: (q) => scene()?.collision(Float64Array.from(q)) ?? '' } : null;
   }
 
   /**
@@ -83,7 +105,12 @@ export class ExplainPanel {
 
   // The view interface the lane feeds (lane.js)
 
+  takeEvents(msg) {
+    if (msg.states) this.states.push(msg.states);
+  }
+
   clearRun() {
+    this.states.clear();
     this.explainer.reset();
     this.read = 0;
     this.showResult = false;
@@ -92,6 +119,7 @@ export class ExplainPanel {
 
   drawRecords(from, to) {
     if (from < this.read) { this.explainer.reset(); this.read = 0; }
+    this.states.assign(this.store, from, to);
     this.explainer.readStore(this.store, this.read, to);
     this.read = Math.max(this.read, to);
     this.schedule();
@@ -121,6 +149,71 @@ export class ExplainPanel {
     }
     this.caption.textContent = this.read ? x.caption : 'Run or step the planner: each step is explained here.';
     this.where.textContent = this.read ? `event ${this.read.toLocaleString('en')} of ${this.store.length.toLocaleString('en')} shown` : '';
+    this.show3d();
+  }
+
+  /**
+   * The step's actors in the 3-D view (draw3d/actors3d.js), from the states the core logged: the
+   * sample and the configuration checked as ghost arms, a collision's arm with the colliding
+   * link(s) tinted and its contact point; none once the result is shown.
+   */
+  show3d() {
+    const slot = this.arm?.slot;
+    if (!slot?.active) return;
+    const scene = this.arm.scene();
+    const a = this.read && !this.view.showResult ? this.explainer.actors : null;
+    const key = a && scene ? [a.sampleQ, a.stepQ, a.collisionQ] : null;
+    const same = key && this.shown3d && this.shown3d.scene === scene && key.every((q, i) => q === this.shown3d.key[i]);
+    if (same || (!key && !this.shown3d)) return;
+    this.shown3d = key ? { key, scene } : null;
+    if (!key) { slot.setStep(null); return; }
+    const frames = (q) => (q ? scene.link_frames(Float64Array.from(q)) : null);
+    /** @type {import('../draw3d/actors3d.js').Actors3DData} */
+    const data = {};
+    if (a.sampleQ) data.sample = { frames: frames(a.sampleQ), colour: ACTOR.sample };
+    if (a.stepQ) data.step = { frames: frames(a.stepQ), colour: ACTOR.near };
+    if (a.collisionQ) {
+      const q = Float64Array.from(a.collisionQ);
+      const c = scene.contact(q); // [link, other, obstacle, x, y, z] or empty
+      data.collision = {
+        frames: frames(q),
+        colour: ACTOR.blocked,
+        links: c.length === 6 ? [c[0], c[1]].filter((l) => l >= 0) : [],
+        at: c.length === 6 ? [c[3], c[4], c[5]] : null,
+        words: scene.collision(q),
+      };
+    }
+    slot.setStep(data);
+  }
+
+  /**
+   * The step in 3-D as drawn (tests and the page's API): the tool centre point of each ghost arm
+   * (null: not drawn) and its link frames' origins, and what collides, where.
+   */
+  state3d() {
+    const slot = this.arm?.slot;
+    const d = slot?.step;
+    if (!d) return null;
+    const offset = slot.spatial?.tool || [0, 0, 0];
+    const tool = (g) => {
+      const f = g?.frames;
+      if (!f || f.length < 16) return null;
+      const m = f.subarray(f.length - 16);
+      return [0, 1, 2].map((r) => m[r] * offset[0] + m[4 + r] * offset[1] + m[8 + r] * offset[2] + m[12 + r]);
+    };
+    // every link frame's origin (the joints, inside the links' hulls)
+    const origins = (g) => {
+      const f = g?.frames;
+      const out = [];
+      for (let k = 0; f && k + 16 <= f.length; k += 16) out.push([f[k + 12], f[k + 13], f[k + 14]]);
+      return out;
+    };
+    return {
+      sample: tool(d.sample),
+      step: tool(d.step),
+      joints: { sample: origins(d.sample), step: origins(d.step), collision: origins(d.collision) },
+      collision: d.collision ? { links: d.collision.links, at: d.collision.at, words: d.collision.words, tool: tool(d.collision) } : null,
+    };
   }
 
   /** The current step's actors on the workspace canvas (not once the result is shown). */

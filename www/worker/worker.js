@@ -41,9 +41,12 @@
 //                                            start, goal} when caps.view3d: the 3-D view's meshes
 //                                            (Scene.spatial_json) and the start's and goal's link frames
 //   invalid   {error: {path, message, line, column, text}}
-//   events    {data: Float64Array, stats, status, tries: {seen, sent}, tree3d?}   transferred, once per batch;
+//   events    {data: Float64Array, stats, status, tries: {seen, sent}, tree3d?, states?}   transferred, once per batch;
 //                                            tree3d (caps.view3d): the batch's nodes as the tool sweeps
 //                                            their edges (Run.drain_tool_tree: [tree, id, n, x, y, z…]);
+//                                            states (caps.view3d): the full states of the batch's
+//                                            growth-step records for the explain panel
+//                                            (Run.drain_states; run/arm-states.js);
 //                                            the sampler's raw tries (SAMPLE_TRY) are all sent up to
 //                                            TRY_KEEP a run, then thinned (one in 2, 4, 8… as their
 //                                            number doubles), so a validity-checking sampler's
@@ -54,7 +57,7 @@
 //   status    {status}
 //   ack       {ack}                          the message carrying `ack` was read
 //   asv-solution {text}
-//   query     {data: Float64Array, answer: {path, points, cost} | {error}}   the query's events
+//   query     {data: Float64Array, answer: {path, points, cost} | {error}, states?}   the query's events
 //                                            (transferred) and its answer; `path` empty when the
 //                                            roadmap does not join the two states
 //   seed      {seed}                         a fresh seed (asked for by fresh-seed), ≤ 2^53 − 1
@@ -110,7 +113,7 @@ function ensureRun() {
   if (!run) {
     if (!scene) throw new Error('no scenario loaded');
     run = scene.run(setup.planner, JSON.stringify(setup.params), setup.seed);
-    if (view3d) run.log_nodes(true);
+    if (view3d) { run.log_nodes(true); run.log_states(true); }
   }
   return run;
 }
@@ -122,7 +125,8 @@ function flush(status) {
   const transfer = [data.buffer];
   if (view3d) {
     events.tree3d = run.drain_tool_tree();
-    transfer.push(events.tree3d.buffer);
+    events.states = run.drain_states();
+    transfer.push(events.tree3d.buffer, events.states.buffer);
   }
   post(events, transfer);
   if (status !== 'running') {
@@ -336,7 +340,8 @@ function handle(msg) {
       let answer;
       try { answer = JSON.parse(run.query(state(msg.start), state(msg.goal))); } catch (e) { rethrowPanic(e); answer = { error: parseError(e).text }; }
       const data = run.drain_events();
-      post({ type: 'query', run: runId, data, answer }, [data.buffer]);
+      const states = view3d ? run.drain_states() : undefined;
+      post({ type: 'query', run: runId, data, answer, states }, states ? [data.buffer, states.buffer] : [data.buffer]);
       return;
     }
     case 'debug-panic':

@@ -98,6 +98,7 @@ impl Tree {
         // rl: `step = distance`, reached when `step <= delta`, else `step = delta`.
         let (mut step, mut reached) = if d <= delta { (d, true) } else { (delta, false) };
         let (mut any_free, mut collided) = (false, false);
+        let checks = cx.si.checks();
         for _ in 0..MAX_LAST_FREE_STEPS {
             cx.si.interpolate(from, target, step / d, scratch);
             // The step's motion, from the last free configuration (the node, at first).
@@ -126,6 +127,8 @@ impl Tree {
         // The farthest configuration tested: the one whose step was not free, or the last free one.
         let tested = if collided { &*scratch } else { &*new };
         cx.note_steer(self.index, near, from, tested, step, d, reached && !collided);
+        // The explain panel's query count of this connect (the state log only).
+        cx.events.set_extra((cx.si.checks() - checks) as f64);
         if collided {
             cx.note_collision(self.index, near, from, target, found);
         }

@@ -332,6 +332,40 @@ impl Body {
         None
     }
 
+    /// Where `hit` happened at the state last placed in `s` (after [`first_hit`](Body::first_hit)
+    /// found it): a point of the world between the two shapes' deepest points (GJK and EPA's
+    /// penetrating contact), or, when EPA gives none (touching within GJK's tolerance), the centre
+    /// of the overlap of the two shapes' world boxes. For drawing and explaining only.
+    pub fn contact_point(&self, scene: &[Solid], s: &Scratch, hit: Hit) -> [Real; 3] {
+        let (p1, s1, b1, p2, s2, b2) = match hit {
+            Hit::Scene { part, solid } => {
+                let o = &scene[solid];
+                (&s.poses[part], &self.parts[part].solid, s.boxes[part], &o.placement, o, o.bounds)
+            }
+            Hit::Links { a, b } => {
+                (&s.poses[a], &self.parts[a].solid, s.boxes[a], &s.poses[b], &self.parts[b].solid, s.boxes[b])
+            }
+        };
+        let pos12 = p1.inv_mul(p2);
+        let (h1, h2) = (Cell::new(0u32), Cell::new(0u32));
+        let climber = |hull, hint| Climber { hull, hint };
+        use parry3d_f64::query::contact::contact_support_map_support_map as epa;
+        let c = match (&s1.convex, &s2.convex) {
+            (Convex::Hull(a), Convex::Hull(b)) => epa(&pos12, &climber(a, &h1), &climber(b, &h2), 0.0),
+            (Convex::Hull(a), Convex::Cuboid(b)) => epa(&pos12, &climber(a, &h1), b, 0.0),
+            (Convex::Cuboid(a), Convex::Hull(b)) => epa(&pos12, a, &climber(b, &h2), 0.0),
+            (Convex::Cuboid(a), Convex::Cuboid(b)) => epa(&pos12, a, b, 0.0),
+        };
+        match c {
+            Some(c) if c.point1.is_finite() && c.point2.is_finite() => {
+                let mid = (c.point1 + pos12.transform_point(c.point2)) * 0.5;
+                let w = p1.transform_point(mid);
+                [w.x, w.y, w.z]
+            }
+            _ => std::array::from_fn(|i| 0.5 * (b1.lo[i].max(b2.lo[i]) + b1.hi[i].min(b2.hi[i]))),
+        }
+    }
+
     /// A lower bound on the arm's clearance at the state last placed in `s`, found free by
     /// [`first_hit`](Body::first_hit), capped at `cap`: the least gap between a part that may
     /// touch the scene and an obstacle, and half the least gap between two parts of a tested

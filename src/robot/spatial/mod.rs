@@ -17,7 +17,7 @@
 mod collide;
 mod kinematics;
 
-use super::{MotionModel, PartMesh, Robot, Spatial, Verdict};
+use super::{Contact, MotionModel, PartMesh, Robot, Spatial, Verdict};
 use crate::geometry::mesh::Mesh;
 use crate::geometry::solid::Solid;
 use crate::geometry::Workspace;
@@ -285,6 +285,25 @@ impl Robot for SpatialArmRobot {
 }
 
 impl Spatial for SpatialArmRobot {
+    /// What collides at `q` and where, for a 3-D view's collision mark: the link of the part hit,
+    /// the other link (`None`: a scene obstacle), the obstacle's index in the scene (`None`: two
+    /// links), and a world point where they meet ([`Body::contact_point`](collide::Body)); `None`
+    /// when the arm is free (joint limits are not checked).
+    fn contact(&self, ws: &Workspace, q: &[Real]) -> Option<Contact> {
+        let mut s = self.scratch.borrow_mut();
+        self.body.place(&self.chain, q, &mut s);
+        let hit = self.body.first_hit(&ws.solids, &mut s)?;
+        let at = self.body.contact_point(&ws.solids, &s, hit);
+        Some(match hit {
+            Hit::Scene { part, solid } => {
+                Contact { link: self.body.parts[part].link, other: None, solid: Some(solid), at }
+            }
+            Hit::Links { a, b } => {
+                Contact { link: self.body.parts[a].link, other: Some(self.body.parts[b].link), solid: None, at }
+            }
+        })
+    }
+
     fn skeleton(&self, q: &[Real]) -> Vec<[Real; 3]> {
         self.skeleton_points(q)
     }
@@ -315,5 +334,7 @@ impl Spatial for SpatialArmRobot {
     }
 }
 
+#[cfg(test)]
+mod explain_tests;
 #[cfg(test)]
 mod tests;

@@ -1,0 +1,96 @@
+// The explain panel for report 001's Puma 560 in the page (headless chromium, WebGL2 through
+// SwiftShader): the scenario's set-up (RRT-Connect, last-free) shows the last-free pseudocode;
+// stepped event by event until a collision, the caption gives the sample's joint angles and names
+// what meets what (the core's words, the same the 3-D view's step reports), and the 3-D view draws
+// the step: the collision mark at the contact point (pixels of its colour there, none when the
+// step is hidden), and the ghost arms (the pixels at the ghosts' tool points change when the step
+// is hidden). Screenshot at /tmp/explain3d-collision.png.
+import { test, beforeEach } from 'node:test';
+import assert from 'node:assert/strict';
+import { pageFixture } from './browser.mjs';
+import { ACTOR } from '../../www/ui/explain-panel.js';
+
+const PUMA_NAME = "Puma 560 through a window (report 001's course)";
+const fx = await pageFixture();
+let page;
+beforeEach(() => { page = fx.page; });
+
+const rgbOf = (hex) => [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16));
+const near = (px, hex, tol = 8) => rgbOf(hex).every((v, k) => Math.abs(px[k] - v) <= tol);
+
+/** The pixels of the 3-D view within `r` css px of world point `p`, as [[r, g, b], …]. */
+async function pixelsNear(p, r) {
+  return page.evaluate(({ p, r }) => {
+    const v = window.planarium.view3d;
+    const at = v.toCanvas(p);
+    if (!at) return null;
+    const px = v.pixels(at[0], at[1], r);
+    const out = [];
+    for (let i = 0; i < px.length; i += 4) out.push([px[i], px[i + 1], px[i + 2]]);
+    return out;
+  }, { p, r });
+}
+
+test('puma-rbo-wall: stepping to a collision, the caption names the parts and the 3-D view marks it', async () => {
+  await fx.pickScenario('puma-rbo-wall', PUMA_NAME);
+  await page.waitForFunction(() => window.planarium.view3d.ready(), null, { timeout: 20000 });
+  const code = await page.locator('#explain-code').textContent();
+  assert.ok(code.includes('only the last free q becomes q_new'), `the last-free lines: ${code}`);
+  assert.ok(!code.includes('STEER('), 'not the range mode\'s');
+  let model = null;
+  let sampleCaption = '';
+  for (let i = 1; i <= 600; i++) {
+    await page.click('#step-event');
+    await page.waitForFunction((n) => window.planarium.explain().events === n, i, { timeout: 30000 });
+    const last = await page.evaluate(() => window.planarium.lastEvent());
+    model = await page.evaluate(() => window.planarium.explain());
+    if (last[0] === 0) {
+      sampleCaption = model.caption;
+      assert.match(model.caption, /^sample q = \((−?\d+°, ){5}−?\d+°\)/, model.caption);
+      assert.equal(model.line, 'sample');
+    }
+    if (last[0] === 3) break;
+    model = null;
+  }
+  assert.ok(model, 'a collision within 600 events');
+  console.log(`caption at the collision: ${model.caption}`);
+  assert.ok(['check', 'c-check'].includes(model.line), model.line);
+  assert.ok(sampleCaption, 'a sample was captioned');
+  await fx.nextFrames();
+  await fx.nextFrames();
+  const step = await page.evaluate(() => window.planarium.explain3d());
+  assert.ok(step?.collision, 'the 3-D view has the step\'s collision');
+  assert.match(step.collision.words, /meets/);
+  assert.ok(model.caption.includes(`collides: ${step.collision.words}`), `the caption names "${step.collision.words}"`);
+  assert.ok(step.collision.links.length >= 1 && step.collision.at.every(Number.isFinite), JSON.stringify(step.collision));
+  await page.screenshot({ path: '/tmp/explain3d-collision.png' });
+
+  // The contact mark, in the blocked colour, drawn over everything at the contact point.
+  const mark = await pixelsNear(step.collision.at, 3);
+  const marked = mark.filter((px) => near(px, ACTOR.blocked)).length;
+  await page.evaluate(() => window.planarium.view3d.showStep(false));
+  const bare = await pixelsNear(step.collision.at, 3);
+  const unmarked = bare.filter((px) => near(px, ACTOR.blocked)).length;
+  console.log(`contact ${step.collision.at.map((v) => v.toFixed(3))}: ${marked} of ${mark.length} pixels the blocked colour with the step drawn, ${unmarked} without`);
+  assert.ok(marked >= 5 && unmarked === 0, 'the collision is marked at the contact point');
+  // The ghost arms: around their joints (link frames' origins 2 to 5, inside the links' hulls) the
+  // pixels are not those of the view without them.
+  let ghosts = 0;
+  for (const name of ['sample', 'collision']) {
+    let changed = 0, seen = 0;
+    for (const p of step.joints[name].slice(2, 6)) {
+      await page.evaluate(() => window.planarium.view3d.showStep(false));
+      const without = await pixelsNear(p, 2);
+      await page.evaluate(() => window.planarium.view3d.showStep(true));
+      const withGhost = await pixelsNear(p, 2);
+      if (!without || !withGhost) continue;
+      seen += withGhost.length;
+      changed += withGhost.filter((px, k) => px.some((v, c) => Math.abs(v - without[k][c]) > 6)).length;
+    }
+    console.log(`the ${name}'s ghost arm: ${changed} of ${seen} pixels around its joints changed`);
+    if (seen) ghosts++;
+    assert.ok(changed >= 10, `the ${name} is drawn as a ghost arm`);
+  }
+  assert.ok(step.sample, 'the sample\'s ghost is drawn');
+  assert.ok(ghosts >= 1, 'a ghost was checked');
+});
