@@ -18,6 +18,7 @@ import { View3dSlot } from '../draw/view3d-slot.js';
 import { Editor } from '../ui/editor.js';
 import { ObstacleEditor } from '../ui/obstacle-editor.js';
 import { PosePanel } from '../ui/pose3d.js';
+import { PathPanel } from '../ui/path3d.js';
 import { wireExports } from '../ui/exports.js';
 import { fitViews, downloadText, keepInView } from '../draw/stage.js';
 import { createPanel, taskOf } from '../ui/panel.js';
@@ -133,6 +134,7 @@ const player = new Player({
       if (!chart.kind && playback.model.costs.length) syncChart(); // a planner that reports costs
       cspace.render(view.robotState);
       view3d.render(performance.now(), player.fps());
+      pathPanel.frame();
       chart.render(lane.iterationNow);
       updateRunStatus();
       // the stats say what is drawn: refreshed when the playback revealed more
@@ -411,6 +413,8 @@ const editor = new Editor({
 // A spatial arm posed by hand under the 3-D view (pose3d.js): its sliders, whether the pose is
 // free, and Set as start / goal through the editor above.
 const posePanel = new PosePanel({ root: $('pose3d'), slot: view3d, editor, palette: PALETTE });
+// The solved path under the 3-D view (path3d.js): scrubber, ghosts, joint-angle timeline; poses from the panel's core.
+const pathPanel = new PathPanel({ root: $('path3d'), slot: view3d, linkFrames: (q) => posePanel.linkFrames(q) });
 
 // Obstacles and bounds: drawn, moved, resized, deleted; undo/redo; saved as JSON (obstacle-editor.js)
 
@@ -484,7 +488,9 @@ const syncOptions = () => {
   const hidden = overlayOptions.fit?.({ config: panel?.config(), robot: loaded?.robot?.kind, inspection: !!loaded?.inspection }) ?? 0;
   $('overlays-note').textContent = hidden ? `${hidden} more apply to other planners or set-ups.` : '';
   const o = overlayOptions();
-  view.setOptions({ ...o, animateRaw: ui.animRaw.checked || panel?.planner().task === 'inspection' });
+  const animateRaw = ui.animRaw.checked || panel?.planner().task === 'inspection';
+  view.setOptions({ ...o, animateRaw });
+  pathPanel.setRaw(animateRaw);
   cspace.setOptions({ showRejected: o.showRejected, showCollisions: o.showCollisions });
 };
 ui.animRaw.addEventListener('change', () => { syncOptions(); scheduleShare(); });
@@ -548,6 +554,9 @@ Object.defineProperty(window, 'planarium', {
       viewProj: () => (view3d.view?.matrices ? [...view3d.view.matrices.viewProj] : null),
       /** Resolves with the requestAnimationFrame deltas (ms) of the next `n` frames the view draws while it turns. */
       orbitFrameTimes: (n) => view3d.view?.orbitFrameTimes(n) ?? Promise.resolve([]),
+      /** The solved path's panel (path3d.js): what it shows, and css px in its timeline of a joint value at a length. */
+      path: () => pathPanel.state(),
+      timelineAt: (s, rad) => pathPanel.timelineAt(s, rad),
       /** The pose panel: {q (radians), status, collision, message}. */
       pose: () => posePanel.state(),
     }),
