@@ -162,6 +162,11 @@ test('puma-rbo-wall solved: scrubber, timeline and ghosts, linked; the raw path 
     poses.push({ q: st.q, tcp, at: on.at });
     console.log(`scrubbed to ${v}/1000: s = ${st.s.toFixed(3)} rad, tool ${tcp.map((x) => x.toFixed(3))} at css px ${on.at.map((x) => x.toFixed(0))}: ${on.arm} arm pixels round it`);
     assert.ok(on.arm >= 30, 'the arm is drawn where the core puts the tool');
+    // the tool is on the path's curve, drawn over it thick (a 1 px line would colour about 7 of these 49 pixels)
+    const curve = await page.evaluate(({ x, y }) => window.planarium.view3d.pixels(x, y, 3), { x: on.at[0], y: on.at[1] });
+    let thick = 0;
+    for (let i = 0; i < curve.length; i += 4) if ([PALETTE.smoothPath, PALETTE.pathCasing].some((h) => rgbOf(h).every((c, k) => Math.abs(curve[i + k] - c) <= 8))) thick++;
+    assert.ok(thick >= 14, `the tool's curve drawn thick over the arm (${thick} of 49 pixels round the tool)`);
   }
   const moved = Math.hypot(poses[1].at[0] - poses[0].at[0], poses[1].at[1] - poses[0].at[1]);
   assert.ok(moved > 40, `the tool moved on screen (${moved.toFixed(0)} px)`);
@@ -243,7 +248,8 @@ test('puma-rbo-wall solved: scrubber, timeline and ghosts, linked; the raw path 
 
   // The raw path: its length (the raw cost), the same ends, its tool curve in the raw path's colour.
   const [smoothPx] = await page.evaluate((c) => window.planarium.view3d.countColours(c, 8), [PALETTE.smoothPath]);
-  await page.check('#anim-raw');
+  await page.click('#anim-raw');
+  await page.waitForFunction(() => window.planarium.view3d.path().raw === true, null, { timeout: 20000 });
   await fx.nextFrames();
   st = await path();
   console.log(`raw path: ${st.length.toFixed(4)} rad, ${st.frames} frames, ${st.waypoints.length} waypoints`);

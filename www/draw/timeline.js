@@ -30,6 +30,7 @@ export class Timeline {
     this.size = [1, 1];
     this.lo = 0;
     this.hi = 1;
+    this.base = document.createElement('canvas'); // the axes and curves, drawn once per path and size
   }
 
   /**
@@ -49,7 +50,7 @@ export class Timeline {
       this.hi = Math.max(this.lo + step, Math.ceil((hi * deg) / step) * step);
       this.yStep = step;
     }
-    this.render();
+    this.drawBase();
   }
 
   setCursor(s) {
@@ -63,7 +64,7 @@ export class Timeline {
     this.canvas.width = Math.max(1, Math.round(w * dpr));
     this.canvas.height = Math.max(1, Math.round(h * dpr));
     this.dpr = dpr;
-    this.render();
+    this.drawBase();
   }
 
   /** The plot's box in css px. */
@@ -92,13 +93,38 @@ export class Timeline {
     return Math.min(L, Math.max(0, ((x - x0) / (x1 - x0)) * L));
   }
 
+  /** The axes, waypoints and curves into the base canvas (a path has up to 100,000 frames: not redrawn per cursor move). */
+  drawBase() {
+    const canvas = this.base;
+    canvas.width = this.canvas.width;
+    canvas.height = this.canvas.height;
+    const ctx = /** @type {CanvasRenderingContext2D} */ (canvas.getContext('2d'));
+    const dpr = this.dpr || 1;
+    const d = this.data;
+    if (d && d.length > 0) this.drawPlot(ctx, dpr, d);
+    this.render();
+  }
+
+  /** The cursor over the base. */
   render() {
     const { ctx, canvas } = this;
-    const dpr = this.dpr || 1;
     ctx.setTransform(1, 0, 0, 1, 0, 0);
     ctx.clearRect(0, 0, canvas.width, canvas.height);
-    const d = this.data;
-    if (!d || !(d.length > 0)) return;
+    if (!this.data || !(this.data.length > 0)) return;
+    ctx.drawImage(this.base, 0, 0);
+    if (this.cursor !== null && Number.isFinite(this.cursor)) {
+      const dpr = this.dpr || 1;
+      const { y0, y1 } = this.box();
+      ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+      const x = Math.round(this.xOf(this.cursor)) + 0.5;
+      ctx.strokeStyle = CURSOR;
+      ctx.lineWidth = 1.5;
+      ctx.beginPath(); ctx.moveTo(x, y0); ctx.lineTo(x, y1); ctx.stroke();
+    }
+  }
+
+  /** @param {CanvasRenderingContext2D} ctx @param {number} dpr @param {any} d */
+  drawPlot(ctx, dpr, d) {
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     const { x0, x1, y0, y1 } = this.box();
     ctx.font = '11px system-ui, sans-serif';
@@ -149,13 +175,6 @@ export class Timeline {
       }
       ctx.lineTo(this.xOf(d.s[n - 1]), this.yOf(d.states[(n - 1) * d.dims + j] * deg));
       ctx.stroke();
-    }
-    // the cursor
-    if (this.cursor !== null && Number.isFinite(this.cursor)) {
-      const x = Math.round(this.xOf(this.cursor)) + 0.5;
-      ctx.strokeStyle = CURSOR;
-      ctx.lineWidth = 1.5;
-      ctx.beginPath(); ctx.moveTo(x, y0); ctx.lineTo(x, y1); ctx.stroke();
     }
   }
 
