@@ -164,11 +164,14 @@ export class View3dSlot {
     if (this.showResult && this.followed) this.view?.setPath(this.followed.tool, this.followed === this.rawPath);
   }
 
-  /** The arm held at a pose along the path (link frames), or `null`: the animation goes on. */
+  /**
+   * The arm held at a pose along the path (link frames), or `null`: the animation goes on (also
+   * after a pose set by hand: holding or playing the path is the user's choice too).
+   */
   setScrub(frames) {
     this.scrub = frames;
     this.poseIndex = -1;
-    if (frames) this.posing = false;
+    this.posing = false;
     this.view?.setPose(frames);
   }
 

@@ -262,7 +262,6 @@ export class PathPanel {
     this.where.textContent = text;
     this.scrub.setAttribute('aria-valuetext', text);
     this.play.textContent = this.holding ? 'Play' : 'Hold';
-    this.play.setAttribute('aria-pressed', String(!this.holding));
     this.timeline.setCursor(this.s);
     const q = this.q || this.stateAt(this.s);
     [...this.legend.children].forEach((li, j) => {
