@@ -240,6 +240,16 @@ test('puma-rbo-wall solved: scrubber, timeline and ghosts, linked; the raw path 
   await typeSpacing('0');
   assert.equal(await page.locator('#path3d-spacing').getAttribute('aria-invalid'), null);
 
+  // The frame time while orbiting, with ghosts and without (logged, never asserted).
+  const frameTimes = async () => {
+    const t = (await page.evaluate(() => window.planarium.view3d.orbitFrameTimes(30))).sort((a, b) => a - b);
+    return `median ${t[t.length >> 1].toFixed(1)} ms, max ${t[t.length - 1].toFixed(1)} ms`;
+  };
+  console.log(`orbiting without ghosts: requestAnimationFrame delta ${await frameTimes()}`);
+  await typeSpacing('0.1');
+  console.log(`orbiting with ${(await path()).ghosts} ghosts: requestAnimationFrame delta ${await frameTimes()}`);
+  await typeSpacing('0');
+
   // Play: the animation again; the scrubber follows it.
   await page.click('#path3d-play');
   const v0 = await page.locator('#path3d-scrub').inputValue();

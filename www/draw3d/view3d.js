@@ -4,8 +4,10 @@
 // poses animated once solved), the scene's 3-D obstacles (translucent, so the tool is seen through
 // the wall; the trees and path are drawn over them), a floor grid and axes, the two trees as
 // the tool sweeps them (each edge through its `delta` steps, in the trees' colours of the top view)
-// and the path as the tool's curve. An orbit camera (camera.js) opens framed on the problem: the
-// start and goal tool points and the obstacles nearest them (the course's window).
+// and the path as the tool's curve (ghosts.js: thick, over everything; once solved the trees fade
+// and go under the arm, which can be drawn as see-through ghosts along the path). An orbit camera
+// (camera.js) opens framed on the problem: the start and goal tool points and the obstacles
+// nearest them (the course's window).
 //
 // Every number drawn comes from the core through the worker (www/draw/view3d-slot.js hands them
 // over): meshes once per scenario (`Scene.spatial_json`), link frames (`Scene.link_frames`), the
