@@ -21,6 +21,13 @@ const SCRUB_STEPS = 1000;
 export const GHOSTS = { initial: 0.5, min: 0.05, max: 10, most: 60 };
 const TIMELINE_HEIGHT = 170;
 
+/** A joint's colour swatch (set through the CSS object model: the page's CSP allows no inline style). */
+function swatch(colour) {
+  const s = el('span', { className: 'swatch' });
+  s.style.background = colour;
+  return s;
+}
+
 const deg = (rad) => `${Number(((rad * 180) / Math.PI).toFixed(1))}°`;
 
 /**
@@ -168,7 +175,7 @@ export class PathPanel {
       const first = parsed.states[j];
       const last = parsed.states[parsed.states.length - parsed.dims + j];
       return el('li', { id: `path3d-j${j + 1}`, 'data-start': String(first), 'data-end': String(last) },
-        el('span', { className: 'swatch', style: `background:${JOINT_COLOURS[j % JOINT_COLOURS.length]}` }),
+        swatch(JOINT_COLOURS[j % JOINT_COLOURS.length]),
         el('span', { text: `Joint ${j + 1}` }),
         el('output', { className: 'path3d-value' }),
         el('span', { className: 'hint', text: `start ${deg(first)} · goal ${deg(last)}` }));
