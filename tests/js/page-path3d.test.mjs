@@ -133,6 +133,23 @@ test('puma-rbo-wall solved: scrubber, timeline and ghosts, linked; the raw path 
     }
   }
 
+  // Up is more: in the plot's first column, read from the pixels alone, the joint that starts highest
+  // (joint 3, 90°) is drawn above the others (0°).
+  const box = (await page.evaluate(() => window.planarium.view3d.timelineAt(0, 0))).box;
+  const rows = await page.evaluate(({ x, y0, y1 }) => {
+    const c = /** @type {HTMLCanvasElement} */ (document.getElementById('path3d-timeline'));
+    const dpr = c.width / c.clientWidth;
+    const d = c.getContext('2d').getImageData(Math.round(x * dpr), Math.round(y0 * dpr), 1, Math.round((y1 - y0) * dpr)).data;
+    const out = [];
+    for (let i = 0; i < d.length; i += 4) out.push([d[i], d[i + 1], d[i + 2], d[i + 3]]);
+    return out;
+  }, { x: box.x0 + 3, y0: box.y0, y1: box.y1 });
+  const top = puma.start.indexOf(Math.max(...puma.start));
+  const rowOf = (ks) => rows.findIndex(([r, g, b, a]) => a > 200 && ks.some((k) => near([[r, g, b]], JOINT_COLOURS[k], 30)));
+  const others = [0, 1, 2, 3, 4, 5].filter((k) => k !== top);
+  console.log(`first column: joint ${top + 1}'s curve at row ${rowOf([top])}, the others' from row ${rowOf(others)}`);
+  assert.ok(rowOf([top]) >= 0 && rowOf(others) > rowOf([top]), `joint ${top + 1} (the highest start angle) drawn above the others`);
+
   // No ghosts for the pixel checks of the pose.
   await typeSpacing('0');
   assert.equal((await path()).ghosts, 0);
