@@ -6,6 +6,9 @@
 // node to the view when its NODE_ADDED record is revealed, so the trees grow with the replay.
 // The camera: a share link's is put in place once its scene is drawn (`setCamera`), an edit of
 // the scene keeps the one the user turned to, and `onCamera` hears of each turn (the share link).
+// Once solved it hands the path to www/ui/path3d.js (`onPath`), which scrubs along it (`setScrub`),
+// asks for ghosts (`setGhosts`) and says which path the arm follows (`setRaw`: the top view's
+// "robot follows the raw path").
 
 import { EventKind } from '../run/events.js';
 
@@ -29,7 +32,14 @@ export class View3dSlot {
     this.spatial = null;    // the worker's drawing data for it
     this.generation = 0;    // loads, so a late import does not show an old scene
     this.nodes = new Map(); // `${tree}:${id}` → [points (Float64Array), at, n]: tool curves not yet revealed
-    this.path = null;       // {tool, frames, links, stride}
+    this.path = null;       // {tool, frames, links, stride}: the smoothed path's, from the worker
+    this.rawPath = null;    // the same for the raw path
+    this.raw = false;       // the arm follows the raw path
+    this.solved = null;     // {result, frames, rawFrames}: the result's animation frames, for the path panel
+    this.scrub = null;      // link frames of the pose scrubbed to (www/ui/path3d.js), or null: animate
+    this.ghosts = [];       // link frames of the path's ghosts
+    /** @type {(solved: {result: any, frames: Float64Array, rawFrames: Float64Array} | null) => void} */
+    this.onPath = () => {}; // the solved path is shown (or gone)
     this.showResult = false;
     this.dirty = false;
     this.error = '';
@@ -106,6 +116,7 @@ export class View3dSlot {
       this.view.setScene(this.spatial);
       if (camera) this.view.camera.setState(camera);
       this.view.setManual(this.manual);
+      if (this.showResult) this.finishRun(); // a result that came while the view was loading
       this.error = '';
     } catch (e) {
       this.error = String(e?.message || e);
@@ -162,6 +173,7 @@ export class View3dSlot {
     if (!byHand) { this.view?.setManual(manual); return; }
     this.posing = true;
     this.poseIndex = -1;
+    this.scrub = null;
     this.view?.setPose(null);
     this.view?.setManual(manual);
   }
@@ -182,24 +194,77 @@ export class View3dSlot {
     this.posing = false;
     this.nodes.clear();
     this.path = null;
+    this.rawPath = null;
+    this.solved = null;
+    this.scrub = null;
+    this.ghosts = [];
     this.showResult = false;
     this.poseIndex = -1;
     this.view?.clearRun();
+    this.onPath(null);
   }
 
-  /** The result: the path's tool curve and poses (the worker's `path3d`), shown once finished. */
-  setResult(result, frames, rawFrames, path3d) {
-    this.path = result?.solved && path3d ? path3d : null;
+  /**
+   * The result: the path's tool curve and poses (the worker's `path3d`, and `rawPath3d` for the
+   * raw path), shown once finished; the animation frames (states) go to the path panel then.
+   */
+  setResult(result, frames, rawFrames, path3d, rawPath3d) {
+    const solved = !!(this.active && result?.solved && path3d);
+    this.path = solved ? path3d : null;
+    this.rawPath = solved && rawPath3d ? rawPath3d : null;
+    this.solved = solved ? { result, frames, rawFrames } : null;
   }
+
+  /** The path the arm follows: the raw one when chosen (and sent), else the smoothed one. */
+  get followed() { return this.raw && this.rawPath ? this.rawPath : this.path; }
 
   finishRun() {
-    if (this.path) this.view?.setPath(this.path.tool);
+    const p = this.followed;
+    if (p && this.view) {
+      this.view.setPath(p.tool, p === this.rawPath);
+      this.view.setGhosts(this.ghosts);
+      if (this.scrub) this.view.setPose(this.scrub);
+    }
+    if (this.solved) this.onPath(this.solved);
+  }
+
+  /** Follow the raw path (`raw`) or the smoothed one: its tool curve drawn, its poses animated. */
+  setRaw(raw) {
+    if (this.raw === !!raw) return;
+    this.raw = !!raw;
+    this.poseIndex = -1;
+    if (this.showResult && this.followed) this.view?.setPath(this.followed.tool, this.followed === this.rawPath);
+  }
+
+  /**
+   * The arm held at a pose along the path (link frames), or `null`: the animation goes on (also
+   * after a pose set by hand: holding or playing the path is the user's choice too).
+   */
+  setScrub(frames) {
+    this.scrub = frames;
+    this.poseIndex = -1;
+    this.posing = false;
+    this.view?.setPose(frames);
+  }
+
+  /** The arm as see-through ghosts at these poses (link frames each). */
+  setGhosts(list) {
+    this.ghosts = list;
+    this.view?.setGhosts(list);
+  }
+
+  /** The animation frame (of the followed path's `frames`) the arm is drawn at, or -1 (held, posed, none). */
+  animatedFrame() {
+    const p = this.followed;
+    if (!p || this.scrub || this.posing || this.poseIndex < 0) return -1;
+    return this.poseIndex * (p.stride || 1);
   }
 
   /** Each page frame: once solved, the arm at the path pose of the page's animation (`fps` poses a second). */
   render(time, fps) {
-    if (!this.view || !this.showResult || !this.path || !this.path.count || this.posing) return;
-    const { frames, count, links } = this.path;
+    const p = this.followed;
+    if (!this.view || !this.showResult || !p || !p.count || this.posing || this.scrub) return;
+    const { frames, count, links } = p;
     const k = Math.floor((time / 1000) * fps) % count;
     if (k === this.poseIndex) return;
     this.poseIndex = k;
@@ -228,4 +293,42 @@ export class View3dSlot {
     }
     return count;
   }
+}
+
+/**
+ * The 3-D view's hooks for the page tests (`window.planarium.view3d`): whether it is drawn, css px
+ * of a world point with its camera, pixels, colour counts, and the 3-D panels' states.
+ * @param {View3dSlot} slot
+ * @param {{pose: {state: () => any}, boxes: {state: () => any}, path: {state: () => any, timelineAt: (s: number, rad: number) => any}}} panels
+ */
+export function view3dHooks(slot, panels) {
+  return Object.freeze({
+    ready: () => !!(slot.active && slot.view?.matrices),
+    error: () => slot.error,
+    toCanvas: (p) => slot.view?.toCanvas(p) ?? null,
+    pixels: (x, y, r) => (slot.view ? [...slot.view.pixels(x, y, r)] : null),
+    countColours: (colours, tol) => slot.view?.countColours(colours, tol) ?? null,
+    viewProj: () => (slot.view?.matrices ? [...slot.view.matrices.viewProj] : null),
+    /** Resolves with the requestAnimationFrame deltas (ms) of the next `n` frames the view draws while it turns. */
+    orbitFrameTimes: (n) => slot.view?.orbitFrameTimes(n) ?? Promise.resolve([]),
+    /** Add `edges` synthetic tree edges (straight, `steps` points each) round the tool: the frame-time measure's load. */
+    loadEdges: (edges, steps) => slot.addTestEdges(edges, steps),
+    /** Draw the explain panel's step (ghost arms, collision mark) or not, at once (tests compare the pixels). */
+    showStep: (on) => { if (slot.view?.actors) { slot.view.actors.hidden = !on; slot.view.render(); } },
+    /** The solved path's panel (path3d.js): what it shows, and css px in its timeline of a joint value at a length. */
+    path: () => panels.path.state(),
+    timelineAt: (s, rad) => panels.path.timelineAt(s, rad),
+    /** The pose panel: {q (radians), status, collision, message}. */
+    pose: () => panels.pose.state(),
+    /**
+     * The camera: {target, yaw, pitch, distance} as a link carries it, {framed: true} while framed
+     * on the problem, and the orbit's raw {azimuth, elevation}.
+     */
+    camera: () => {
+      const c = slot.view?.camera;
+      return c ? { ...c.state(), framed: !c.touched, azimuth: c.azimuth, elevation: c.elevation } : null;
+    },
+    /** The scene boxes panel: {rows: [{values, error}], status}. */
+    boxes: () => panels.boxes.state(),
+  });
 }

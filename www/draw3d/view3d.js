@@ -4,8 +4,10 @@
 // poses animated once solved), the scene's 3-D obstacles (translucent, so the tool is seen through
 // the wall; the trees and path are drawn over them), a floor grid and axes, the two trees as
 // the tool sweeps them (each edge through its `delta` steps, in the trees' colours of the top view)
-// and the path as the tool's curve. An orbit camera (camera.js) opens framed on the problem: the
-// start and goal tool points and the obstacles nearest them (the course's window).
+// and the path as the tool's curve (ghosts.js: thick, over everything; once solved the trees fade
+// and go under the arm, which can be drawn as see-through ghosts along the path). An orbit camera
+// (camera.js) opens framed on the problem: the start and goal tool points and the obstacles
+// nearest them (the course's window).
 //
 // Every number drawn comes from the core through the worker (www/draw/view3d-slot.js hands them
 // over): meshes once per scenario (`Scene.spatial_json`), link frames (`Scene.link_frames`), the
@@ -13,6 +15,7 @@
 
 import { programs, meshBuffers, LineBuffer, identity, transformPoint, project, rgb, sub, dot } from './gl.js';
 import { OrbitCamera } from './camera.js';
+import { PathCurve, drawGhosts } from './ghosts.js';
 
 /** Parts of the last link (the tool's) are drawn this much darker, so the tool stands out. */
 const TOOL_SHADE = 0.6;
@@ -38,7 +41,8 @@ export class View3D {
     this.nodes = [new LineBuffer(gl, this.progs.line), new LineBuffer(gl, this.progs.line)];
     this.grid = new LineBuffer(gl, this.progs.line);
     this.axes = AXES.map(() => new LineBuffer(gl, this.progs.line));
-    this.path = new LineBuffer(gl, this.progs.line);
+    this.path = new PathCurve(gl, this.progs.line); // the solved path's tool curve (ghosts.js)
+    this.ghosts = [];     // link frames of the path's ghosts (ghosts.js), see-through
     this.start = null;    // link frames (Float64Array, 16 a link)
     this.goal = null;
     this.pose = null;     // the animated path pose's link frames, or null
@@ -125,6 +129,7 @@ export class View3D {
   clearRun() {
     for (const b of [...this.trees, ...this.nodes, this.path]) b.clear();
     this.pose = null;
+    this.ghosts = [];
     this.requestRender();
   }
 
@@ -139,10 +144,15 @@ export class View3D {
     this.requestRender();
   }
 
-  /** The solved path: the tool's curve (flat x, y, z…). */
-  setPath(curve) {
-    this.path.clear();
-    for (let i = 0; i + 5 < curve.length; i += 3) this.path.push(curve, i, i + 6);
+  /** The solved path: the tool's curve (flat x, y, z…); `raw`: the raw path's (its colour in the top view). */
+  setPath(curve, raw = false) {
+    this.path.set(curve, raw);
+    this.requestRender();
+  }
+
+  /** The arm as see-through ghosts at these poses along the path (link frames each), or none. */
+  setGhosts(list) {
+    this.ghosts = list;
     this.requestRender();
   }
 
@@ -210,6 +220,10 @@ export class View3D {
     lines(this.grid, GRID);
     this.axes.forEach((b, k) => lines(b, AXES[k][0]));
     const P = this.palette;
+    // Once a path is shown the trees fade (a solved course run has some 14,000 nodes: they would
+    // bury the arm) and go under everything else: drawn first, writing no depth.
+    const faded = this.path.length > 0;
+    if (faded) this.drawTrees(lines, TREE_FADED);
     // The arm: at the animated path pose once solved, else as posed by hand, else at the start;
     // the goal as a ghost (and the start, when the arm is posed elsewhere).
     gl.useProgram(mesh.p);
@@ -230,26 +244,37 @@ export class View3D {
     gl.depthMask(false);
     arm(this.goal, P.goal, 0.35);
     if (hand && hand.ghost) arm(this.start, P.start, 0.35);
+    drawGhosts(this, this.ghosts, P.robotT);
     if (!this.pose) this.actors?.drawGhosts();
     for (const o of this.obstacles) this.drawMesh(o.buffers, IDENTITY, rgb(P.obstacle), 0.55);
-    // The trees over the translucent walls (which write no depth), so a branch behind the wall keeps
-    // its tree's colour; the opaque arm still hides what is behind it. Once a path is shown the
-    // trees fade (a solved course run has some 14,000 nodes: they would bury the arm) and the path,
-    // the tool's curve, is drawn over everything.
+    // While growing, the trees over the translucent walls (which write no depth), so a branch
+    // behind the wall keeps its tree's colour; the opaque arm still hides what is behind it.
     gl.useProgram(line.p);
-    const faded = this.path.length > 0;
-    const a = faded ? TREE_FADED : 1;
-    if (!faded) gl.disable(gl.BLEND);
+    gl.disable(gl.BLEND);
+    if (!faded) this.drawTrees(lines, 1);
+    gl.depthMask(true);
+    gl.disable(gl.DEPTH_TEST);
+    // The path, the tool's curve, over everything (ghosts.js).
+    this.path.draw(gl, line, P, lines);
+    if (!this.pose) this.actors?.drawMarks(lines);
+    gl.bindVertexArray(null);
+  }
+
+  /** The trees' edges and nodes at opacity `a` (< 1: blended, no depth written), line program in use. */
+  drawTrees(lines, a) {
+    const gl = this.gl;
+    const P = this.palette;
+    if (a < 1) {
+      gl.enable(gl.BLEND);
+      gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
+      gl.depthMask(false);
+    }
     lines(this.trees[0], P.tree0, gl.LINES, a);
     lines(this.trees[1], P.tree1, gl.LINES, a);
     lines(this.nodes[0], P.tree0, gl.POINTS, a);
     lines(this.nodes[1], P.tree1, gl.POINTS, a);
     gl.depthMask(true);
     gl.disable(gl.BLEND);
-    gl.disable(gl.DEPTH_TEST);
-    lines(this.path, P.smoothPath);
-    if (!this.pose) this.actors?.drawMarks(lines);
-    gl.bindVertexArray(null);
   }
 
   drawMesh(buffers, model, colour, alpha) {

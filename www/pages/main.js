@@ -14,11 +14,12 @@ import { BUTTONS } from '../run/controller.js';
 import { View } from '../draw/view.js';
 import { PALETTE } from '../draw/palette.js';
 import { CSpaceView } from '../draw/cspace.js';
-import { View3dSlot } from '../draw/view3d-slot.js';
+import { View3dSlot, view3dHooks } from '../draw/view3d-slot.js';
 import { Editor } from '../ui/editor.js';
 import { ObstacleEditor } from '../ui/obstacle-editor.js';
 import { PosePanel } from '../ui/pose3d.js';
 import { BoxesPanel } from '../ui/boxes3d.js';
+import { PathPanel } from '../ui/path3d.js';
 import { wireExports } from '../ui/exports.js';
 import { fitViews, downloadText, keepInView, PhoneStage } from '../draw/stage.js';
 import { createPanel, taskOf } from '../ui/panel.js';
@@ -136,6 +137,7 @@ const player = new Player({
       if (!chart.kind && playback.model.costs.length) syncChart(); // a planner that reports costs
       cspace.render(view.robotState);
       view3d.render(performance.now(), player.fps());
+      pathPanel.frame();
       chart.render(lane.iterationNow);
       updateRunStatus();
       // the stats say what is drawn: refreshed when the playback revealed more
@@ -426,6 +428,8 @@ const boxesPanel = new BoxesPanel({ root: $('boxes3d'), editor });
 // The explain panel tells a spatial arm's step in its joints and shows it in the 3-D view, with the
 // pose panel's copy of the core (link frames, what collides and where).
 explain.setArm(() => posePanel.scene, view3d);
+// The solved path under the 3-D view (path3d.js): scrubber, ghosts, joint-angle timeline; poses from the panel's core.
+const pathPanel = new PathPanel({ root: $('path3d'), slot: view3d, linkFrames: (q) => posePanel.linkFrames(q) });
 
 // Obstacles and bounds: drawn, moved, resized, deleted; undo/redo; saved as JSON (obstacle-editor.js)
 
@@ -500,7 +504,9 @@ const syncOptions = () => {
   const hidden = overlayOptions.fit?.({ config: panel?.config(), robot: loaded?.robot?.kind, inspection: !!loaded?.inspection }) ?? 0;
   $('overlays-note').textContent = hidden ? `${hidden} more apply to other planners or set-ups.` : '';
   const o = overlayOptions();
-  view.setOptions({ ...o, animateRaw: ui.animRaw.checked || panel?.planner().task === 'inspection' });
+  const animateRaw = ui.animRaw.checked || panel?.planner().task === 'inspection';
+  view.setOptions({ ...o, animateRaw });
+  pathPanel.setRaw(animateRaw);
   cspace.setOptions({ showRejected: o.showRejected, showCollisions: o.showCollisions });
 };
 ui.animRaw.addEventListener('change', () => { syncOptions(); scheduleShare(); });
@@ -560,33 +566,8 @@ Object.defineProperty(window, 'planarium', {
     query: () => (view.query ? structuredClone(view.query) : null),
     /** Css px within the workspace canvas of the world point (x, y), or null. */
     toCanvas: (x, y) => (view.layout ? [view.layout.sx(x) / view.layout.dpr, view.layout.sy(y) / view.layout.dpr] : null),
-    /** The 3-D view, for tests: whether it is drawn, css px of a world point with its camera, pixels, colour counts. */
-    view3d: Object.freeze({
-      ready: () => !!(view3d.active && view3d.view?.matrices),
-      error: () => view3d.error,
-      toCanvas: (p) => view3d.view?.toCanvas(p) ?? null,
-      pixels: (x, y, r) => (view3d.view ? [...view3d.view.pixels(x, y, r)] : null),
-      countColours: (colours, tol) => view3d.view?.countColours(colours, tol) ?? null,
-      viewProj: () => (view3d.view?.matrices ? [...view3d.view.matrices.viewProj] : null),
-      /** Resolves with the requestAnimationFrame deltas (ms) of the next `n` frames the view draws while it turns. */
-      orbitFrameTimes: (n) => view3d.view?.orbitFrameTimes(n) ?? Promise.resolve([]),
-      /** Add `edges` synthetic tree edges (straight, `steps` points each) round the tool: the frame-time measure's load. */
-      loadEdges: (edges, steps) => view3d.addTestEdges(edges, steps),
-      /** Draw the explain panel's step (ghost arms, collision mark) or not, at once (tests compare the pixels). */
-      showStep: (on) => { if (view3d.view?.actors) { view3d.view.actors.hidden = !on; view3d.view.render(); } },
-      /** The pose panel: {q (radians), status, collision, message}. */
-      pose: () => posePanel.state(),
-      /**
-       * The camera: {target, yaw, pitch, distance} as a link carries it, {framed: true} while framed
-       * on the problem, and the orbit's raw {azimuth, elevation}.
-       */
-      camera: () => {
-        const c = view3d.view?.camera;
-        return c ? { ...c.state(), framed: !c.touched, azimuth: c.azimuth, elevation: c.elevation } : null;
-      },
-      /** The scene boxes panel: {rows: [{values, error}], status}. */
-      boxes: () => boxesPanel.state(),
-    }),
+    /** The 3-D view, for tests (view3d-slot.js). */
+    view3d: view3dHooks(view3d, { pose: posePanel, boxes: boxesPanel, path: pathPanel }),
   }),
   writable: false,
   configurable: false,

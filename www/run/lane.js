@@ -114,7 +114,7 @@ export class Lane {
     if (this.done) return;
     this.result = msg.result;
     this.done = true;
-    for (const v of this.views) v.setResult(msg.result, msg.frames, msg.rawFrames, msg.path3d);
+    for (const v of this.views) v.setResult(msg.result, msg.frames, msg.rawFrames, msg.path3d, msg.rawPath3d);
     this.hooks.revealed?.();
     this.hooks.changed?.();
   }

@@ -84,8 +84,9 @@
 
 /**
  * A solved path for the 3-D view: the tool's curve through every animation frame (x, y, z…) and
- * the link frames of `count` poses (`links` × 16 numbers each).
- * @typedef {{tool: Float64Array, frames: Float64Array, count: number, links: number}} Path3d
+ * the link frames of `count` poses (`links` × 16 numbers each): pose k is animation frame
+ * min(k·stride, frames − 1).
+ * @typedef {{tool: Float64Array, frames: Float64Array, count: number, links: number, stride: number}} Path3d
  */
 
 /**
@@ -100,7 +101,8 @@
  *   | {type: 'invalid', error: ScenarioError}
  *   | {type: 'events', data: Float64Array, stats: RunStats, status: string, tries?: {seen: number, sent: number},
  *       tree3d?: Float64Array, states?: Float64Array}
- *   | {type: 'result', result: RunResult, frames: Float64Array, rawFrames: Float64Array, path3d?: Path3d}
+ *   | {type: 'result', result: RunResult, frames: Float64Array, rawFrames: Float64Array, path3d?: Path3d,
+ *       rawPath3d?: Path3d}
  *   | {type: 'status', status: string}
  *   | {type: 'ack', ack: number}
  *   | {type: 'asv-solution', text: string}

@@ -186,6 +186,11 @@ export class PosePanel {
     this.say(`The ${name} is now this pose; the scenario was sent to the planner again.`);
   }
 
+  /** The link frames at `q` from this thread's core (null until it is loaded): for the path panel (path3d.js). */
+  linkFrames(q) {
+    return this.scene ? this.scene.link_frames(q) : null;
+  }
+
   say(text) {
     if (this.message) this.message.textContent = text;
   }

@@ -51,9 +51,11 @@
 //                                            TRY_KEEP a run, then thinned (one in 2, 4, 8… as their
 //                                            number doubles), so a validity-checking sampler's
 //                                            millions of draws cannot swamp the page
-//   result    {result, frames: Float64Array, rawFrames: Float64Array, path3d?}   path3d (caps.view3d,
-//                                            solved): {tool, frames, count, links}: the tool's curve
-//                                            and the link frames of at most PATH_POSES_3D poses
+//   result    {result, frames: Float64Array, rawFrames: Float64Array, path3d?, rawPath3d?}   path3d
+//                                            (caps.view3d, solved): {tool, frames, count, links,
+//                                            stride}: the tool's curve and the link frames of at most
+//                                            PATH_POSES_3D poses (every stride-th frame and the last);
+//                                            rawPath3d the same for the raw path
 //   status    {status}
 //   ack       {ack}                          the message carrying `ack` was read
 //   asv-solution {text}
@@ -135,8 +137,9 @@ function flush(status) {
     const frames = result.solved ? run.path_frames(false, FRAME_SPACING) : new Float64Array(0);
     const rawFrames = result.solved ? run.path_frames(true, FRAME_SPACING) : new Float64Array(0);
     const path3d = view3d && result.solved ? pathIn3d(frames) : undefined;
-    const moved = path3d ? [path3d.tool.buffer, path3d.frames.buffer] : [];
-    post({ type: 'result', run: runId, result, frames, rawFrames, path3d }, [...moved, frames.buffer, rawFrames.buffer]);
+    const rawPath3d = view3d && result.solved ? pathIn3d(rawFrames) : undefined;
+    const moved = [path3d, rawPath3d].flatMap((p) => (p ? [p.tool.buffer, p.frames.buffer] : []));
+    post({ type: 'result', run: runId, result, frames, rawFrames, path3d, rawPath3d }, [...moved, frames.buffer, rawFrames.buffer]);
   }
 }
 
@@ -168,7 +171,7 @@ function pathIn3d(frames) {
   }
   const flat = new Float64Array(poses.length * links * 16);
   poses.forEach((p, i) => flat.set(p, i * links * 16));
-  return { tool: Float64Array.from(tool), frames: flat, count: poses.length, links };
+  return { tool: Float64Array.from(tool), frames: flat, count: poses.length, links, stride };
 }
 
 function loop(id) {
