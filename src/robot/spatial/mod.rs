@@ -132,7 +132,14 @@ impl SpatialArmRobot {
         match hit {
             Hit::Scene { part: p, solid } => {
                 let o = &ws.solids[solid].name;
-                let o = if o.is_empty() { format!("obstacles3d[{solid}]") } else { format!("the {o}") };
+                // a numbered name ("box2") is a label, said without "the"
+                let o = if o.is_empty() {
+                    format!("obstacles3d[{solid}]")
+                } else if o.ends_with(|c: char| c.is_ascii_digit()) {
+                    o.clone()
+                } else {
+                    format!("the {o}")
+                };
                 format!("{} meets {o}", part(p))
             }
             Hit::Links { a, b } => format!("{} meets {}", part(a), part(b)),

@@ -97,6 +97,12 @@ fn exempt_links_and_ignored_pairs_are_not_tested() {
     sc["start"] = json!([1.5, 0]);
     let p = problem(&sc);
     assert_eq!(p.robot.describe_collision(p.si.workspace(), &[0.0, 0.0]).unwrap(), "link1's bar meets the post");
+    // A numbered name is a label, said without "the" (the Robotics Library's box2).
+    let mut sc = scenario(5.0, json!({}));
+    sc["obstacles3d"] = json!([{"name": "box2", "box": {"center": [0.5, 0, 0], "size": [0.1, 0.1, 0.1]}}]);
+    sc["start"] = json!([1.5, 0]);
+    let p = problem(&sc);
+    assert_eq!(p.robot.describe_collision(p.si.workspace(), &[0.0, 0.0]).unwrap(), "link1's bar meets box2");
     let mut sc = scenario(5.0, json!({"exempt": [1]}));
     sc["obstacles3d"] = post;
     let p = problem(&sc);
