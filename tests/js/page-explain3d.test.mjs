@@ -8,28 +8,15 @@
 import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
 import { pageFixture } from './browser.mjs';
+import { pixelsNear as near3d, PUMA_NAME, rgbOf } from './puma-view.mjs';
 import { ACTOR } from '../../www/ui/explain-panel.js';
 
-const PUMA_NAME = "Puma 560 through a window (report 001's course)";
 const fx = await pageFixture();
 let page;
 beforeEach(() => { page = fx.page; });
 
-const rgbOf = (hex) => [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16));
 const near = (px, hex, tol = 8) => rgbOf(hex).every((v, k) => Math.abs(px[k] - v) <= tol);
 
-/** The pixels of the 3-D view within `r` css px of world point `p`, as [[r, g, b], …]. */
-async function pixelsNear(p, r) {
-  return page.evaluate(({ p, r }) => {
-    const v = window.planarium.view3d;
-    const at = v.toCanvas(p);
-    if (!at) return null;
-    const px = v.pixels(at[0], at[1], r);
-    const out = [];
-    for (let i = 0; i < px.length; i += 4) out.push([px[i], px[i + 1], px[i + 2]]);
-    return out;
-  }, { p, r });
-}
 
 test('puma-rbo-wall: stepping to a collision, the caption names the parts and the 3-D view marks it', async () => {
   await fx.pickScenario('puma-rbo-wall', PUMA_NAME);
@@ -66,10 +53,10 @@ test('puma-rbo-wall: stepping to a collision, the caption names the parts and th
   await page.screenshot({ path: '/tmp/explain3d-collision.png' });
 
   // The contact mark, in the blocked colour, drawn over everything at the contact point.
-  const mark = await pixelsNear(step.collision.at, 3);
+  const mark = (await near3d(page, step.collision.at, 3))?.out;
   const marked = mark.filter((px) => near(px, ACTOR.blocked)).length;
   await page.evaluate(() => window.planarium.view3d.showStep(false));
-  const bare = await pixelsNear(step.collision.at, 3);
+  const bare = (await near3d(page, step.collision.at, 3))?.out;
   const unmarked = bare.filter((px) => near(px, ACTOR.blocked)).length;
   console.log(`contact ${step.collision.at.map((v) => v.toFixed(3))}: ${marked} of ${mark.length} pixels the blocked colour with the step drawn, ${unmarked} without`);
   assert.ok(marked >= 5 && unmarked === 0, 'the collision is marked at the contact point');
@@ -80,9 +67,9 @@ test('puma-rbo-wall: stepping to a collision, the caption names the parts and th
     let changed = 0, seen = 0;
     for (const p of step.joints[name].slice(2, 6)) {
       await page.evaluate(() => window.planarium.view3d.showStep(false));
-      const without = await pixelsNear(p, 2);
+      const without = (await near3d(page, p, 2))?.out;
       await page.evaluate(() => window.planarium.view3d.showStep(true));
-      const withGhost = await pixelsNear(p, 2);
+      const withGhost = (await near3d(page, p, 2))?.out;
       if (!without || !withGhost) continue;
       seen += withGhost.length;
       changed += withGhost.filter((px, k) => px.some((v, c) => Math.abs(v - without[k][c]) > 6)).length;

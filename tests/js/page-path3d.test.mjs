@@ -9,30 +9,17 @@
 // raw path (its length, its tool curve in the raw path's colour). Screenshots go to /tmp/path3d-*.png.
 import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
-import { join } from 'node:path';
-import { pageFixture, ROOT } from './browser.mjs';
+import { pageFixture } from './browser.mjs';
 import { PALETTE } from '../../www/draw/palette.js';
 import { JOINT_COLOURS } from '../../www/draw/timeline.js';
-import { initSync, Scene, builtins } from '../../www/pkg/planarium.js';
+import { puma, core, PUMA_NAME, rgbOf, shadeOf } from './puma-view.mjs';
 
-initSync({ module: readFileSync(join(ROOT, 'www/pkg/planarium_bg.wasm')) });
-const puma = JSON.parse(builtins()).find((b) => b.id === 'puma-rbo-wall').scenario;
-const core = new Scene(JSON.stringify(puma));
-const PUMA_NAME = "Puma 560 through a window (report 001's course)";
 
 const fx = await pageFixture();
 let page;
 beforeEach(() => { page = fx.page; });
 const { waitStatus, pickScenario } = fx;
 
-const rgbOf = (hex) => [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16));
-/** Whether pixel [r, g, b] is a shade (k·colour, lit by the head light) of colour `hex`. */
-function shadeOf([r, g, b], hex) {
-  const [R, G, B] = rgbOf(hex);
-  const k = (r + g + b) / (R + G + B);
-  return k > 0.2 && k < 1.05 && [r - k * R, g - k * G, b - k * B].every((d) => Math.abs(d) <= 4);
-}
 const path = () => page.evaluate(() => window.planarium.view3d.path());
 const toolAt = (q) => {
   const sk = core.skeleton(new Float64Array(q));

@@ -8,16 +8,10 @@
 // a run still solves. Screenshots at 1280×800 and 390×844 go to /tmp/pose3d-*.png.
 import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
-import { join } from 'node:path';
-import { pageFixture, ROOT } from './browser.mjs';
+import { pageFixture } from './browser.mjs';
 import { PALETTE } from '../../www/draw/palette.js';
-import { initSync, Scene, builtins } from '../../www/pkg/planarium.js';
+import { puma, core, PUMA_NAME } from './puma-view.mjs';
 
-initSync({ module: readFileSync(join(ROOT, 'www/pkg/planarium_bg.wasm')) });
-const puma = JSON.parse(builtins()).find((b) => b.id === 'puma-rbo-wall').scenario;
-const core = new Scene(JSON.stringify(puma));
-const PUMA_NAME = "Puma 560 through a window (report 001's course)";
 
 const fx = await pageFixture();
 let page;

@@ -7,28 +7,17 @@
 // /tmp/view3d-*.png; the frame time while orbiting is logged, never asserted.
 import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
-import { join } from 'node:path';
-import { pageFixture, ROOT } from './browser.mjs';
+import { pageFixture } from './browser.mjs';
 import { PALETTE } from '../../www/draw/palette.js';
-import { initSync, Scene, builtins } from '../../www/pkg/planarium.js';
+import { puma, PUMA_NAME, shadeOf, pixelsNear as near3d } from './puma-view.mjs';
+import { Scene } from '../../www/pkg/planarium.js';
 
-initSync({ module: readFileSync(join(ROOT, 'www/pkg/planarium_bg.wasm')) });
-const puma = JSON.parse(builtins()).find((b) => b.id === 'puma-rbo-wall').scenario;
-const PUMA_NAME = "Puma 560 through a window (report 001's course)";
 
 const fx = await pageFixture();
 let page;
 beforeEach(() => { page = fx.page; });
 const { waitStatus, pickScenario } = fx;
 
-const rgbOf = (hex) => [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16));
-/** Whether pixel [r, g, b] is a shade (k·colour, lit by the head light) of colour `hex`. */
-function shadeOf([r, g, b], hex) {
-  const [R, G, B] = rgbOf(hex);
-  const k = (r + g + b) / (R + G + B);
-  return k > 0.2 && k < 1.05 && [r - k * R, g - k * G, b - k * B].every((d) => Math.abs(d) <= 4);
-}
 
 async function openPuma() {
   await pickScenario('puma-rbo-wall', PUMA_NAME);
@@ -36,18 +25,6 @@ async function openPuma() {
   assert.equal(await page.evaluate(() => window.planarium.view3d.error()), '');
 }
 
-/** The pixels of the 3-D view within `r` css px of world point `p`, as [[r, g, b], …]. */
-async function pixelsNear(p, r) {
-  return page.evaluate(({ p, r }) => {
-    const v = window.planarium.view3d;
-    const at = v.toCanvas(p);
-    if (!at) return null;
-    const px = v.pixels(at[0], at[1], r);
-    const out = [];
-    for (let i = 0; i < px.length; i += 4) out.push([px[i], px[i + 1], px[i + 2]]);
-    return { at, out };
-  }, { p, r });
-}
 
 test('puma-rbo-wall: the arm is drawn at the start pose where the core\'s kinematics puts it', async () => {
   await openPuma();
@@ -59,14 +36,14 @@ test('puma-rbo-wall: the arm is drawn at the start pose where the core\'s kinema
   const tcp = points[points.length - 1];
   // the tool centre point and the wrist (link 4's frame origin, inside its hull) are on the arm
   for (const [name, p] of [['tool centre point', tcp], ['wrist', points[4]]]) {
-    const near = await pixelsNear(p, 3);
+    const near = await near3d(page, p, 3);
     assert.ok(near, `${name} in front of the camera`);
     const hits = near.out.filter((px) => shadeOf(px, PALETTE.start)).length;
     console.log(`${name} ${p.map((v) => v.toFixed(3))} at css px ${near.at.map((v) => v.toFixed(1))}: ${hits} of ${near.out.length} pixels the start pose's colour`);
     assert.ok(hits >= 3, `${name}: the arm is drawn there`);
   }
   // and not where it is not: 40 cm above the tool (the view is framed on less than 2 m)
-  const away = await pixelsNear([tcp[0], tcp[1], tcp[2] + 0.4], 3);
+  const away = await near3d(page, [tcp[0], tcp[1], tcp[2] + 0.4], 3);
   assert.equal(away.out.filter((px) => shadeOf(px, PALETTE.start)).length, 0, 'nothing of the arm above the tool');
   await page.screenshot({ path: '/tmp/view3d-loaded-1280.png' });
 

@@ -1,6 +1,7 @@
 //! The explain panel's side channel for a spatial arm: the state log of a run (every growth-step
 //! record's full states, in order) and where a collision happens (`Spatial::contact`).
 
+use super::tests::problem;
 use super::*;
 use crate::events::{EventKind, EventLog, STRIDE};
 use crate::problem::Problem;
@@ -113,36 +114,13 @@ fn the_state_log_follows_truncation() {
     assert!(e[2][2..].iter().all(|v| v.is_nan()));
 }
 
-fn problem(sc: &serde_json::Value) -> Problem {
-    Problem::from_scenario(&Scenario::from_value(sc).unwrap()).unwrap()
-}
-
 /// Where the hand meets a wall, and where two links meet.
 #[test]
 fn a_contact_is_where_the_parts_meet() {
     // The test arm of `tests.rs`: the hand's hull spans x in [1, 1.5] at q = 0; the wall's face at 1.2.
-    let sc = json!({
-        "bounds": [-3, -3, 3, 3],
-        "robot": {
-            "kind": "spatial-arm",
-            "joints": [
-                {"d": 0, "a": 1, "alpha": 0, "limits": [-3, 3]},
-                {"d": 0, "a": 0.5, "alpha": 0, "limits": [-3, 3]}
-            ],
-            "links": [
-                {},
-                {"boxes": [{"name": "bar", "center": [-0.5, 0, 0], "size": [1, 0.2, 0.2]}]},
-                {"name": "hand", "hull": [[-0.5, -0.05, -0.05], [0, -0.05, -0.05], [0, 0.05, -0.05], [-0.5, 0.05, -0.05],
-                                          [-0.5, -0.05, 0.05], [0, -0.05, 0.05], [0, 0.05, 0.05], [-0.5, 0.05, 0.05]]}
-            ],
-            "ignore": [[1, 2]]
-        },
-        "obstacles3d": [{"name": "post", "box": {"center": [5, 5, 0], "size": [0.2, 0.2, 0.2]}},
-                        {"name": "wall", "box": {"center": [1.7, 0, 0], "size": [1, 4, 4]}}],
-        "start": [1.5, 0],
-        "goal": [-1.5, 0],
-        "resolution": 0.01
-    });
+    let mut sc = super::tests::scenario(1.2, json!({}));
+    sc["obstacles3d"] = json!([{"name": "post", "box": {"center": [5, 5, 0], "size": [0.2, 0.2, 0.2]}},
+                               {"name": "wall", "box": {"center": [1.7, 0, 0], "size": [1, 4, 4]}}]);
     let p = problem(&sc);
     let (ws, sp) = (p.si.workspace(), p.robot.spatial().unwrap());
     assert!(sp.contact(ws, &[1.5, 0.0]).is_none(), "free");

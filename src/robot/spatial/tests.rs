@@ -7,7 +7,7 @@ use std::f64::consts::FRAC_PI_2;
 /// One joint about z, one link: a bar along its x axis, `[0, 1] × [−0.1, 0.1]²` at `q = 0`; a
 /// second joint at the bar's end (a = 1) with a short box; the scene a box whose near face is at
 /// `x = face`.
-fn scenario(face: f64, extra: serde_json::Value) -> serde_json::Value {
+pub(super) fn scenario(face: f64, extra: serde_json::Value) -> serde_json::Value {
     let mut sc = json!({
         "bounds": [-3, -3, 3, 3],
         "robot": {
@@ -37,7 +37,7 @@ fn scenario(face: f64, extra: serde_json::Value) -> serde_json::Value {
     sc
 }
 
-fn problem(sc: &serde_json::Value) -> Problem {
+pub(super) fn problem(sc: &serde_json::Value) -> Problem {
     Problem::from_scenario(&Scenario::from_value(sc).unwrap()).unwrap()
 }
 
