@@ -18,7 +18,7 @@ import { Timeline, JOINT_COLOURS } from '../draw/timeline.js';
 /** The scrubber's steps along the path (its value is a thousandth of the length). */
 const SCRUB_STEPS = 1000;
 /** Ghost spacing, rad: the default, the bounds (0 turns them off) and the most ghosts drawn. */
-export const GHOSTS = { initial: 0.5, min: 0.05, max: 10, most: 60 };
+export const GHOSTS = { initial: 2, min: 0.05, max: 10, most: 60 };
 const TIMELINE_HEIGHT = 170;
 
 /** A joint's colour swatch (set through the CSS object model: the page's CSP allows no inline style). */
