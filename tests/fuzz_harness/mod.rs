@@ -211,10 +211,14 @@ pub fn plan(problem: Problem, budget: &Budget) -> Result<Option<RunReport>, Stri
         Err(e) if !e.is_empty() => return Ok(None),
         Err(_) => return Err(format!("{}: Session::new failed with an empty message", spec.name)),
     };
+    // With events, the page's state log too (a spatial arm's explain panel reads it).
+    s.log_states(budget.events);
     s.run_to_end();
     let r = s.result();
     let _ = r.to_json();
     let _ = s.drain_events();
+    let states = s.drain_states();
+    let _ = s.problem().explain_states(&states);
     if r.solved {
         path_frames(&s, false);
         path_frames(&s, true);
