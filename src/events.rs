@@ -266,20 +266,24 @@ impl EventLog {
     /// [`StateLog`]). Nothing when the log is off, the last record has no entry, or the states
     /// are not of its size.
     pub fn attach(&mut self, q: &[Real], pq: &[Real], extra: f64) {
-        if !self.enabled || self.data.is_empty() {
+        if !self.enabled {
             return;
         }
-        let last = (self.drained + self.data.len() / STRIDE - 1) as f64;
-        if let Some(s) = &mut self.states {
-            let (stride, dims) = (s.stride(), s.dims);
-            let n = s.data.len() / stride;
-            if n > 0 && s.data[(n - 1) * stride] == last && q.len() == dims && pq.len() == dims {
-                let e = &mut s.data[(n - 1) * stride..];
+        if let Some((e, dims)) = self.last_entry() {
+            if q.len() == dims && pq.len() == dims {
                 e[2] = extra;
                 e[3..3 + dims].copy_from_slice(q);
                 e[3 + dims..].copy_from_slice(pq);
             }
         }
+    }
+    /// The state log's last entry and the log's `dims`, when that entry is the last record's.
+    fn last_entry(&mut self) -> Option<(&mut [f64], usize)> {
+        let last = (self.drained + self.data.len() / STRIDE).checked_sub(1)? as f64;
+        let s = self.states.as_mut()?;
+        let (stride, dims) = (s.stride(), s.dims);
+        let n = s.data.len() / stride;
+        (n > 0 && s.data[(n - 1) * stride] == last).then(|| (&mut s.data[(n - 1) * stride..], dims))
     }
     /// Record one event: ids, workspace points of the state and its parent, and the first two
     /// coordinates of each state.
@@ -363,13 +367,8 @@ impl EventLog {
     }
     /// Set the `extra` number of the last record's state log entry (see [`StateLog`]), if it has one.
     pub fn set_extra(&mut self, extra: f64) {
-        let last = (self.drained + self.data.len() / STRIDE) as f64 - 1.0;
-        if let Some(s) = &mut self.states {
-            let stride = s.stride();
-            let n = s.data.len() / stride;
-            if n > 0 && s.data[(n - 1) * stride] == last {
-                s.data[(n - 1) * stride + 2] = extra;
-            }
+        if let Some((e, _)) = self.last_entry() {
+            e[2] = extra;
         }
     }
     /// Number of records waiting.
@@ -383,23 +382,15 @@ impl EventLog {
     /// Forget the records after the first `events` (a suspended batch's, see [`crate::journal`]).
     pub fn truncate(&mut self, events: usize) {
         self.data.truncate(events * STRIDE);
-        // The node log's entries of the records dropped (they are the last ones).
+        // The side logs' entries of the records dropped (they are the last ones).
         let end = (self.drained + events) as f64;
         if let Some(n) = &mut self.nodes {
             let stride = n.stride();
-            let mut keep = n.data.len() / stride;
-            while keep > 0 && n.data[(keep - 1) * stride] >= end {
-                keep -= 1;
-            }
-            n.data.truncate(keep * stride);
+            drop_entries_from(&mut n.data, stride, end);
         }
         if let Some(s) = &mut self.states {
             let stride = s.stride();
-            let mut keep = s.data.len() / stride;
-            while keep > 0 && s.data[(keep - 1) * stride] >= end {
-                keep -= 1;
-            }
-            s.data.truncate(keep * stride);
+            drop_entries_from(&mut s.data, stride, end);
         }
     }
     /// Take every waiting record, leaving the log empty.
@@ -411,4 +402,14 @@ impl EventLog {
     pub fn records(&self) -> &[f64] {
         &self.data
     }
+}
+
+/// Drop a side log's last entries (each `stride` numbers, its record's number first) whose record
+/// is `end` or later.
+fn drop_entries_from(data: &mut Vec<f64>, stride: usize, end: f64) {
+    let mut keep = data.len() / stride;
+    while keep > 0 && data[(keep - 1) * stride] >= end {
+        keep -= 1;
+    }
+    data.truncate(keep * stride);
 }

@@ -14,6 +14,7 @@
 
 import { el } from './dom.js';
 import { Timeline, JOINT_COLOURS } from '../draw/timeline.js';
+import { parseFrames } from '../draw/transform.js';
 
 /** The scrubber's steps along the path (its value is a thousandth of the length). */
 const SCRUB_STEPS = 1000;
@@ -37,27 +38,21 @@ const deg = (rad) => `${Number(((rad * 180) / Math.PI).toFixed(1))}°`;
  * @returns {{dims: number, states: Float64Array, s: Float64Array} | null}
  */
 export function parseStates(frames) {
-  if (!frames || frames.length < 2) return null;
-  const dims = frames[0] | 0;
-  const count = frames[1] | 0;
-  if (dims < 1 || count < 1) return null;
-  const states = new Float64Array(dims * count);
-  const s = new Float64Array(count);
-  let at = 2;
-  let n = 0;
-  for (; n < count && at + dims <= frames.length; n++) {
-    states.set(frames.subarray(at, at + dims), n * dims);
-    if (n > 0) {
+  const parsed = parseFrames(frames);
+  const dims = frames?.[0] | 0;
+  const n = parsed.length;
+  if (dims < 1 || n < 1 || parsed[n - 1].state.length < dims) return null;
+  const states = new Float64Array(dims * n);
+  const s = new Float64Array(n);
+  parsed.forEach(({ state }, k) => {
+    states.set(state, k * dims);
+    if (k > 0) {
       let d2 = 0;
-      for (let j = 0; j < dims; j++) d2 += (states[n * dims + j] - states[(n - 1) * dims + j]) ** 2;
-      s[n] = s[n - 1] + Math.sqrt(d2);
+      for (let j = 0; j < dims; j++) d2 += (state[j] - states[(k - 1) * dims + j]) ** 2;
+      s[k] = s[k - 1] + Math.sqrt(d2);
     }
-    at += dims;
-    const polys = frames[at++] | 0; // the outline: [n_polygons, n_1, x, y…, …]
-    for (let p = 0; p < polys && at < frames.length; p++) at += 1 + 2 * (frames[at] | 0);
-  }
-  if (n < 1) return null;
-  return { dims, states: states.subarray(0, n * dims), s: s.subarray(0, n) };
+  });
+  return { dims, states, s };
 }
 
 /**
