@@ -311,6 +311,10 @@ export function view3dHooks(slot, panels) {
     viewProj: () => (slot.view?.matrices ? [...slot.view.matrices.viewProj] : null),
     /** Resolves with the requestAnimationFrame deltas (ms) of the next `n` frames the view draws while it turns. */
     orbitFrameTimes: (n) => slot.view?.orbitFrameTimes(n) ?? Promise.resolve([]),
+    /** One whole frame's time (ms), the trees in full as when the camera rests. */
+    fullFrameMs: () => slot.view?.fullFrameMs() ?? null,
+    /** Whether the last frame drew the trees through a subset (the camera moving: draw3d/lod.js). */
+    treesThinned: () => !!slot.view && slot.view.lod.thin,
     /** Add `edges` synthetic tree edges (straight, `steps` points each) round the tool: the frame-time measure's load. */
     loadEdges: (edges, steps) => slot.addTestEdges(edges, steps),
     /** Draw the explain panel's step (ghost arms, collision mark) or not, at once (tests compare the pixels). */

@@ -16,6 +16,7 @@
 import { programs, meshBuffers, LineBuffer, identity, transformPoint, project, rgb, sub, dot } from './gl.js';
 import { OrbitCamera } from './camera.js';
 import { PathCurve, drawGhosts } from './ghosts.js';
+import { TreeLod } from './lod.js';
 
 /** Parts of the last link (the tool's) are drawn this much darker, so the tool stands out. */
 const TOOL_SHADE = 0.6;
@@ -34,7 +35,12 @@ export class View3D {
     if (!gl) throw Object.assign(new Error('this browser has no WebGL2: the 3-D view is not available'), { noWebGL2: true });
     this.gl = gl;
     this.progs = programs(gl);
-    this.camera = new OrbitCamera(canvas, () => this.requestRender());
+    // While the camera moves, the trees are drawn through a subset of their segments (lod.js).
+    this.lod = new TreeLod(gl, this.progs.line);
+    this.camera = new OrbitCamera(canvas, () => {
+      this.lod.moved(() => this.requestRender());
+      this.requestRender();
+    });
     this.parts = [];      // {link, buffers, tool}
     this.obstacles = [];  // buffers
     this.trees = [new LineBuffer(gl, this.progs.line), new LineBuffer(gl, this.progs.line)];
@@ -128,6 +134,7 @@ export class View3D {
   /** Forget the run's trees and path. */
   clearRun() {
     for (const b of [...this.trees, ...this.nodes, this.path]) b.clear();
+    this.lod.clear();
     this.pose = null;
     this.ghosts = [];
     this.requestRender();
@@ -187,7 +194,7 @@ export class View3D {
   requestRender() {
     if (this.pending) return;
     this.pending = true;
-    requestAnimationFrame((t) => { this.pending = false; this.render(); this.onFrame?.(t); });
+    requestAnimationFrame((t) => { this.pending = false; this.render(); this.lod.drawn(t); this.onFrame?.(t); });
   }
 
   /** Draw everything now. */
@@ -200,6 +207,7 @@ export class View3D {
     gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
     gl.enable(gl.DEPTH_TEST);
     gl.disable(gl.BLEND);
+    this.lod.frame();
     const { view, proj } = this.camera.matrices();
     this.matrices = this.camera.matrices();
     // Lines: the floor, the axes, the trees, the path.
@@ -269,10 +277,11 @@ export class View3D {
       gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
       gl.depthMask(false);
     }
-    lines(this.trees[0], P.tree0, gl.LINES, a);
-    lines(this.trees[1], P.tree1, gl.LINES, a);
-    lines(this.nodes[0], P.tree0, gl.POINTS, a);
-    lines(this.nodes[1], P.tree1, gl.POINTS, a);
+    const [e0, e1] = this.lod.edges(this.trees);
+    lines(e0, P.tree0, gl.LINES, a);
+    lines(e1, P.tree1, gl.LINES, a);
+    if (this.lod.points(this.nodes[0].length)) lines(this.nodes[0], P.tree0, gl.POINTS, a);
+    if (this.lod.points(this.nodes[1].length)) lines(this.nodes[1], P.tree1, gl.POINTS, a);
     gl.depthMask(true);
     gl.disable(gl.BLEND);
   }
@@ -307,6 +316,21 @@ export class View3D {
       };
       requestAnimationFrame(step);
     });
+  }
+
+  /**
+   * One whole frame drawn (the trees in full, as when the camera rests) and waited for (a pixel
+   * read back): its time in ms.
+   */
+  fullFrameMs() {
+    const [off, changed] = [this.lod.off, this.lod.changed];
+    this.lod.off = true;
+    const t0 = performance.now();
+    this.render();
+    this.gl.readPixels(0, 0, 1, 1, this.gl.RGBA, this.gl.UNSIGNED_BYTE, new Uint8Array(4));
+    const ms = performance.now() - t0;
+    [this.lod.off, this.lod.changed] = [off, changed];
+    return ms;
   }
 
   /** Css px within the canvas of world point `p`, with the camera of the last frame drawn. */
