@@ -402,7 +402,7 @@ function syncButtons() {
   a11y.refocus(); // Run → Pause: the focus stays in the run bar
 }
 
-controller.onChange((state) => { syncButtons(); updateStats(); updateRunStatus(); syncSpeedButtons(); syncDownload(); a11y.update(); });
+controller.onChange(() => { syncButtons(); updateStats(); updateRunStatus(); syncSpeedButtons(); syncDownload(); a11y.update(); });
 
 function buildLegend() {
   const name = panel?.planner()?.name;
