@@ -153,8 +153,9 @@ export function notices() {
     '',
     npmRuntime.length
       ? `The page loads: ${npmRuntime.join(', ')}.`
-      : 'None. `package.json` lists only devDependencies (ESLint, TypeScript, binaryen\'s wasm-opt, playwright-core),'
-        + '\nwhich build and test the page and are not shipped.',
+      : 'None. `package.json` lists only devDependencies (ESLint, TypeScript, binaryen\'s wasm-opt, playwright-core,'
+        + '\naxe-core, which the accessibility test injects into the page under test), which build and test the page and'
+        + '\nare not shipped.',
     '',
     '## Data',
     '',

@@ -1,6 +1,7 @@
 // Installs whatever is missing, idempotently: the wasm32 target, wasm-bindgen-cli at the exact
 // version in Cargo.lock, wasm-pack, the npm packages (binaryen's wasm-opt for the build,
-// playwright-core for the browser tests), and with --browser also Debian's chromium.
+// playwright-core for the browser tests, axe-core for their accessibility check), and with --browser also
+// Debian's chromium. Every devDependency missing from node_modules runs `npm install`.
 // Everything comes from the package registries (crates.io, npm, Debian); nothing else is fetched.
 import { execSync, spawnSync } from 'node:child_process';
 import { existsSync, readFileSync } from 'node:fs';

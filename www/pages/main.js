@@ -35,6 +35,7 @@ import { ExplainPanel } from '../ui/explain-panel.js';
 import { createTrials } from '../ui/trials.js';
 import { wireKeys, wireCellTip } from '../ui/keys.js';
 import { runStatusText } from '../ui/run-status.js';
+import { wireA11y } from '../ui/a11y.js';
 import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend, removeCustomScenarios, markCustomScenario, invalidText } from '../ui/controls.js';
 import { readShare, setupFor, VIEW_DEFAULTS } from '../ui/links.js';
 import { wireShareHash } from '../ui/share-hash.js';
@@ -140,6 +141,7 @@ const player = new Player({
       pathPanel.frame();
       chart.render(lane.iterationNow);
       updateRunStatus();
+      a11y.update();
       // the stats say what is drawn: refreshed when the playback revealed more
       if (playback.store.length !== statsShown) { statsShown = playback.store.length; updateStats(); }
     },
@@ -373,7 +375,8 @@ function updateStats() {
   updateStatsList(s);
   // a planner that gave up says why: under the canvas too, where it is seen
   const why = s.status === 'no_path' ? (lane.result?.reason || 'the planner gave up') : '';
-  ui.runNote.textContent = why ? `No path: ${why.replace(/^no path:\s*/i, '')}` : '';
+  const note = why ? `No path: ${why.replace(/^no path:\s*/i, '')}` : '';
+  if (ui.runNote.textContent !== note) ui.runNote.textContent = note; // a live region: written when it changes
   ui.runNote.hidden = !why;
 }
 
@@ -396,9 +399,10 @@ function syncButtons() {
   ui.file.disabled = busy;
   panel?.setDisabled(busy);
   document.body.dataset.state = controller.state;
+  a11y.refocus(); // Run → Pause: the focus stays in the run bar
 }
 
-controller.onChange((state) => { syncButtons(); updateStats(); updateRunStatus(); explain.setLive(state !== 'running'); syncSpeedButtons(); syncDownload(); });
+controller.onChange(() => { syncButtons(); updateStats(); updateRunStatus(); syncSpeedButtons(); syncDownload(); a11y.update(); });
 
 function buildLegend() {
   const name = panel?.planner()?.name;
@@ -510,6 +514,11 @@ const syncOptions = () => {
   cspace.setOptions({ showRejected: o.showRejected, showCollisions: o.showCollisions });
 };
 ui.animRaw.addEventListener('change', () => { syncOptions(); scheduleShare(); });
+
+// The skip link, focus in the run bar, the live region and the canvas's text (ui/a11y.js).
+const a11y = wireA11y({ skip: $('skip-to-run'), bar: $('run-bar'), live: $('run-announce'), canvas: ui.canvas,
+  read: () => ({ state: controller.state, status: lastRunStatus, caption: explain.state().caption, name: loaded?.name,
+    nodes: currentStats().nodes, result: lane.result, bestCost: playback.model.bestCost }) });
 
 // Keys (Space, arrows, R, '.', ?) and the keyboard help (ui/keys.js).
 wireKeys({ actions, running: () => controller.state === 'running', help: $('help'), open: $('help-button'), close: $('help-close') });

@@ -96,7 +96,7 @@ export class BoxesPanel {
     this.count = list.length;
     this.rows = [];
     const head = el('tr', {}, el('th', { scope: 'col', text: 'Name' }),
-      ...FIELDS.map((f) => el('th', { scope: 'col', text: f.label })), el('th', { scope: 'col', text: '' }));
+      ...FIELDS.map((f) => el('th', { scope: 'col', text: f.label })), el('th', { scope: 'col' }, el('span', { className: 'sr-only', text: 'Remove' })));
     const body = el('tbody');
     list.forEach((o, i) => {
       const error = el('td', { id: `box3d-${i}-error`, className: 'box3d-error', colSpan: FIELDS.length + 2, role: 'alert' });

@@ -32,6 +32,7 @@ export class ExplainPanel {
     this.title = el('p', { id: 'explain-title', className: 'explain-title' });
     this.code = el('ol', { id: 'explain-code', className: 'explain-code' });
     this.caption = el('p', { id: 'explain-caption', className: 'explain-caption', text: 'Run or step the planner: each step is explained here.' });
+    // not a live region: the page's one (ui/a11y.js) speaks the caption when the run is paused or stepped
     this.where = el('p', { id: 'explain-where', className: 'hint' });
     root.replaceChildren(this.title, this.code, this.caption, this.where);
     this.items = new Map();
@@ -39,7 +40,6 @@ export class ExplainPanel {
     this.scheduled = 0;
     this.showResult = false;
     this.dirty = false;
-    this.live = false;
     view.topHooks.push((ctx, L) => this.drawActors(ctx, L));
   }
 
@@ -94,13 +94,6 @@ export class ExplainPanel {
     ];
     if (emits(planner, 'TREES_CONNECTED')) items.push({ label: 'trees connected', color: PALETTE.connect, shape: 'ring' });
     return items;
-  }
-
-  /** Announce captions to screen readers (paused or stepping), or not (running: too many). */
-  setLive(on) {
-    if (on === this.live) return;
-    this.live = on;
-    this.caption.setAttribute('aria-live', on ? 'polite' : 'off');
   }
 
   // The view interface the lane feeds (lane.js)

@@ -72,7 +72,8 @@ export function createStats(dl, prefix = '') {
   });
   dl.replaceChildren(...rows);
   return function update(s) {
-    statusDd.textContent = STATUS_TEXT[s.status] || s.status;
+    const word = STATUS_TEXT[s.status] || s.status;
+    if (statusDd.textContent !== word) statusDd.textContent = word; // a live region: written when it changes
     statusDd.dataset.status = s.status;
     for (const { f, dd, row } of cells) {
       let v;
