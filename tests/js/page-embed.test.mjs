@@ -258,7 +258,7 @@ test('a bad embed hash is reported in the embed, which still works', async () =>
     assert.match(s.message, /no built-in scenario "nope"/);
     assert.match(s.message, /seed=x/);
     assert.match(s.message, /fly is not a control/);
-    assert.deepEqual(s.controls, ['run']);
+    assert.deepEqual(s.controls, ['run', 'reset'], 'the control asked for, and Reset once the autoplay run has ended');
   } finally {
     await p.close();
   }

@@ -6,7 +6,8 @@
 
 import { CONTROLS, DEFAULT_CONTROLS, MAX_LINK_CHARS } from './links.js';
 
-export const EMBED_LIMITS = Object.freeze({ width: [200, 2000], height: [150, 2000] });
+/** @type {{readonly width: readonly number[], readonly height: readonly number[]}} */
+export const EMBED_LIMITS = Object.freeze({ width: Object.freeze([200, 2000]), height: Object.freeze([150, 2000]) });
 const LABELS = { run: 'Run', pause: 'Pause', step: 'Step', back: 'Step back', reset: 'Reset', speed: 'Speed', seed: 'Seed' };
 
 /** `s` safe inside a double-quoted HTML attribute. */
@@ -16,7 +17,7 @@ const attr = (s) => String(s).replace(/&/g, '&amp;').replace(/"/g, '&quot;').rep
  * A size field's value: {value} a whole number of pixels within its bounds, or {why} naming the field.
  * @param {string} name the field's label ("Width")
  * @param {string} text what it holds
- * @param {number[]} bounds [min, max]
+ * @param {readonly number[]} bounds [min, max]
  */
 export function readSize(name, text, [min, max]) {
   const t = String(text).trim();
@@ -70,6 +71,7 @@ export function wireEmbedCode({ root, link, title }) {
   const autoplay = el('input', { type: 'checkbox', id: 'embed-autoplay', checked: true });
   const autoLabel = el('label', { title: 'Run when at least half the embed is on screen' });
   autoLabel.append(autoplay, ' Autoplay');
+  /** @param {string} id @param {string} text @param {number} value @param {readonly number[]} bounds */
   const size = (id, text, value, [min, max]) => {
     const input = el('input', { type: 'number', id, min: String(min), max: String(max), step: '10', value: String(value) });
     const label = el('label', { className: 'field', title: `${text} of the frame in pixels, ${min} to ${max}` });
