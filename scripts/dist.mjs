@@ -32,7 +32,7 @@ mkdirSync(out, { recursive: true });
 
 // Left out: tests, and the wasm build's own bookkeeping.
 const skip = (name) => /\.test\.m?js$/.test(name) || name === 'tests' || name === '.gitignore' || name === 'package.json'
-  || name === 'README.md' || name.endsWith('.d.ts');
+  || name === 'README.md' || (name.endsWith('.d.ts') && name !== 'planarium-playground.d.ts'); // the element's types are shipped
 cpSync(www, out, {
   recursive: true,
   filter: (src) => src === www || !skip(src.split(sep).pop()),

@@ -18,6 +18,10 @@
 // file (a worker cannot be started across origins; use embed.html in an iframe there).
 // Read-only state for scripts and tests: el.state, el.status, el.result(), el.stats(), el.nodeCount,
 // el.shownIterations, el.controls, el.view3dState(); and el.run(), pause(), step(), back(), reset().
+// Events (CustomEvent, bubbling, composed): `run` (a run starts or resumes), `step` (a step's answer
+// is shown), `solved` (a run ended with a path); their detail types are in planarium-playground.d.ts.
+// The status line shows the iterations and nodes drawn so far, rising while the run plays; Step on a
+// finished run replays it from its start, step by step; after an autoplay run Reset is offered.
 
 import { Playback } from './run/playback.js';
 import { View } from './draw/view.js';
@@ -121,6 +125,8 @@ export class PlanariumPlayground extends HTMLElement {
     this.started = false; // autoplay / click: the run has been started once
     this.crashNote = '';  // why the worker stopped, kept until the user acts
     this.pending = 0;
+    this.stepsAsked = 0; // steps asked whose answer is not shown yet (the `step` event)
+    this.acted = false;  // a control was used since the last restore
     this.aspect = 1;
     this.shown = [];
     this.onKey = this.onKey.bind(this);
@@ -147,11 +153,14 @@ export class PlanariumPlayground extends HTMLElement {
         invalid: (error) => this.onInvalid(error),
         error: (message) => this.say(message),
         stopped: (message, fatal, why) => this.onStopped(message, fatal, why),
-        changed: () => this.sync(),
-        frame: () => this.view3d.render(performance.now(), this.player.fps()),
+        changed: () => { this.sync(); this.stepShown(); },
+        frame: () => {
+          this.view3d.render(performance.now(), this.player.fps());
+          if (this.player?.state === 'running') this.syncStatus(); // the counts rise as the playback reveals the run
+        },
       },
     });
-    this.player.controller.onChange(() => this.sync());
+    this.player.controller.onChange((to, from, event) => { this.sync(); this.announce(to, from, event); });
     this.sizeStage = () => {
       if (this.hasAttribute('fill')) { this.stage.style.height = ''; return; }
       const w = this.stage.clientWidth;
@@ -266,6 +275,8 @@ export class PlanariumPlayground extends HTMLElement {
     this.problems = [...link.problems, ...share.problems];
     this.crashNote = '';
     this.started = false;
+    this.acted = false;
+    this.stepsAsked = 0;
     this.buildControls(share.controls ?? DEFAULT_CONTROLS);
     this.view.setOptions({ ...overlayOptions(share.overlays), animateRaw: !!share.view.rawPath });
     if (!share.scenario) this.problems.push('No scenario given (scenario=…): the first built-in is shown.');
@@ -399,14 +410,19 @@ export class PlanariumPlayground extends HTMLElement {
     const p = this.player;
     if (!p) return false;
     this.started = true;
+    this.acted = true;
     if (this.crashNote && p.controller.state !== 'stopped') { this.crashNote = ''; this.say(this.notes()); }
     switch (name) {
       case 'run': return p.run();
       case 'pause': return p.pause();
       case 'toggle': return p.toggle();
-      case 'step': return p.step(this.stepSize());
+      case 'step': // a finished run (autoplay's, say) is replayed from its start, step by step
+        if (p.controller.state === 'finished') p.reset();
+        if (!p.step(this.stepSize())) return false;
+        this.stepsAsked++;
+        return true;
       case 'back': return p.back(this.stepSize()) !== null;
-      case 'reset': return p.reset();
+      case 'reset': this.stepsAsked = 0; return p.reset();
       default: return false;
     }
   }
@@ -438,16 +454,74 @@ export class PlanariumPlayground extends HTMLElement {
     const p = this.player;
     if (!p || !this.statusText) return;
     const c = p.controller;
-    const can = { run: c.can('run'), pause: c.can('pause'), step: c.can('step'), back: p.canBack(), reset: c.can('reset') };
+    const can = { run: c.can('run'), pause: c.can('pause'), step: c.can('step') || c.state === 'finished', back: p.canBack(), reset: c.can('reset') };
     for (const [name, b] of Object.entries(this.buttons || {})) b.disabled = !can[name];
     if (this.seedInput) this.seedInput.disabled = c.state === 'loading';
     this.startButton.hidden = !(this.share?.click && !this.started && c.state === 'idle');
+    this.offerReset(c.state);
+    this.syncStatus();
+    this.dataset.state = c.state;
+  }
+
+  /**
+   * The status line: the state word and, once a run has begun, the iterations and nodes the
+   * playback has drawn (player.stats(): the replay's, not the worker's, which may be far ahead).
+   * Called by sync() and on every frame while running; the text is written only when it changes.
+   */
+  syncStatus() {
+    const p = this.player;
+    if (!p || !this.statusText) return;
+    const state = p.controller.state;
     const s = p.stats();
     const word = s.status === 'no_path' ? 'no path' : s.status;
-    this.statusText.dataset.status = s.status;
-    this.statusText.textContent = s.iterations != null && c.state !== 'loading' && c.state !== 'idle'
-      ? `${word} · ${Number(s.iterations).toLocaleString('en')} iterations · ${s.shown_nodes} nodes` : word;
-    this.dataset.state = c.state;
+    const text = s.iterations != null && state !== 'loading' && state !== 'idle'
+      ? `${word} · ${Number(s.iterations).toLocaleString('en')} iterations · ${Number(s.nodes ?? s.shown_nodes).toLocaleString('en')} nodes` : word;
+    if (this.statusText.textContent !== text) this.statusText.textContent = text;
+    if (this.statusText.dataset.status !== s.status) this.statusText.dataset.status = s.status;
+  }
+
+  /**
+   * After an autoplay run has ended, Reset is offered even where `controls` did not ask for it
+   * (but some control is shown): the reader can then run or step it again from the start.
+   */
+  offerReset(state) {
+    if (!this.share?.autoplay || this.buttons?.reset || !this.bar.querySelector('[data-control]')) return;
+    if (state !== 'finished') return;
+    const b = el('button', { type: 'button', textContent: LABELS.reset, title: TITLES.reset });
+    b.dataset.control = 'reset';
+    b.setAttribute('part', 'button reset');
+    b.addEventListener('click', () => this.act('reset'));
+    this.buttons.reset = b;
+    this.shown = [...this.shown, 'reset'];
+    this.statusText.before(b);
+  }
+
+  // Events for the host page (CustomEvent, bubbling and composed; types in planarium-playground.d.ts)
+
+  /** Controller transitions as events: `run` when a run starts or resumes, `solved` when it ends with a path. */
+  announce(to, from, event) {
+    if (event === 'run') {
+      this.emit('run', { scenario: this.scenario?.name ?? '', planner: this.config?.planner ?? '', seed: this.config?.seed ?? null,
+        resumed: from === 'paused', autoplay: !!this.share?.autoplay && !this.acted });
+    } else if (event === 'finish') {
+      const r = this.player?.lane.result;
+      if (!r?.solved) return;
+      const st = r.stats || {};
+      this.emit('solved', { scenario: this.scenario?.name ?? '', planner: r.planner ?? this.config?.planner ?? '', seed: r.seed ?? this.config?.seed ?? null,
+        iterations: st.iterations ?? 0, nodes: st.nodes ?? 0, cost: typeof st.cost === 'number' ? st.cost : null });
+    }
+  }
+
+  /** A step's answer has been shown (changed hook): `step` with the counts drawn. */
+  stepShown() {
+    if (!this.stepsAsked || this.player?.lane.stepPending > 0) return;
+    this.stepsAsked = 0;
+    const s = this.player.stats();
+    this.emit('step', { iterations: s.iterations ?? 0, nodes: s.nodes ?? s.shown_nodes ?? 0, stepSize: this.stepSize(), status: this.status });
+  }
+
+  emit(type, detail) {
+    this.dispatchEvent(new CustomEvent(type, { detail, bubbles: true, composed: true }));
   }
 
   // Read-only state and actions for scripts

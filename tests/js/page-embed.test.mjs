@@ -55,6 +55,12 @@ ${body}
   writeFileSync(join(dir, 'params.html'), page('oversized params', 480, `<script type="module" src="planarium/planarium-playground.js"></script>
 <planarium-playground id="big" scenario="slot" planner="rrt" seed="4" speed="100" params="${'goal_bias=0.1&'.repeat(3000)}" controls="run,seed"></planarium-playground>
 <planarium-playground id="huge" scenario="narrow" seed="9007199254740993" controls="run,seed"></planarium-playground>`));
+  // the element's events, recorded by the host page (a module script: the page has no CSP here)
+  writeFileSync(join(dir, 'events.html'), page('events', 480, `<script type="module" src="planarium/planarium-playground.js"></script>
+<planarium-playground id="ev" scenario="narrow" planner="rrt-connect" seed="7" autoplay speed="100" controls="step"></planarium-playground>
+<script>window.seen = []; document.addEventListener('run', (e) => window.seen.push(['run', e.target.id, e.detail]));
+document.addEventListener('solved', (e) => window.seen.push(['solved', e.target.id, e.detail]));
+document.addEventListener('step', (e) => window.seen.push(['step', e.target.id, e.detail]));</script>`));
   site = await serve({ port: 0, dir: tmp });
   notes = `http://127.0.0.1:${site.address().port}/course/notes/`;
 });
@@ -252,7 +258,7 @@ test('a bad embed hash is reported in the embed, which still works', async () =>
     assert.match(s.message, /no built-in scenario "nope"/);
     assert.match(s.message, /seed=x/);
     assert.match(s.message, /fly is not a control/);
-    assert.deepEqual(s.controls, ['run']);
+    assert.deepEqual(s.controls, ['run', 'reset'], 'the control asked for, and Reset once the autoplay run has ended');
   } finally {
     await p.close();
   }
@@ -304,4 +310,89 @@ test('the static copy carries the licences and the third-party notices, served l
   }
   assert.match(text, /Apache License\s+Version 2\.0/);
   assert.match(text, /Permission is hereby granted, free of charge/);
+});
+
+/** The numbers of an embed's status line, "running · 1,234 iterations · 56 nodes": [iterations, nodes] or null. */
+const countsOf = (text) => {
+  const m = /([\d,]+) iterations · ([\d,]+) nodes/.exec(text);
+  return m ? [Number(m[1].replace(/,/g, '')), Number(m[2].replace(/,/g, ''))] : null;
+};
+
+test("the embed's counts rise while it runs, and end at the run's final numbers", async () => {
+  const p = await open(`${notes}planarium/embed.html#scenario=narrow&planner=rrt-connect&seed=7&autoplay&speed=45&controls=step`, { width: 500, height: 560 });
+  try {
+    const status = () => p.evaluate(() => {
+      const el = document.querySelector('planarium-playground');
+      return { state: el?.state, text: el?.shadowRoot.querySelector('.status')?.textContent ?? '' };
+    });
+    await p.waitForFunction(() => document.querySelector('planarium-playground')?.state === 'running', null, { timeout: 60000 });
+    const samples = [];
+    for (let i = 0; i < 4000; i++) {
+      const s = await status();
+      if (s.state !== 'running') break;
+      samples.push(s.text);
+      await p.waitForTimeout(40);
+    }
+    await waitEl(p, 'solved');
+    const running = samples.map(countsOf);
+    console.log(`counts while running: ${samples.length} samples, ${[...new Set(samples)].slice(0, 8).join(' | ')} …`);
+    assert.ok(running.every(Boolean), `every sample while running shows counts: ${samples.find((t) => !countsOf(t))}`);
+    for (let i = 1; i < running.length; i++) {
+      assert.ok(running[i][0] >= running[i - 1][0] && running[i][1] >= running[i - 1][1], `never falls: ${samples[i - 1]} then ${samples[i]}`);
+    }
+    const distinct = new Set(running.map(([it, n]) => `${it}/${n}`));
+    assert.ok(distinct.size >= 3, `at least three different counts while it plays (${[...distinct].join(', ')})`);
+    assert.ok(running.some(([, n]) => n > 0), 'some nodes are counted while it plays');
+    const end = countsOf((await status()).text);
+    const r = await p.evaluate(() => document.querySelector('planarium-playground').result());
+    assert.ok(r.solved);
+    assert.deepEqual(end, [r.stats.iterations, r.stats.nodes], "the line ends at the run's numbers");
+    assert.ok(end[0] >= running[running.length - 1][0] && end[1] >= running[running.length - 1][1]);
+    assert.ok(running[0][1] < end[1], `the first count (${samples[0]}) is below the last (${end})`);
+  } finally {
+    await p.close();
+  }
+});
+
+test('the element fires run, solved and step; after autoplay, Step replays from the start and Reset is offered', async () => {
+  const p = await open(`${notes}events.html`, { width: 1000, height: 1000 });
+  try {
+    await waitEl(p, 'solved', '#ev');
+    await p.waitForFunction(() => window.seen.some(([t]) => t === 'solved'));
+    const r = await p.evaluate(() => document.querySelector('#ev').result());
+    let seen = await p.evaluate(() => window.seen);
+    assert.deepEqual(seen.map(([t, id]) => `${t}:${id}`), ['run:ev', 'solved:ev']);
+    assert.deepEqual(seen[0][2], { scenario: 'Narrow passage', planner: 'rrt-connect', seed: 7, resumed: false, autoplay: true });
+    const solved = seen[1][2];
+    assert.equal(solved.planner, 'rrt-connect');
+    assert.equal(solved.seed, 7);
+    assert.equal(solved.iterations, r.stats.iterations);
+    assert.equal(solved.nodes, r.stats.nodes);
+    // Reset joins the controls the author chose once the autoplay run has ended; Step is enabled
+    let s = await look(p, '#ev');
+    assert.deepEqual(s.controls, ['step', 'reset']);
+    const step = p.locator('#ev button[data-control="step"]');
+    assert.equal(await step.isEnabled(), true, 'Step is offered on the finished run');
+    // Step: the run starts again from its beginning, one iteration shown
+    await step.click();
+    await p.waitForFunction(() => window.seen.some(([t]) => t === 'step'));
+    seen = await p.evaluate(() => window.seen);
+    assert.deepEqual(seen[2].slice(0, 2), ['step', 'ev']);
+    assert.equal(seen[2][2].iterations, 1, 'one step from the start');
+    assert.equal(seen[2][2].stepSize, 1);
+    assert.equal(await p.evaluate(() => document.querySelector('#ev').state), 'paused');
+    const text = await p.evaluate(() => document.querySelector('#ev').shadowRoot.querySelector('.status').textContent);
+    assert.match(text, /^paused · 1 iterations · \d+ nodes$/);
+    assert.ok(countsOf(text)[1] < r.stats.nodes, `fewer nodes than the whole run: ${text}`);
+    await step.click();
+    await p.waitForFunction(() => window.seen.filter(([t]) => t === 'step').length === 2);
+    assert.equal((await p.evaluate(() => window.seen))[3][2].iterations, 2);
+    // Reset: back to the start, nothing drawn
+    await p.locator('#ev button[data-control="reset"]').click();
+    await waitEl(p, 'idle', '#ev');
+    s = await look(p, '#ev');
+    assert.equal(s.nodes, 0);
+  } finally {
+    await p.close();
+  }
 });

@@ -273,3 +273,57 @@ test('step back replays from the seed to the same point as a fresh run stepped t
   assert.equal(await page.evaluate(() => window.planarium.stats().iterations), result.stats.iterations - 40);
   await page.screenshot({ path: join(shots, 'page-step-back.png') });
 });
+
+test('Copy embed code: the options go into an iframe whose src opens the same run; sizes out of bounds are refused by name', async () => {
+  await pickScenario('narrow', 'Narrow passage');
+  await page.selectOption('#planner', 'rrt');
+  await waitState('idle');
+  await type(page, 'seed', '13');
+  await waitState('idle');
+  await fastPlayback();
+  const first = await runToEnd(page);
+  // a width out of bounds: no code, the field named
+  await type(page, 'embed-width', '50');
+  await page.click('#copy-embed');
+  await page.waitForFunction(() => /No embed code: Width: "50" is not a whole number of pixels from 200 to 2000/.test(document.getElementById('embed-status').textContent));
+  assert.equal(await page.inputValue('#embed-code'), '');
+  // controls: step and reset only; autoplay stays on; 420 × 460
+  await type(page, 'embed-width', '420');
+  await type(page, 'embed-height', '460');
+  for (const c of ['run', 'pause', 'back']) await page.click(`#embed-options input[data-control="${c}"]`);
+  await page.click('#copy-embed');
+  await page.waitForFunction(() => document.getElementById('embed-code').value.startsWith('<iframe'));
+  const code = await page.inputValue('#embed-code');
+  console.log(`embed code: ${code}`);
+  // the iframe's attributes, read as HTML reads them (the entities decoded)
+  const attrOf = (name) => {
+    const m = new RegExp(`\\s${name}="([^"]*)"`).exec(code);
+    assert.ok(m, `the code has ${name}="…"`);
+    return m[1].replace(/&quot;/g, '"').replace(/&lt;/g, '<').replace(/&gt;/g, '>').replace(/&amp;/g, '&');
+  };
+  assert.match(code, /^<iframe [^<>]*><\/iframe>$/);
+  const frame = { src: attrOf('src'), width: attrOf('width'), height: attrOf('height'), title: attrOf('title') };
+  assert.deepEqual([frame.width, frame.height, frame.title], ['420', '460', 'Narrow passage']);
+  const src = new URL(frame.src);
+  assert.equal(src.pathname, '/embed.html');
+  assert.match(src.hash, /^#scenario=narrow&planner=rrt&seed=13&.*autoplay&controls=step,reset$/);
+  // the clipboard, where the browser gives one, holds the same text
+  const clip = await page.evaluate(() => navigator.clipboard.readText().catch(() => null));
+  if (clip !== null) assert.equal(clip, code);
+  // opening that src, as the iframe would: the same run, the chosen controls
+  const other = await fx.env.browser.newPage({ viewport: { width: 420, height: 460 } });
+  other.on('pageerror', (e) => fx.errors.push(e));
+  try {
+    await other.goto(frame.src);
+    await other.waitForFunction(() => document.querySelector('planarium-playground')?.state === 'finished', null, { timeout: 60000 });
+    const embed = await other.evaluate(() => {
+      const el = document.querySelector('planarium-playground');
+      return { result: el.result(), controls: el.controls };
+    });
+    assert.deepEqual(embed.result.path, first.path, 'the same raw path, number for number');
+    assert.equal(embed.result.stats.iterations, first.stats.iterations);
+    assert.deepEqual(embed.controls, ['step', 'reset'], 'the controls chosen');
+  } finally {
+    await other.close();
+  }
+});

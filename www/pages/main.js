@@ -39,6 +39,7 @@ import { wireA11y } from '../ui/a11y.js';
 import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend, removeCustomScenarios, markCustomScenario, invalidText } from '../ui/controls.js';
 import { readShare, setupFor, VIEW_DEFAULTS } from '../ui/links.js';
 import { wireShareHash } from '../ui/share-hash.js';
+import { wireEmbedCode } from '../ui/embed-code.js';
 import { wireOpenFile } from '../ui/open-file.js';
 import { OVERLAYS } from '../draw/palette.js';
 import { applyPageLimits } from '../run/limits.js';
@@ -289,6 +290,7 @@ const share = wireShareHash({
   saveName: () => loaded?.name || 'scenario', download: downloadText, showError,
 });
 const scheduleShare = () => share.schedule();
+wireEmbedCode({ root: $('embed-options'), link: () => share.write({ force: true }), title: () => loaded?.name || 'Planarium' });
 
 // someone pastes another link into the address bar of this tab
 window.addEventListener('hashchange', () => {
