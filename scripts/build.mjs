@@ -1,11 +1,13 @@
 // Builds the core to WebAssembly for the page and the worker: www/pkg/ (wasm-pack, --target web),
-// then optimises the module with binaryen's wasm-opt -O3 from npm (node_modules/.bin).
+// then optimises the module with binaryen's wasm-opt -O3 from npm (node_modules/.bin), and writes
+// its brotli and gzip copies beside it (scripts/precompress.mjs).
 // wasm-pack's own wasm-opt step stays off (Cargo.toml): it would fetch a binaryen release from GitHub.
 // PLANARIUM_WASM_OPT=0 skips the optimisation for a quicker build while developing.
 import { execFileSync, execSync } from 'node:child_process';
 import { existsSync, statSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { precompress, PRECOMPRESSED } from './precompress.mjs';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 const cargoBin = join(process.env.HOME || '/root', '.cargo', 'bin');
@@ -29,4 +31,10 @@ if (process.env.PLANARIUM_WASM_OPT === '0') {
   console.log(`[build] wasm-opt ${args.join(' ')}`);
   execFileSync(wasmOpt, args, { stdio: 'inherit', cwd: root });
   console.log(`[build] wasm-opt: ${(before / 1024).toFixed(0)} kB → ${(statSync(wasm).size / 1024).toFixed(0)} kB`);
+}
+// Brotli and gzip copies beside the module and its glue (scripts/precompress.mjs), served by
+// scripts/serve.mjs to browsers that accept them.
+for (const f of PRECOMPRESSED) {
+  const { raw, br, gz } = precompress(join(root, 'www', f));
+  console.log(`[build] ${f}: ${(raw / 1024).toFixed(0)} kB, brotli ${(br / 1024).toFixed(0)} kB, gzip ${(gz / 1024).toFixed(0)} kB`);
 }

@@ -10,6 +10,7 @@ import { cpSync, existsSync, mkdirSync, readdirSync, readFileSync, rmSync, statS
 import { dirname, join, relative, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { CSP_META } from './serve.mjs';
+import { precompress, PRECOMPRESSED } from './precompress.mjs';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 const www = join(root, 'www');
@@ -37,6 +38,14 @@ cpSync(www, out, {
   recursive: true,
   filter: (src) => src === www || !skip(src.split(sep).pop()),
 });
+
+// Brotli and gzip copies beside the module and its glue (scripts/precompress.mjs), made afresh from
+// the copy: a host that serves precompressed files (nginx's gzip_static and brotli_static, Caddy's
+// `precompressed`, Netlify and Cloudflare Pages compress on their own) sends a third of the wasm.
+for (const f of PRECOMPRESSED) {
+  const { raw, br, gz } = precompress(join(out, f));
+  console.log(`[dist] ${f}: ${(raw / 1024).toFixed(0)} KiB; ${f}.br ${(br / 1024).toFixed(0)} KiB, ${f}.gz ${(gz / 1024).toFixed(0)} KiB`);
+}
 
 // The licences: Planarium's own and the third-party notices (scripts/notices.mjs), for whoever copies
 // the folder onto a course site.

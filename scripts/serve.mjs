@@ -1,10 +1,13 @@
 // A small static server for www/ (no dependencies). PORT and HOST may be set in the environment.
 // Every response says nosniff and no-referrer; Planarium's pages (and the scripts, for the workers)
-// also carry the pages' Content-Security-Policy (CSP below).
+// also carry the pages' Content-Security-Policy (CSP below). A file with a fresh precompressed copy
+// beside it (`f.br`, `f.gz`: scripts/precompress.mjs, written by the wasm build) is sent as that
+// copy to a browser whose Accept-Encoding takes it, brotli first (`Vary: Accept-Encoding`).
 import { createServer } from 'node:http';
 import { readFile, stat } from 'node:fs/promises';
 import { extname, join, normalize, dirname } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { ENCODINGS, fresh } from './precompress.mjs';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..', 'www');
 const TYPES = {
@@ -38,6 +41,22 @@ export function securityHeaders(file, body = null) {
   return { 'content-security-policy': `${CSP}; frame-ancestors ${framed ? '*' : "'self'"}`, ...headers };
 }
 
+/**
+ * The precompressed copy of `file` to send for a request's Accept-Encoding header: {encoding,
+ * path}, or null (send the file as it is). Only an encoding the header names without q=0.
+ */
+export function negotiate(file, acceptEncoding) {
+  const accepted = new Set();
+  for (const part of String(acceptEncoding || '').toLowerCase().split(',')) {
+    const [name, ...params] = part.trim().split(';').map((t) => t.trim());
+    if (name && !params.some((p) => /^q=0(\.0*)?$/.test(p))) accepted.add(name);
+  }
+  for (const [encoding, suffix] of ENCODINGS) {
+    if (accepted.has(encoding) && fresh(file, suffix)) return { encoding, path: `${file}${suffix}` };
+  }
+  return null;
+}
+
 export function serve({ port = 8080, host = '127.0.0.1', dir = root } = {}) {
   const server = createServer(async (req, res) => {
     try {
@@ -46,9 +65,12 @@ export function serve({ port = 8080, host = '127.0.0.1', dir = root } = {}) {
       let file = join(dir, path);
       if (!file.startsWith(dir)) { res.writeHead(403, securityHeaders('')).end(); return; }
       if ((await stat(file).catch(() => null))?.isDirectory()) file = join(file, 'index.html');
-      const body = await readFile(file);
+      const packed = /\.(br|gz)$/.test(file) ? null : negotiate(file, req.headers['accept-encoding']);
+      const body = await readFile(packed ? packed.path : file);
       res.writeHead(200, {
-        'content-type': TYPES[extname(file)] || 'application/octet-stream', 'cache-control': 'no-cache', ...securityHeaders(file, body),
+        'content-type': TYPES[extname(file)] || 'application/octet-stream', 'cache-control': 'no-cache',
+        ...(packed ? { 'content-encoding': packed.encoding, vary: 'Accept-Encoding' } : {}),
+        ...securityHeaders(file, packed ? null : body),
       });
       res.end(body);
     } catch {
