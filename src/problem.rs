@@ -165,6 +165,28 @@ impl Problem {
             .collect()
     }
 
+    /// The configurations a last-free connect (the Robotics Library's, in report 001's course)
+    /// from `from` toward `target` tests, in order, the first `count` of them (at most
+    /// [`MAX_LAST_FREE_STEPS`](crate::planners::tree::MAX_LAST_FREE_STEPS)): the connect's own
+    /// schedule ([`LastFreeSteps`](crate::planners::tree::LastFreeSteps)) by the resolution, so the
+    /// explain panel steps through the very configurations the planner checked, bit for bit. Empty
+    /// when `from` is `target`.
+    pub fn connect_configs(&self, from: &[Real], target: &[Real], count: usize) -> Vec<Vec<Real>> {
+        use crate::planners::tree::{LastFreeSteps, MAX_LAST_FREE_STEPS};
+        let d = self.si.distance(from, target);
+        if !(d > 0.0) || from.len() != target.len() {
+            return Vec::new();
+        }
+        let mut q = vec![0.0; from.len()];
+        LastFreeSteps::new(d, self.si.resolution)
+            .take(count.min(MAX_LAST_FREE_STEPS))
+            .map(|(step, _)| {
+                self.si.interpolate(from, target, step / d, &mut q);
+                q.clone()
+            })
+            .collect()
+    }
+
     /// The trees as a spatial arm's tool sweeps them, from a run's node log
     /// ([`crate::run::Session::drain_nodes`]): per node, flat, `[tree, id, n, x, y, z, …]`: the
     /// tool centre point at `n` steps of the motion from its parent (as [`tool_steps`](Problem::tool_steps),

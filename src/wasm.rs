@@ -294,6 +294,17 @@ impl Scene {
             _ => Vec::new(),
         }
     }
+    /// The configurations a last-free connect from `from` toward `target` tests, the first
+    /// `count` (`Problem::connect_configs`), flat, a state after another (as the state log's,
+    /// `Run.drain_states`): the explain panel's steps through a connect.
+    pub fn connect_configs(&self, from: &[f64], target: &[f64], count: usize) -> Vec<f64> {
+        match (self.state(from), self.state(target)) {
+            (Some(a), Some(b)) => {
+                self.inner.connect_configs(&a, &b, count).iter().flat_map(|q| self.inner.robot.decode(q)).collect()
+            }
+            _ => Vec::new(),
+        }
+    }
     /// For a robot in 3-D, what a 3-D view draws, once, as JSON: `{links, tool, parts: [{link,
     /// name, vertices, triangles}], obstacles: [{name, vertices, triangles}]}`: each part's triangle
     /// mesh in its link's frame (placed by [`link_frames`](Scene::link_frames)), the scene's 3-D

@@ -26,7 +26,7 @@
 
 mod last_free;
 
-pub use last_free::MAX_LAST_FREE_STEPS;
+pub use last_free::{LastFreeSteps, MAX_LAST_FREE_STEPS};
 
 use super::{Context, ParamGroup, ParamSpec, Params};
 use crate::events::EventKind;

@@ -71,6 +71,48 @@ use crate::status::Grow;
 /// steps, plus the first.
 pub const MAX_LAST_FREE_STEPS: usize = crate::limits::MAX_MOTION_STEPS as usize + 1;
 
+/// The Robotics Library's schedule of a connect's steps over a distance `d` (> 0) in steps of
+/// `delta`: each configuration's distance from the node along the line, and whether it is the
+/// target (`step = d` when `d ≤ delta`, else `delta`; then `step += delta`, a running sum, until
+/// `step ≥ d`, which is `d`: reached). The connect tests them in this order, stopping at the
+/// first not free; the explain panel asks for the same ones ([`crate::problem::Problem::connect_configs`]).
+#[derive(Clone, Debug)]
+pub struct LastFreeSteps {
+    d: Real,
+    delta: Real,
+    step: Real,
+    reached: bool,
+    done: bool,
+}
+
+impl LastFreeSteps {
+    /// The steps over `d` by `delta`.
+    pub fn new(d: Real, delta: Real) -> Self {
+        let (step, reached) = if d <= delta { (d, true) } else { (delta, false) };
+        LastFreeSteps { d, delta, step, reached, done: false }
+    }
+}
+
+impl Iterator for LastFreeSteps {
+    type Item = (Real, bool);
+    fn next(&mut self) -> Option<(Real, bool)> {
+        if self.done {
+            return None;
+        }
+        let out = (self.step, self.reached);
+        if self.reached {
+            self.done = true;
+        } else {
+            self.step += self.delta;
+            if self.step >= self.d {
+                self.reached = true;
+                self.step = self.d;
+            }
+        }
+        Some(out)
+    }
+}
+
 impl Tree {
     /// Connect toward `target` the Robotics Library's way (see the module documentation), in steps
     /// of `delta`; `sample`: the target is a sample (its node's dynamic domain applies). `scratch`
@@ -95,11 +137,12 @@ impl Tree {
             Err(outcome) => return outcome,
         };
         let from = &self.states[near as usize * self.dims..(near as usize + 1) * self.dims];
-        // rl: `step = distance`, reached when `step <= delta`, else `step = delta`.
-        let (mut step, mut reached) = if d <= delta { (d, true) } else { (delta, false) };
+        // rl: `step = distance`, reached when `step <= delta`, else `step = delta`; then by delta.
+        let (mut step, mut reached) = (0.0, false);
         let (mut any_free, mut collided) = (false, false);
         let checks = cx.si.checks();
-        for _ in 0..MAX_LAST_FREE_STEPS {
+        for (s, r) in LastFreeSteps::new(d, delta).take(MAX_LAST_FREE_STEPS) {
+            (step, reached) = (s, r);
             cx.si.interpolate(from, target, step / d, scratch);
             // The step's motion, from the last free configuration (the node, at first).
             // Past the first step, it continues from the previous step's end (its clearance is
@@ -115,14 +158,6 @@ impl Tree {
             }
             new.copy_from_slice(scratch);
             any_free = true;
-            if reached {
-                break;
-            }
-            step += delta;
-            if step >= d {
-                reached = true;
-                step = d;
-            }
         }
         // The farthest configuration tested: the one whose step was not free, or the last free one.
         let tested = if collided { &*scratch } else { &*new };

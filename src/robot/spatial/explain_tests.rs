@@ -90,6 +90,51 @@ fn the_state_log_gives_each_step_record_its_states_and_leaves_the_run_alone() {
     assert!(collisions > 3 && steers > 10, "{collisions} collisions, {steers} steers");
 }
 
+/// Each last-free connect's configurations, asked for again (`Problem::connect_configs`, the
+/// explain panel's steps through a connect), are the ones the connect tested: as many as its
+/// queries, the last the farthest tested bit for bit, every one before it free, and the last free
+/// unless the connect hit something.
+#[test]
+fn a_connects_configurations_asked_again_are_the_ones_it_tested() {
+    let mut s = last_free_session(true);
+    let (mut records, mut states) = (Vec::new(), Vec::new());
+    for _ in 0..20 {
+        let done = s.step(10, f64::INFINITY).is_finished();
+        records.extend(s.drain_events());
+        let log = s.drain_states();
+        states.extend_from_slice(&s.problem().explain_states(&log)[1..]);
+        if done {
+            break;
+        }
+    }
+    let p = s.problem();
+    let ws = p.si.workspace();
+    let entries: Vec<&[f64]> = states.chunks_exact(2 + 12).collect();
+    let kinds: Vec<f64> = entries.iter().map(|e| e[0]).collect();
+    let (steer, nearest, collision) =
+        (EventKind::Steer as u8 as f64, EventKind::Nearest as u8 as f64, EventKind::Collision as u8 as f64);
+    let mut checked = 0;
+    for (i, e) in entries.iter().enumerate().filter(|(_, e)| e[0] == steer) {
+        let n = kinds[..i].iter().rposition(|k| *k == nearest).expect("a nearest before each steer");
+        let (from, target) = (&entries[n][2..8], &entries[n][8..14]);
+        assert_eq!(&e[8..14], from, "the steer starts at the nearest node");
+        let count = e[1] as usize;
+        let configs = p.connect_configs(from, target, count);
+        assert_eq!(configs.len(), count, "one configuration a query");
+        assert_eq!(configs.last().unwrap().as_slice(), &e[2..8], "the last is the farthest tested");
+        for q in &configs[..count - 1] {
+            assert!(p.robot.is_valid(ws, q), "the connect went on past it: free");
+        }
+        let hit = kinds.get(i + 1) == Some(&collision);
+        assert_eq!(p.robot.is_valid(ws, configs.last().unwrap()), !hit, "the last is free unless it hit");
+        // asking for more gives the same first ones
+        assert_eq!(&p.connect_configs(from, target, count + 3)[..count], &configs[..]);
+        checked += 1;
+    }
+    assert!(checked > 10, "{checked} connects");
+    assert!(p.connect_configs(&[0.0; 6], &[0.0; 6], 5).is_empty(), "no line: nothing");
+}
+
 /// A suspended batch's records go, and their state log entries with them.
 #[test]
 fn the_state_log_follows_truncation() {
