@@ -117,6 +117,18 @@ pub enum EventKind {
 }
 
 impl EventKind {
+    /// The set-up kinds: what a planner lays out before (or between) its decisions, not a decision
+    /// itself: a decomposition's or a grid's cells and their outlines, a region of influence, a
+    /// potential field's heat map. The page shows a run of them as one step (one level of a
+    /// decomposition, a grid's cells, one heat map), so stepping starts at the first decision and
+    /// a replay's pace is set by the decisions.
+    pub const SETUP: [EventKind; 4] = [EventKind::Cell, EventKind::CellShape, EventKind::Region, EventKind::Field];
+
+    /// Whether this kind is a set-up kind ([`EventKind::SETUP`]).
+    pub fn is_setup(self) -> bool {
+        Self::SETUP.contains(&self)
+    }
+
     /// Every kind with its name, for the JS constant check.
     pub const ALL: [(EventKind, &'static str); 28] = [
         (EventKind::Sample, "SAMPLE"),

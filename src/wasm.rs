@@ -95,14 +95,16 @@ pub fn limits() -> String {
     crate::limits::to_json().to_string()
 }
 
-/// The event kinds as JSON `{NAME: number}` and the record stride (checked against `www/run/events.js`).
+/// The event kinds as JSON `{kinds: {NAME: number}, stride, setup: [kind, ...]}` (the record
+/// stride, and the set-up kinds, `EventKind::SETUP`), checked against `www/run/events.js`.
 #[wasm_bindgen]
 pub fn event_kinds() -> String {
     let mut m = serde_json::Map::new();
     for (k, name) in crate::events::EventKind::ALL {
         m.insert(name.to_string(), serde_json::json!(k as u8));
     }
-    serde_json::json!({"kinds": m, "stride": crate::events::STRIDE}).to_string()
+    let setup: Vec<u8> = crate::events::EventKind::SETUP.iter().map(|&k| k as u8).collect();
+    serde_json::json!({"kinds": m, "stride": crate::events::STRIDE, "setup": setup}).to_string()
 }
 
 /// Read any supported file (a scenario, a Technion map, an ASV problem) and return it as scenario

@@ -29,7 +29,7 @@ import { View3dSlot } from './draw/view3d-slot.js';
 import { PALETTE } from './draw/palette.js';
 import { Player } from './run/player.js';
 import { fitViews } from './draw/stage.js';
-import { speedRate, animFps, describeSpeed } from './ui/controls.js';
+import { speedSeconds, animFps, describeSpeed } from './ui/controls.js';
 import { readShare, setupFor, configOf, overlayOptions, boundedProblems, DEFAULT_CONTROLS, VIEW_DEFAULTS, MAX_PAIRS, MAX_HASH_CHARS } from './ui/links.js';
 import { applyPageLimits } from './run/limits.js';
 import { shown } from './ui/text.js';
@@ -145,7 +145,7 @@ export class PlanariumPlayground extends HTMLElement {
     this.player = new Player({
       playback: this.playback,
       views: [this.view, this.view3d],
-      rate: () => speedRate(this.speedInput || { value: String(this.share?.view.speed ?? VIEW_DEFAULTS.speed), max: '100' }),
+      duration: () => speedSeconds(this.speedInput || { value: String(this.share?.view.speed ?? VIEW_DEFAULTS.speed), max: '100' }),
       fps: () => animFps({ value: String(this.share?.view.anim ?? VIEW_DEFAULTS.anim) }),
       hooks: {
         ready: (msg) => this.onReady(msg),

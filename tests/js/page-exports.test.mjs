@@ -382,3 +382,41 @@ test('a GIF taken while a run grows follows it (the export view draws the record
   assert.ok(counts[24] > 50, `the tree grows in the GIF: ${counts.join(' ')}`);
   assert.equal(await canvasChanges(), 0, 'the visible canvas was not resized');
 });
+
+test('time-lapse: a GIF and a WebM of the whole run in 5 s, the tree growing frame by frame, the path at the end', async () => {
+  await solve('narrow', 'Narrow passage');
+  await page.fill('#gif-width', '200');
+  await page.selectOption('#export-lapse', '5');
+  const gif = await download(() => page.click('#export-gif'));
+  const g = decodeGif(gif.bytes);
+  const status = await page.textContent('#export-status');
+  console.log(`time-lapse GIF: ${status}`);
+  assert.match(status, /50 frames at 10 fps, the whole run in 5 s/);
+  assert.equal(g.frames.length, 50, '5 s at 10 frames a second');
+  assert.ok(g.frames.every((f) => f.delay === 10));
+  const P = await page.evaluate(async () => (await import('./draw/palette.js')).PALETTE);
+  const rgba = (f) => {
+    const out = new Uint8Array(f.indices.length * 4);
+    f.indices.forEach((k, i) => out.set([g.palette[3 * k], g.palette[3 * k + 1], g.palette[3 * k + 2], 255], 4 * i));
+    return out;
+  };
+  const tree = [0, 24, 49].map((k) => countColour(rgba(g.frames[k]), P.tree0, 0) + countColour(rgba(g.frames[k]), P.tree1, 0));
+  const path = [0, 24, 49].map((k) => countColour(rgba(g.frames[k]), P.smoothPath, 0));
+  console.log(`tree pixels at frames 1, 25, 50: ${tree}; smoothed path pixels: ${path}`);
+  assert.ok(tree[0] < tree[1] && tree[1] < tree[2], `the tree grows over the time-lapse: ${tree}`);
+  assert.equal(path[0], 0, 'no path before the end');
+  assert.ok(path[2] > 20, `the path at the end (${path[2]} pixels)`);
+  // the page's own picture is not replayed: it still shows the finished run
+  assert.equal(await page.evaluate(() => window.planarium.state()), 'finished');
+
+  // WebM: it records the run in 5 s and saves by itself
+  const webm = await download(async () => {
+    await page.click('#record');
+    await page.waitForFunction(() => /the whole run in 5 s \(it saves by itself\)/.test(document.getElementById('export-status').textContent));
+  });
+  const w = webmInfo(webm.bytes);
+  console.log(`time-lapse WebM: ${w.duration} ms, ${w.width} × ${w.height}; ${await page.textContent('#export-status')}`);
+  assert.match(webm.name, /\.webm$/);
+  // one click: it stopped and saved by itself (its length is the machine's: logged, not asserted)
+  assert.ok(w.duration > 0 && Number.isFinite(w.duration), `a real duration (${w.duration} ms)`);
+});

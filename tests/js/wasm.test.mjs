@@ -8,7 +8,7 @@ import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { dirname, join } from 'node:path';
 import { initSync, Run, Scene, builtins, planners, event_kinds } from '../../www/pkg/planarium.js';
-import { EventKind, STRIDE } from '../../www/run/events.js';
+import { EventKind, SETUP_KINDS, STRIDE } from '../../www/run/events.js';
 import { smallQuads } from './seeded.mjs';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
@@ -71,6 +71,7 @@ test('event constants in www/run/events.js match the core', () => {
   const k = JSON.parse(event_kinds());
   assert.equal(k.stride, STRIDE);
   assert.deepEqual(k.kinds, { ...EventKind });
+  assert.deepEqual(k.setup, [...SETUP_KINDS], 'the set-up kinds (one step of the playback each run of them)');
 });
 
 test('events stream what the page needs: nodes with parents, collisions, a solution', () => {

@@ -21,7 +21,7 @@ import { Lane } from '../run/lane.js';
 import { View3dSlot } from '../draw/view3d-slot.js';
 import { createStats } from '../ui/stats.js';
 import { createOverlays } from '../draw/overlays.js';
-import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend, removeCustomScenarios, markCustomScenario } from '../ui/controls.js';
+import { chartKind, speedSeconds, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend, removeCustomScenarios, markCustomScenario } from '../ui/controls.js';
 import { applyPageLimits } from '../run/limits.js';
 import init, { parse_setups as parseSetups } from '../pkg/planarium.js';
 import { setupFor } from '../ui/links.js';
@@ -414,7 +414,7 @@ function frame(time) {
   const dt = Math.min(0.25, (time - (lastFrame || time)) / 1000);
   lastFrame = time;
   if (controller.state === 'running') {
-    for (const s of sides) s.lane.tick(speedRate(ui.speed), dt);
+    for (const s of sides) s.lane.tick(speedSeconds(ui.speed), dt);
     maybeFinish();
   }
   for (const s of sides) {

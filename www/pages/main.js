@@ -36,7 +36,7 @@ import { createTrials } from '../ui/trials.js';
 import { wireKeys, wireCellTip } from '../ui/keys.js';
 import { runStatusText } from '../ui/run-status.js';
 import { wireA11y } from '../ui/a11y.js';
-import { chartKind, speedRate, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend, removeCustomScenarios, markCustomScenario, invalidText } from '../ui/controls.js';
+import { chartKind, speedSeconds, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend, removeCustomScenarios, markCustomScenario, invalidText } from '../ui/controls.js';
 import { readShare, setupFor, VIEW_DEFAULTS } from '../ui/links.js';
 import { wireShareHash } from '../ui/share-hash.js';
 import { wireEmbedCode } from '../ui/embed-code.js';
@@ -93,7 +93,7 @@ const player = new Player({
   playback,
   views: [view, cspace, explain, view3d],
   chart,
-  rate: () => speedRate(ui.speed),
+  duration: () => speedSeconds(ui.speed),
   fps: () => animFps(ui.animSpeed),
   hooks: {
     ready: onReady,
@@ -483,8 +483,8 @@ ui.scenario.addEventListener('change', () => {
 wireOpenFile({ input: ui.file, clearError, showError, markCustom,
   load: (text, defaults, { course, file, map }) => send('file', text, { course, file, map, defaults }) });
 
-// Slow / Normal / Instant: presets of the events-per-second slider (Playback details).
-const SPEEDS = Object.freeze({ 'speed-slow': 0, 'speed-normal': 30, 'speed-instant': 100 });
+// Slow / Normal / Fast / Instant: presets of the replay-length slider (Playback details; controls.js).
+const SPEEDS = Object.freeze({ 'speed-slow': 10, 'speed-normal': 33, 'speed-fast': 60, 'speed-instant': 100 });
 function syncSpeedButtons() {
   for (const [id, v] of Object.entries(SPEEDS)) $(id).setAttribute('aria-checked', String(Number(ui.speed.value) === v));
 }
@@ -571,6 +571,8 @@ Object.defineProperty(window, 'planarium', {
     /** The explain panel's step in the 3-D view: {sample, step, collision: {links, at, words} | null}, or null. */
     explain3d: () => explain.state3d(),
     /** The last record revealed, as numbers (null before any). */
+    /** The replay's pacing plan: {duration, clock, frames, lastSteps, steps, pendingSteps, records, pending} (pace.js). */
+    pace: () => playback.plan(),
     lastEvent: () => (playback.store.length ? [...playback.store.record(playback.store.length - 1)] : null),
     cells: () => cellSummary(playback.model.cells),
     /** Another query on the finished roadmap, as drawn: {points, picks}, or null. */

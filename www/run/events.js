@@ -36,3 +36,10 @@ export const EventKind = Object.freeze({
   GRAPH_EDGE: 26, // id, parent: the vertices, x y / px py: their points, c0: length, c1: 1 clear (kept), 0 blocked
   INFORMED: 27, // x y: the ellipse's centre, px py: its semi-axes, c0 c1: the major axis (unit), pc0: best cost, pc1: the foci's distance
 });
+
+/**
+ * The set-up kinds (the core's EventKind::SETUP, checked against event_kinds().setup): what a
+ * planner lays out before its decisions (cells and their outlines, a region of influence, a heat
+ * map). A run of them is one step of the playback (pace.js).
+ */
+export const SETUP_KINDS = Object.freeze([EventKind.CELL, EventKind.CELL_SHAPE, EventKind.REGION, EventKind.FIELD]);

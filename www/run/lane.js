@@ -31,6 +31,7 @@ export class Lane {
       error: (message) => {
         this.stepPending = 0;
         this.revealOnePending = false;
+        this.setupPending = false;
         hooks.error?.(message);
       },
       asv: (text) => hooks.asv?.(text),
@@ -55,6 +56,7 @@ export class Lane {
     this.done = false;        // the `result` message arrived
     this.stepPending = 0;     // steps sent, not yet answered: reveal each answer at once
     this.revealOnePending = false;
+    this.setupPending = false; // a set-up step is still arriving: show the rest of it as it comes
     if (notify) this.hooks.changed?.();
   }
 
@@ -78,10 +80,23 @@ export class Lane {
     if (this.done) this.session.send({ type: 'query', start, goal });
   }
 
-  /** Show one more event; with nothing buffered, ask the planner for one more iteration. */
+  /**
+   * Show one more step (an event, or a whole run of set-up events: pace.js); with nothing
+   * buffered, ask the planner for one more iteration.
+   */
   stepEvent() {
-    if (this.playback.pending > 0) this.reveal(this.playback.reveal(1));
+    if (this.playback.pending > 0) { this.reveal(this.playback.revealSteps(1)); this.moreSetup(); }
     else if (!this.done) { this.revealOnePending = true; this.session.send({ type: 'step', iterations: 1 }); }
+  }
+
+  /**
+   * The step shown is a run of set-up events that may go on (a grid is labelled a row an
+   * iteration): ask the planner for more, until something else comes (onEvents shows the rest).
+   */
+  moreSetup() {
+    if (this.playback.pending > 0 || this.done || !this.playback.scanner.setup) return;
+    this.setupPending = true;
+    this.session.send({ type: 'step', iterations: 1 });
   }
 
   /** Stop the planner now (or, when it already stopped, show the rest). */
@@ -106,7 +121,8 @@ export class Lane {
       this.stepPending = Math.max(0, this.stepPending - 1);
       this.reveal(this.playback.revealAll());
     }
-    if (this.revealOnePending) { this.revealOnePending = false; this.reveal(this.playback.reveal(1)); }
+    if (this.setupPending) { this.setupPending = false; this.reveal(this.playback.revealContinuation()); this.moreSetup(); }
+    if (this.revealOnePending) { this.revealOnePending = false; this.reveal(this.playback.revealSteps(1)); this.moreSetup(); }
     this.hooks.changed?.();
   }
 
@@ -140,7 +156,8 @@ export class Lane {
     this.hooks.revealed?.();
   }
 
-  tick(rate, dt) { if (this.playback.pending > 0) this.reveal(this.playback.tick(rate, dt)); }
+  /** Reveal what the pace owes: the whole run in `duration` seconds (0: at once), `dt` seconds on. */
+  tick(duration, dt) { if (this.playback.pending > 0) this.reveal(this.playback.tick(duration, dt)); }
 
   /** The planner stopped and every event it sent is shown. */
   get caughtUp() { return this.done && this.playback.pending === 0; }

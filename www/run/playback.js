@@ -13,6 +13,7 @@ import { EventKind, STRIDE } from './events.js';
 import { CellMirror } from '../draw/cell-mirror.js';
 import { DensityMirror } from '../draw/density.js';
 import { REVEAL_PER_FRAME, STORE_CHUNK_RECORDS } from './limits.js';
+import { Pace, StepScanner } from './pace.js';
 
 /**
  * The revealed records, in chunks of STORE_CHUNK_RECORDS (limits.js): growing adds a chunk and
@@ -261,48 +262,81 @@ export class Playback {
   constructor() {
     this.store = new RecordStore();
     this.model = new RunModel();
-    this.queue = [];        // [{data: Float64Array, next: record index}]
-    this.pending = 0;       // records queued, not yet revealed
-    this.nodeCount = 0;     // NODE_ADDED records revealed
-    this.budget = 0;        // fractional records owed by the rate
+    this.scanner = new StepScanner(); // which pushed records start a step (pace.js)
+    this.pace = new Pace();
+    this.clear();
   }
 
   clear() {
     this.store.clear();
     this.model.clear();
-    this.queue = [];
-    this.pending = 0;
-    this.nodeCount = 0;
-    this.budget = 0;
+    this.scanner.clear();
+    this.pace.clear();
+    this.queue = [];        // [{data: Float64Array, starts: Uint8Array, next: record index}]
+    this.pending = 0;       // records queued, not yet revealed
+    this.pendingSteps = 0;  // steps queued (a run of set-up records is one: pace.js)
+    this.steps = 0;         // steps revealed
+    this.nodeCount = 0;     // NODE_ADDED records revealed
   }
 
   push(data) {
     const n = Math.floor(data.length / STRIDE);
     if (n === 0) return;
-    this.queue.push({ data, next: 0 });
+    const { starts, steps } = this.scanner.scan(data, STRIDE);
+    this.queue.push({ data, starts, next: 0 });
     this.pending += n;
+    this.pendingSteps += steps;
   }
 
-  /** Reveal up to `n` records; returns [from, to) as record indices into the store. */
-  reveal(n) {
+  /**
+   * Reveal up to `records` records, stopping before the step after `steps` more steps (records
+   * that continue the step being shown come first, free); returns [from, to) as record indices
+   * into the store.
+   */
+  revealUpTo(records, steps) {
     const from = this.store.length;
-    let left = Math.min(n, this.pending);
+    let left = Math.min(records, this.pending);
+    let taken = 0;
     while (left > 0) {
       const chunk = this.queue[0];
       const size = chunk.data.length / STRIDE;
-      const take = Math.min(left, size - chunk.next);
-      this.store.append(chunk.data, chunk.next, take);
-      for (let i = chunk.next; i < chunk.next + take; i++) {
-        const o = i * STRIDE;
+      let end = chunk.next;
+      const last = Math.min(size, chunk.next + left);
+      for (; end < last; end++) {
+        if (chunk.starts[end]) {
+          if (taken === steps) break;
+          taken++;
+        }
+        const o = end * STRIDE;
         if (chunk.data[o] === EventKind.NODE_ADDED) this.nodeCount++;
         this.model.apply(chunk.data, o);
       }
-      chunk.next += take;
+      const take = end - chunk.next;
+      this.store.append(chunk.data, chunk.next, take);
+      chunk.next = end;
       left -= take;
       this.pending -= take;
       if (chunk.next >= size) this.queue.shift();
+      else if (take === 0 || end < last) break; // the next step is not owed
     }
+    this.steps += taken;
+    this.pendingSteps -= taken;
     return [from, this.store.length];
+  }
+
+  /** Reveal up to `n` records; returns [from, to) as record indices into the store. */
+  reveal(n) { return this.revealUpTo(n, Infinity); }
+
+  /** Reveal the next `n` steps (a run of set-up records is one step). */
+  revealSteps(n) { return this.revealUpTo(Infinity, n); }
+
+  /** Reveal the records that continue the step last shown (a set-up run still arriving). */
+  revealContinuation() { return this.revealUpTo(Infinity, 0); }
+
+  /** Whether the next queued record continues the step last shown. */
+  get continues() {
+    const q = this.queue[0];
+    return !!q && !q.starts[q.next];
   }
 
   revealAll() { return this.reveal(this.pending); }
@@ -313,19 +347,26 @@ export class Playback {
     return {
       records: this.store.bytes,
       trees: this.model.trees.reduce((s, t) => s + t.cap * perNode, 0),
-      queued: this.queue.reduce((s, q) => s + q.data.byteLength, 0),
+      queued: this.queue.reduce((s, q) => s + q.data.byteLength + q.starts.byteLength, 0),
     };
   }
 
   /**
-   * Reveal what `rate` records per second owes after `dt` seconds (Infinity: everything queued),
-   * at most REVEAL_PER_FRAME (limits.js) in one call: the page calls it once a frame.
+   * Reveal what the pace owes after `dt` seconds when the whole run should take `duration`
+   * seconds (0: everything queued), at most REVEAL_PER_FRAME (limits.js) records in one call: the
+   * page calls it once a frame.
    */
-  tick(rate, dt) {
-    if (!Number.isFinite(rate)) { this.budget = 0; return this.reveal(REVEAL_PER_FRAME); }
-    this.budget = Math.min(this.budget + rate * dt, Math.max(1, rate)); // no burst after a stall
-    const n = Math.min(REVEAL_PER_FRAME, Math.floor(this.budget));
-    this.budget -= n;
-    return this.reveal(n);
+  tick(duration, dt) {
+    const n = this.pace.owe(this.pendingSteps, duration, dt);
+    return this.revealUpTo(REVEAL_PER_FRAME, n);
+  }
+
+  /** The pacing plan so far, for tests and the console (window.planarium.pace()). */
+  plan() {
+    const p = this.pace;
+    return {
+      duration: p.duration, clock: p.clock, frames: p.frames, lastSteps: p.lastSteps,
+      steps: this.steps, pendingSteps: this.pendingSteps, records: this.store.length, pending: this.pending,
+    };
   }
 }

@@ -1,7 +1,8 @@
 // One planner run on a canvas, as the playground (main.js), embed.html and <planarium-playground>
 // show it: the controller's table (controller.js), a lane (lane.js: the worker session, the
 // playback, the views), the actions buttons and keys fire (run, pause, step, step back, step one
-// event, reset, cancel), and the animation-frame loop that reveals events at the playback speed.
+// event, reset, cancel), and the animation-frame loop that reveals events at the playback's pace
+// (pace.js: the whole run in so many seconds).
 // The page around it (panels, stats, legend) hooks in; nothing here touches the document.
 //
 // Step back replays: the core is deterministic, so the run is reset and stepped again from the
@@ -13,17 +14,18 @@ import { Lane } from './lane.js';
 export class Player {
   /**
    * `playback`: a Playback; `views`: [View, ...] (the first is the workspace view); `chart`: a
-   * Chart or null; `rate()`: events per second to reveal while running (Infinity: all at once);
+   * Chart or null; `duration()`: seconds the whole run's replay takes while running (0: all at
+   * once; pace.js);
    * `fps()`: robot animation frames per second; `hooks`: {ready, loaded, invalid, error, asv, seed,
    * query, stopped, changed} as lane.js's (the player does the controller's part of error / stopped and
    * the run's bookkeeping), plus `frame(time)` after the views were drawn.
    */
-  /** @param {{playback: any, views: any[], chart?: any, rate?: () => number, fps?: () => number, hooks?: Record<string, Function>}} options */
-  constructor({ playback, views, chart = null, rate = () => Infinity, fps = () => 10, hooks = {} }) {
+  /** @param {{playback: any, views: any[], chart?: any, duration?: () => number, fps?: () => number, hooks?: Record<string, Function>}} options */
+  constructor({ playback, views, chart = null, duration = () => 0, fps = () => 10, hooks = {} }) {
     this.controller = new Controller('loading');
     this.playback = playback;
     this.view = views[0];
-    this.rate = rate;
+    this.duration = duration;
     this.fps = fps;
     this.hooks = hooks;
     this.marks = [];    // per batch the worker sent: [records pushed so far, its iterations]
@@ -251,7 +253,7 @@ export class Player {
   frame(time) {
     const dt = Math.min(0.25, (time - (this.lastFrame || time)) / 1000);
     this.lastFrame = time;
-    if (this.controller.state === 'running' && this.playback.pending > 0) this.lane.tick(this.rate(), dt);
+    if (this.controller.state === 'running' && this.playback.pending > 0) this.lane.tick(this.duration(), dt);
     else if (this.controller.state === 'running') this.maybeFinish();
     this.view.render(time, this.fps());
     this.hooks.frame?.(time);

@@ -4,16 +4,23 @@
 import { EventKind } from '../run/events.js';
 import { shown } from './text.js';
 
-/** Events per second for the playback slider `input` (its maximum: Infinity, all at once). */
-export function speedRate(input) {
+/**
+ * Seconds the whole run's replay takes for the playback slider `input` (0 to its maximum: 60 s
+ * down to 1 s, evenly in the logarithm; its maximum: 0, all at once). Slow, Normal and Fast are
+ * its values 10, 33 and 60: 40, 15 and 5 s (playback.js paces by them: pace.js).
+ */
+export function speedSeconds(input) {
   const v = Number(input.value);
-  return v >= Number(input.max) ? Infinity : Math.round(10 ** (1 + (4 * v) / 100));
+  const max = Number(input.max);
+  if (!(v < max)) return 0;
+  const s = 60 * 60 ** (-Math.max(0, v) / (max - 1));
+  return s >= 10 ? Math.round(s) : Math.round(s * 10) / 10;
 }
 
 /** The playback slider's value in words. */
 export function describeSpeed(input) {
-  const r = speedRate(input);
-  return Number.isFinite(r) ? `${r.toLocaleString('en')} events/s` : 'all at once';
+  const s = speedSeconds(input);
+  return s > 0 ? `whole run in ${s} s` : 'all at once';
 }
 
 /** Robot animation frames per second for the animation slider `input`. */

@@ -22,6 +22,7 @@ import { sceneSvgSteps } from './export-svg.js';
 import { render3d, beside } from './export3d.js';
 import { EXPORT_BATCH, redrawSteps } from '../draw/redraw.js';
 import { shown } from './text.js';
+import { TimeLapse } from './timelapse.js';
 
 /** Thrown when the user cancelled an export in progress. */
 export class ExportCancelled extends Error {
@@ -59,8 +60,14 @@ export const LIMITS = Object.freeze({
  * free space (the obstacles, bounds and run on nothing).
  */
 export class ExportView extends View {
-  constructor(source, transparent = false) {
-    super(document.createElement('canvas'), source.store, source.model);
+  /**
+   * `lapse`: a time-lapse (timelapse.js) whose replay is drawn instead of the source's records; the
+   * source's result is shown once the replay reached its end.
+   */
+  constructor(source, transparent = false, lapse = null) {
+    const run = lapse ? lapse.playback : source;
+    super(document.createElement('canvas'), run.store, run.model);
+    this.lapse = lapse;
     this.source = source;
     this.transparent = transparent;
     this.drawnTo = 0;
@@ -97,7 +104,10 @@ export class ExportView extends View {
     ctx.strokeRect(L.sx(x0), L.sy(y1), (x1 - x0) * L.scale, (y1 - y0) * L.scale);
   }
 
-  /** The source's result and state shown (no drawing). */
+  /** Whether the source shows its result (a time-lapse's view waits for its end). */
+  sourceShowsResult() { return this.source.showResult && (!this.lapse || this.lapse.atEnd); }
+
+  /** The source's result and state shown (no drawing; a time-lapse keeps its own latest sample). */
   copyResult() {
     const s = this.source;
     this.frames = s.frames;
@@ -105,7 +115,7 @@ export class ExportView extends View {
     this.path = s.path;
     this.smoothed = s.smoothed;
     this.preview = s.preview;
-    this.lastSample = s.lastSample;
+    if (!this.lapse) this.lastSample = s.lastSample;
   }
 
   /**
@@ -124,7 +134,7 @@ export class ExportView extends View {
       this.clearRun();
       Object.assign(this.options, s.options);
       this.copyResult();
-      this.showResult = s.showResult;
+      this.showResult = this.sourceShowsResult();
       this.seenMarkers = s.markers;
       // lays out, draws the scene and every record (a later scenario keeps the first box and scale)
       if (!this.box) this.resize(s.box[0], s.box[1], width / s.css[0]); else this.relayout();
@@ -136,7 +146,7 @@ export class ExportView extends View {
       // the source cleared its run (a new run) or redrew it: so do we
       this.clearRun();
       this.copyResult();
-      this.showResult = s.showResult;
+      this.showResult = this.sourceShowsResult();
       this.seenMarkers = s.markers;
       this.redrawTree();
       this.drawnTo = this.store.length;
@@ -147,10 +157,11 @@ export class ExportView extends View {
       this.drawnTo = this.store.length;
     }
     this.copyResult();
-    if (s.showResult && !this.showResult) {
+    const show = this.sourceShowsResult();
+    if (show && !this.showResult) {
       this.showResult = true;
       this.finishRun();
-    } else this.showResult = s.showResult;
+    } else this.showResult = show;
   }
 
   /** Render the picture at `time` (ms) with `animFps` robot frames a second. */
@@ -286,10 +297,10 @@ export function webmType() {
  * resolves to {blob, width, height, note}: the WebM made seekable (webm.js), or as recorded with
  * a note when that failed.
  */
-export async function recordWebm(view, { width, fps = 30, animFps = () => 10, progress = null, cancelled = () => false, view3d = null }) {
+export async function recordWebm(view, { width, fps = 30, animFps = () => 10, progress = null, cancelled = () => false, view3d = null, lapse = null }) {
   const type = webmType();
   if (!type) throw new Error('this browser cannot record WebM (no MediaRecorder)');
-  const ev = new ExportView(view);
+  const ev = new ExportView(view, false, lapse); // lapse: a time-lapse (timelapse.js)
   try {
     ev.follow(width);
     await ev.catchUp({ what: 'The recording', progress, cancelled });
@@ -322,6 +333,7 @@ export async function recordWebm(view, { width, fps = 30, animFps = () => 10, pr
     if (drawing) return; // a redraw in steps is under way: the video holds its last frame
     drawing = true;
     try {
+      lapse?.advance();
       ev.follow(width);
       await ev.catchUp({ what: 'The recording', cancelled: () => stopped });
       ev.draw(performance.now(), animFps());
@@ -375,8 +387,8 @@ export function paletteColours() {
  * (while drawing the run: ExportCancelled; while taking frames: what was taken is kept).
  * Resolves to {blob, width, height, frames}.
  */
-export async function recordGif(view, { width, frames, fps = LIMITS.gif.fps, animFps = () => 10, legend = null, onFrame = null, progress = null, cancelled = () => false }) {
-  const ev = new ExportView(view);
+export async function recordGif(view, { width, frames, fps = LIMITS.gif.fps, animFps = () => 10, legend = null, onFrame = null, progress = null, cancelled = () => false, lapse = null }) {
+  const ev = new ExportView(view, false, lapse); // lapse: a time-lapse, frames not waited for (timelapse.js)
   try {
     ev.follow(width);
     await ev.catchUp({ what: 'The GIF', progress, cancelled });
@@ -385,7 +397,7 @@ export async function recordGif(view, { width, frames, fps = LIMITS.gif.fps, ani
     for (let k = 0; k < frames && !cancelled(); k++) {
       const due = t0 + k * step;
       const wait = due - performance.now();
-      if (wait > 0) await new Promise((r) => setTimeout(r, wait));
+      if (lapse) { lapse.to((k + 1) / frames); await breathe(); } else if (wait > 0) await new Promise((r) => setTimeout(r, wait));
       ev.follow(width);
       if (ev.owed) { // the source redrew its run (a new run): drawn in steps, then the frame
         try { await ev.catchUp({ what: 'The GIF', cancelled }); } catch (e) { if (e instanceof ExportCancelled) break; throw e; }
@@ -430,6 +442,8 @@ export function wireExports({ view, stem, legend = () => [], animFps = () => 10,
     return r;
   };
   const fail = (what, e) => say(`${what} failed: ${e?.message ?? e}`);
+  // GIF and WebM: real time (0: what the page shows, as it plays) or the whole run in so many seconds
+  const lapseSeconds = () => Number($('export-lapse')?.value) || 0;
 
   const pct = (share) => `${Math.floor(share * 100)}%`;
 
@@ -485,6 +499,12 @@ export function wireExports({ view, stem, legend = () => [], animFps = () => 10,
     if (gifBusy) { gifStop = true; return; }
     const w = field('gif-width', LIMITS.gif.min, LIMITS.gif.max, 480, 'GIF width');
     const n = field('gif-frames', LIMITS.gif.frames[0], LIMITS.gif.frames[1], 40, 'GIF frames');
+    const secs = lapseSeconds();
+    let lapse = null;
+    try { lapse = secs ? new TimeLapse(view.store, secs) : null; } catch (e) { fail('GIF', e); return; }
+    // a time-lapse: 10 frames a second, at most the GIF's most frames (fewer a second beyond 15 s)
+    const frames = lapse ? Math.min(LIMITS.gif.frames[1], secs * LIMITS.gif.fps) : n.value;
+    const fps = lapse ? frames / secs : LIMITS.gif.fps;
     gifBusy = true;
     gifStop = false;
     gif.setAttribute('aria-pressed', 'true');
@@ -492,12 +512,13 @@ export function wireExports({ view, stem, legend = () => [], animFps = () => 10,
     try {
       const o = options();
       const r = await recordGif(view, {
-        width: w.value, frames: n.value, animFps, legend: o.legend, cancelled: () => gifStop,
+        width: w.value, frames, fps, lapse, animFps, legend: o.legend, cancelled: () => gifStop,
         progress: (share) => { if (!gifStop) say(`Drawing the run for the GIF: ${pct(share)}… (press Stop GIF to cancel)`); },
-        onFrame: (k) => { gif.textContent = `Stop GIF (${k}/${n.value})`; },
+        onFrame: (k) => { gif.textContent = `Stop GIF (${k}/${frames})`; },
       });
       downloadBlob(r.blob, `${stem()}.gif`);
-      say(`GIF, ${r.width} × ${r.height}, ${r.frames} frames at ${LIMITS.gif.fps} fps, ${(r.blob.size / 1024).toFixed(0)} kB`, w.note, n.note,
+      say(`GIF, ${r.width} × ${r.height}, ${r.frames} frames at ${+fps.toFixed(2)} fps${lapse ? `, the whole run in ${secs} s` : ''}, ${(r.blob.size / 1024).toFixed(0)} kB`,
+        lapse ? '' : n.note,
         o.transparent ? 'a GIF has no transparent background' : '');
     } catch (e) {
       if (e instanceof ExportCancelled) say(`${e.message}: nothing was saved.`); else fail('GIF', e);
@@ -509,10 +530,12 @@ export function wireExports({ view, stem, legend = () => [], animFps = () => 10,
 
   const record = $('record');
   let recording = null, preparing = null; // preparing: {cancel} while the run is drawn before recording
+  let lapseTimer = 0; // a time-lapse stops and saves by itself, a second after the run's end
   record.disabled = !webmType();
   if (!webmType()) record.title = 'This browser cannot record WebM';
   record.addEventListener('click', async () => {
     if (recording) {
+      clearTimeout(lapseTimer);
       const r = recording;
       recording = null;
       record.disabled = true;
@@ -527,6 +550,9 @@ export function wireExports({ view, stem, legend = () => [], animFps = () => 10,
     }
     if (preparing) { preparing.cancel = true; return; }
     const asked = field('video-width', LIMITS.video.min, LIMITS.video.max, 1280, 'Video width');
+    const secs = lapseSeconds();
+    let lapse = null;
+    try { lapse = secs ? new TimeLapse(view.store, secs) : null; } catch (e) { fail('Recording', e); return; }
     const prep = { cancel: false };
     preparing = prep;
     record.textContent = 'Cancel recording';
@@ -536,11 +562,12 @@ export function wireExports({ view, stem, legend = () => [], animFps = () => 10,
       let width = capArea(view, asked.value, LIMITS.video.pixels / (side ? 2 : 1));
       width -= width % 2; // video encoders want even sizes
       recording = await recordWebm(view, {
-        width, animFps, cancelled: () => prep.cancel, view3d: side,
+        width, animFps, cancelled: () => prep.cancel, view3d: side, lapse,
         progress: (share) => { if (!prep.cancel) say(`Drawing the run before recording: ${pct(share)}… (press Cancel recording to stop)`); },
       });
       record.textContent = 'Stop and save';
-      say(`Recording ${recording.width} × ${recording.height}…`, asked.note,
+      if (lapse) lapseTimer = setTimeout(() => { if (recording) record.click(); }, secs * 1000 + 1000);
+      say(`Recording ${recording.width} × ${recording.height}${lapse ? `, the whole run in ${secs} s (it saves by itself)` : ''}…`, asked.note,
         width < asked.value - 1 ? `at most ${(LIMITS.video.pixels / 1e6).toFixed(1)} million pixels` : '');
     } catch (e) {
       record.textContent = 'Record WebM';

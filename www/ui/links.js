@@ -43,7 +43,7 @@ import { shown } from './text.js';
 import { readSeed, blockSeedProblem } from './seed.js';
 import { readCamera, writeCamera } from './camera-link.js';
 
-export const VIEW_DEFAULTS = Object.freeze({ speed: 30, anim: 50, rawPath: false, stepSize: 1 });
+export const VIEW_DEFAULTS = Object.freeze({ speed: 33, anim: 50, rawPath: false, stepSize: 1 });
 export const CONTROLS = Object.freeze(['run', 'pause', 'step', 'back', 'reset', 'speed', 'seed']);
 export const DEFAULT_CONTROLS = Object.freeze(['run', 'pause', 'step', 'back', 'reset']);
 /** Keys that are not planner parameters (a parameter of that name could not be shared). */
