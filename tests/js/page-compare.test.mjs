@@ -293,3 +293,34 @@ test('compare: RRT* against RRT-Connect on the open field: the RRT* lane\'s cost
   const [dashed] = await countColours('a-chart', [PALETTE.chartTarget], 8);
   assert.ok(dashed > 40, `optimum line pixels in lane A's chart: ${dashed}`);
 });
+
+test('compare for a slide: both lanes\' canvases are the same size at 1280 and 1920 px with RRT*\'s chart shown, the chart inside its card, the page\'s width used; picking a scenario keeps both set-ups', async () => {
+  for (const [width, height] of [[1280, 800], [1920, 1080]]) {
+    await page.setViewportSize({ width, height });
+    await openCompare('#scenario=open-field&a=rrt-star&b=rrt-connect%20--range%200.2&seed=1');
+    await setSpeed('max');
+    await page.click('#run');
+    await waitState('finished', 120000);
+    await fx.nextFrames();
+    assert.equal(await page.isVisible('#a-chart'), true, 'RRT*\'s chart is shown');
+    const box = (sel) => page.locator(sel).boundingBox();
+    const [ca, cb, la, lb, chart, lanes] = await Promise.all(['#a-canvas', '#b-canvas', '#a-lane', '#b-lane', '#a-chart-box', '#lanes'].map(box));
+    console.log(`${width}: A canvas ${ca.width}×${ca.height}, B canvas ${cb.width}×${cb.height}, lanes ${lanes.width} px wide`);
+    assert.ok(Math.abs(ca.width - cb.width) <= 2 && Math.abs(ca.height - cb.height) <= 2, `${width}: canvases ${JSON.stringify([ca, cb])}`);
+    assert.ok(Math.abs(la.width - lb.width) <= 2 && Math.abs(la.height - lb.height) <= 2, `${width}: lanes ${JSON.stringify([la, lb])}`);
+    assert.ok(ca.width > 0.25 * width, `${width}: the canvases use the width (${ca.width} px)`);
+    assert.ok(lanes.x + lanes.width > width - 40, `${width}: the lanes reach the page's right edge (${lanes.x + lanes.width})`);
+    assert.ok(chart.x >= la.x && chart.x + chart.width <= la.x + la.width + 0.5 && chart.y >= la.y && chart.y + chart.height <= la.y + la.height + 0.5,
+      `${width}: the chart ${JSON.stringify(chart)} inside its card ${JSON.stringify(la)}`);
+    await page.screenshot({ path: join(shots, `page-compare-${width}.png`) });
+  }
+  // a scenario picked from the menu: both set-ups stay as they were
+  const before = await page.evaluate(() => [window.planarium.config('a'), window.planarium.config('b')]);
+  await page.selectOption('#scenario', 'narrow');
+  await page.waitForFunction(() => document.getElementById('scenario-name').textContent === 'Narrow passage');
+  await waitState('idle');
+  const after = await page.evaluate(() => [window.planarium.config('a'), window.planarium.config('b')]);
+  assert.deepEqual(after.map((c) => [c.planner, c.params]), before.map((c) => [c.planner, c.params]));
+  assert.equal(await page.$eval('#b-planner', (s) => s.value), 'rrt-connect');
+  assert.equal(await page.$eval('#b-param-range', (s) => s.value), '0.2');
+});

@@ -65,6 +65,7 @@ let seed = 1;
 let lastFrame = 0;
 let hashRead = null;     // the promise of reading the hash's state
 const encoded = new Map();
+let keepSetups = false;  // a scenario the user picked or opened: both set-ups are kept, not the scenario's
 
 /** One side of the page: a lane, its panel, its stats, its chart. */
 function makeSide(key) {
@@ -181,8 +182,9 @@ function onLoaded(side, msg) {
     s.view.setScenario(s.loaded.scenario, s.loaded.start, s.loaded.goal);
     s.view3d.setScene(s.loaded.spatial || null, !!s.loaded.caps?.view3d);
     s.panel.setTask(taskOf(scenario));
-    if (applyDefaults) s.panel.apply(scenario.planner);
+    if (applyDefaults && !keepSetups) s.panel.apply(scenario.planner);
   }
+  keepSetups = false;
   if (applyDefaults && blockSeedProblem(scenario.planner?.seed)) {
     ui.seedHint.textContent = `${blockSeedProblem(scenario.planner.seed)}; the seed stays ${seed}.`;
   } else if (applyDefaults && Number.isSafeInteger(scenario.planner?.seed)) {
@@ -484,6 +486,7 @@ ui.scenario.addEventListener('change', () => {
   clearError();
   removeCustom();
   src.clear();
+  keepSetups = true; // the user's set-ups stay: only the scenario (and its seed) changes
   load('builtin', JSON.stringify(b.scenario), { id: b.id, defaults: true });
 });
 
@@ -496,6 +499,7 @@ ui.file.addEventListener('change', async () => {
   try { text = await readChosenFile(file); } catch (e) { showError(e.message); return; }
   markCustom(`File: ${file.name}`);
   src.clear();
+  keepSetups = true;
   load('file', text, { defaults: true, file: file.name });
 });
 
