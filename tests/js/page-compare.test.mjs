@@ -324,3 +324,46 @@ test('compare for a slide: both lanes\' canvases are the same size at 1280 and 1
   assert.equal(await page.$eval('#b-planner', (s) => s.value), 'rrt-connect');
   assert.equal(await page.$eval('#b-param-range', (s) => s.value), '0.2');
 });
+
+test('compare: Export for a slide gives one PNG of both lanes, each under its title and above its key numbers', async () => {
+  await openCompare('#scenario=open-field&a=rrt-star&b=rrt-connect&seed=1');
+  await setSpeed('max');
+  await page.click('#run');
+  await waitState('finished', 120000);
+  await fx.nextFrames();
+  const [d] = await Promise.all([page.waitForEvent('download'), page.click('#export-lanes')]);
+  assert.equal(d.suggestedFilename(), 'planarium-compare.png');
+  const bytes = readFileSync(await d.path());
+  writeFileSync(join(shots, 'page-compare-export.png'), bytes);
+  const [wa, wb] = await page.evaluate(() => ['a-canvas', 'b-canvas'].map((id) => document.getElementById(id).width));
+  const seen = await page.evaluate(async ({ b64, path }) => {
+    const img = await createImageBitmap(new Blob([Uint8Array.from(atob(b64), (ch) => ch.charCodeAt(0))], { type: 'image/png' }));
+    const c = new OffscreenCanvas(img.width, img.height);
+    const ctx = c.getContext('2d');
+    ctx.drawImage(img, 0, 0);
+    const rgb = [1, 3, 5].map((i) => parseInt(path.slice(i, i + 2), 16));
+    const count = (x0, y0, x1, y1, test) => {
+      const px = ctx.getImageData(x0, y0, x1 - x0, y1 - y0).data;
+      let n = 0;
+      for (let i = 0; i < px.length; i += 4) if (test(px[i], px[i + 1], px[i + 2])) n++;
+      return n;
+    };
+    const dark = (r, g, b) => r < 80 && g < 80 && b < 80;
+    const isPath = (r, g, b) => Math.abs(r - rgb[0]) <= 6 && Math.abs(g - rgb[1]) <= 6 && Math.abs(b - rgb[2]) <= 6;
+    const half = img.width / 2;
+    return {
+      w: img.width, h: img.height,
+      titles: [count(0, 0, half, 40, dark), count(half, 0, img.width, 40, dark)],
+      paths: [count(0, 40, half, img.height - 30, isPath), count(half, 40, img.width, img.height - 30, isPath)],
+      numbers: [count(0, img.height - 44, half, img.height, dark), count(half, img.height - 44, img.width, img.height, dark)],
+    };
+  }, { b64: bytes.toString('base64'), path: PALETTE.smoothPath });
+  console.log(`export ${seen.w}×${seen.h}: titles ${seen.titles}, paths ${seen.paths}, numbers ${seen.numbers}`);
+  assert.equal(seen.w, 12 + wa + 12 + wb + 12, 'both lanes side by side at their size');
+  for (const k of [0, 1]) {
+    assert.ok(seen.titles[k] > 150, `lane ${'AB'[k]}'s title: ${seen.titles[k]}`);
+    assert.ok(seen.paths[k] > 100, `lane ${'AB'[k]}'s path: ${seen.paths[k]}`);
+    assert.ok(seen.numbers[k] > 100, `lane ${'AB'[k]}'s numbers: ${seen.numbers[k]}`);
+  }
+  assert.match(await page.textContent('#export-status'), /Saved planarium-compare\.png/);
+});
