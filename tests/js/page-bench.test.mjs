@@ -556,6 +556,8 @@ test('every plot downloads as a PNG twice its size, its title drawn at the top, 
         drawn: [...d.querySelectorAll('#title text')].map((t) => t.textContent).join(' '),
         key: [...d.querySelectorAll('#key text')].map((t) => Number(t.getAttribute('y'))),
         dataTop: Math.min(...nums(d.getElementById('data'))),
+        band: d.querySelectorAll('#data path[fill-opacity="0.22"]').length,
+        median: d.querySelectorAll('#data path[stroke-width="2.5"]').length,
       };
     }, svg);
     assert.equal(doc.error, false);
@@ -564,6 +566,8 @@ test('every plot downloads as a PNG twice its size, its title drawn at the top, 
     if (id === 'plot-curves') {
       assert.equal(doc.key.length, 1, 'RRT*\'s key');
       assert.ok(Math.max(...doc.key) < doc.dataTop, `the key (baseline ${doc.key}) is above the data (top ${doc.dataTop})`);
+      assert.equal(doc.band, 1, 'RRT*\'s interquartile band');
+      assert.equal(doc.median, 1, 'RRT*\'s median line');
     }
   }
 });

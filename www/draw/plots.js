@@ -390,9 +390,10 @@ export function hitDot(hits, x, y, radius = 8) {
  * @param {string} xUnit
  * @param {string} yUnit
  * @param {{label: string, lines: number[][][]}[]} series
- * @param {{scale?: 'auto' | 'linear' | 'log'}} [options]
+ * @param {{scale?: 'auto' | 'linear' | 'log', band?: boolean}} [options] `band`: the runs' lines
+ *   faint, and over them each series' median and its interquartile band (medianBand)
  */
-export function stepLines(canvas, title, xUnit, yUnit, series, { scale = 'auto' } = {}) {
+export function stepLines(canvas, title, xUnit, yUnit, series, { scale = 'auto', band = false } = {}) {
   const g = setup(canvas, title);
   const { ctx } = g;
   const pts = series.flatMap((s) => s.lines.flat());
@@ -402,8 +403,8 @@ export function stepLines(canvas, title, xUnit, yUnit, series, { scale = 'auto' 
   ctx.beginLayer?.('data');
   series.forEach((s, i) => {
     ctx.strokeStyle = SERIES[i % SERIES.length];
-    ctx.globalAlpha = 0.55;
-    ctx.lineWidth = 1.5;
+    ctx.globalAlpha = band ? 0.2 : 0.55;
+    ctx.lineWidth = band ? 1 : 1.5;
     ctx.setLineDash(i % 2 ? [5, 3] : []);
     for (const line of s.lines) {
       ctx.beginPath();
@@ -416,6 +417,59 @@ export function stepLines(canvas, title, xUnit, yUnit, series, { scale = 'auto' 
   });
   ctx.globalAlpha = 1;
   ctx.setLineDash([]);
+  if (band) {
+    // Planner Arena's form: per series the median over its runs and the band between the quartiles
+    const [t0, t1] = extent(pts.map((p) => p[0]));
+    const grid = Array.from({ length: 121 }, (_, k) => t0 + (k / 120) * (t1 - t0));
+    series.forEach((s, i) => {
+      const m = medianBand(s.lines, grid);
+      if (!m.length) return;
+      ctx.fillStyle = SERIES[i % SERIES.length];
+      ctx.globalAlpha = 0.22;
+      ctx.beginPath();
+      m.forEach(([t, , q1], k) => (k ? ctx.lineTo(x(t), y(q1)) : ctx.moveTo(x(t), y(q1))));
+      for (let k = m.length - 1; k >= 0; k--) ctx.lineTo(x(m[k][0]), y(m[k][3]));
+      ctx.closePath();
+      ctx.fill();
+      ctx.globalAlpha = 1;
+      ctx.strokeStyle = SERIES[i % SERIES.length];
+      ctx.lineWidth = 2.5;
+      ctx.setLineDash(i % 2 ? [6, 3] : []);
+      ctx.beginPath();
+      m.forEach(([t, med], k) => (k ? ctx.lineTo(x(t), y(med)) : ctx.moveTo(x(t), y(med))));
+      ctx.stroke();
+    });
+    ctx.setLineDash([]);
+  }
   ctx.endLayer?.();
   seriesKey(ctx, g, series, ['—', '┄']);
+}
+
+/**
+ * The median and quartiles over runs of a best-cost-against-time step function, at each time of
+ * `grid`: [[t, median, q1, q3], ...] (`lines` [[[t, cost], ...] per run], each run's cost at t its
+ * last point at or before t). A run not solved by t counts as an infinite cost, as Planner Arena
+ * counts it; a time where the median is still infinite is left out, and q3 is held at the largest
+ * finite cost there.
+ * @param {number[][][]} lines @param {number[]} grid @returns {number[][]}
+ */
+export function medianBand(lines, grid) {
+  const out = [];
+  for (const t of grid) {
+    const v = lines.map((line) => {
+      let c = Infinity;
+      for (const [tt, cc] of line) { if (tt <= t) c = cc; else break; }
+      return c;
+    }).sort((a, b) => a - b);
+    const at = (q) => {
+      const pos = q * (v.length - 1), lo = Math.floor(pos), hi = Math.ceil(pos);
+      return v[lo] === v[hi] ? v[lo] : v[lo] + (v[hi] - v[lo]) * (pos - lo);
+    };
+    const median = at(0.5);
+    if (!Number.isFinite(median)) continue;
+    const finite = v.filter(Number.isFinite);
+    const q3 = at(0.75);
+    out.push([t, median, at(0.25), Number.isFinite(q3) ? q3 : finite[finite.length - 1]]);
+  }
+  return out;
 }

@@ -255,7 +255,7 @@ function drawPlots(r) {
   dots = plotOn($('plot-cost-time'), (c) => scatter(c, `Cost against time, a dot per solved run (${n})`, 'time (ms)', 'cost', dotSeries, opt));
   const anytime = r.setups.map((s, k) => ({ label: s.label, lines: curves[k] ?? [] })).filter((s) => s.lines.length);
   $('plot-curves').hidden = !anytime.length;
-  if (anytime.length) plotOn($('plot-curves'), (c) => stepLines(c, 'RRT*: best cost against time (one line per run)', 'time (ms)', 'cost', anytime, opt));
+  if (anytime.length) plotOn($('plot-curves'), (c) => stepLines(c, 'RRT*: best cost against time, median and interquartile band (a faint line per run)', 'time (ms)', 'cost', anytime, { ...opt, band: true }));
 }
 
 // A click on a run's dot: that run (scenario, set-up, seed) in the playground
