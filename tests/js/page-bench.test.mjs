@@ -54,10 +54,19 @@ function readOmplLog(text) {
     const nruns = parseInt(next(), 10);
     const runs = [];
     for (let k = 0; k < nruns; k++) runs.push(next().split(';').map((s) => s.trim()));
-    // Progress properties (none, or a block), then the planner's closing ".".
-    while (i < lines.length && lines[i].trim() !== '.') i++;
-    next();
-    planners.push({ name, props, runs });
+    // Progress properties (none, or a block as readBenchmarkLog reads it), then the planner's closing ".".
+    let progress = null;
+    if (lines[i].trim() !== '.') {
+      const np = parseInt(next(), 10);
+      const names = [];
+      for (let k = 0; k < np; k++) names.push(next().trim());
+      const pruns = parseInt(next(), 10);
+      const samples = [];
+      for (let k = 0; k < pruns; k++) samples.push(next().split(';').slice(0, -1).map((x) => x.split(',').slice(0, -1).map(Number)));
+      progress = { names, runs: samples };
+    }
+    assert.equal(next().trim(), '.', `${name}: the closing "."`);
+    planners.push({ name, props, runs, progress });
   }
   return { header, planners };
 }
@@ -182,6 +191,19 @@ test('RRT*: the best cost against time, one falling line per run, ending at the 
   const costs = report.setups[0].rows.map((r) => r.cost).sort((a, b) => a - b);
   assert.deepEqual(finals, costs);
   assert.equal(await fx.page.$eval('#plot-curves', (c) => c.hidden), false);
+  // the same progress in the OMPL log, as Planner Arena reads it: time (s) and best cost per run, in the runs' order
+  const log = readOmplLog(await fx.page.evaluate(() => window.planarium.exported('ompl')));
+  assert.deepEqual(log.planners[0].progress.names, ['time REAL', 'best cost REAL']);
+  assert.equal(log.planners[0].progress.runs.length, 3);
+  log.planners[0].progress.runs.forEach((samples, k) => {
+    const row = report.setups[0].rows[k];
+    assert.ok(samples.length >= 1, `run ${k}: samples`);
+    assert.equal(samples.at(-1)[1], row.cost, `run ${k} (seed ${row.seed}): the last best cost is the run's cost`);
+    for (let m = 1; m < samples.length; m++) assert.ok(samples[m][0] >= samples[m - 1][0] && samples[m][1] <= samples[m - 1][1]);
+    const line = curves[0].find((l) => l.at(-1)[1] === row.cost);
+    assert.deepEqual(samples, line.map(([ms, c]) => [ms / 1000, c]), `run ${k}: the curve in seconds`);
+  });
+  assert.equal(log.planners[1].progress, null, 'plain RRT has no progress');
 });
 
 // Reproduction 8 of issue 13: a benchmark cancelled part-way reports the seeds that really ran

@@ -18,6 +18,7 @@ import { applyPageLimits } from '../run/limits.js';
 import { boxPlot, successBars, scatter, stepLines, hitDot } from '../draw/plots.js';
 import { downloadText } from '../draw/stage.js';
 import { plotOn, addPlotDownloads } from '../ui/plot-downloads.js';
+import { withProgress } from '../run/ompl-progress.js';
 import { resultRows, fillTable, toMarkdown, toLatex } from '../ui/results-table.js';
 import { el } from '../ui/dom.js';
 import { runPool } from '../ui/seed-pool.js';
@@ -51,6 +52,7 @@ let registry = null;
 let pool = null;  // the benchmark's workers (ui/seed-pool.js): {stop}
 let job = null;   // the benchmark being run: {text, scenario, setups, runs, rows, curves, done, total, started}
 let report = null; // the last finished (or cancelled) report
+let runProgress = []; // per set-up, seed → RRT*'s best cost against time, for the OMPL log's progress
 let curves = [];   // per set-up, RRT*'s best cost against time per run: [[[ms, cost], ...], ...]
 let asked = null;  // the last report's {runs: seeds asked per set-up, total: runs asked, done: runs done}
 // The scenario and why it was chosen (a built-in, a file, a link): run/scenario-source.js, as the
@@ -86,7 +88,7 @@ function onRunAnswer(j, msg) {
   if (!job) return;
   if (msg.type === 'done') {
     job.rows[j.k].push(rowOf(j.seed, msg.result));
-    if (msg.curve) job.curves[j.k].push(msg.curve);
+    if (msg.curve) { job.curves[j.k].push(msg.curve); job.progress[j.k].set(j.seed, msg.curve); }
   } else {
     // A bad set-up or a crash: stop, say which run, keep the page usable.
     const what = msg.type === 'crashed' ? 'the core crashed' : 'the run was refused';
@@ -134,7 +136,7 @@ function start() {
   for (let seed = 1; seed <= runs; seed++) {
     setups.forEach((setup, k) => jobs.push({ k, setup, seed, text: b.text, planner: setup.planner, params: setup.params }));
   }
-  job = { text: b.text, scenario: b, setups, runs, rows: setups.map(() => []), curves: setups.map(() => []), done: 0, total: jobs.length, started: performance.now() };
+  job = { text: b.text, scenario: b, setups, runs, rows: setups.map(() => []), curves: setups.map(() => []), progress: setups.map(() => new Map()), done: 0, total: jobs.length, started: performance.now() };
   pool?.stop();
   const size = Math.max(1, Math.min(64, Math.floor(Number(ui.workers.value) || navigator.hardwareConcurrency || 2)));
   report = null;
@@ -165,6 +167,7 @@ function finish(problem) {
   };
   asked = { runs: j.runs, total: j.total, done: j.done };
   curves = j.curves;
+  runProgress = j.progress;
   const secs = ((performance.now() - j.started) / 1000).toFixed(1);
   if (problem) showError(problem);
   ui.status.textContent = problem ? `${j.done} of ${j.total} runs done` : `${j.total} runs in ${secs} s`;
@@ -298,10 +301,16 @@ function onPlotMove(e) {
   e.currentTarget.classList.toggle('pointing', !!hitDot(dots, e.clientX - box.left, e.clientY - box.top));
 }
 
+/** The report in `format`; the OMPL log with RRT*'s progress (run/ompl-progress.js). */
+function exported(format) {
+  const text = benchExport(JSON.stringify(report), format);
+  return format === 'ompl' ? withProgress(text, report, runProgress) : text;
+}
+
 function exportAs(format, ext, kind = 'bench') {
   if (!report) return;
   try {
-    downloadText(benchExport(JSON.stringify(report), format), `${report.scenario_id}-${kind}.${ext}`);
+    downloadText(exported(format), `${report.scenario_id}-${kind}.${ext}`);
   } catch (e) {
     showError(String(e.message ?? e));
   }
@@ -524,7 +533,7 @@ Object.defineProperty(window, 'planarium', { value: Object.freeze({
   state: () => document.body.dataset.state,
   report: () => report && JSON.parse(JSON.stringify(report)),
   curves: () => JSON.parse(JSON.stringify(curves)),
-  exported: (format) => report && benchExport(JSON.stringify(report), format),
+  exported: (format) => report && exported(format),
   scenario: () => current && { id: current.id, name: current.name, builtin: !!current.source.id },
   setups: () => { try { return JSON.parse(parseSetups(ui.setups.value)); } catch { return null; } },
   dots: () => dots.map((d) => ({ ...d, seed: dotRows[d.series]?.[d.index]?.seed })),
