@@ -292,6 +292,35 @@ test('compare: RRT* against RRT-Connect on the open field: the RRT* lane\'s cost
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
   const [dashed] = await countColours('a-chart', [PALETTE.chartTarget], 8);
   assert.ok(dashed > 40, `optimum line pixels in lane A's chart: ${dashed}`);
+  // the chart downloads: a PNG twice its size with the title on top, an SVG with the full title
+  const box = await page.locator('#a-chart').boundingBox();
+  const [d] = await Promise.all([page.waitForEvent('download'), page.click('#a-chart-png')]);
+  assert.equal(d.suggestedFilename(), 'planarium-compare-a-chart.png');
+  const bytes = readFileSync(await d.path());
+  writeFileSync(join(shots, 'page-compare-chart-download.png'), bytes);
+  const seen = await page.evaluate(async (b64) => {
+    const img = await createImageBitmap(new Blob([Uint8Array.from(atob(b64), (ch) => ch.charCodeAt(0))], { type: 'image/png' }));
+    const c = new OffscreenCanvas(img.width, img.height);
+    const ctx = c.getContext('2d');
+    ctx.drawImage(img, 0, 0);
+    const px = ctx.getImageData(0, 0, img.width, 40).data;
+    let dark = 0;
+    for (let i = 0; i < px.length; i += 4) if (px[i] < 80 && px[i + 1] < 80 && px[i + 2] < 80 && px[i + 3] > 200) dark++;
+    return { w: img.width, h: img.height, dark };
+  }, bytes.toString('base64'));
+  assert.equal(seen.w, Math.round(box.width * 2));
+  assert.ok(seen.h >= Math.round((box.height + 22) * 2), `the chart and its title's lines: ${seen.h}`);
+  assert.ok(seen.dark > 150, `the title's dark pixels: ${seen.dark}`);
+  const [s] = await Promise.all([page.waitForEvent('download'), page.click('#a-chart-svg')]);
+  const svg = readFileSync(await s.path(), 'utf8');
+  const title = `A · ${await page.textContent('#a-title')}: Best cost against iterations`;
+  const doc = await page.evaluate((text) => {
+    const x = new DOMParser().parseFromString(text, 'image/svg+xml');
+    return { title: x.querySelector('svg > title')?.textContent, drawn: [...x.querySelectorAll('#title text')].map((t) => t.textContent).join(' '), paths: x.querySelectorAll('path').length };
+  }, svg);
+  assert.equal(doc.title, title);
+  assert.equal(doc.drawn, title, 'the title drawn in full');
+  assert.ok(doc.paths > 3, `the chart drawn in the SVG: ${doc.paths} paths`);
 });
 
 test('compare for a slide: both lanes\' canvases are the same size at 1280 and 1920 px with RRT*\'s chart shown, the chart inside its card, the page\'s width used; picking a scenario keeps both set-ups', async () => {

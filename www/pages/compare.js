@@ -26,7 +26,7 @@ import { applyPageLimits } from '../run/limits.js';
 import init, { parse_setups as parseSetups } from '../pkg/planarium.js';
 import { setupFor } from '../ui/links.js';
 import { fillSeedsTable } from '../ui/seeds-table.js';
-import { wireCompareExport, KEY_NUMBERS } from '../ui/compare-export.js';
+import { wireCompareExport, wireChartDownloads, KEY_NUMBERS } from '../ui/compare-export.js';
 import { runPool } from '../ui/seed-pool.js';
 import { setupLine, readPageState, checkSetups, pageHash, playgroundLink, readChosenFile, differingParams } from '../ui/setups.js';
 import { shown } from '../ui/text.js';
@@ -111,6 +111,10 @@ function makeSide(key) {
     $(`${key}-canvas`).hidden = view3d.active;
     (view3d.active ? view3d : view).resize(Math.max(40, r.width), Math.max(40, r.height), window.devicePixelRatio || 1);
   };
+  wireChartDownloads({
+    chart, title: () => `${key.toUpperCase()} · ${side.title.textContent}: ${side.chartTitle.textContent}`, now: () => side.lane.iterationNow,
+    png: $(`${key}-chart-png`), svg: $(`${key}-chart-svg`), name: `planarium-compare-${key}-chart`, onError: showError,
+  });
   new ResizeObserver(fit).observe(stage);
   fit();
   return side;

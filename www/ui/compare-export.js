@@ -4,6 +4,7 @@
 // rows); the numbers wrap to as many lines as they need. Text is drawn with fillText from textContent: no HTML.
 
 import { downloadBlob } from '../draw/stage.js';
+import { SvgContext, svgNode } from '../draw/svg-context.js';
 
 /** The key numbers under each lane: [label, the stats list's element id suffix]. */
 export const KEY_NUMBERS = [['status', 'status'], ['time (ms)', 'stat-time'], ['nodes', 'stat-nodes'], ['checks', 'stat-checks'], ['cost', 'stat-cost'], ['smoothed', 'stat-smoothed-cost']];
@@ -91,5 +92,33 @@ export function wireCompareExport({ button, status, lanes, onError }) {
       downloadBlob(b, 'planarium-compare.png');
       status.textContent = `Saved planarium-compare.png, ${out.width} × ${out.height} px.`;
     }, 'image/png');
+  });
+}
+
+/**
+ * Wire a lane's chart downloads: "PNG" (twice the chart's size) and "SVG", each with `title()`
+ * (the lane and the chart's caption) above the chart; `now()` the iteration the lane has reached.
+ * @param {{chart: any, title: () => string, now: () => number, png: HTMLButtonElement, svg: HTMLButtonElement, name: string, onError: (m: string) => void}} o
+ */
+export function wireChartDownloads({ chart, title, now, png, svg, name, onError }) {
+  png.addEventListener('click', () => {
+    const { width, height } = chart.sizeFor(2, title());
+    const out = document.createElement('canvas');
+    out.width = width;
+    out.height = height;
+    chart.drawFor(out.getContext('2d'), title(), 2, now());
+    out.toBlob((b) => (b ? downloadBlob(b, `${name}.png`) : onError(`${title()}: the PNG could not be made`)), 'image/png');
+  });
+  svg.addEventListener('click', () => {
+    const { width, height } = chart.sizeFor(1, title());
+    const root = svgNode('svg', { xmlns: 'http://www.w3.org/2000/svg', width, height, viewBox: `0 0 ${width} ${height}` });
+    svgNode('title', {}, root).textContent = title();
+    const defs = svgNode('defs', {}, root);
+    const ctx = new SvgContext(root, defs, { idPrefix: `${name}-clip` });
+    chart.drawFor(ctx, title(), 1, now());
+    ctx.finish();
+    if (!defs.firstChild) defs.remove();
+    const text = `<?xml version="1.0" encoding="UTF-8"?>\n${new XMLSerializer().serializeToString(root)}\n`;
+    downloadBlob(new Blob([text], { type: 'image/svg+xml' }), `${name}.svg`);
   });
 }
