@@ -6,10 +6,11 @@
 
 import { el } from './dom.js';
 
-/** A number for the table: whole numbers as they are, else 4 significant digits; '—' for none. */
+/** A number for the table (as the course table's): whole numbers as they are, from 100 up one decimal, else 4 significant digits; '—' for none. */
 export function num(v) {
   if (v === null || v === undefined || !Number.isFinite(v)) return '—';
-  return Number.isInteger(v) ? String(v) : Number(v.toPrecision(4)).toString();
+  if (Number.isInteger(v)) return String(v);
+  return Math.abs(v) >= 100 ? v.toFixed(1) : Number(v.toPrecision(4)).toString();
 }
 
 /** Mean ± std of a summary ({mean, std, n}), '—' without values. */
