@@ -292,4 +292,107 @@ test('compare: RRT* against RRT-Connect on the open field: the RRT* lane\'s cost
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
   const [dashed] = await countColours('a-chart', [PALETTE.chartTarget], 8);
   assert.ok(dashed > 40, `optimum line pixels in lane A's chart: ${dashed}`);
+  // the chart downloads: a PNG twice its size with the title on top, an SVG with the full title
+  const box = await page.locator('#a-chart').boundingBox();
+  const [d] = await Promise.all([page.waitForEvent('download'), page.click('#a-chart-png')]);
+  assert.equal(d.suggestedFilename(), 'planarium-compare-a-chart.png');
+  const bytes = readFileSync(await d.path());
+  writeFileSync(join(shots, 'page-compare-chart-download.png'), bytes);
+  const seen = await page.evaluate(async (b64) => {
+    const img = await createImageBitmap(new Blob([Uint8Array.from(atob(b64), (ch) => ch.charCodeAt(0))], { type: 'image/png' }));
+    const c = new OffscreenCanvas(img.width, img.height);
+    const ctx = c.getContext('2d');
+    ctx.drawImage(img, 0, 0);
+    const px = ctx.getImageData(0, 0, img.width, 40).data;
+    let dark = 0;
+    for (let i = 0; i < px.length; i += 4) if (px[i] < 80 && px[i + 1] < 80 && px[i + 2] < 80 && px[i + 3] > 200) dark++;
+    return { w: img.width, h: img.height, dark };
+  }, bytes.toString('base64'));
+  assert.equal(seen.w, Math.round(box.width * 2));
+  assert.ok(seen.h >= Math.round((box.height + 22) * 2), `the chart and its title's lines: ${seen.h}`);
+  assert.ok(seen.dark > 150, `the title's dark pixels: ${seen.dark}`);
+  const [s] = await Promise.all([page.waitForEvent('download'), page.click('#a-chart-svg')]);
+  const svg = readFileSync(await s.path(), 'utf8');
+  const title = `A · ${await page.textContent('#a-title')}: Best cost against iterations`;
+  const doc = await page.evaluate((text) => {
+    const x = new DOMParser().parseFromString(text, 'image/svg+xml');
+    return { title: x.querySelector('svg > title')?.textContent, drawn: [...x.querySelectorAll('#title text')].map((t) => t.textContent).join(' '), paths: x.querySelectorAll('path').length };
+  }, svg);
+  assert.equal(doc.title, title);
+  assert.equal(doc.drawn, title, 'the title drawn in full');
+  assert.ok(doc.paths > 3, `the chart drawn in the SVG: ${doc.paths} paths`);
+});
+
+test('compare for a slide: both lanes\' canvases are the same size at 1280 and 1920 px with RRT*\'s chart shown, the chart inside its card, the page\'s width used; picking a scenario keeps both set-ups', async () => {
+  for (const [width, height] of [[1280, 800], [1920, 1080]]) {
+    await page.setViewportSize({ width, height });
+    await openCompare('#scenario=open-field&a=rrt-star&b=rrt-connect%20--range%200.2&seed=1');
+    await setSpeed('max');
+    await page.click('#run');
+    await waitState('finished', 120000);
+    await fx.nextFrames();
+    assert.equal(await page.isVisible('#a-chart'), true, 'RRT*\'s chart is shown');
+    const box = (sel) => page.locator(sel).boundingBox();
+    const [ca, cb, la, lb, chart, lanes] = await Promise.all(['#a-canvas', '#b-canvas', '#a-lane', '#b-lane', '#a-chart-box', '#lanes'].map(box));
+    console.log(`${width}: A canvas ${ca.width}×${ca.height}, B canvas ${cb.width}×${cb.height}, lanes ${lanes.width} px wide`);
+    assert.ok(Math.abs(ca.width - cb.width) <= 2 && Math.abs(ca.height - cb.height) <= 2, `${width}: canvases ${JSON.stringify([ca, cb])}`);
+    assert.ok(Math.abs(la.width - lb.width) <= 2 && Math.abs(la.height - lb.height) <= 2, `${width}: lanes ${JSON.stringify([la, lb])}`);
+    assert.ok(ca.width > 0.25 * width, `${width}: the canvases use the width (${ca.width} px)`);
+    assert.ok(lanes.x + lanes.width > width - 40, `${width}: the lanes reach the page's right edge (${lanes.x + lanes.width})`);
+    assert.ok(chart.x >= la.x && chart.x + chart.width <= la.x + la.width + 0.5 && chart.y >= la.y && chart.y + chart.height <= la.y + la.height + 0.5,
+      `${width}: the chart ${JSON.stringify(chart)} inside its card ${JSON.stringify(la)}`);
+    await page.screenshot({ path: join(shots, `page-compare-${width}.png`) });
+  }
+  // a scenario picked from the menu: both set-ups stay as they were
+  const before = await page.evaluate(() => [window.planarium.config('a'), window.planarium.config('b')]);
+  await page.selectOption('#scenario', 'narrow');
+  await page.waitForFunction(() => document.getElementById('scenario-name').textContent === 'Narrow passage');
+  await waitState('idle');
+  const after = await page.evaluate(() => [window.planarium.config('a'), window.planarium.config('b')]);
+  assert.deepEqual(after.map((c) => [c.planner, c.params]), before.map((c) => [c.planner, c.params]));
+  assert.equal(await page.$eval('#b-planner', (s) => s.value), 'rrt-connect');
+  assert.equal(await page.$eval('#b-param-range', (s) => s.value), '0.2');
+});
+
+test('compare: Export for a slide gives one PNG of both lanes, each under its title and above its key numbers', async () => {
+  await openCompare('#scenario=open-field&a=rrt-star&b=rrt-connect&seed=1');
+  await setSpeed('max');
+  await page.click('#run');
+  await waitState('finished', 120000);
+  await fx.nextFrames();
+  const [d] = await Promise.all([page.waitForEvent('download'), page.click('#export-lanes')]);
+  assert.equal(d.suggestedFilename(), 'planarium-compare.png');
+  const bytes = readFileSync(await d.path());
+  writeFileSync(join(shots, 'page-compare-export.png'), bytes);
+  const [wa, wb] = await page.evaluate(() => ['a-canvas', 'b-canvas'].map((id) => document.getElementById(id).width));
+  const seen = await page.evaluate(async ({ b64, path }) => {
+    const img = await createImageBitmap(new Blob([Uint8Array.from(atob(b64), (ch) => ch.charCodeAt(0))], { type: 'image/png' }));
+    const c = new OffscreenCanvas(img.width, img.height);
+    const ctx = c.getContext('2d');
+    ctx.drawImage(img, 0, 0);
+    const rgb = [1, 3, 5].map((i) => parseInt(path.slice(i, i + 2), 16));
+    const count = (x0, y0, x1, y1, test) => {
+      const px = ctx.getImageData(x0, y0, x1 - x0, y1 - y0).data;
+      let n = 0;
+      for (let i = 0; i < px.length; i += 4) if (test(px[i], px[i + 1], px[i + 2])) n++;
+      return n;
+    };
+    const dark = (r, g, b) => r < 80 && g < 80 && b < 80;
+    const isPath = (r, g, b) => Math.abs(r - rgb[0]) <= 6 && Math.abs(g - rgb[1]) <= 6 && Math.abs(b - rgb[2]) <= 6;
+    const half = img.width / 2;
+    return {
+      w: img.width, h: img.height,
+      titles: [count(0, 0, half, 40, dark), count(half, 0, img.width, 40, dark)],
+      paths: [count(0, 40, half, img.height - 30, isPath), count(half, 40, img.width, img.height - 30, isPath)],
+      numbers: [count(0, img.height - 44, half, img.height, dark), count(half, img.height - 44, img.width, img.height, dark)],
+    };
+  }, { b64: bytes.toString('base64'), path: PALETTE.smoothPath });
+  console.log(`export ${seen.w}×${seen.h}: titles ${seen.titles}, paths ${seen.paths}, numbers ${seen.numbers}`);
+  assert.equal(seen.w, 12 + wa + 12 + wb + 12, 'both lanes side by side at their size');
+  for (const k of [0, 1]) {
+    assert.ok(seen.titles[k] > 150, `lane ${'AB'[k]}'s title: ${seen.titles[k]}`);
+    assert.ok(seen.paths[k] > 100, `lane ${'AB'[k]}'s path: ${seen.paths[k]}`);
+    assert.ok(seen.numbers[k] > 100, `lane ${'AB'[k]}'s numbers: ${seen.numbers[k]}`);
+  }
+  assert.match(await page.textContent('#export-status'), /Saved planarium-compare\.png/);
 });

@@ -25,6 +25,10 @@ export function formatValue(v) {
   return String(Number(v.toPrecision(3)));
 }
 
+/** A downloaded chart's title: its font at `scale`, its line height (css px). */
+const TITLE_FONT = (scale) => `600 ${Math.round(12 * scale)}px system-ui, sans-serif`;
+const TITLE_LINE = 15;
+
 export class Chart {
   /** `canvas`: the chart's canvas (sized by CSS); `model`: a RunModel; `palette`: palette.js PALETTE. */
   constructor(canvas, model, palette) {
@@ -66,6 +70,59 @@ export class Chart {
     this.drawn = key;
     if (this.canvas.width !== w || this.canvas.height !== h) { this.canvas.width = w; this.canvas.height = h; }
     this.draw(data, now, w, h, dpr);
+  }
+
+  /** `title` broken into lines that fit the chart's width (css px), for a download. */
+  titleLines(title) {
+    const width = Math.max(10, this.canvas.getBoundingClientRect().width) - 12;
+    const m = document.createElement('canvas').getContext('2d');
+    m.font = TITLE_FONT(1);
+    const lines = [];
+    for (const word of title.split(/\s+/).filter(Boolean)) {
+      const next = lines.length ? `${lines[lines.length - 1]} ${word}` : word;
+      if (lines.length && m.measureText(next).width <= width) lines[lines.length - 1] = next;
+      else lines.push(word);
+    }
+    return lines;
+  }
+
+  /** A download's size, device px, at `scale` × the chart's size on the page, `title`'s lines above. */
+  sizeFor(scale, title) {
+    const rect = this.canvas.getBoundingClientRect();
+    const room = this.titleLines(title).length * TITLE_LINE + 7;
+    return { width: Math.round(Math.max(10, rect.width) * scale), height: Math.round((Math.max(10, rect.height) + room) * scale), room };
+  }
+
+  /**
+   * The chart as it stands, for a download, on `ctx` (a canvas's of sizeFor(scale, title), or
+   * svg-context.js's recorder): `title` in full above the plot (wrapped), on white, `scale` × its
+   * size on the page.
+   * @param {any} ctx @param {string} title @param {number} scale @param {number} [now]
+   */
+  drawFor(ctx, title, scale, now = 0) {
+    const { width: w, height: full, room } = this.sizeFor(scale, title);
+    const h = full - Math.round(room * scale);
+    const onCanvas = typeof CanvasRenderingContext2D !== 'undefined' && ctx instanceof CanvasRenderingContext2D;
+    const white = () => { ctx.fillStyle = '#ffffff'; ctx.fillRect(0, 0, w, full); };
+    if (!onCanvas) white(); // an SVG: the background first (its clearRect draws nothing)
+    ctx.fillStyle = '#222222';
+    ctx.font = TITLE_FONT(scale);
+    ctx.textAlign = 'left';
+    ctx.textBaseline = 'alphabetic';
+    ctx.beginLayer?.('title');
+    this.titleLines(title).forEach((line, i) => ctx.fillText(line, 6 * scale, (15 + i * TITLE_LINE) * scale));
+    ctx.endLayer?.();
+    const own = this.ctx;
+    this.ctx = ctx;
+    ctx.save();
+    ctx.translate(0, Math.round(room * scale));
+    try { this.draw(this.series(), now, w, h, scale); } finally { ctx.restore(); this.ctx = own; }
+    if (onCanvas) { // the plot's clearRect left it transparent: white behind everything
+      ctx.save();
+      ctx.globalCompositeOperation = 'destination-over';
+      white();
+      ctx.restore();
+    }
   }
 
   draw(data, now, w, h, dpr) {

@@ -2,7 +2,8 @@
 // against time (one dot per solved run). Colours are the Okabe–Ito set, distinguishable with the
 // common colour-blindness types; set-ups also differ by position and label, never colour alone.
 // Labels never overlap: too wide for their slot, they are tilted and cut with an ellipsis (the
-// canvas's title, a tooltip, and its aria-label hold them in full); titles are cut to the canvas.
+// canvas's title, a tooltip, and its aria-label hold them in full); titles wrap (up to three lines on
+// the page, in full in a download: drawInto), and keys sit above the data, never on it.
 // Axes whose data span decades (largest / smallest > LOG_SPAN, all above 0) are drawn on a log
 // scale with labelled decade ticks, unless the caller asks for `scale: 'linear'`; the scale chosen
 // is kept in the canvas's data-y-scale / data-x-scale. scatter() returns the dots' screen
@@ -12,21 +13,66 @@ import { quartiles } from '../run/summary.js';
 
 export const SERIES = ['#0072b2', '#e69f00', '#009e73', '#cc79a7', '#56b4e9', '#d55e00', '#f0e442', '#000000'];
 
+/** Where the next plot is drawn instead of its canvas (a download): {ctx, w, h, scale}, else null. */
+let surface = null;
+
+/**
+ * Call `draw` (a plot function's call) so that it draws on `into` — {ctx, w, h, scale}: a
+ * download's canvas, or an SVG recorder (svg-context.js) — instead of its canvas; returns what
+ * `draw` returns.
+ * @template T @param {{ctx: any, w: number, h: number, scale: number}} into @param {() => T} draw @returns {T}
+ */
+export function drawInto(into, draw) {
+  surface = into;
+  try { return draw(); } finally { surface = null; }
+}
+
+const TITLE_FONT = '600 12px system-ui, sans-serif';
+const TITLE_LINE = 15;
+
+/** `text` broken at spaces into lines of at most `maxW` px (a word wider than that is cut). */
+export function wrapText(ctx, text, maxW) {
+  const lines = [];
+  let line = '';
+  for (const word of text.split(/\s+/).filter(Boolean)) {
+    const next = line ? `${line} ${word}` : word;
+    if (!line || ctx.measureText(next).width <= maxW) line = next;
+    else { lines.push(line); line = word; }
+  }
+  if (line) lines.push(line);
+  return lines.map((l) => fitText(ctx, l, maxW));
+}
+
 function setup(canvas, title) {
-  const dpr = window.devicePixelRatio || 1;
-  const w = canvas.clientWidth || 320, h = canvas.clientHeight || 200;
-  canvas.width = Math.round(w * dpr);
-  canvas.height = Math.round(h * dpr);
-  const ctx = canvas.getContext('2d');
-  ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+  let ctx, w, h;
+  if (surface) {
+    ({ ctx, w, h } = surface);
+    ctx.setTransform(surface.scale, 0, 0, surface.scale, 0, 0);
+  } else {
+    const dpr = window.devicePixelRatio || 1;
+    w = canvas.clientWidth || 320;
+    h = canvas.clientHeight || 200;
+    canvas.width = Math.round(w * dpr);
+    canvas.height = Math.round(h * dpr);
+    ctx = canvas.getContext('2d');
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+  }
   ctx.clearRect(0, 0, w, h);
   ctx.fillStyle = '#ffffff';
   ctx.fillRect(0, 0, w, h);
   ctx.fillStyle = '#222';
-  ctx.font = '600 12px system-ui, sans-serif';
-  ctx.fillText(fitText(ctx, title, w - 16), 8, 16); // the whole title is the canvas's aria-label
+  ctx.font = TITLE_FONT;
+  // the whole title, on as many lines as it needs (at most 3 on the page; a download's in full)
+  const all = wrapText(ctx, title, w - 16);
+  const lines = surface ? all : all.slice(0, 3);
+  if (lines.length < all.length) lines[lines.length - 1] = fitText(ctx, `${lines[lines.length - 1]} ${all[lines.length]}`, w - 16);
+  ctx.textAlign = 'left';
+  ctx.beginLayer?.('title');
+  lines.forEach((l, i) => ctx.fillText(l, 8, 16 + i * TITLE_LINE));
+  ctx.endLayer?.();
   canvas.setAttribute('aria-label', title);
-  return { canvas, ctx, w, h, pad: { l: 64, r: 12, t: 28, b: 36 } };
+  canvas.dataset.title = title;
+  return { canvas, ctx, w, h, pad: { l: 64, r: 12, t: 28 + (lines.length - 1) * TITLE_LINE, b: 36 } };
 }
 
 /** Largest over smallest value beyond which an axis is drawn on a log scale. */
@@ -269,14 +315,25 @@ function xyAxes(ctx, g, pts, xUnit, yUnit, scale) {
   return { x, y };
 }
 
-/** The key: each series' label after its mark (`marks` alternate, so colour is not alone). */
+const KEY_LINE = 13;
+
+/** Room for the key above the plot area (three series to a row): call before the axes. */
+function keyRoom(g, series) {
+  g.keyTop = g.pad.t - 6;
+  g.pad.t += Math.ceil(series.length / 3) * KEY_LINE + 4;
+}
+
+/** The key, above the data (keyRoom): each series' label after its mark (`marks` alternate, so colour is not alone). */
 function seriesKey(ctx, g, series, marks) {
   ctx.textAlign = 'left';
+  ctx.font = LABEL_FONT;
+  ctx.beginLayer?.('key');
   const col = (g.w - g.pad.l - g.pad.r - 4) / 3; // three to a row, each cut to its column
   series.forEach((s, i) => {
     ctx.fillStyle = SERIES[i % SERIES.length];
-    ctx.fillText(fitText(ctx, `${marks[i % 2]} ${s.label}`, col - 6), g.pad.l + 4 + (i % 3) * col, g.pad.t + 12 + Math.floor(i / 3) * 13);
+    ctx.fillText(fitText(ctx, `${marks[i % 2]} ${s.label}`, col - 6), g.pad.l + 4 + (i % 3) * col, g.keyTop + 12 + Math.floor(i / 3) * KEY_LINE);
   });
+  ctx.endLayer?.();
 }
 
 /**
@@ -296,7 +353,9 @@ export function scatter(canvas, title, xUnit, yUnit, series, { scale = 'auto' } 
   const { ctx } = g;
   const pts = series.flatMap((s) => s.points);
   if (!pts.length) { ctx.fillText('no solved runs', g.pad.l, g.h / 2); return []; }
+  keyRoom(g, series);
   const { x, y } = xyAxes(ctx, g, pts, xUnit, yUnit, scale);
+  ctx.beginLayer?.('data');
   canvas.title = series.map((s, i) => `${['●', '■'][i % 2]} ${s.label}`).join('\n');
   const hits = [];
   series.forEach((s, i) => {
@@ -308,6 +367,7 @@ export function scatter(canvas, title, xUnit, yUnit, series, { scale = 'auto' } 
       hits.push({ x: x(t), y: y(c), series: i, index: k });
     });
   });
+  ctx.endLayer?.();
   seriesKey(ctx, g, series, ['●', '■']);
   return hits;
 }
@@ -330,18 +390,21 @@ export function hitDot(hits, x, y, radius = 8) {
  * @param {string} xUnit
  * @param {string} yUnit
  * @param {{label: string, lines: number[][][]}[]} series
- * @param {{scale?: 'auto' | 'linear' | 'log'}} [options]
+ * @param {{scale?: 'auto' | 'linear' | 'log', band?: boolean}} [options] `band`: the runs' lines
+ *   faint, and over them each series' median and its interquartile band (medianBand)
  */
-export function stepLines(canvas, title, xUnit, yUnit, series, { scale = 'auto' } = {}) {
+export function stepLines(canvas, title, xUnit, yUnit, series, { scale = 'auto', band = false } = {}) {
   const g = setup(canvas, title);
   const { ctx } = g;
   const pts = series.flatMap((s) => s.lines.flat());
   if (!pts.length) { ctx.fillText('no data', g.pad.l, g.h / 2); return; }
+  keyRoom(g, series);
   const { x, y } = xyAxes(ctx, g, pts, xUnit, yUnit, scale);
+  ctx.beginLayer?.('data');
   series.forEach((s, i) => {
     ctx.strokeStyle = SERIES[i % SERIES.length];
-    ctx.globalAlpha = 0.55;
-    ctx.lineWidth = 1.5;
+    ctx.globalAlpha = band ? 0.2 : 0.55;
+    ctx.lineWidth = band ? 1 : 1.5;
     ctx.setLineDash(i % 2 ? [5, 3] : []);
     for (const line of s.lines) {
       ctx.beginPath();
@@ -354,5 +417,59 @@ export function stepLines(canvas, title, xUnit, yUnit, series, { scale = 'auto' 
   });
   ctx.globalAlpha = 1;
   ctx.setLineDash([]);
+  if (band) {
+    // Planner Arena's form: per series the median over its runs and the band between the quartiles
+    const [t0, t1] = extent(pts.map((p) => p[0]));
+    const grid = Array.from({ length: 121 }, (_, k) => t0 + (k / 120) * (t1 - t0));
+    series.forEach((s, i) => {
+      const m = medianBand(s.lines, grid);
+      if (!m.length) return;
+      ctx.fillStyle = SERIES[i % SERIES.length];
+      ctx.globalAlpha = 0.22;
+      ctx.beginPath();
+      m.forEach(([t, , q1], k) => (k ? ctx.lineTo(x(t), y(q1)) : ctx.moveTo(x(t), y(q1))));
+      for (let k = m.length - 1; k >= 0; k--) ctx.lineTo(x(m[k][0]), y(m[k][3]));
+      ctx.closePath();
+      ctx.fill();
+      ctx.globalAlpha = 1;
+      ctx.strokeStyle = SERIES[i % SERIES.length];
+      ctx.lineWidth = 2.5;
+      ctx.setLineDash(i % 2 ? [6, 3] : []);
+      ctx.beginPath();
+      m.forEach(([t, med], k) => (k ? ctx.lineTo(x(t), y(med)) : ctx.moveTo(x(t), y(med))));
+      ctx.stroke();
+    });
+    ctx.setLineDash([]);
+  }
+  ctx.endLayer?.();
   seriesKey(ctx, g, series, ['—', '┄']);
+}
+
+/**
+ * The median and quartiles over runs of a best-cost-against-time step function, at each time of
+ * `grid`: [[t, median, q1, q3], ...] (`lines` [[[t, cost], ...] per run], each run's cost at t its
+ * last point at or before t). A run not solved by t counts as an infinite cost, as Planner Arena
+ * counts it; a time where the median is still infinite is left out, and q3 is held at the largest
+ * finite cost there.
+ * @param {number[][][]} lines @param {number[]} grid @returns {number[][]}
+ */
+export function medianBand(lines, grid) {
+  const out = [];
+  for (const t of grid) {
+    const v = lines.map((line) => {
+      let c = Infinity;
+      for (const [tt, cc] of line) { if (tt <= t) c = cc; else break; }
+      return c;
+    }).sort((a, b) => a - b);
+    const at = (q) => {
+      const pos = q * (v.length - 1), lo = Math.floor(pos), hi = Math.ceil(pos);
+      return v[lo] === v[hi] ? v[lo] : v[lo] + (v[hi] - v[lo]) * (pos - lo);
+    };
+    const median = at(0.5);
+    if (!Number.isFinite(median)) continue;
+    const finite = v.filter(Number.isFinite);
+    const q3 = at(0.75);
+    out.push([t, median, at(0.25), Number.isFinite(q3) ? q3 : finite[finite.length - 1]]);
+  }
+  return out;
 }

@@ -17,6 +17,9 @@ import { setupFor, configOf } from '../ui/links.js';
 import { applyPageLimits } from '../run/limits.js';
 import { boxPlot, successBars, scatter, stepLines, hitDot } from '../draw/plots.js';
 import { downloadText } from '../draw/stage.js';
+import { plotOn, addPlotDownloads } from '../ui/plot-downloads.js';
+import { withProgress } from '../run/ompl-progress.js';
+import { resultRows, fillTable, toMarkdown, toLatex } from '../ui/results-table.js';
 import { el } from '../ui/dom.js';
 import { runPool } from '../ui/seed-pool.js';
 import { setupLine, setupLines, readPageState, wholeIn, checkSetups, coreError, pageHash, playgroundLink, readChosenFile, differingParams, MAX_SETUPS } from '../ui/setups.js';
@@ -34,7 +37,7 @@ const ui = {
   scenario: $('scenario'), setups: $('setups'), runs: $('runs'), workers: $('workers'),
   run: $('bench-run'), cancel: $('bench-cancel'), progress: $('bench-progress'), status: $('bench-status'),
   error: $('bench-error'), table: $('bench-table'), caption: $('bench-caption'), plots: $('plots'),
-  csv: $('export-csv'), json: $('export-json'), ompl: $('export-ompl'), course: $('export-course'), courseTable: $('course-table'), file: $('file'), list: $('setup-list'),
+  csv: $('export-csv'), json: $('export-json'), ompl: $('export-ompl'), course: $('export-course'), courseTable: $('course-table'), copyBar: $('copy-bar'), copyMd: $('copy-md'), copyTex: $('copy-tex'), copyStatus: $('copy-status'), file: $('file'), list: $('setup-list'),
   buildLabel: $('build-label'), buildPanel: $('build-panel'), add: $('add-setup'), buildNote: $('build-note'),
   advanced: $('advanced'), logAxes: $('log-axes'), plotOptions: $('plot-options'), pop: $('run-pop'),
 };
@@ -42,11 +45,14 @@ const DEFAULT_SETUPS = 'rrt-connect\nrrt';
 const DEFAULT_RUNS = 20;
 const MAX_RUNS = 10000;
 
+/** @type {{head: string[], rows: string[][], caption?: string} | null} the results table shown, for its copies */
+let tableText = null;
 let builtins = [];
 let registry = null;
 let pool = null;  // the benchmark's workers (ui/seed-pool.js): {stop}
 let job = null;   // the benchmark being run: {text, scenario, setups, runs, rows, curves, done, total, started}
 let report = null; // the last finished (or cancelled) report
+let runProgress = []; // per set-up, seed → RRT*'s best cost against time, for the OMPL log's progress
 let curves = [];   // per set-up, RRT*'s best cost against time per run: [[[ms, cost], ...], ...]
 let asked = null;  // the last report's {runs: seeds asked per set-up, total: runs asked, done: runs done}
 // The scenario and why it was chosen (a built-in, a file, a link): run/scenario-source.js, as the
@@ -82,7 +88,7 @@ function onRunAnswer(j, msg) {
   if (!job) return;
   if (msg.type === 'done') {
     job.rows[j.k].push(rowOf(j.seed, msg.result));
-    if (msg.curve) job.curves[j.k].push(msg.curve);
+    if (msg.curve) { job.curves[j.k].push(msg.curve); job.progress[j.k].set(j.seed, msg.curve); }
   } else {
     // A bad set-up or a crash: stop, say which run, keep the page usable.
     const what = msg.type === 'crashed' ? 'the core crashed' : 'the run was refused';
@@ -130,7 +136,7 @@ function start() {
   for (let seed = 1; seed <= runs; seed++) {
     setups.forEach((setup, k) => jobs.push({ k, setup, seed, text: b.text, planner: setup.planner, params: setup.params }));
   }
-  job = { text: b.text, scenario: b, setups, runs, rows: setups.map(() => []), curves: setups.map(() => []), done: 0, total: jobs.length, started: performance.now() };
+  job = { text: b.text, scenario: b, setups, runs, rows: setups.map(() => []), curves: setups.map(() => []), progress: setups.map(() => new Map()), done: 0, total: jobs.length, started: performance.now() };
   pool?.stop();
   const size = Math.max(1, Math.min(64, Math.floor(Number(ui.workers.value) || navigator.hardwareConcurrency || 2)));
   report = null;
@@ -161,6 +167,7 @@ function finish(problem) {
   };
   asked = { runs: j.runs, total: j.total, done: j.done };
   curves = j.curves;
+  runProgress = j.progress;
   const secs = ((performance.now() - j.started) / 1000).toFixed(1);
   if (problem) showError(problem);
   ui.status.textContent = problem ? `${j.done} of ${j.total} runs done` : `${j.total} runs in ${secs} s`;
@@ -202,20 +209,8 @@ function seedsRun(r) {
 /** The table in the courses' form and the plots, from the core's summaries. */
 function show(r) {
   const full = JSON.parse(benchExport(JSON.stringify(r), 'json'));
-  const body = ui.table.tBodies[0];
-  body.replaceChildren(...full.setups.map((s) => {
-    const m = s.summary;
-    const tr = document.createElement('tr');
-    const cells = [s.label, `${(100 * m.success_rate).toFixed(0)}% (${m.solved}/${m.runs})`, num(m.time_ms.mean), num(m.time_ms.std),
-      num(m.time_ms.median), num(m.nodes.median), num(m.checks.median), num(m.cost.median), num(m.smoothed_cost.median)];
-    cells.forEach((c, i) => {
-      const td = document.createElement(i ? 'td' : 'th');
-      if (!i) td.scope = 'row';
-      td.textContent = c;
-      tr.append(td);
-    });
-    return tr;
-  }));
+  tableText = resultRows(full.setups);
+  fillTable(ui.table, tableText);
   // report 001's table: solved, avgT, stdT, avgNodes, avgQueries (means over all runs, as the CLI's)
   ui.courseTable.tBodies[0].replaceChildren(...full.setups.map((s) => {
     const m = s.summary;
@@ -231,8 +226,11 @@ function show(r) {
   ui.courseTable.hidden = false;
   const ran = seedsRun(r);
   const partial = asked && asked.done < asked.total ? ` (stopped after ${asked.done} of ${asked.total} runs)` : '';
-  ui.caption.textContent = shown(`${r.scenario}: ${ran}${partial}; medians over all runs, costs over solved runs`);
+  ui.caption.textContent = shown(`${r.scenario}: ${ran}${partial}; means ± standard deviations and medians over all runs, costs over solved runs`);
+  tableText.caption = ui.caption.textContent;
   ui.table.hidden = false;
+  ui.copyBar.hidden = false;
+  ui.copyStatus.textContent = '';
   ui.plots.hidden = false;
   ui.plotOptions.hidden = false;
   drawPlots(r);
@@ -244,18 +242,23 @@ function drawPlots(r) {
   const opt = { scale: ui.logAxes.checked ? 'auto' : 'linear' };
   closePop();
   const groups = (f, solvedOnly = false) => r.setups.map((s) => ({ label: s.label, values: s.rows.filter((x) => !solvedOnly || x.solved).map(f) }));
-  successBars($('plot-success'), `Success (${runsShort(r)})`, r.setups.map((s) => ({ label: s.label, solved: s.rows.filter((x) => x.solved).length, runs: s.rows.length })));
+  const bars = r.setups.map((s) => ({ label: s.label, solved: s.rows.filter((x) => x.solved).length, runs: s.rows.length }));
+  plotOn($('plot-success'), (c) => successBars(c, `Success (${runsShort(r)})`, bars));
   const n = runsShort(r);
-  boxPlot($('plot-time'), `Planning time (${n})`, 'ms', groups((x) => x.time_ms), opt);
-  boxPlot($('plot-nodes'), `Nodes (${n})`, 'nodes', groups((x) => x.nodes), opt);
-  boxPlot($('plot-checks'), `State checks (${n})`, 'checks', groups((x) => x.checks), opt);
-  boxPlot($('plot-cost'), `Path cost, solved (${n})`, 'cost', groups((x) => x.cost, true), opt);
+  const box = (id, title, unit, f, solvedOnly = false) => {
+    const g = groups(f, solvedOnly);
+    plotOn($(id), (c) => boxPlot(c, title, unit, g, opt));
+  };
+  box('plot-time', `Planning time (${n})`, 'ms', (x) => x.time_ms);
+  box('plot-nodes', `Nodes (${n})`, 'nodes', (x) => x.nodes);
+  box('plot-checks', `State checks (${n})`, 'checks', (x) => x.checks);
+  box('plot-cost', `Path cost, solved (${n})`, 'cost', (x) => x.cost, true);
   dotRows = r.setups.map((s) => s.rows.filter((x) => x.solved));
-  dots = scatter($('plot-cost-time'), `Cost against time, a dot per solved run (${n}); click a dot to open its run`, 'time (ms)', 'cost',
-    r.setups.map((s, k) => ({ label: s.label, points: dotRows[k].map((x) => [x.time_ms, x.cost]) })), opt);
+  const dotSeries = r.setups.map((s, k) => ({ label: s.label, points: dotRows[k].map((x) => [x.time_ms, x.cost]) }));
+  dots = plotOn($('plot-cost-time'), (c) => scatter(c, `Cost against time, a dot per solved run (${n})`, 'time (ms)', 'cost', dotSeries, opt));
   const anytime = r.setups.map((s, k) => ({ label: s.label, lines: curves[k] ?? [] })).filter((s) => s.lines.length);
   $('plot-curves').hidden = !anytime.length;
-  if (anytime.length) stepLines($('plot-curves'), "RRT*: best cost against time (one line per run)", 'time (ms)', 'cost', anytime, opt);
+  if (anytime.length) plotOn($('plot-curves'), (c) => stepLines(c, 'RRT*: best cost against time, median and interquartile band (a faint line per run)', 'time (ms)', 'cost', anytime, { ...opt, band: true }));
 }
 
 // A click on a run's dot: that run (scenario, set-up, seed) in the playground
@@ -298,10 +301,16 @@ function onPlotMove(e) {
   e.currentTarget.classList.toggle('pointing', !!hitDot(dots, e.clientX - box.left, e.clientY - box.top));
 }
 
+/** The report in `format`; the OMPL log with RRT*'s progress (run/ompl-progress.js). */
+function exported(format) {
+  const text = benchExport(JSON.stringify(report), format);
+  return format === 'ompl' ? withProgress(text, report, runProgress) : text;
+}
+
 function exportAs(format, ext, kind = 'bench') {
   if (!report) return;
   try {
-    downloadText(benchExport(JSON.stringify(report), format), `${report.scenario_id}-${kind}.${ext}`);
+    downloadText(exported(format), `${report.scenario_id}-${kind}.${ext}`);
   } catch (e) {
     showError(String(e.message ?? e));
   }
@@ -496,6 +505,22 @@ ui.file.addEventListener('change', async () => {
   writeHash();
 });
 ui.logAxes.addEventListener('change', () => { if (report) drawPlots(report); });
+addPlotDownloads([...ui.plots.querySelectorAll('canvas.plot')], showError);
+
+// The results table for a report: Markdown or LaTeX on the clipboard
+async function copyTable(as, what) {
+  if (!tableText) return;
+  const text = as(tableText, tableText.caption);
+  try {
+    await navigator.clipboard.writeText(text);
+    ui.copyStatus.textContent = `Copied as ${what}.`;
+  } catch (e) {
+    ui.copyStatus.textContent = '';
+    showError(`The table could not be copied as ${what}: ${e?.message ?? e}`);
+  }
+}
+ui.copyMd.addEventListener('click', () => copyTable(toMarkdown, 'Markdown'));
+ui.copyTex.addEventListener('click', () => copyTable(toLatex, 'LaTeX'));
 $('plot-cost-time').addEventListener('click', onPlotClick);
 $('plot-cost-time').addEventListener('mousemove', onPlotMove);
 document.addEventListener('keydown', (e) => { if (e.key === 'Escape' && !ui.pop.hidden) closePop(); });
@@ -508,7 +533,7 @@ Object.defineProperty(window, 'planarium', { value: Object.freeze({
   state: () => document.body.dataset.state,
   report: () => report && JSON.parse(JSON.stringify(report)),
   curves: () => JSON.parse(JSON.stringify(curves)),
-  exported: (format) => report && benchExport(JSON.stringify(report), format),
+  exported: (format) => report && exported(format),
   scenario: () => current && { id: current.id, name: current.name, builtin: !!current.source.id },
   setups: () => { try { return JSON.parse(parseSetups(ui.setups.value)); } catch { return null; } },
   dots: () => dots.map((d) => ({ ...d, seed: dotRows[d.series]?.[d.index]?.seed })),

@@ -25,8 +25,8 @@ import { chartKind, speedSeconds, animFps, describeSpeed, modelSummary, fillScen
 import { applyPageLimits } from '../run/limits.js';
 import init, { parse_setups as parseSetups } from '../pkg/planarium.js';
 import { setupFor } from '../ui/links.js';
-import { summarise } from '../run/summary.js';
-import { el } from '../ui/dom.js';
+import { fillSeedsTable } from '../ui/seeds-table.js';
+import { wireCompareExport, wireChartDownloads, KEY_NUMBERS } from '../ui/compare-export.js';
 import { runPool } from '../ui/seed-pool.js';
 import { setupLine, readPageState, checkSetups, pageHash, playgroundLink, readChosenFile, differingParams } from '../ui/setups.js';
 import { shown } from '../ui/text.js';
@@ -65,6 +65,7 @@ let seed = 1;
 let lastFrame = 0;
 let hashRead = null;     // the promise of reading the hash's state
 const encoded = new Map();
+let keepSetups = false;  // a scenario the user picked or opened: both set-ups are kept, not the scenario's
 
 /** One side of the page: a lane, its panel, its stats, its chart. */
 function makeSide(key) {
@@ -110,6 +111,10 @@ function makeSide(key) {
     $(`${key}-canvas`).hidden = view3d.active;
     (view3d.active ? view3d : view).resize(Math.max(40, r.width), Math.max(40, r.height), window.devicePixelRatio || 1);
   };
+  wireChartDownloads({
+    chart, title: () => `${key.toUpperCase()} · ${side.title.textContent}: ${side.chartTitle.textContent}`, now: () => side.lane.iterationNow,
+    png: $(`${key}-chart-png`), svg: $(`${key}-chart-svg`), name: `planarium-compare-${key}-chart`, onError: showError,
+  });
   new ResizeObserver(fit).observe(stage);
   fit();
   return side;
@@ -181,8 +186,9 @@ function onLoaded(side, msg) {
     s.view.setScenario(s.loaded.scenario, s.loaded.start, s.loaded.goal);
     s.view3d.setScene(s.loaded.spatial || null, !!s.loaded.caps?.view3d);
     s.panel.setTask(taskOf(scenario));
-    if (applyDefaults) s.panel.apply(scenario.planner);
+    if (applyDefaults && !keepSetups) s.panel.apply(scenario.planner);
   }
+  keepSetups = false;
   if (applyDefaults && blockSeedProblem(scenario.planner?.seed)) {
     ui.seedHint.textContent = `${blockSeedProblem(scenario.planner.seed)}; the seed stays ${seed}.`;
   } else if (applyDefaults && Number.isSafeInteger(scenario.planner?.seed)) {
@@ -338,49 +344,14 @@ function stopSeeds(why) {
   syncSeedButtons();
 }
 
-/** A number for the table: whole numbers as they are, else 4 significant digits. */
-function num(v) {
-  if (v === null || !Number.isFinite(v)) return '—';
-  return Number.isInteger(v) ? String(v) : Number(v.toPrecision(4)).toString();
-}
-
 function finishSeeds() {
   const j = seedJob;
   j.pool?.stop();
   seedJob = null;
   ui.seedsProgress.hidden = true;
   syncSeedButtons();
-  // medians of time, nodes and checks over every run, of the path's length over the solved ones
-  const per = j.rows.map((rows) => {
-    const s = summarise(rows.map((r) => ({ ...r, length: r.cost })), { overAll: ['time_ms', 'nodes', 'checks'], overSolved: ['length'] });
-    return { runs: s.runs, solved: s.solved, success: s.success, ...s.medians };
-  });
-  // the better set-up per metric: higher success, lower medians; none on a tie or without values
-  /** @type {Array<[string, string, (p: any) => string, number]>} key, label, shown as, sign (1: higher is better) */
-  const METRICS = [
-    ['success', 'success', (p) => `${Math.round(100 * p.success)}% (${p.solved}/${p.runs})`, 1],
-    ['time_ms', 'time (ms)', (p) => num(p.time_ms), -1],
-    ['nodes', 'nodes', (p) => num(p.nodes), -1],
-    ['checks', 'checks', (p) => num(p.checks), -1],
-    ['length', 'path length (solved)', (p) => num(p.length), -1],
-  ];
-  const better = {};
-  for (const [key, , , sign] of METRICS) {
-    const [a, b] = per.map((p) => p[key]);
-    better[key] = a === null || b === null ? (a === null && b === null ? null : a === null ? 'b' : 'a')
-      : a === b ? null : (sign * (a - b) > 0 ? 'a' : 'b');
-  }
+  const { per, better } = fillSeedsTable(ui.seedsTable, j.rows);
   seedSummary = { first: j.first, last: j.first + SEEDS - 1, lines: j.lines, a: per[0], b: per[1], better, rows: j.rows };
-  ui.seedsTable.tBodies[0].replaceChildren(...METRICS.map(([key, label, show]) => {
-    const tr = el('tr', {}, el('th', { scope: 'row', text: label }));
-    per.forEach((p, i) => {
-      const mark = better[key] === 'ab'[i];
-      const td = el('td', { text: `${show(p)}${mark ? ' ★' : ''}`, className: mark ? 'better' : '' });
-      if (mark) td.title = `Set-up ${'AB'[i]} is better here`;
-      tr.append(td);
-    });
-    return tr;
-  }));
   ui.seedsCaption.textContent = `Seeds ${j.first} … ${j.first + SEEDS - 1}; ★ the better set-up`;
   ui.seedsTable.hidden = false;
   ui.seedsStatus.textContent = `${j.total} runs done`;
@@ -484,6 +455,7 @@ ui.scenario.addEventListener('change', () => {
   clearError();
   removeCustom();
   src.clear();
+  keepSetups = true; // the user's set-ups stay: only the scenario (and its seed) changes
   load('builtin', JSON.stringify(b.scenario), { id: b.id, defaults: true });
 });
 
@@ -496,6 +468,7 @@ ui.file.addEventListener('change', async () => {
   try { text = await readChosenFile(file); } catch (e) { showError(e.message); return; }
   markCustom(`File: ${file.name}`);
   src.clear();
+  keepSetups = true;
   load('file', text, { defaults: true, file: file.name });
 });
 
@@ -504,6 +477,15 @@ ui.file.addEventListener('change', async () => {
 window.addEventListener('hashchange', () => location.reload());
 
 ui.runSeeds.addEventListener('click', runSeeds);
+
+// Export for a slide: both lanes in one PNG, with their titles and key numbers
+wireCompareExport({
+  button: $('export-lanes'), status: $('export-status'), onError: showError,
+  lanes: () => sides.map((s) => ({
+    key: s.key, title: s.title.textContent, canvas: $(`${s.key}-${s.view3d.active ? 'view3d' : 'canvas'}`),
+    numbers: KEY_NUMBERS.map(([label, id]) => [label, $(`${s.key}-${id}`)?.textContent ?? '']),
+  })),
+});
 ui.seedsCancel.addEventListener('click', () => stopSeeds('Cancelled.'));
 
 // A phone: the lanes as tabs A / B
