@@ -481,8 +481,10 @@ function drawMinimum(ctx, L, p, goal, last) {
   });
   const w = ctx.measureText(label).width;
   const spots = [[x - w / 2, y + r + gap + lh / 2], [x - w / 2, y - r - gap - lh / 2], [x - r - gap - w, y], [x + r + gap, y]];
-  const inside = ([tx, ty]) => tx >= 0 && tx + w <= L.width && ty - lh / 2 >= 0 && ty + lh / 2 <= L.height;
-  const clear = ([tx, ty]) => keepOff.every(([a, b, c, d]) => tx + w < a || tx > c || ty + lh / 2 < b || ty - lh / 2 > d);
+  /** @param {number[]} s */
+  const inside = (s) => s[0] >= 0 && s[0] + w <= L.width && s[1] - lh / 2 >= 0 && s[1] + lh / 2 <= L.height;
+  /** @param {number[]} s */
+  const clear = (s) => keepOff.every(([a, b, c, d]) => s[0] + w < a || s[0] > c || s[1] + lh / 2 < b || s[1] - lh / 2 > d);
   const [tx, ty] = spots.find((s) => inside(s) && clear(s)) || spots.find(clear) || spots[0];
   for (const t of [...texts, { text: label, tx, ty, color: st.color }]) {
     ctx.lineWidth = L.px(3);
