@@ -400,8 +400,8 @@ export class Explainer {
         break;
       case K.MINIMUM:
         this.begin(`local minimum at ${pt(x, y)}: U = ${num(px)}, ${num(py)} from the goal`);
-        if (Number.isFinite(c0) && Number.isFinite(pc0)) {
-          const pull = Math.sqrt(c0 * c0 + c1 * c1), push = Math.sqrt(pc0 * pc0 + pc1 * pc1);
+        const pull = Math.sqrt(c0 * c0 + c1 * c1), push = Math.sqrt(pc0 * pc0 + pc1 * pc1);
+        if (pull > 0 && push > 0) { // the core's forces there (see EventKind::Minimum)
           this.then(`pull ${num(pull)} and push ${num(push)} cancel here: the goal pulls the robot in, the wall pushes it back, and it stops getting closer`);
         }
         A.collision = [x, y];
