@@ -402,7 +402,7 @@ export class Explainer {
         this.begin(`local minimum at ${pt(x, y)}: U = ${num(px)}, ${num(py)} from the goal`);
         const pull = Math.sqrt(c0 * c0 + c1 * c1), push = Math.sqrt(pc0 * pc0 + pc1 * pc1);
         if (pull > 0 && push > 0) { // the core's forces there (see EventKind::Minimum)
-          this.then(`pull ${num(pull)} and push ${num(push)} cancel here: the goal pulls the robot in, the wall pushes it back, and it stops getting closer`);
+          this.then(`pull ${num(pull)} and push ${num(push)} cancel here: the goal pulls the robot on, the nearest obstacle pushes it back, and it gets no closer`);
         }
         A.collision = [x, y];
         this.line = 'minimum';
