@@ -63,19 +63,22 @@ async function runMinimum() {
   await fx.nextFrames();
 }
 
-/** The canvas's pixels in a square of `r` css px around world point (x, y): {mean luminance, dark count, n}. */
-const around = (x, y, r) => page.evaluate(([x, y, r]) => {
+/**
+ * The heat colour (its index in PALETTE.heat, 0 lightest) most pixels in a square of `r` css px
+ * around world point (x, y) are nearest to, and how many of them are within 12 of it per channel.
+ */
+const heatAt = (x, y, r) => page.evaluate(([x, y, r, heat]) => {
   const [cx, cy] = window.planarium.toCanvas(x, y);
   const c = document.getElementById('canvas'), dpr = c.width / c.getBoundingClientRect().width;
   const d = c.getContext('2d').getImageData(Math.round((cx - r) * dpr), Math.round((cy - r) * dpr), Math.round(2 * r * dpr), Math.round(2 * r * dpr)).data;
-  let sum = 0, dark = 0;
+  const rgb = heat.map((h) => [1, 3, 5].map((i) => parseInt(h.slice(i, i + 2), 16)));
+  const votes = heat.map(() => 0);
   for (let i = 0; i < d.length; i += 4) {
-    const l = 0.2126 * d[i] + 0.7152 * d[i + 1] + 0.0722 * d[i + 2];
-    sum += l;
-    if (l < 90) dark++;
+    rgb.forEach(([R, G, B], k) => { if (Math.abs(d[i] - R) <= 12 && Math.abs(d[i + 1] - G) <= 12 && Math.abs(d[i + 2] - B) <= 12) votes[k]++; });
   }
-  return { mean: sum / (d.length / 4), dark, n: d.length / 4 };
-}, [x, y, r]);
+  const best = votes.indexOf(Math.max(...votes));
+  return { index: best, votes: votes[best], n: d.length / 4 };
+}, [x, y, r, [...PALETTE.heat]]);
 
 test('apf-minimum: the field from the start, light at the minimum, the forces captioned, the label off the goal', async () => {
   assert.equal(await page.isChecked('#show-heat'), false, 'no heat map for the default planner');
@@ -84,13 +87,15 @@ test('apf-minimum: the field from the start, light at the minimum, the forces ca
   const cells = await page.evaluate(() => window.planarium.cells());
   assert.equal(cells.minima.length, 1);
   const m = cells.minima[0];
-  // the minimum's tile, shaded by value: light (a low value), where rank shading made it dark
-  const near = await around(m.x - 0.02, m.y, 6);
-  console.log(`pixels around the minimum's left: mean luminance ${near.mean.toFixed(0)}, ${near.dark} of ${near.n} dark`);
-  assert.ok(near.mean > 150, `the minimum's neighbourhood is light: ${near.mean.toFixed(0)}`);
+  // the tile just left of the minimum (off the descent's line and the ring): by value a lower
+  // middle colour (U there about 0.08 of a 0 … 0.2 range), where rank shading made it dark
+  const near = await heatAt(m.x - 0.05, m.y - 0.0125, 2);
+  const start = await heatAt(0.15, 0.7, 3);
+  console.log(`heat colour beside the minimum ${JSON.stringify(near)}, on the start's side ${JSON.stringify(start)}`);
+  assert.ok(near.votes > near.n / 2, 'a heat-map tile there');
+  assert.ok(near.index <= 4, `light beside the minimum: colour ${near.index} of 0–8`);
   // the start's side, higher up the cone, is darker than the minimum's
-  const start = await around(0.15, 0.7, 6);
-  assert.ok(start.mean < near.mean, `farther from the goal is darker: ${start.mean.toFixed(0)} vs ${near.mean.toFixed(0)}`);
+  assert.ok(start.index > near.index, `farther from the goal is darker: ${start.index} vs ${near.index}`);
   // the two forces at the minimum: the pull towards the goal (+x), the push back (−x), of about one size
   const pull = Math.hypot(...m.pull), push = Math.hypot(...m.push);
   console.log(`pull ${JSON.stringify(m.pull)}, push ${JSON.stringify(m.push)}`);
