@@ -75,7 +75,9 @@ pub enum EventKind {
     /// `pc1` the half-size of the tile it stands for.
     Field = 18,
     /// A local minimum was detected at `x, y` (classic potential field): `id` the escapes so far;
-    /// `px` the potential there; `py` the distance to the goal.
+    /// `parent` the chain's node there; `px` the potential there; `py` the distance to the goal;
+    /// `c0, c1` the pull of the goal `−∇U_att` and `pc0, pc1` the push of the obstacles
+    /// `−∇U_rep` there, in the plane (the forces that cancel).
     Minimum = 19,
     /// A growth step chose node `id` of `tree` to grow (RRT's NEAREST, or the node the tree
     /// variants select): `x, y` its point; `px, py` the target's point (a sample, or a node of the

@@ -78,6 +78,13 @@ fn give_up_stops_in_the_cup_with_a_reason() {
     assert!(m[6].is_finite() && m[6] > 0.0, "potential there: {}", m[6]);
     let to_goal = ((x - 0.9f64).powi(2) + (y - 0.5f64).powi(2)).sqrt();
     assert!((m[7] - to_goal).abs() < 1e-9, "distance to the goal: {} vs {to_goal}", m[7]);
+    // The two forces there: the goal's pull towards +x (the cone's constant k_att·d_star = 0.3),
+    // the cup's push back towards −x of the same order. They do not cancel exactly at the node:
+    // the descent rocks by a step about the point where they do, and the push (from the nearest
+    // obstacle only) jumps where the nearest obstacle changes.
+    let (pull, push) = ((m[8], m[9]), (m[10], m[11]));
+    assert!((pull.0 - 0.3).abs() < 0.01 && pull.1.abs() < 0.01, "pull {pull:?}");
+    assert!(push.0 < -0.5 * pull.0 && push.0 > -2.0 * pull.0, "push {push:?} against pull {pull:?}");
     // Every step was a descent step (tree 0), and the robot never touched the cup.
     let nodes = records(&events, EventKind::NodeAdded);
     assert!(!nodes.is_empty() && nodes.iter().all(|n| n[1] == 0.0));

@@ -385,6 +385,31 @@ impl PotentialField {
         }
     }
 
+    /// The two forces at `q` in the plane: the pull `−∇U_att` and the push `−∇U_rep`, by central
+    /// differences `h` = the resolution apart in x and y (one-sided next to a collision). For
+    /// drawing only (the `Minimum` event): not counted as checks, like the heat map.
+    fn forces(&self, si: &SpaceInfo, q: &[Real]) -> ([Real; 2], [Real; 2]) {
+        let h = si.resolution;
+        let here = self.potential(si, q);
+        let (mut pull, mut push) = ([0.0; 2], [0.0; 2]);
+        let mut p = q.to_vec();
+        for k in 0..2 {
+            p.copy_from_slice(q);
+            p[k] = q[k] + h;
+            let up = self.potential(si, &p);
+            p[k] = q[k] - h;
+            let down = self.potential(si, &p);
+            pull[k] = -(up.attraction - down.attraction) / (2.0 * h);
+            push[k] = match (up.repulsion.is_finite(), down.repulsion.is_finite(), here.repulsion.is_finite()) {
+                (true, true, _) => -(up.repulsion - down.repulsion) / (2.0 * h),
+                (false, true, true) => -(here.repulsion - down.repulsion) / h,
+                (true, false, true) => -(up.repulsion - here.repulsion) / h,
+                _ => 0.0,
+            };
+        }
+        (pull, push)
+    }
+
     /// A local minimum at the current node: record it, then give up or start a random walk.
     fn at_minimum(&mut self, cx: &mut Context) {
         let tree = self.tree.as_ref().expect("the chain exists once iterating");
@@ -393,10 +418,17 @@ impl PotentialField {
         cx.si.count_checks(1);
         let d = cx.si.distance(&q, &self.goal);
         let at = cx.si.project(&q);
-        cx.events.mark(EventKind::Minimum, 0, self.escapes as i64, self.current as f64, at, u, d);
+        if cx.events.enabled {
+            let (pull, push) = self.forces(cx.si, &q);
+            let v = [at.x, at.y, u, d, pull[0], pull[1], push[0], push[1]];
+            cx.events.values(EventKind::Minimum, 0, self.escapes as i64, self.current as i64, v);
+        }
         self.history.clear();
         if self.give_up_at_first {
-            self.reason = Some(format!("local minimum at ({:.2}, {:.2}): escape is give-up", at.x, at.y));
+            self.reason = Some(format!(
+                "local minimum at ({:.2}, {:.2}): the robot stopped getting closer to the goal, and with escape give-up the run ends there",
+                at.x, at.y
+            ));
         } else if self.escapes >= self.max_escapes {
             self.reason = Some(format!(
                 "local minimum at ({:.2}, {:.2}): still trapped after {} random-walk escapes",

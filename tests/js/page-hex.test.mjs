@@ -181,8 +181,8 @@ test('apf-minimum: the potential field stops at a local minimum, marked on the c
   const [ring] = await countColours('canvas', [PALETTE.minimum], 8);
   console.log(`local-minimum marker pixels: ${ring}`);
   assert.ok(ring > 60, `local-minimum marker pixels: ${ring}`);
-  // hovering a tile (with the heat map on) gives the field's terms
-  await toggle('show-heat');
+  // hovering a tile (the heat map is on from the start for a field) gives the field's terms
+  assert.equal(await page.isChecked('#show-heat'), true, 'a potential field shows its heat map from the start');
   await toggle('show-arrows');
   const [cx, cy] = await page.evaluate(() => window.planarium.toCanvas(0.3, 0.7));
   const box = await page.locator('#canvas').boundingBox();

@@ -215,11 +215,15 @@ test('hex-trap: the heat map has a scale with its lowest and highest value, and 
 
 test('apf-minimum: the classic field\'s scale names U', async () => {
   await runToEnd('apf-minimum', 'Potential field: a local minimum', 'potential-field');
-  await page.click('#show-heat');
+  // on from the start for a field planner
   await page.waitForSelector('#heat-scale:not([hidden])');
   assert.match(await page.textContent('.heat-scale-name'), /^potential U/);
-  const lo = number(await page.textContent('#heat-scale-min')), hi = number(await page.textContent('#heat-scale-max'));
+  // by value: the top tick is the 90th percentile, "and up"
+  const top = await page.textContent('#heat-scale-max');
+  assert.match(top, /\+$/);
+  const lo = number(await page.textContent('#heat-scale-min')), hi = number(top.slice(0, -1));
   assert.ok(Number.isFinite(lo) && Number.isFinite(hi) && lo < hi, `${lo} < ${hi}`);
+  assert.match(await page.textContent('.heat-scale-note'), /by value/);
   await page.screenshot({ path: join(SHOTS, 'page-linked-heat-scale-apf.png') });
 });
 

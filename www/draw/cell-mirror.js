@@ -20,7 +20,7 @@ export class CellMirror {
     this.changed = [];      // ids whose verdict changed since the latest REGION, in order
     this.regions = [];      // [{attempt, x, y, radius, limit, inside, t}]
     this.field = [];        // the current field: [{id, x, y, v, a, b, dx, dy, half}]
-    this.minima = [];       // [{escapes, x, y, u, dist}]
+    this.minima = [];       // [{escapes, x, y, u, dist, pull: [x, y], push: [x, y]}]
     this.index = null;      // cellAt's buckets of complete cells (bucketIndex)
     this.fieldVersion = 0;  // bumped by every FIELD and REGION: the layer is redrawn
     this.regionVersion = 0;
@@ -108,7 +108,7 @@ export class CellMirror {
         this.fieldVersion++;
         return;
       case EventKind.MINIMUM:
-        this.minima.push({ escapes: id, x: d[o + 4], y: d[o + 5], u: d[o + 6], dist: d[o + 7] });
+        this.minima.push({ escapes: id, x: d[o + 4], y: d[o + 5], u: d[o + 6], dist: d[o + 7], pull: [d[o + 8], d[o + 9]], push: [d[o + 10], d[o + 11]] });
         return;
       default:
     }

@@ -50,16 +50,25 @@ export function fmt(v) {
   return s.replace('-', '−');
 }
 
+/** The classic field's heat map colours by value up to this quantile of its finite values. */
+export const HEAT_CAP = 0.9;
+
 /**
  * The heat map's colour index of a value: by rank among the field's finite values (each colour
  * holds about as many samples, so neither the repulsion's blow-up near obstacles nor a long
- * attractive slope flattens the rest; equal values share a colour); -1 for an infinite
- * (colliding) value.
+ * attractive slope flattens the rest; equal values share a colour), or when `linear` (the classic
+ * field: a local minimum must look as low as it is) by value from the lowest to the HEAT_CAP
+ * quantile, the values above it in the darkest colour; -1 for an infinite (colliding) value.
  */
-export function heatScale(field, bins = PALETTE.heat.length) {
+export function heatScale(field, bins = PALETTE.heat.length, linear = false) {
   const vals = Float64Array.from(field.map((s) => s.v).filter(Number.isFinite)).sort();
   const n = vals.length;
   if (!n) return () => -1;
+  if (linear) {
+    // by value, from the lowest up to the 90th percentile (HEAT_CAP); the top tenth in the darkest colour
+    const lo = vals[0], span = vals[Math.floor(HEAT_CAP * (n - 1))] - lo;
+    return (v) => (!Number.isFinite(v) ? -1 : span > 0 ? Math.min(bins - 1, Math.max(0, Math.floor(((v - lo) / span) * bins))) : 0);
+  }
   return (v) => {
     if (!Number.isFinite(v)) return -1;
     let lo = 0, hi = n; // the first index whose value is ≥ v
@@ -221,7 +230,8 @@ export class CellsDrawing {
   /** The heat map: each sample's cell (or square tile), by colour bin. */
   drawHeat(ctx, L) {
     const m = this.mirror;
-    const bin = heatScale(m.field);
+    const hex = m.cells.size > 0;
+    const bin = heatScale(m.field, PALETTE.heat.length, !hex);
     const colors = PALETTE.heat;
     const byColour = new Map();
     for (const s of m.field) {
@@ -230,7 +240,6 @@ export class CellsDrawing {
       if (!byColour.has(col)) byColour.set(col, []);
       byColour.get(col).push(s);
     }
-    const hex = m.cells.size > 0;
     for (const [col, list] of byColour) {
       ctx.beginPath();
       for (const s of list) {
@@ -280,8 +289,11 @@ export class CellsDrawing {
     ctx.globalAlpha = 1;
   }
 
-  /** On the top layer: the regions of influence (older radii faint) and the local minima. */
-  drawTop(ctx, L, o, bounds) {
+  /**
+   * On the top layer: the regions of influence (older radii faint) and the local minima (their
+   * labels kept off the `goal` state, when there is one).
+   */
+  drawTop(ctx, L, o, bounds, goal) {
     const m = this.mirror;
     if (!m || m.empty) return;
     if (o.showRegion && m.regions.length) {
@@ -303,7 +315,7 @@ export class CellsDrawing {
       });
       ctx.restore();
     }
-    for (const p of m.minima) drawMinimum(ctx, L, p);
+    m.minima.forEach((p, i) => drawMinimum(ctx, L, p, goal, i === m.minima.length - 1));
   }
 
   /** The robot's t/2 circle (dashed) around `state`, when a region gave t > 0. */
@@ -407,9 +419,41 @@ function describeCell(m, c) {
   return lines;
 }
 
-function drawMinimum(ctx, L, p) {
+/** The size of a force vector `[x, y]` (0 when not a number). */
+export const forceSize = (f) => (f && Number.isFinite(f[0]) && Number.isFinite(f[1]) ? Math.sqrt(f[0] * f[0] + f[1] * f[1]) : 0);
+
+/**
+ * A local minimum: a ring, its label where it covers neither the goal nor the forces, and for the
+ * latest (`last`) the two forces the core measured there (the goal's pull, the obstacles' push),
+ * arrows on one scale with their sizes.
+ */
+function drawMinimum(ctx, L, p, goal, last) {
   const st = STYLE[EventKind.MINIMUM];
   const x = L.sx(p.x), y = L.sy(p.y), r = L.px(st.size);
+  const pull = forceSize(p.pull), push = forceSize(p.push), most = Math.max(pull, push);
+  const arrows = [];
+  if (last && most > 0) {
+    const len = L.px(42);
+    for (const [f, size, name, color] of [[p.pull, pull, 'pull', PALETTE.forcePull], [p.push, push, 'push', PALETTE.forcePush]]) {
+      if (!(size > 0)) continue;
+      const k = len / most; // screen px per unit of force: one scale for both
+      arrows.push({ ex: x + f[0] * k, ey: y - f[1] * k, ux: f[0] / size, uy: -f[1] / size, text: `${name} ${fmt(size)}`, color });
+    }
+  }
+  for (const a of arrows) {
+    const h = L.px(7);
+    ctx.beginPath();
+    ctx.moveTo(x, y); ctx.lineTo(a.ex, a.ey);
+    ctx.moveTo(a.ex - a.ux * h - a.uy * h * 0.6, a.ey - a.uy * h + a.ux * h * 0.6); ctx.lineTo(a.ex, a.ey);
+    ctx.lineTo(a.ex - a.ux * h + a.uy * h * 0.6, a.ey - a.uy * h - a.ux * h * 0.6);
+    ctx.lineCap = 'round';
+    ctx.strokeStyle = '#ffffff';
+    ctx.lineWidth = L.px(5);
+    ctx.stroke();
+    ctx.strokeStyle = a.color;
+    ctx.lineWidth = L.px(2.5);
+    ctx.stroke();
+  }
   ctx.beginPath();
   ctx.arc(x, y, r, 0, 2 * Math.PI);
   ctx.strokeStyle = '#ffffff';
@@ -421,13 +465,34 @@ function drawMinimum(ctx, L, p) {
   ctx.font = `600 ${Math.round(L.px(12))}px system-ui, sans-serif`;
   ctx.textBaseline = 'middle';
   const label = p.escapes > 0 ? `local minimum (${p.escapes} escapes)` : 'local minimum';
+  const lh = L.px(14), gap = L.px(6);
+  // the goal's box, and each force's label at its arrow's head
+  const keepOff = [];
+  if (goal && goal.length >= 2) {
+    const gx = L.sx(goal[0]), gy = L.sy(goal[1]), g = L.px(16);
+    keepOff.push([gx - g, gy - g, gx + g, gy + g]);
+  }
+  const texts = arrows.map((a) => {
+    const w = ctx.measureText(a.text).width;
+    const tx = a.ux >= 0 ? a.ex + gap : a.ex - gap - w;
+    const ty = a.ey + (a.uy >= 0 ? 1 : -1) * lh * 0.9;
+    keepOff.push([tx, ty - lh / 2, tx + w, ty + lh / 2]);
+    return { text: a.text, tx, ty, color: a.color };
+  });
   const w = ctx.measureText(label).width;
-  const tx = x + r + L.px(6) + w > L.width ? x - r - L.px(6) - w : x + r + L.px(6);
-  ctx.lineWidth = L.px(3);
-  ctx.strokeStyle = '#ffffff';
-  ctx.strokeText(label, tx, y);
-  ctx.fillStyle = st.color;
-  ctx.fillText(label, tx, y);
+  const spots = [[x - w / 2, y + r + gap + lh / 2], [x - w / 2, y - r - gap - lh / 2], [x - r - gap - w, y], [x + r + gap, y]];
+  /** @param {number[]} s */
+  const inside = (s) => s[0] >= 0 && s[0] + w <= L.width && s[1] - lh / 2 >= 0 && s[1] + lh / 2 <= L.height;
+  /** @param {number[]} s */
+  const clear = (s) => keepOff.every(([a, b, c, d]) => s[0] + w < a || s[0] > c || s[1] + lh / 2 < b || s[1] - lh / 2 > d);
+  const [tx, ty] = spots.find((s) => inside(s) && clear(s)) || spots.find(clear) || spots[0];
+  for (const t of [...texts, { text: label, tx, ty, color: st.color }]) {
+    ctx.lineWidth = L.px(3);
+    ctx.strokeStyle = '#ffffff';
+    ctx.strokeText(t.text, t.tx, t.ty);
+    ctx.fillStyle = t.color;
+    ctx.fillText(t.text, t.tx, t.ty);
+  }
 }
 
 function traceInto(ctx, L, p) {

@@ -15,7 +15,7 @@
 import { el } from '../ui/dom.js';
 import { PALETTE } from './palette.js';
 import { outlineOf, sensorPose } from './robots.js';
-import { fmt } from './cells.js';
+import { fmt, HEAT_CAP } from './cells.js';
 import { robotCaps } from './capabilities.js';
 
 /** The ghost's colours: free (purple), colliding (red), the crosshair's (purple), casings. */
@@ -58,12 +58,14 @@ export function nearestPose(robot, candidates, at, px, py, radius = NEAR_PX) {
 
 /**
  * The value range of a heat map's field samples ([{v}]): {min, median, max} of the finite values,
+ * `cap` their HEAT_CAP quantile (where the classic field's colours stop),
  * `infinite` (how many collide), or null when no value is finite.
  */
 export function heatRange(field) {
   const vals = Float64Array.from(field.map((s) => s.v).filter(Number.isFinite)).sort();
   if (!vals.length) return null;
-  return { min: vals[0], median: vals[vals.length >> 1], max: vals[vals.length - 1], infinite: field.length - vals.length };
+  const cap = vals[Math.floor(HEAT_CAP * (vals.length - 1))];
+  return { min: vals[0], median: vals[vals.length >> 1], max: vals[vals.length - 1], cap, infinite: field.length - vals.length };
 }
 
 /**
@@ -257,10 +259,13 @@ function heatScaleBox() {
     if (!range) return;
     // the quantity: hex-potential colours its cells by their obstacle terms, the classic field by U
     name.textContent = m.cells.size > 0 ? 'obstacle potential: repulsion + trap term' : 'potential U: attraction + repulsion';
+    const byValue = m.cells.size === 0; // the classic field colours by value (cells.js's heatScale)
     lo.textContent = fmt(range.min);
-    mid.textContent = fmt(range.median);
-    hi.textContent = fmt(range.max);
-    note.textContent = `light low, dark high, by rank: each colour holds a ninth of the ${m.field.length - range.infinite} samples`
+    mid.textContent = fmt(byValue ? (range.min + range.cap) / 2 : range.median);
+    hi.textContent = byValue ? `${fmt(range.cap)}+` : fmt(range.max);
+    note.textContent = (byValue
+      ? `light low, dark high, by value (evenly from ${fmt(range.min)} to ${fmt(range.cap)}; the highest tenth, up to ${fmt(range.max)}, in the darkest colour)`
+      : `light low, dark high, by rank: each colour holds a ninth of the ${m.field.length - range.infinite} samples`)
       + (range.infinite ? `; ${range.infinite} colliding (∞) in the obstacle colour` : '');
     root.setAttribute('aria-label', `Heat map scale of the ${name.textContent}: from ${lo.textContent} (light) to ${hi.textContent} (dark)`);
     draw();

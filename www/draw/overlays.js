@@ -28,13 +28,19 @@ export function createOverlays(root, onChange, { prefix = '' } = {}) {
   });
   root.replaceChildren(...boxes.map((b) => b.label));
   const options = () => Object.fromEntries(boxes.map(({ o, input }) => [o.option, input.checked]));
-  for (const { input } of boxes) input.addEventListener('change', () => onChange(options()));
-  /** Show only the overlays that apply to `context` (see overlayApplies); returns how many are hidden. */
+  for (const { input } of boxes) input.addEventListener('change', () => { input.dataset.touched = '1'; onChange(options()); });
+  /**
+   * Show only the overlays that apply to `context` (see overlayApplies); returns how many are hidden.
+   * A box nobody set (no click, no link: `dataset.touched`) takes the planner's default: a planner
+   * that draws a field shows its heat map from the start.
+   */
   options.fit = (context) => {
     let hidden = 0;
-    for (const { o, label } of boxes) {
+    const field = !!context?.config?.planner && plannerCaps(context.config.planner).draws === 'field';
+    for (const { o, label, input } of boxes) {
       label.hidden = !overlayApplies(o.option, context);
       if (label.hidden) hidden++;
+      if (o.option === 'showHeat' && !input.dataset.touched) input.checked = o.on || field;
     }
     return hidden;
   };

@@ -59,6 +59,9 @@ export const PALETTE = Object.freeze({
   region: '#7b3294',
   robotT: '#30343b',
   minimum: '#d01c8b',
+  // the two forces at a local minimum (white halos keep them apart from the heat map)
+  forcePull: '#d55e00',
+  forcePush: '#1d2127',
   // roadmaps (prm, prm-star, lazy-prm): checked edges take tree0; Lazy PRM's unchecked edges are
   // dashed grey, an edge its check found blocked vermilion; the query's latest path dashed black
   roadmapUnchecked: '#9aa3ad',

@@ -130,7 +130,7 @@ export const PICTURE = [
     drawPolyline(ctx, L, v.queryPath, q.color, L.px(q.width), q.dash.map((d) => L.px(d)));
   } },
   { id: 'last-sample', draw(ctx, L, v) { if (!v.showResult && v.lastSample) drawMarker(ctx, L, STYLE[EventKind.SAMPLE], ...v.lastSample); } },
-  { id: 'regions', draw(ctx, L, v) { v.cells.drawTop(ctx, L, v.options, v.scenario.bounds); } },
+  { id: 'regions', draw(ctx, L, v) { v.cells.drawTop(ctx, L, v.options, v.scenario.bounds, v.scenario.goal); } },
   { id: 'overlay-hooks', ui: true, draw(ctx, L, v) { for (const hook of v.overlayHooks) hook(ctx, L); } },
   { id: 'raw-path', draw(ctx, L, v) {
     if (v.showResult && v.path) drawPolyline(ctx, L, v.path, PALETTE.rawPath, L.px(2), [L.px(6), L.px(4)]);

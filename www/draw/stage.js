@@ -132,3 +132,18 @@ export function keepInView(stage) {
   const r = stage.getBoundingClientRect();
   if (r.top < 0 || r.bottom > innerHeight) stage.scrollIntoView({ block: 'start', behavior: 'smooth' });
 }
+
+/**
+ * On a phone the cost chart (`box`) sits right under the run bar (`after`), compact, instead of
+ * far below with the stats; back in its place (`home`, before `next`) on a wider screen.
+ */
+export function chartUnderCanvas(box, after) {
+  const home = box.parentElement, next = box.nextElementSibling;
+  const query = matchMedia(PHONE);
+  const place = () => {
+    if (query.matches) after.after(box);
+    else home.insertBefore(box, next);
+  };
+  query.addEventListener('change', place);
+  place();
+}

@@ -21,7 +21,7 @@ import { PosePanel } from '../ui/pose3d.js';
 import { BoxesPanel } from '../ui/boxes3d.js';
 import { PathPanel } from '../ui/path3d.js';
 import { wireExports } from '../ui/exports.js';
-import { fitViews, downloadText, keepInView, PhoneStage } from '../draw/stage.js';
+import { fitViews, downloadText, keepInView, PhoneStage, chartUnderCanvas } from '../draw/stage.js';
 import { createPanel, taskOf } from '../ui/panel.js';
 import { Playback } from '../run/playback.js';
 import { Chart } from '../draw/chart.js';
@@ -265,7 +265,7 @@ function restoreScenario(share) {
 /** The view options of a share (overlays, sliders, step size): its values, else the defaults. */
 function applyView(share) {
   const on = Object.fromEntries(OVERLAYS.map((o) => [o.option, share.overlays[o.option] ?? o.on]));
-  for (const o of OVERLAYS) $(o.id).checked = on[o.option];
+  for (const o of OVERLAYS) Object.assign($(o.id), { checked: on[o.option] }).dataset.touched = o.option in share.overlays ? '1' : '';
   ui.speed.value = String(share.view.speed ?? VIEW_DEFAULTS.speed);
   ui.animSpeed.value = String(share.view.anim ?? VIEW_DEFAULTS.anim);
   ui.animRaw.checked = share.view.rawPath ?? VIEW_DEFAULTS.rawPath;
@@ -551,6 +551,7 @@ const onResize = fitViews(ui.stage, view, {
   resize(w, h, dpr) { if (cspace.active) cspace.resize(w, h, dpr); if (view3d.active) view3d.resize(w, h, dpr); },
 });
 const phoneStage = new PhoneStage(ui.stage, $('view-swap'), $('run-bar'), () => onResize());
+chartUnderCanvas(ui.chartBox, $('run-bar'));
 
 Object.defineProperty(window, 'planarium', {
   value: Object.freeze({

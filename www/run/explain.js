@@ -398,11 +398,21 @@ export class Explainer {
         A.cell = [x, y];
         this.line = 'potential';
         break;
-      case K.MINIMUM:
+      case K.MINIMUM: {
         this.begin(`local minimum at ${pt(x, y)}: U = ${num(px)}, ${num(py)} from the goal`);
+        const pull = Math.sqrt(c0 * c0 + c1 * c1), push = Math.sqrt(pc0 * pc0 + pc1 * pc1);
+        if (pull > 0 && push > 0) { // the core's forces there (see EventKind::Minimum)
+          // their sum, from the core's two vectors: near 0 they cancel at this very step; else the
+          // descent rocks by a step about the point where they do
+          const net = Math.sqrt((c0 + pc0) ** 2 + (c1 + pc1) ** 2);
+          this.then(net <= 0.2 * Math.max(pull, push)
+            ? `pull ${num(pull)} and push ${num(push)} cancel here: the goal pulls the robot on, the nearest obstacle pushes it back, and it gets no closer`
+            : `pull ${num(pull)} and push ${num(push)} (sum ${num(net)}): they cancel within a step of here, so the robot rocks back and forth and gets no closer`);
+        }
         A.collision = [x, y];
         this.line = 'minimum';
         break;
+      }
       default:
         break;
     }
