@@ -8,7 +8,7 @@
 import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
 import { pageFixture } from './browser.mjs';
-import { pixelsNear as near3d, PUMA_NAME, rgbOf } from './puma-view.mjs';
+import { pixelsNear as near3d, PUMA_NAME, rgbOf, core } from './puma-view.mjs';
 import { ACTOR } from '../../www/ui/explain-panel.js';
 
 const fx = await pageFixture();
@@ -80,4 +80,53 @@ test('puma-rbo-wall: stepping to a collision, the caption names the parts and th
   }
   assert.ok(step.sample, 'the sample\'s ghost is drawn');
   assert.ok(ghosts >= 1, 'a ghost was checked');
+});
+
+test('puma-rbo-wall: a connect\'s configurations walked one by one, the ghost arm at each, free until the last', async () => {
+  await fx.pickScenario('puma-rbo-wall', PUMA_NAME);
+  await page.waitForFunction(() => window.planarium.view3d.ready(), null, { timeout: 20000 });
+  let n = 0;
+  for (let i = 1; i <= 2000 && n < 3; i++) {
+    await page.click('#step-event');
+    await page.waitForFunction((k) => window.planarium.explain().events === k, i, { timeout: 30000 });
+    const m = /(\d+) configurations checked/.exec((await page.evaluate(() => window.planarium.explain())).caption);
+    n = m ? Number(m[1]) : 0;
+  }
+  assert.ok(n >= 3, 'a connect of three configurations or more within 2,000 events');
+  await fx.nextFrames();
+  const walk = page.locator('#connect-steps');
+  assert.ok(await walk.isVisible(), 'the walk is offered');
+  assert.equal((await page.locator('#connect-at').textContent()).trim(), `configuration ${n} of ${n}`);
+  assert.ok(await page.locator('#connect-next').isDisabled(), 'nothing after the farthest');
+  const farthest = await page.evaluate(() => window.planarium.explain3d());
+  assert.equal(farthest.walk.q, null, 'the farthest is drawn as the step recorded it');
+  // one back: the configuration before, free (the connect went on past it), drawn as the ghost
+  await page.click('#connect-prev');
+  await fx.nextFrames();
+  assert.equal((await page.locator('#connect-at').textContent()).trim(), `configuration ${n - 1} of ${n}`);
+  const words = await page.locator('#connect-words').textContent();
+  assert.match(words, /^q = \((−?\d+°, ){5}−?\d+°\): free, so the connect goes on$/, words);
+  const back = await page.evaluate(() => window.planarium.explain3d());
+  assert.equal(back.walk.k, n - 1);
+  assert.equal(back.collision, null, 'no collision before the farthest');
+  // the ghost is at the configuration the walk names: its link frames the core's for it, in Node
+  const frames = core.link_frames(Float64Array.from(back.walk.q));
+  const origins = [];
+  for (let k = 0; k + 16 <= frames.length; k += 16) origins.push([frames[k + 12], frames[k + 13], frames[k + 14]]);
+  assert.equal(back.joints.step.length, origins.length);
+  back.joints.step.forEach((o, j) => assert.ok(o.every((v, c) => Math.abs(v - origins[j][c]) < 1e-9), `link ${j}: ${o} against the core's ${origins[j]}`));
+  assert.notDeepEqual(back.step, farthest.step, 'the ghost moved');
+  // to the first: the keyboard works the buttons too; then forward again to the farthest
+  for (let k = n - 1; k > 1; k--) await page.click('#connect-prev');
+  assert.equal((await page.locator('#connect-at').textContent()).trim(), `configuration 1 of ${n}`);
+  assert.ok(await page.locator('#connect-prev').isDisabled());
+  await page.locator('#connect-next').focus();
+  await page.keyboard.press('Enter');
+  assert.equal((await page.locator('#connect-at').textContent()).trim(), `configuration 2 of ${n}`);
+  // the next event leaves the walk: hidden, or a new connect's, at its farthest
+  await page.click('#step-event');
+  await fx.nextFrames();
+  const after = await page.evaluate(() => window.planarium.explain3d());
+  assert.ok(!after?.walk || after.walk.k === after.walk.count, JSON.stringify(after?.walk));
+  assert.deepEqual(fx.errors, []);
 });

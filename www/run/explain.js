@@ -186,6 +186,9 @@ export class Explainer {
         const N = this.actors;
         N.stepQ = undefined;
         N.collisionQ = undefined;
+        N.connect = undefined;
+        // the connect's target, in full (the state log's: a last-free STEER walks toward it)
+        N.targetQ = arm ? arm.pq : undefined;
         N.near = [x, y];
         N.target = [px, py];
         N.nearId = id;
@@ -213,6 +216,9 @@ export class Explainer {
           const n = Number.isFinite(arm.extra) ? arm.extra : NaN;
           this.then(`step along the line by the resolution: ${Number.isFinite(n) ? `${n} configuration${n === 1 ? '' : 's'} checked (${n} quer${n === 1 ? 'y' : 'ies'})` : 'configurations checked'}, ${num(c0)} of ${num(c1)} rad${pc0 === 1 ? ' (reaches it)' : ''}, the farthest ${joints(arm.q)}`);
           A.stepQ = arm.q;
+          // its configurations one by one (ui/connect-steps.js asks the core for them): from the
+          // node toward the target, as many as its queries (one a configuration)
+          if (A.targetQ && Number.isInteger(n) && n >= 1) A.connect = { from: arm.pq, target: A.targetQ, count: n };
         } else {
           this.then(`step ${num(c0)}${arm ? ` rad to ${joints(arm.q)}` : ''}${pc0 === 1 ? ' (reaches it)' : ''}`);
           if (arm) A.stepQ = arm.q;

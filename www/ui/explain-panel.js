@@ -10,6 +10,7 @@ import { Explainer, optionsOf, pseudocode } from '../run/explain.js';
 import { PALETTE } from '../draw/palette.js';
 import { emits } from '../draw/capabilities.js';
 import { StateMirror } from '../run/arm-states.js';
+import { ConnectSteps } from './connect-steps.js';
 
 /** The actors' colours (also in the legend): apart from the tree blue and the obstacle brown. */
 // (Purple: apart from the trees' blue and pink and from the best path's vermillion, which a paused
@@ -34,7 +35,11 @@ export class ExplainPanel {
     this.caption = el('p', { id: 'explain-caption', className: 'explain-caption', text: 'Run or step the planner: each step is explained here.' });
     // not a live region: the page's one (ui/a11y.js) speaks the caption when the run is paused or stepped
     this.where = el('p', { id: 'explain-where', className: 'hint' });
-    root.replaceChildren(this.title, this.code, this.caption, this.where);
+    // a last-free connect's configurations, one at a time (a spatial arm's: the 3-D view's ghost)
+    this.walk = new ConnectSteps((q) => { this.walkQ = q; this.show3d(); });
+    this.walkQ = null;
+    this.walkAt = 0;
+    root.replaceChildren(this.title, this.code, this.caption, this.walk.root, this.where);
     this.items = new Map();
     this.read = 0; // records read so far
     this.scheduled = 0;
@@ -142,6 +147,12 @@ export class ExplainPanel {
     }
     this.caption.textContent = this.read ? x.caption : 'Run or step the planner: each step is explained here.';
     this.where.textContent = this.read ? `event ${this.read.toLocaleString('en')} of ${this.store.length.toLocaleString('en')} shown` : '';
+    const connect = this.read && !this.view.showResult && this.arm?.slot?.active ? x.actors.connect : undefined;
+    // each event shown starts the walk again at the farthest configuration, as the step says
+    const fresh = connect !== this.walk.key || this.read !== this.walkAt;
+    if (fresh) this.walkQ = null;
+    this.walkAt = this.read;
+    this.walk.show(connect, connect ? this.arm?.scene() : null, fresh);
     this.show3d();
   }
 
@@ -155,7 +166,12 @@ export class ExplainPanel {
     if (!slot?.active) return;
     const scene = this.arm.scene();
     const a = this.read && !this.view.showResult ? this.explainer.actors : null;
-    const key = a && scene ? [a.sampleQ, a.stepQ, a.collisionQ] : null;
+    // walking a connect's configurations (ui/connect-steps.js): the one chosen as the step's
+    // ghost, and no collision yet (it is at the farthest)
+    const walking = a && this.walkQ;
+    const stepQ = walking ? this.walkQ : a?.stepQ;
+    const collisionQ = walking ? undefined : a?.collisionQ;
+    const key = a && scene ? [a.sampleQ, stepQ, collisionQ] : null;
     const same = key && this.shown3d && this.shown3d.scene === scene && key.every((q, i) => q === this.shown3d.key[i]);
     if (same || (!key && !this.shown3d)) return;
     this.shown3d = key ? { key, scene } : null;
@@ -164,9 +180,9 @@ export class ExplainPanel {
     /** @type {import('../draw3d/actors3d.js').Actors3DData} */
     const data = {};
     if (a.sampleQ) data.sample = { frames: frames(a.sampleQ), colour: ACTOR.sample };
-    if (a.stepQ) data.step = { frames: frames(a.stepQ), colour: ACTOR.near };
-    if (a.collisionQ) {
-      const q = Float64Array.from(a.collisionQ);
+    if (stepQ) data.step = { frames: frames(stepQ), colour: ACTOR.near };
+    if (collisionQ) {
+      const q = Float64Array.from(collisionQ);
       const c = scene.contact(q); // [link, other, obstacle, x, y, z] or empty
       data.collision = {
         frames: frames(q),
@@ -206,6 +222,8 @@ export class ExplainPanel {
       step: tool(d.step),
       joints: { sample: origins(d.sample), step: origins(d.step), collision: origins(d.collision) },
       collision: d.collision ? { links: d.collision.links, at: d.collision.at, words: d.collision.words, tool: tool(d.collision) } : null,
+      // walking a connect's configurations (ui/connect-steps.js): where, and the one drawn
+      walk: this.walk.key ? { k: this.walk.k, count: this.walk.count, q: this.walkQ ? Array.from(this.walkQ) : null } : null,
     };
   }
 
