@@ -77,8 +77,10 @@ export class View {
   /** Forget the run's drawing (tree, markers, result). */
   /** Another query's answer on the finished roadmap, or null (ui/roadmap-query.js). */
   setQuery(query) {
+    const had = this.query?.points?.length >= 2;
     this.query = query;
     this.dirty = true;
+    if (had !== (query?.points?.length >= 2)) this.onLegend?.(); // the legend names the answer
   }
 
   clearRun() {
@@ -420,6 +422,9 @@ export class View {
     ];
     if (this.scenario?.inspection?.points?.length) {
       items.push({ label: 'inspection point', color: PALETTE.inspection, shape: 'box' });
+    }
+    if (this.query?.points?.length >= 2) {
+      items.push({ label: 'new query: its path (start hollow, goal filled)', color: PALETTE.queryAnswer, shape: 'thick' });
     }
     return items;
   }
