@@ -67,6 +67,8 @@ export class View {
     this.editable = false;                       // draw the rotation handles of a rigid body
     this.robotState = null;                      // the animated robot's state, after render()
     this.overlayHooks = [];                      // (ctx, layout) => void, drawn above the scene
+    /** @type {(() => void) | null} called when a new query's answer comes or goes (its legend entry) */
+    this.onLegend = null;
     this.topHooks = [];                          // (ctx, layout) => void, drawn last, over the robot
                                                  // (ghost.js: the linked views' ghost arm)
     this.clearRun();
@@ -90,7 +92,9 @@ export class View {
     this.pendingSample = null; // the latest SAMPLE, until a rejection or the next sample says what it was
     this.flashes = [];
     this.queryPath = null; // roadmaps: the latest graph search's path, [[x, y], ...]
+    const hadQuery = this.query?.points?.length >= 2;
     this.query = null;     // another query on the finished roadmap: {points, picks} (ui/roadmap-query.js)
+    if (hadQuery) this.onLegend?.();
     this.path = null;
     this.smoothed = null;
     this.frames = [];

@@ -27,8 +27,8 @@ const count = (v) => (Number.isFinite(v) ? String(v) : undefined);
 function optimumText(s) {
   if (!Number.isFinite(s.optimum)) return undefined;
   const above = Number.isFinite(s.cost) && s.optimum > 0 ? 100 * (s.cost / s.optimum - 1) : null;
-  const sign = above !== null && above >= 0.05 ? '+' : '';
-  return `${formatValue(s.optimum)} (visibility graph)${above === null ? '' : `: this path ${sign}${above.toFixed(1)}%`}`;
+  const pct = above === null ? '' : Math.abs(above) < 0.05 ? '0.0' : `${above > 0 ? '+' : ''}${above.toFixed(1)}`;
+  return `${formatValue(s.optimum)} (visibility graph)${pct ? `: this path ${pct}%` : ''}`;
 }
 
 // Status words shown differently from the worker's (the rest are shown as they are).
@@ -97,7 +97,8 @@ export function createStats(dl, prefix = '') {
     return { f, dd, dt, row };
   });
   dl.replaceChildren(...rows);
-  const said = { iterations: 'iteration', checks: 'checks' }; // row key → the registry's word
+  // row key → the registry's words, and whether the row's own hover text follows them
+  const said = { iterations: ['iteration', true], checks: ['checks', false] };
   function update(s) {
     statusDd.textContent = STATUS_TEXT[s.status] || s.status;
     statusDd.dataset.status = s.status;
@@ -112,8 +113,9 @@ export function createStats(dl, prefix = '') {
   }
   update.setPlanner = (spec) => {
     for (const { f, dt } of cells) {
-      const words = said[f.key] && spec?.[said[f.key]];
-      dt.title = words ? `${spec.label}: ${words}` : f.title || '';
+      const [word, keep] = said[f.key] ?? [];
+      const words = word && spec?.[word];
+      dt.title = words ? [`${spec.label}: ${words}`, keep ? f.title : ''].filter(Boolean).join('\n') : f.title || '';
     }
   };
   return update;
