@@ -273,7 +273,7 @@ async function writeHash() {
   ui.toBench.href = `bench.html#${bench}`;
   ui.playground.href = play || './';
   // the views' links carry the state too: this page's own, and the benchmark's
-  $('nav-bench').href = ui.toBench.href;
+  $('nav-bench').href = `bench.html#${bench}`;
   $('nav-compare').href = `compare.html#${hash}`;
 }
 
