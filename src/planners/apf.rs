@@ -75,6 +75,8 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     name: "potential-field",
     label: "Artificial potential field",
     summary: "Gradient descent on an attractive plus repulsive potential; random walks out of local minima.",
+    iteration: "One step of metric length step down the potential's gradient (or one step of a random walk out of a local minimum).",
+    checks: "State validity checks: the potential's evaluations (one each) and the states along each step's motion, checked at the scenario's resolution.",
     params: PARAMS,
     groups: &[],
     task: TaskKind::Goal,

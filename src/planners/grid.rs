@@ -45,6 +45,8 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     name: "grid-search",
     label: "Grid search (A*, Dijkstra, BFS, wavefront)",
     summary: "A point robot on an occupancy grid made from the map: cells touching an obstacle blocked, searched cell by cell.",
+    iteration: "One grid row labelled while the grid is made, then one cell closed by the search.",
+    checks: "State validity checks: the cells' obstacle tests and the motions between cells and to the goal.",
     params: PARAMS,
     groups: &[],
     task: TaskKind::Goal,

@@ -204,6 +204,10 @@ pub trait Planner {
     fn snapshot(&self) -> Box<dyn Planner>;
     /// Nodes in all trees.
     fn node_count(&self) -> usize;
+    /// Roadmap planners: the edges checked and those in the roadmap (`None` for the others).
+    fn roadmap_counts(&self) -> Option<crate::run::RoadmapCounts> {
+        None
+    }
     /// The trees, for drawing and checking.
     fn data(&self) -> PlannerData;
     /// For planners that keep improving after a first solution (RRT*, inspection): the best
@@ -262,6 +266,10 @@ pub struct PlannerSpec {
     pub label: &'static str,
     /// One line on what it does.
     pub summary: &'static str,
+    /// What one of its iterations does (the page's tooltip on its iteration count).
+    pub iteration: &'static str,
+    /// What its state checks count (the page's tooltip on "Checks").
+    pub checks: &'static str,
     /// Its own parameters.
     pub params: &'static [ParamSpec],
     /// The shared groups of parameters it also takes (sampler, tree variants), between its own
@@ -347,6 +355,7 @@ pub fn registry_json() -> String {
         .map(|p| {
             serde_json::json!({
                 "name": p.name, "label": p.label, "summary": p.summary,
+                "iteration": p.iteration, "checks": p.checks,
                 "params": p.params.iter().map(ParamSpec::to_json).collect::<Vec<_>>(),
                 "groups": p.groups.iter().map(|g| serde_json::json!({
                     "name": g.name, "label": g.label,

@@ -20,7 +20,7 @@ pub mod summary;
 pub use fingerprint::{fingerprint, fingerprint_in_batches, fnv1a, Fingerprint, FNV_OFFSET};
 pub use optimum::{optimum, optimum_within, Optimum};
 pub use report::{BenchReport, SetupReport};
-pub use result::{PlanResult, SamplerSummary, Stats};
+pub use result::{PlanResult, RoadmapCounts, SamplerSummary, Stats};
 pub use session::{QueryAnswer, RunConfig, Session, SUSPEND_AFTER};
 pub use summary::{RunRow, SetupSummary};
 

@@ -49,8 +49,24 @@ pub struct Stats {
     /// was certified, and were replaced by a detour.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub repaired: Option<u64>,
+    /// Roadmap planners (PRM, PRM*, Lazy PRM): the edges checked and those in the roadmap; absent
+    /// for the others.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub roadmap: Option<RoadmapCounts>,
     /// What the sampler spent.
     pub sampler: SamplerSummary,
+}
+
+/// A roadmap's edge counts (the contract's `stats.roadmap`).
+#[derive(Clone, Copy, Debug, Default, Serialize, PartialEq, Eq)]
+pub struct RoadmapCounts {
+    /// Edge motions checked (PRM and PRM*: every candidate edge; Lazy PRM: those a query's path
+    /// used).
+    pub edges_checked: u64,
+    /// Of those, found blocked.
+    pub edges_invalid: u64,
+    /// Edges in the roadmap: checked valid, or (Lazy PRM) not yet checked.
+    pub edges: u64,
 }
 
 /// What the sampler spent (the contract's `stats.sampler`).

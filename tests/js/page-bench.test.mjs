@@ -113,6 +113,9 @@ test('a benchmark over two workers gives the CLI\'s numbers, plots and exports',
   // Exports: CSV rows, and an OMPL log our reader parses, with the CLI's numbers.
   const csv = await fx.page.evaluate(() => window.planarium.exported('csv'));
   assert.equal(csv.trim().split(/\r?\n/).length, 1 + 8);
+  // times to the microsecond, without the float noise of a binary sum (5.1, not 5.1000000000000005)
+  const timeAt = csv.split(/\r?\n/)[0].split(',').indexOf('time_ms');
+  for (const line of csv.trim().split(/\r?\n/).slice(1)) assert.match(line.split(',')[timeAt], /^\d+(\.\d{1,3})?$/, line);
   const log = readOmplLog(await fx.page.evaluate(() => window.planarium.exported('ompl')));
   assert.equal(log.planners.length, 2);
   const p0 = log.planners[0];

@@ -205,6 +205,12 @@ test('compare: the playground\'s link to an opened scenario opens here and in Be
   assert.equal(await page.$eval('#scenario', (s) => s.selectedOptions[0].textContent), 'Scenario from a link');
   // the playground link carries the same scenario
   assert.match(await page.getAttribute('#to-playground', 'href'), /index\.html#scenario=deflate:/);
+  // so do the other views' links in the header: this page's own and the benchmark's
+  const hash = await page.evaluate(() => location.hash);
+  assert.equal(await page.getAttribute('#nav-compare', 'href'), `compare.html${hash}`);
+  assert.match(await page.getAttribute('#nav-bench', 'href'), /^bench\.html#scenario=deflate:.*setups=/);
+  await page.click('#nav-bench');
+  await page.waitForFunction(() => /bench\.html$/.test(location.pathname) && document.getElementById('setups')?.value.includes('A: '), null, { timeout: 30000 });
 });
 
 test('compare: Run 20 seeds gives success and medians per set-up, marks the better one, and opens the pair in Benchmark', async () => {

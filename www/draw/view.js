@@ -67,6 +67,8 @@ export class View {
     this.editable = false;                       // draw the rotation handles of a rigid body
     this.robotState = null;                      // the animated robot's state, after render()
     this.overlayHooks = [];                      // (ctx, layout) => void, drawn above the scene
+    /** @type {(() => void) | null} called when a new query's answer comes or goes (its legend entry) */
+    this.onLegend = null;
     this.topHooks = [];                          // (ctx, layout) => void, drawn last, over the robot
                                                  // (ghost.js: the linked views' ghost arm)
     this.clearRun();
@@ -77,8 +79,10 @@ export class View {
   /** Forget the run's drawing (tree, markers, result). */
   /** Another query's answer on the finished roadmap, or null (ui/roadmap-query.js). */
   setQuery(query) {
+    const had = this.query?.points?.length >= 2;
     this.query = query;
     this.dirty = true;
+    if (had !== (query?.points?.length >= 2)) this.onLegend?.(); // the legend names the answer
   }
 
   clearRun() {
@@ -88,7 +92,9 @@ export class View {
     this.pendingSample = null; // the latest SAMPLE, until a rejection or the next sample says what it was
     this.flashes = [];
     this.queryPath = null; // roadmaps: the latest graph search's path, [[x, y], ...]
+    const hadQuery = this.query?.points?.length >= 2;
     this.query = null;     // another query on the finished roadmap: {points, picks} (ui/roadmap-query.js)
+    if (hadQuery) this.onLegend?.();
     this.path = null;
     this.smoothed = null;
     this.frames = [];
@@ -420,6 +426,9 @@ export class View {
     ];
     if (this.scenario?.inspection?.points?.length) {
       items.push({ label: 'inspection point', color: PALETTE.inspection, shape: 'box' });
+    }
+    if (this.query?.points?.length >= 2) {
+      items.push({ label: 'new query: its path (start hollow, goal filled)', color: PALETTE.queryAnswer, shape: 'thick' });
     }
     return items;
   }

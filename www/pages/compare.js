@@ -278,6 +278,9 @@ async function writeHash() {
   if (location.hash !== `#${hash}`) history.replaceState(history.state, '', `${location.pathname}${location.search}#${hash}`);
   ui.toBench.href = `bench.html#${bench}`;
   ui.playground.href = play || './';
+  // the views' links carry the state too: this page's own, and the benchmark's
+  $('nav-bench').href = `bench.html#${bench}`;
+  $('nav-compare').href = `compare.html#${hash}`;
 }
 
 // Run 20 seeds: both set-ups to the end on seeds seed … seed+19, over benchmark workers

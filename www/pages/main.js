@@ -70,6 +70,7 @@ const clearError = () => { ui.defaultScenario.hidden = true; errors.clear(); };
 
 const playback = new Playback();
 const view = new View(ui.canvas, playback.store, playback.model);
+view.onLegend = () => buildLegend(); // a new query's answer gets its legend entry
 const cspace = new CSpaceView(ui.cspace, playback.store, PALETTE, playback.model);
 // A robot in 3-D (the core's caps.view3d) gets a 3-D view beside the top view; www/draw3d/ is
 // imported only then.
@@ -356,7 +357,8 @@ function showInvalid(error, edit) {
   controller.fire('invalid');
 }
 
-function currentStats() { return player.stats(); }
+// the optimum line's cost too: the stats say how far above it the path is
+function currentStats() { return { ...player.stats(), optimum }; }
 
 let lastRunStatus = '';
 let statsShown = -1; // the records revealed when the stats were last filled
@@ -365,7 +367,7 @@ function updateRunStatus() {
   const text = registry ? runStatusText({
     state: controller.state, config, label: config ? registry.planners.find((p) => p.name === config.planner)?.label : '',
     planner: lane.result?.stats || lane.stats, done: lane.done, finalStatus: lane.finalStatus, solved: !!lane.result?.solved,
-    replay: player.replayIteration(), nodes: playback.nodeCount,
+    replay: player.replayIteration(), nodes: player.stats().nodes, // the stats' count, to match
   }) : 'Loading the planning core…';
   if (text === lastRunStatus) return;
   lastRunStatus = text;
@@ -384,6 +386,7 @@ function updateStats() {
 
 /** The chart that fits the chosen planner: best cost, coverage, or none. */
 function syncChart() {
+  updateStatsList.setPlanner(panel?.planner());
   const kind = panel ? chartKind(panel.planner(), playback.model) : null;
   chart.setKind(kind, { target: loaded?.inspection?.coverage ?? null, optimum });
   ui.chartBox.hidden = !kind;
@@ -440,7 +443,7 @@ const pathPanel = new PathPanel({ root: $('path3d'), slot: view3d, linkFrames: (
 // Obstacles and bounds: drawn, moved, resized, deleted; undo/redo; saved as JSON (obstacle-editor.js)
 
 const obstacleEditor = new ObstacleEditor({ canvas: ui.canvas, view, editor, root: $('obstacle-tools'), download: downloadText,
-  config: () => panel?.config() ?? null }); // the Cells tool paints on grid search's cells
+  config: () => panel?.config() ?? null, idle: () => controller.state === 'idle' }); // Cells: on grid search's cells
 
 // Exports for slides (exports.js): PNG at a width, SVG, GIF, WebM at a width; legend and transparency options
 wireExports({

@@ -237,11 +237,14 @@ export class Player {
 
   /**
    * The stats shown: the worker's, except that while the replay is behind the planner, iterations
-   * and nodes are those drawn (the planner's totals are in `planner_iterations`, `planner_nodes`).
+   * and nodes are those drawn (the planner's totals are in `planner_iterations`, `planner_nodes`),
+   * and `behind` says how the planner's own numbers are marked: 'final' once it has finished,
+   * 'planner' while it runs.
    */
   stats() {
     const s = this.lane.statsFor(this.statusWord(), this.controller.state === 'finished');
     if (!this.lane.caughtUp && s.iterations !== undefined) {
+      s.behind = this.lane.done ? 'final' : 'planner'; // what the planner's own numbers are marked
       s.planner_iterations = s.iterations;
       s.planner_nodes = s.nodes;
       s.iterations = this.replayIteration().iteration;

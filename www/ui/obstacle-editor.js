@@ -38,15 +38,18 @@ export const MAX_NOTES = 2000; // characters of notes typed here (the core reads
 const GRID_MIN = 1 / 1000; // the grid step's bounds, as fractions of the map's larger side
 const GRID_MAX = 1 / 2;
 const GRID_COLOUR = 'rgba(31, 78, 154, 0.16)'; // faint blue lines
+const TYPED_MS = 300; // the map's name and notes are committed this long after the last key
 const GRID_PX = 6; // css px: grid lines closer than this are thinned (every 2nd, 5th, 10th…)
 
 export class ObstacleEditor {
   /**
    * `editor`: the start/goal Editor (its `scenario` and `commit()` are shared); `root`: where the
    * toolbar goes. The view draws the selection through `view.overlayHooks`. `config()`: the
-   * planner chosen, {planner, params} (the Cells tool paints on grid search's cells).
+   * planner chosen, {planner, params} (the Cells tool paints on grid search's cells). `idle()`:
+   * whether no run is shown (the selection's handles and the snapping grid are drawn only then).
    */
-  constructor({ canvas, view, editor, root, download, config = () => null }) {
+  constructor({ canvas, view, editor, root, download, config = () => null, idle = () => true }) {
+    this.idle = idle;
     this.canvas = canvas;
     this.view = view;
     this.editor = editor;
@@ -264,8 +267,17 @@ export class ObstacleEditor {
       if (t) this.scenario.notes = t; else delete this.scenario.notes;
       this.commit();
     };
-    name.addEventListener('input', check);
-    notes.addEventListener('input', check);
+    // Committed a moment after the typing stops (and on leaving the field, as before), so the
+    // click that ends the typing finds nothing left to commit: a commit then reloads the map,
+    // which swallowed that click (a tool's button redrawn under it, Run disabled while loading).
+    let typing = 0;
+    const later = () => { // while the map reloads from the last commit, wait for it
+      typing = this.editor.stale ? setTimeout(later, TYPED_MS) : 0;
+      if (!typing) commitMeta();
+    };
+    const typed = () => { clearTimeout(typing); if (check()) typing = setTimeout(later, TYPED_MS); };
+    name.addEventListener('input', typed);
+    notes.addEventListener('input', typed);
     name.addEventListener('change', commitMeta);
     notes.addEventListener('change', commitMeta);
     this.fields = { snap, step, gridError, name, notes, metaError };
@@ -497,10 +509,12 @@ export class ObstacleEditor {
     if (!s) return;
     const px = (x, y) => [L.sx(x), L.sy(y)];
     const ob = s.obstacles[this.selected];
+    // a run shows the planner's picture: no editing marks over it
+    const idle = this.idle();
     ctx.save();
-    if (this.grid.on && this.tool !== 'cells') this.drawGrid(ctx, L);
+    if (idle && this.grid.on && this.tool !== 'cells') this.drawGrid(ctx, L);
     if (this.tool === 'cells') this.cells.draw(ctx, L);
-    if (ob) {
+    if (ob && idle) {
       ctx.fillStyle = PALETTE.start;
       ctx.strokeStyle = '#000';
       ctx.lineWidth = L.px(1);

@@ -200,13 +200,11 @@ export function createPanel(root, registry, onChange, { prefix = '', seed: withS
     if (!fits.length) {
       text = 'No planner fits this scenario: it has neither a goal nor inspection points.';
     } else if (left.length) {
+      // Only the goal planners left out are said: every map without inspection points leaves the
+      // inspection planner out, and a note on every map says nothing.
       const goalLeft = left.filter((p) => (p.task || 'goal') === 'goal');
-      const inspLeft = left.filter((p) => p.task === 'inspection');
-      const parts = [];
-      const need = (list) => (list.length === 1 ? 'needs' : 'need');
-      if (goalLeft.length) parts.push(`${names(goalLeft)} ${need(goalLeft)} a goal, and this scenario has none`);
-      if (inspLeft.length) parts.push(`${names(inspLeft)} ${need(inspLeft)} inspection points, and this scenario has none`);
-      text = `Not offered here: ${parts.join('; ')}.`;
+      const need = goalLeft.length === 1 ? 'needs' : 'need';
+      if (goalLeft.length) text = `Not offered here: ${names(goalLeft)} ${need} a goal, and this scenario has none.`;
     }
     note.textContent = text;
     note.hidden = !text;

@@ -2,12 +2,13 @@
 // did ("replaying ≈9 of 50 iterations · planner finished in 8.3 ms"; ≈ marks an interpolation
 // inside a worker batch).
 
-const n = (v) => v.toLocaleString('en');
+const n = (v) => (Number.isFinite(v) ? v : 0).toLocaleString('en');
 
 /**
  * The strip's text. `state`: the controller's; `config`: the panel's {planner, seed} (or none);
  * `label`: the planner's label; `planner`: the planner's stats so far; `done`, `finalStatus`,
- * `solved`: the run's end; `replay`: {iteration, exact} shown; `nodes`: the nodes drawn.
+ * `solved`: the run's end; `replay`: {iteration, exact} shown; `nodes`: the stats panel's node count (the
+ * planner's once the replay has caught up), so the two never disagree.
  */
 export function runStatusText({ state, config, label, planner, done, finalStatus, solved, replay, nodes }) {
   const total = planner?.iterations ?? 0;

@@ -21,6 +21,8 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     name: "hex-potential",
     label: "Hexagonal decomposition + potential",
     summary: "Report 002: hexagonal cells refined where obstacles are, searched by lowest potential, in a growing region of influence.",
+    iteration: "One unit of work: one cell examined while the cells are made, or one step of the search.",
+    checks: "State validity checks: the cells' labels and the step tests (the heat map's look-ahead, drawn only, is not counted).",
     params: PARAMS,
     groups: &[],
     task: TaskKind::Goal,

@@ -65,6 +65,8 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     name: "inspection",
     label: "Inspection RRT",
     summary: "A tree that grows to see the points of interest, until one branch sees enough of them.",
+    iteration: "Choose a node to grow from, step toward a sample, check the motion, pick the parent that sees most.",
+    checks: "State validity checks: the states along each motion tried (each motion is checked state by state at the scenario's resolution), plus a sampler's own checks.",
     params: PARAMS,
     groups: &[SAMPLER_GROUP],
     task: TaskKind::Inspection,

@@ -28,6 +28,8 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     name: "lazy-prm",
     label: "Lazy PRM",
     summary: "A roadmap whose edges are checked only when the shortest path uses them.",
+    iteration: "Add one milestone joined to its neighbours by unchecked edges; when start and goal connect, check the shortest path's edges.",
+    checks: "State validity checks: one per milestone, and the states along the edges a query's path used (unchecked edges cost nothing).",
     params: PARAMS,
     groups: &[SAMPLER_GROUP],
     task: TaskKind::Goal,

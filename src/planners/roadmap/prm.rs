@@ -20,6 +20,8 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     name: "prm",
     label: "PRM",
     summary: "A roadmap of random milestones joined by checked motions, searched for the path.",
+    iteration: "Add one milestone, check the motions to its neighbours, then search the roadmap if it changed.",
+    checks: "State validity checks: the milestones and the states along every candidate edge (each motion is checked state by state at the scenario's resolution).",
     params: PARAMS,
     groups: &[SAMPLER_GROUP],
     task: TaskKind::Goal,

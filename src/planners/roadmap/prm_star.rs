@@ -23,6 +23,8 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     name: "prm-star",
     label: "PRM*",
     summary: "A roadmap whose neighbour count grows as ln n, so its paths approach the shortest.",
+    iteration: "Add one milestone, check the motions to its k* = k·ln n nearest, then search the roadmap again.",
+    checks: "State validity checks: the milestones and the states along every candidate edge (each motion is checked state by state at the scenario's resolution).",
     params: PARAMS,
     groups: &[SAMPLER_GROUP],
     task: TaskKind::Goal,

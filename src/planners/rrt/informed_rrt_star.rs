@@ -38,6 +38,8 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     name: "informed-rrt-star",
     label: "Informed RRT*",
     summary: "RRT* that, once it has a path, samples only the ellipse that can still hold a shorter one.",
+    iteration: "Draw a sample (inside the ellipse once a path exists), extend the tree toward it, rewire the neighbourhood.",
+    checks: "State validity checks: the states along each extension and rewiring motion (each motion is checked state by state at the scenario's resolution), plus a sampler's own checks.",
     params: PARAMS,
     groups: &[SAMPLER_GROUP],
     task: TaskKind::Goal,

@@ -24,6 +24,8 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     name: "rrt",
     label: "RRT",
     summary: "One tree from the start, grown toward random samples, biased to the goal.",
+    iteration: "Draw a sample (sometimes the goal), extend the nearest node one step toward it if the motion is free.",
+    checks: "State validity checks: the states along each extension (each motion is checked state by state at the scenario's resolution), plus a sampler's own checks.",
     params: PARAMS,
     groups: &[SAMPLER_GROUP, TREE_GROUP],
     task: TaskKind::Goal,

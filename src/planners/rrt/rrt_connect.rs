@@ -41,6 +41,8 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     name: "rrt-connect",
     label: "RRT-Connect",
     summary: "Two trees, from start and goal, taking turns to grow toward each other.",
+    iteration: "One tree steps toward a sample, the other tries to connect to the new node; the trees swap roles.",
+    checks: "State validity checks: the states along each extension and connection (each motion is checked state by state at the scenario's resolution), plus a sampler's own checks.",
     params: PARAMS,
     groups: &[SAMPLER_GROUP, CONNECT_TREE_GROUP],
     task: TaskKind::Goal,

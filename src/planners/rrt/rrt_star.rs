@@ -39,6 +39,8 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     name: "rrt-star",
     label: "RRT*",
     summary: "One tree that rewires its neighbourhood so paths keep getting shorter.",
+    iteration: "Draw a sample, extend the tree toward it through the cheapest neighbour, rewire the neighbourhood.",
+    checks: "State validity checks: the states along each extension and rewiring motion (each motion is checked state by state at the scenario's resolution), plus a sampler's own checks.",
     params: PARAMS,
     groups: &[SAMPLER_GROUP],
     task: TaskKind::Goal,

@@ -75,6 +75,8 @@ pub const SPEC: PlannerSpec = PlannerSpec {
     name: "visibility-graph",
     label: "Visibility graph (shortest path)",
     summary: "The exact shortest path of a point (or a disc, by growing the obstacles) among polygons: tangent visibility graph, then A*.",
+    iteration: "A batch of vertex pairs tested for sight while building the graph, or a batch of vertices settled by A*.",
+    checks: "State validity checks of the path found (the sight tests are exact geometry, not counted).",
     params: PARAMS,
     groups: &[],
     task: TaskKind::Goal,

@@ -46,7 +46,11 @@ pub fn to_course_csv(r: &BenchReport) -> String {
         for row in &s.rows {
             out.push_str(&format!(
                 "{date},{time},{},{name},{},{},{},{}\n",
-                row.solved, row.nodes, row.checks, row.free_checks, row.time_ms
+                row.solved,
+                row.nodes,
+                row.checks,
+                row.free_checks,
+                super::csv::ms(row.time_ms)
             ));
         }
     }

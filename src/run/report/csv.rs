@@ -14,12 +14,23 @@ pub(crate) fn csv_field(s: &str) -> String {
     }
 }
 
+/// A time in milliseconds to the microsecond, without the noise of its binary sum
+/// (`5.1`, never `5.1000000000000005`).
+pub(crate) fn ms(v: f64) -> String {
+    let r = (v * 1000.0).round() / 1000.0;
+    if r.is_finite() {
+        r.to_string()
+    } else {
+        v.to_string()
+    }
+}
+
 fn opt(v: Option<f64>) -> String {
     v.map(|x| x.to_string()).unwrap_or_default()
 }
 
 /// The runs as CSV (RFC 4180: CRLF line breaks, a header line): one row per run, columns
-/// [`CSV_HEADER`]; `solved` is `true`/`false`, costs are empty when unsolved, times in ms.
+/// [`CSV_HEADER`]; `solved` is `true`/`false`, costs are empty when unsolved, times in ms to the microsecond.
 pub fn to_csv(r: &BenchReport) -> String {
     let mut out = String::from(CSV_HEADER);
     out.push_str("\r\n");
@@ -31,7 +42,7 @@ pub fn to_csv(r: &BenchReport) -> String {
                 row.seed.to_string(),
                 row.solved.to_string(),
                 csv_field(&row.status),
-                row.time_ms.to_string(),
+                ms(row.time_ms),
                 row.iterations.to_string(),
                 row.nodes.to_string(),
                 row.checks.to_string(),
@@ -43,4 +54,18 @@ pub fn to_csv(r: &BenchReport) -> String {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::ms;
+
+    #[test]
+    fn times_lose_their_float_noise() {
+        assert_eq!(ms(2.1 + 3.0000000000000004), "5.1");
+        assert_eq!(ms(5.1000000000000005), "5.1");
+        assert_eq!(ms(12.0), "12");
+        assert_eq!(ms(0.0004), "0");
+        assert_eq!(ms(1234.5678), "1234.568");
+    }
 }

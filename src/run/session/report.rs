@@ -28,6 +28,7 @@ impl Session {
             cost_fk: self.cost_fk(&self.path),
             smoothed_cost_fk: self.cost_fk(&self.smoothed),
             repaired: self.repaired.map(|r| r as u64),
+            roadmap: self.planner.roadmap_counts(),
             sampler: SamplerSummary::of(
                 self.sampler.name(),
                 self.spec.groups.iter().any(|g| g.name == crate::sampler::SAMPLER_GROUP.name),
