@@ -174,7 +174,7 @@ impl Problem {
     pub fn connect_configs(&self, from: &[Real], target: &[Real], count: usize) -> Vec<Vec<Real>> {
         use crate::planners::tree::{LastFreeSteps, MAX_LAST_FREE_STEPS};
         let d = self.si.distance(from, target);
-        if !(d > 0.0) || from.len() != target.len() {
+        if from.len() != target.len() || d.is_nan() || d <= 0.0 {
             return Vec::new();
         }
         let mut q = vec![0.0; from.len()];
