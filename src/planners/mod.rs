@@ -195,6 +195,18 @@ impl Context<'_> {
 
 pub use crate::limits::{bytes_of, nested_bytes};
 
+/// A roadmap's edge counts (the contract's `stats.roadmap`).
+#[derive(Clone, Copy, Debug, Default, serde::Serialize, PartialEq, Eq)]
+pub struct RoadmapCounts {
+    /// Edge motions checked (PRM and PRM*: every candidate edge; Lazy PRM: those a query's path
+    /// used).
+    pub edges_checked: u64,
+    /// Of those, found blocked.
+    pub edges_invalid: u64,
+    /// Edges in the roadmap: checked valid, or (Lazy PRM) not yet checked.
+    pub edges: u64,
+}
+
 /// A planner, advanced one iteration at a time.
 pub trait Planner {
     /// Run one iteration; `Some(path)` when it found a solution (start first, goal last).
@@ -205,7 +217,7 @@ pub trait Planner {
     /// Nodes in all trees.
     fn node_count(&self) -> usize;
     /// Roadmap planners: the edges checked and those in the roadmap (`None` for the others).
-    fn roadmap_counts(&self) -> Option<crate::run::RoadmapCounts> {
+    fn roadmap_counts(&self) -> Option<RoadmapCounts> {
         None
     }
     /// The trees, for drawing and checking.

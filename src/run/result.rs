@@ -1,4 +1,5 @@
 use crate::math::Real;
+pub use crate::planners::RoadmapCounts;
 use serde::Serialize;
 
 /// Statistics of one run (the contract's `stats`).
@@ -55,18 +56,6 @@ pub struct Stats {
     pub roadmap: Option<RoadmapCounts>,
     /// What the sampler spent.
     pub sampler: SamplerSummary,
-}
-
-/// A roadmap's edge counts (the contract's `stats.roadmap`).
-#[derive(Clone, Copy, Debug, Default, Serialize, PartialEq, Eq)]
-pub struct RoadmapCounts {
-    /// Edge motions checked (PRM and PRM*: every candidate edge; Lazy PRM: those a query's path
-    /// used).
-    pub edges_checked: u64,
-    /// Of those, found blocked.
-    pub edges_invalid: u64,
-    /// Edges in the roadmap: checked valid, or (Lazy PRM) not yet checked.
-    pub edges: u64,
 }
 
 /// What the sampler spent (the contract's `stats.sampler`).

@@ -364,8 +364,8 @@ impl Planner for RoadmapPlanner {
     fn node_count(&self) -> usize {
         self.graph.len()
     }
-    fn roadmap_counts(&self) -> Option<crate::run::RoadmapCounts> {
-        Some(crate::run::RoadmapCounts {
+    fn roadmap_counts(&self) -> Option<crate::planners::RoadmapCounts> {
+        Some(crate::planners::RoadmapCounts {
             edges_checked: self.stats.edges_checked,
             edges_invalid: self.stats.edges_invalid,
             edges: self.graph.edges().iter().filter(|e| e.state != EdgeState::Invalid).count() as u64,
