@@ -518,7 +518,7 @@ export function wireExports({ view, stem, legend = () => [], animFps = () => 10,
       });
       downloadBlob(r.blob, `${stem()}.gif`);
       say(`GIF, ${r.width} × ${r.height}, ${r.frames} frames at ${+fps.toFixed(2)} fps${lapse ? `, the whole run in ${secs} s` : ''}, ${(r.blob.size / 1024).toFixed(0)} kB`,
-        lapse ? '' : n.note,
+        w.note, lapse ? '' : n.note,
         o.transparent ? 'a GIF has no transparent background' : '');
     } catch (e) {
       if (e instanceof ExportCancelled) say(`${e.message}: nothing was saved.`); else fail('GIF', e);
