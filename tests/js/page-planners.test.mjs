@@ -220,15 +220,15 @@ test('Lazy PRM on the zigzag: two clicks ask the finished roadmap another query,
   assert.equal(await page.evaluate(() => window.planarium.query()), null);
 });
 
-test('a phone (390×844): the query status, last in the sideways-scrolling run bar, is scrolled on screen', async () => {
+test('a phone (390×844): the query status, last in the run bar (which wraps onto rows), is on screen', async () => {
   await page.setViewportSize({ width: 390, height: 844 });
   await finishLazyPrm();
   const onScreen = () => page.$eval('#query-status', (el) => {
     const r = el.getBoundingClientRect();
     return { left: r.left, right: r.right, width: innerWidth, text: el.textContent };
   });
-  // the bar is wider than the screen: without scrolling, the status would start past its right edge
-  assert.ok(await page.$eval('#run-bar', (b) => b.scrollWidth > b.clientWidth + 200), 'the run bar scrolls sideways');
+  // the bar wraps onto rows on a phone: nothing in it, the status last, is off to the side
+  assert.ok(await page.$eval('#run-bar', (b) => b.scrollWidth <= b.clientWidth + 1), 'the run bar does not scroll sideways');
   await page.click('#query-button');
   let s = await onScreen();
   assert.match(s.text, /Click the query's start/);
