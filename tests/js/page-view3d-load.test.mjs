@@ -58,9 +58,10 @@ test('100,000 tree edges in the 3-D view: drawn, and the frame time while orbiti
     const moving = await page.evaluate((c) => [window.planarium.view3d.treesThinned(), ...window.planarium.view3d.countColours(c, 40)], [PALETTE.tree0, PALETTE.tree1]);
     const gl = await page.evaluate(() => window.__glCounts);
     console.log(`while orbiting ${frames} frames: ${gl.draws} draw calls, ${gl.uploads} buffer uploads`);
-    // each tree's subset is sent when built (allocated and filled: two calls), and built again only
-    // when the budget halves (16,000 segments down to at most 1,000: four times), not every frame
-    assert.ok(gl.uploads <= 4 * 5, 'no buffer is uploaded every frame while the camera turns');
+    // each tree's subset is sent when built (one or two calls: filled, and allocated when it grew),
+    // and built again only when the budget changes (four halvings from 16,000 to 1,000, then at most
+    // a change every 30 frames): fewer uploads than frames, where every frame would be two or more
+    assert.ok(gl.uploads < frames, `no buffer is uploaded every frame while the camera turns (${gl.uploads} in ${frames} frames)`);
     assert.ok(gl.draws <= frames * 60, 'a few dozen draw calls a frame, not one per edge');
     console.log(`${edges} edges of ${steps - 1} segment(s) (${edges * (steps - 1)} segments; added in ${added[1].toFixed(0)} ms), tree pixels ${t0}/${t1}, orbiting ${times.length} frames at 1280×800 (trees thinned): ${quantiles(times)}`);
     // once the camera rests the whole trees come back, at the same camera: more of their pixels
