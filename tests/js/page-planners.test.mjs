@@ -233,6 +233,8 @@ test('a phone (390×844): the query status, last in the run bar (which wraps ont
   let s = await onScreen();
   assert.match(s.text, /Click the query's start/);
   assert.ok(s.left >= 0 && s.right <= s.width, `the prompt is on screen: ${JSON.stringify(s)}`);
+  // the map in view to click on it (the run bar, sticky, floats at the screen's bottom edge)
+  await page.$eval('#canvas', (c) => c.scrollIntoView({ block: 'start' }));
   await page.mouse.click(...(await fx.toPage(0.92, 0.1)));
   await page.mouse.click(...(await fx.toPage(0.08, 0.9)));
   await page.waitForFunction(() => /cost|does not join/.test(document.getElementById('query-status').textContent), null, { timeout: 30000 });

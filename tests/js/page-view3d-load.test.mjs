@@ -70,7 +70,7 @@ test('100,000 tree edges in the 3-D view: drawn, and the frame time while orbiti
     const [r0, r1] = await page.evaluate((c) => window.planarium.view3d.countColours(c, 40), [PALETTE.tree0, PALETTE.tree1]);
     console.log(`tree pixels while moving ${moving[1]}/${moving[2]}, at rest ${r0}/${r1}`);
     assert.ok(moving[0], 'the trees were thinned while the camera moved');
-    assert.ok(moving[1] + moving[2] > 1000, 'the thinned trees are still drawn');
+    assert.ok(moving[1] + moving[2] > 100, `the thinned trees are still drawn (${moving[1] + moving[2]} pixels)`);
     assert.ok(r0 + r1 > (moving[1] + moving[2]) * 1.1, 'at rest the whole trees are drawn');
     const full = [];
     for (let i = 0; i < 3; i++) full.push(await page.evaluate(() => window.planarium.view3d.fullFrameMs()));
