@@ -474,8 +474,11 @@ export class PlanariumPlayground extends HTMLElement {
     const state = p.controller.state;
     const s = p.stats();
     const word = s.status === 'no_path' ? 'no path' : s.status;
-    const text = s.iterations != null && state !== 'loading' && state !== 'idle'
-      ? `${word} · ${Number(s.iterations).toLocaleString('en')} iterations · ${Number(s.nodes ?? s.shown_nodes).toLocaleString('en')} nodes` : word;
+    // a run that has begun but not yet drawn its first batch counts from zero, so the line's
+    // shape does not change under a reader (or a screen reader) between its first two frames
+    const counted = s.iterations != null || state === 'running';
+    const text = counted && state !== 'loading' && state !== 'idle'
+      ? `${word} · ${Number(s.iterations ?? 0).toLocaleString('en')} iterations · ${Number(s.nodes ?? s.shown_nodes ?? 0).toLocaleString('en')} nodes` : word;
     if (this.statusText.textContent !== text) this.statusText.textContent = text;
     if (this.statusText.dataset.status !== s.status) this.statusText.dataset.status = s.status;
   }
