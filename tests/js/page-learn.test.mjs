@@ -95,7 +95,7 @@ for (const [width, height, tag] of [[1280, 800, 'laptop'], [390, 844, 'phone']])
     assert.ok(ring > 20, `the step's actors are drawn (${ring} px)`);
     // the stats follow the events shown (not the planner, which is ahead by the rest of its batch)
     const st = await page.evaluate(() => ({ nodes: document.getElementById('stat-nodes').textContent, drawn: window.planarium.nodeCount() }));
-    assert.equal(Number(st.nodes.split(' of ')[0]), st.drawn, `stats nodes ${st.nodes}, drawn ${st.drawn}`);
+    assert.equal(Number(st.nodes.split(' of ')[0].replace(/,/g, '')), st.drawn, `stats nodes ${st.nodes}, drawn ${st.drawn}`);
     // the legend names what the step draws
     const legend = await page.$$eval('#legend li', (lis) => lis.map((li) => li.textContent));
     for (const item of ['latest sample', 'this step: nearest node, step, range', 'this step: blocked']) assert.ok(legend.includes(item), `legend: ${item}`);
@@ -110,8 +110,8 @@ for (const [width, height, tag] of [[1280, 800, 'laptop'], [390, 844, 'phone']])
     const [, shownIt, totalIt] = strip.match(/replaying ≈?([\d,]+) of ([\d,]+)/).map((v) => Number(String(v).replace(/,/g, '')));
     assert.ok(shownIt < totalIt, strip);
     const stats = await page.evaluate(() => ({ it: document.getElementById('stat-iterations').textContent, nodes: document.getElementById('stat-nodes').textContent, drawn: window.planarium.nodeCount() }));
-    assert.match(stats.it, /^\d+ of \d+$/, 'iterations: drawn of the planner\'s');
-    assert.ok(Number(stats.nodes.split(' of ')[0]) <= stats.drawn + 5, `nodes shown ${stats.nodes}, drawn ${stats.drawn}`);
+    assert.match(stats.it, /^[\d,]+ of [\d,]+$/, 'iterations: drawn of the planner\'s');
+    assert.ok(Number(stats.nodes.split(' of ')[0].replace(/,/g, '')) <= stats.drawn + 5, `nodes shown ${stats.nodes}, drawn ${stats.drawn}`);
     await page.screenshot({ path: `${SHOTS}/learn-${tag}-running.png` });
     // Instant: the rest at once
     await page.click('#speed-instant');

@@ -1,11 +1,11 @@
 // The numbers match the picture (headless chromium): paused mid-replay, the stats count what is
 // drawn and mark the planner's own numbers "(final)"; finished, the status strip and the stats give
-// the same node count; PRM shows its edges; the optimum row for a point robot, not for a rigid bar;
+// the same node count, grouped alike ("1,500"); PRM shows its edges; the optimum row for a point robot, not for a rigid bar;
 // rows that do not apply are hidden; the iteration and "Checks" rows say what the planner counts;
 // the first click after typing a map's name is not lost; the editing marks leave a run's picture.
 import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
-import { pageFixture } from './browser.mjs';
+import { pageFixture, walledIn } from './browser.mjs';
 
 const fx = await pageFixture();
 let page;
@@ -30,17 +30,17 @@ test('paused mid-replay: the stats count the nodes drawn and mark the rest final
   await nextFrames();
   const drawn = await page.evaluate(() => window.planarium.nodeCount());
   const nodes = await text('stat-nodes');
-  const m = nodes.match(/^(\d+) of (\d+)$/);
+  const m = nodes.match(/^([\d,]+) of ([\d,]+)$/);
   assert.ok(m, `nodes: drawn of the planner's: ${nodes}`);
-  assert.equal(Number(m[1]), drawn, `the stats' nodes ${nodes} are those drawn (${drawn})`);
-  assert.ok(Number(m[1]) < Number(m[2]), nodes);
+  assert.equal(num(m[1]), drawn, `the stats' nodes ${nodes} are those drawn (${drawn})`);
+  assert.ok(num(m[1]) < num(m[2]), nodes);
   // the iteration shown is the strip's
   const strip = await text('run-status');
   const it = strip.match(/^paused at ≈?([\d,]+) of ([\d,]+) iterations/);
   assert.ok(it, strip);
-  assert.equal(await text('stat-iterations'), `${num(it[1])} of ${num(it[2])}`, `the strip: ${strip}`);
+  assert.equal(await text('stat-iterations'), `${it[1]} of ${it[2]}`, `the strip: ${strip}`);
   // what only the planner knows is marked as its final number
-  assert.match(await text('stat-checks'), /^\d+ \(final\)$/);
+  assert.match(await text('stat-checks'), /^\d{1,3}(,\d{3})* \(final\)$/);
   assert.match(await text('stat-time'), /^[\d.]+ \(final\)$/);
   // the rest at once: the strip's node count is the stats'
   await page.click('#speed-instant');
@@ -51,10 +51,35 @@ test('paused mid-replay: the stats count the nodes drawn and mark the rest final
   const done = await text('run-status');
   const strip2 = done.match(/^solved · ([\d,]+) iterations · ([\d,]+) nodes/);
   assert.ok(strip2, done);
-  assert.equal(await text('stat-nodes'), String(num(strip2[2])), `strip ${done}`);
+  assert.equal(await text('stat-nodes'), strip2[2], `strip ${done}`);
   assert.equal(num(strip2[2]), final.nodes);
-  assert.equal(await text('stat-iterations'), String(num(strip2[1])));
+  assert.equal(await text('stat-iterations'), strip2[1]);
   assert.doesNotMatch(await text('stat-checks'), /final/, 'caught up: no mark');
+});
+
+test('a run of thousands of nodes: the stats group their counts as the strip does, times and costs stay plain', async () => {
+  await page.setInputFiles('#file', { name: 'walled.json', mimeType: 'application/json',
+    buffer: Buffer.from(JSON.stringify(walledIn({ max_nodes: 1500, time_limit: 60 }))) });
+  await page.waitForFunction(() => document.getElementById('scenario-name').textContent === 'Walled-in goal');
+  await waitState('idle');
+  await fastPlayback();
+  await page.click('#run');
+  await waitState('finished', 60000);
+  await nextFrames();
+  const s = await page.evaluate(() => window.planarium.stats());
+  assert.ok(s.nodes >= 1000, `a run of at least 1,000 nodes: ${s.nodes}`);
+  const nodes = await text('stat-nodes');
+  assert.match(nodes, /^\d{1,3}(,\d{3})+$/, `grouped: ${nodes}`);
+  assert.equal(nodes, s.nodes.toLocaleString('en'));
+  const strip = (await text('run-status')).match(/ · ([\d,]+) iterations · ([\d,]+) nodes/);
+  assert.ok(strip, await text('run-status'));
+  assert.equal(nodes, strip[2], 'the stats and the strip write the count alike');
+  assert.equal(await text('stat-iterations'), strip[1]);
+  assert.ok(s.checks >= 1000, `checks: ${s.checks}`);
+  assert.equal(await text('stat-checks'), s.checks.toLocaleString('en'));
+  assert.match(await text('stat-shown'), /^\d{1,3}(,\d{3})+ \([\d,]+ events queued\)$/);
+  // a time is a decimal, not a count: never grouped
+  assert.match(await text('stat-time'), /^\d+\.\d$/);
 });
 
 test('PRM shows the edges it checked and those in its roadmap; RRT has no such rows', async () => {
@@ -67,13 +92,14 @@ test('PRM shows the edges it checked and those in its roadmap; RRT has no such r
   await waitState('finished', 90000);
   const s = await page.evaluate(() => window.planarium.stats());
   assert.ok(s.roadmap && s.roadmap.edges_checked > 0, JSON.stringify(s.roadmap));
-  const checked = (await text('stat-edges-checked')).match(/^(\d+) \((\d+) blocked\)$/);
+  const checked = (await text('stat-edges-checked')).match(/^([\d,]+) \(([\d,]+) blocked\)$/);
   assert.ok(checked, await text('stat-edges-checked'));
-  const inMap = Number(await text('stat-edges'));
-  assert.equal(Number(checked[1]), s.roadmap.edges_checked);
+  assert.equal(checked[1], s.roadmap.edges_checked.toLocaleString('en'), 'grouped as the strip groups');
+  const inMap = num(await text('stat-edges'));
+  assert.equal(num(checked[1]), s.roadmap.edges_checked);
   // PRM checks every candidate edge and keeps those found free
-  assert.equal(inMap, Number(checked[1]) - Number(checked[2]), 'edges in the roadmap: checked less blocked');
-  assert.ok(Number(checked[2]) > 0, 'the zigzag blocks some edges');
+  assert.equal(inMap, num(checked[1]) - num(checked[2]), 'edges in the roadmap: checked less blocked');
+  assert.ok(num(checked[2]) > 0, 'the zigzag blocks some edges');
   assert.equal(await page.isVisible('#stat-edges-checked'), true);
   await page.selectOption('#planner', 'rrt');
   await waitState('idle');

@@ -74,7 +74,7 @@ test('slot: the rigid bar solves with RRT and the stats show iterations', async 
   await waitState('idle');
   await page.click('#run');
   await waitStatus('solved');
-  const iterations = Number(await page.textContent('#stat-iterations'));
+  const iterations = Number((await page.textContent('#stat-iterations')).replace(/,/g, '')); // grouped: "1,234"
   assert.ok(iterations > 0, `iterations: ${iterations}`);
   const stats = await page.evaluate(() => window.planarium.stats());
   assert.equal(stats.iterations, iterations);

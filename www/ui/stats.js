@@ -7,7 +7,8 @@
 // continuous coverage and the fk cost only in a finished result that has them). While the replay
 // is behind the planner, iterations and nodes are those drawn ("112 of 349") and the numbers only
 // the planner knows are marked "(final)" (or "(planner)" while it still runs). The iteration and
-// "Checks" rows say, on hover, what the chosen planner counts (the core's registry).
+// "Checks" rows say, on hover, what the chosen planner counts (the core's registry). Counts are
+// grouped as the status strip groups them ("13,909"); times and costs are shown as they are.
 
 import { el } from './dom.js';
 import { shown } from './text.js';
@@ -21,7 +22,8 @@ const sampler = (s) => (s.sampler?.used === false ? undefined : s.sampler);
 /** "112 of 349" while the replay is behind the planner, else the number. */
 const ofPlanner = (shown, planner) => (planner === undefined || planner === shown ? count(shown) : `${count(shown)} of ${count(planner)}`);
 
-const count = (v) => (Number.isFinite(v) ? String(v) : undefined);
+/** An integer count grouped as the status strip groups it ("13,909"); decimals keep `fixed`. */
+const count = (v) => (Number.isFinite(v) ? v.toLocaleString('en') : undefined);
 
 /** "12.1 (visibility graph): this path +6.7%" (the path's raw cost against the optimum). */
 function optimumText(s) {
@@ -57,7 +59,7 @@ export const STAT_FIELDS = Object.freeze([
     title: 'The cost of the best solution in the events shown (it keeps improving)' },
   { key: 'coverage', label: 'Coverage', optional: true,
     value: (s) => (s.coverage == null ? undefined
-      : `${(100 * s.coverage).toFixed(1)}%${s.points_seen != null ? ` (${s.points_seen} seen)` : ''}`),
+      : `${(100 * s.coverage).toFixed(1)}%${s.points_seen != null ? ` (${count(s.points_seen) ?? s.points_seen} seen)` : ''}`),
     title: "The best branch's share of inspection points seen, in the events shown" },
   { key: 'coverage-both', label: 'Course / continuous', optional: true,
     value: (s) => (s.course_coverage == null || s.continuous_coverage == null ? undefined
@@ -74,9 +76,9 @@ export const STAT_FIELDS = Object.freeze([
     value: (s) => (sampler(s)?.checks_per_sample > 0 ? fixed(sampler(s).checks_per_sample, 2) : undefined),
     title: 'State checks the sampler spent per sample it handed to the planner' },
   { key: 'tries', label: 'Raw tries shown', optional: true,
-    value: (s) => (s.tries_seen ? `${s.tries_sent.toLocaleString('en')} of ${s.tries_seen.toLocaleString('en')}` : undefined),
+    value: (s) => (s.tries_seen ? `${count(s.tries_sent)} of ${count(s.tries_seen)}` : undefined),
     title: 'Raw tries sent to the page / drawn by the sampler (after the first 50 000 the worker thins them)' },
-  { key: 'shown', label: 'Nodes shown', value: (s) => `${s.shown_nodes} (${s.queued_events} events queued)` },
+  { key: 'shown', label: 'Nodes shown', value: (s) => `${count(s.shown_nodes) ?? s.shown_nodes} (${count(s.queued_events) ?? s.queued_events} events queued)` },
 ]);
 
 /**
