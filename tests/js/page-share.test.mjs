@@ -274,9 +274,13 @@ test('step back replays from the seed to the same point as a fresh run stepped t
   await page.screenshot({ path: join(shots, 'page-step-back.png') });
 });
 
-test('Copy embed code: the options go into an iframe whose src opens the same run; sizes out of bounds are refused by name', async () => {
+test('Copy embed code: the options go into an iframe whose src opens the same run; sizes out of bounds are refused by name; the element code pasted into a page gives the same run', async () => {
   await pickScenario('narrow', 'Narrow passage');
   await page.selectOption('#planner', 'rrt');
+  await waitState('idle');
+  await type(page, 'param-range', '0.1');
+  await waitState('idle');
+  await type(page, 'param-goal_bias', '0.2');
   await waitState('idle');
   await type(page, 'seed', '13');
   await waitState('idle');
@@ -325,5 +329,41 @@ test('Copy embed code: the options go into an iframe whose src opens the same ru
     assert.deepEqual(embed.controls, ['step', 'reset'], 'the controls chosen');
   } finally {
     await other.close();
+  }
+
+  // the element code: the module next to the playground and the element, the same state in its attributes
+  await page.click('#copy-element');
+  await page.waitForFunction(() => document.getElementById('embed-code').value.startsWith('<script'));
+  const snippet = await page.inputValue('#embed-code');
+  console.log(`element code: ${snippet}`);
+  assert.equal(await page.textContent('#embed-status'), 'Copied the element code.');
+  const lines = snippet.split('\n');
+  assert.equal(lines.length, 2, snippet);
+  assert.equal(lines[0], `<script type="module" src="${fx.env.base}planarium-playground.js"></script>`);
+  assert.match(lines[1], /^<planarium-playground scenario="narrow" planner="rrt" seed="13" speed="100" params="[^"<>]*" autoplay controls="step,reset"><\/planarium-playground>$/);
+  assert.match(lines[1], / params="range=0\.1&amp;goal_bias=0\.2"/, 'the & between parameters escaped in the attribute');
+  const clip2 = await page.evaluate(() => navigator.clipboard.readText().catch(() => null));
+  if (clip2 !== null) assert.equal(clip2, snippet);
+  // pasted into a course page of the same site (the worker comes from the element's origin)
+  const notes = `${fx.env.base}course-notes-element.html`;
+  const host = await fx.env.browser.newPage({ viewport: { width: 700, height: 800 } });
+  host.on('pageerror', (e) => fx.errors.push(e));
+  await host.route(notes, (route) => route.fulfill({ status: 200, contentType: 'text/html; charset=utf-8',
+    body: `<!doctype html><html><head><meta charset="utf-8"><title>Notes</title></head><body><h1>Notes</h1>\n${snippet}\n</body></html>` }));
+  try {
+    await host.goto(notes);
+    await host.waitForFunction(() => document.querySelector('planarium-playground')?.state === 'finished', null, { timeout: 60000 });
+    const got = await host.evaluate(() => {
+      const el = document.querySelector('planarium-playground');
+      return { result: el.result(), status: el.status, controls: el.controls, name: el.scenario?.name };
+    });
+    assert.equal(got.status, 'solved');
+    assert.equal(got.name, 'Narrow passage', 'the same scenario');
+    assert.deepEqual([got.result.seed, got.result.params.range, got.result.params.goal_bias], [13, 0.1, 0.2], 'the seed and the parameters');
+    assert.deepEqual(got.result.path, first.path, 'the same raw path, number for number');
+    assert.equal(got.result.stats.iterations, first.stats.iterations);
+    assert.deepEqual(got.controls, ['step', 'reset'], 'the controls chosen');
+  } finally {
+    await host.close();
   }
 });
