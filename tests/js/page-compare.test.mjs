@@ -9,6 +9,11 @@ import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { pageFixture, ROOT, SHOTS as shots } from './browser.mjs';
 import { PALETTE } from '../../www/draw/palette.js';
+import { initSync, planners } from '../../www/pkg/planarium.js';
+
+initSync({ module: readFileSync(join(ROOT, 'www/pkg/planarium_bg.wasm')) });
+/** The core registry's entry for a planner (its label and its words for an iteration and a check). */
+const specOf = (name) => JSON.parse(planners()).planners.find((p) => p.name === name);
 
 const fx = await pageFixture();
 let page;
@@ -85,6 +90,9 @@ test('compare: uniform against Gaussian RRT-Connect on the same seed, run togeth
   assert.equal(await page.textContent('#a-stat-sampler'), 'uniform');
   assert.equal(await page.textContent('#b-stat-sampler'), 'gaussian');
   assert.notEqual(await page.textContent('#a-stat-checks'), await page.textContent('#b-stat-checks'));
+  // the counts grouped as the status strip groups them
+  assert.equal(await page.textContent('#a-stat-nodes'), sa.nodes.toLocaleString('en'));
+  assert.equal(await page.textContent('#b-stat-checks'), sb.checks.toLocaleString('en'));
   const [ra, rb] = await page.evaluate(() => [window.planarium.result('a'), window.planarium.result('b')]);
   assert.equal(ra.seed, 3);
   assert.equal(rb.seed, 3);
@@ -293,6 +301,14 @@ test('compare on a phone (390×844): the two lanes are tabs A / B, one shown at 
 test('compare: RRT* against RRT-Connect on the open field: the RRT* lane\'s cost chart draws the optimum line', async () => {
   await openCompare('#scenario=open-field&a=rrt-star&b=rrt-connect&seed=1');
   assert.equal(await page.isVisible('#a-chart'), true, 'RRT* has its cost chart');
+  // each lane's iteration and "Checks" rows say, on hover, what its planner counts (the registry's words)
+  const tip = (key, stat) => page.$eval(`#${key}-stats [data-stat="${stat}"] dt`, (dt) => dt.title);
+  for (const [key, name] of [['a', 'rrt-star'], ['b', 'rrt-connect']]) {
+    const spec = specOf(name);
+    assert.ok((await tip(key, 'iterations')).startsWith(`${spec.label}: ${spec.iteration}\n`), `${key}: ${await tip(key, 'iterations')}`);
+    assert.equal(await tip(key, 'checks'), `${spec.label}: ${spec.checks}`);
+  }
+  assert.notEqual(await tip('a', 'iterations'), await tip('b', 'iterations'));
   assert.equal(await page.isVisible('#b-chart'), false, 'RRT-Connect has none before a cost');
   await page.waitForFunction(() => document.getElementById('a-chart').width > 0);
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));

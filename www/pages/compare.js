@@ -402,10 +402,11 @@ function frame(time) {
 
 // Display
 
-/** A side's title (planner and sampler) and chart. */
+/** A side's title (planner and sampler), its stats' hover text (the registry's words) and chart. */
 function syncSide(s) {
   if (!s.panel) return;
   const p = s.panel.planner();
+  s.stats.setPlanner(p);
   const cfg = s.panel.config();
   const sampler = cfg.params.sampler || p.groups?.find((g) => g.name === 'sampler')?.params.find((x) => x.name === 'sampler')?.default;
   const extras = Object.entries(cfg.params).filter(([k]) => k !== 'sampler').map(([k, v]) => `${k} ${v}`);
