@@ -511,27 +511,7 @@ impl Run {
                 return out;
             }
         }
-        let dims = p.si.dims();
-        // The spacing grows so that a long path (or a long tree branch) stays within
-        // `MAX_PATH_FRAMES` frames; step counts are computed checked.
-        let length: f64 = path.windows(2).map(|w| p.si.distance(&w[0], &w[1])).sum();
-        let most = crate::limits::MAX_PATH_FRAMES as f64;
-        let spacing = spacing.max(1e-9).max(length / most);
-        let mut states: Vec<Vec<f64>> = Vec::new();
-        for w in path.windows(2) {
-            if states.len() >= crate::limits::MAX_PATH_FRAMES {
-                break;
-            }
-            let n = crate::limits::steps(p.si.distance(&w[0], &w[1]), spacing, 10_000.0).unwrap_or(10_000);
-            for i in 0..n {
-                let mut q = vec![0.0; dims];
-                p.si.interpolate(&w[0], &w[1], i as f64 / n as f64, &mut q);
-                states.push(q);
-            }
-        }
-        if let Some(last) = path.last() {
-            states.push(last.clone());
-        }
+        let (states, _) = self.frame_states(raw, spacing);
         let external = p.robot.external_dims();
         let mut out = vec![external as f64, states.len() as f64];
         for q in &states {
@@ -539,5 +519,65 @@ impl Run {
             out.extend(flat_outline(p, q));
         }
         out
+    }
+    /// The length along the path (robot metric) at each of [`Run::path_frames`]'s frames for the
+    /// same `raw` and `spacing`, then at each waypoint: `[frames, lengths…, waypoints, lengths…]`.
+    /// The last is the path's cost as the run's stats give it (the same sum). Empty for a vehicle
+    /// chain (its frames are the course's primitive steps).
+    pub fn path_lengths(&self, raw: bool, spacing: f64) -> Vec<f64> {
+        if self.inner.problem().robot.caps().solution_file {
+            return Vec::new();
+        }
+        let (states, at) = self.frame_states(raw, spacing);
+        let path = self.inner.planning_path(raw);
+        let si = &self.inner.problem().si;
+        let mut out = vec![states.len() as f64];
+        out.extend_from_slice(&at);
+        out.push(path.len() as f64);
+        let mut s = 0.0;
+        for (i, q) in path.iter().enumerate() {
+            if i > 0 {
+                s += si.distance(&path[i - 1], q);
+            }
+            out.push(s);
+        }
+        out
+    }
+}
+
+impl Run {
+    /// The path's animation states (internal), sampled every `spacing`, and the length along the
+    /// path at each (the sum of the segments before it, plus the fraction of its own).
+    fn frame_states(&self, raw: bool, spacing: f64) -> (Vec<Vec<f64>>, Vec<f64>) {
+        let p = self.inner.problem();
+        let path = self.inner.planning_path(raw);
+        let dims = p.si.dims();
+        // The spacing grows so that a long path (or a long tree branch) stays within
+        // `MAX_PATH_FRAMES` frames; step counts are computed checked.
+        let length: f64 = path.windows(2).map(|w| p.si.distance(&w[0], &w[1])).sum();
+        let most = crate::limits::MAX_PATH_FRAMES as f64;
+        let spacing = spacing.max(1e-9).max(length / most);
+        let mut states: Vec<Vec<f64>> = Vec::new();
+        let mut at: Vec<f64> = Vec::new();
+        let mut before = 0.0;
+        for w in path.windows(2) {
+            if states.len() >= crate::limits::MAX_PATH_FRAMES {
+                break;
+            }
+            let d = p.si.distance(&w[0], &w[1]);
+            let n = crate::limits::steps(d, spacing, 10_000.0).unwrap_or(10_000);
+            for i in 0..n {
+                let mut q = vec![0.0; dims];
+                p.si.interpolate(&w[0], &w[1], i as f64 / n as f64, &mut q);
+                states.push(q);
+                at.push(before + d * (i as f64 / n as f64));
+            }
+            before += d;
+        }
+        if let Some(last) = path.last() {
+            states.push(last.clone());
+            at.push(length); // the path's end: its whole length (the cost's sum), even if cut short
+        }
+        (states, at)
     }
 }

@@ -58,6 +58,28 @@ const pixelsVsSnapshot = (mode) => page.evaluate((mode) => {
   return n;
 }, mode);
 
+/**
+ * The panel's length is the core's `cost` (the number the results show), its text says it, and the
+ * core's lengths at the frames and waypoints agree with the frames' joint-space distances (summed
+ * here, independently of the page) and with the path's `waypoints`.
+ */
+function assertCoreLengths(st, cost, waypoints) {
+  assert.equal(st.length, cost, 'the length shown is the core\'s cost, as the stats give it');
+  assert.match(st.where, new RegExp(` of ${cost.toFixed(3).replace('.', '\\.')} rad`), 'the scrubber\'s text shows the core\'s cost');
+  const dims = st.first.length;
+  let sum = 0;
+  for (let k = 1; k < st.frames; k++) {
+    let d2 = 0;
+    for (let j = 0; j < dims; j++) d2 += (st.states[k * dims + j] - st.states[(k - 1) * dims + j]) ** 2;
+    sum += Math.sqrt(d2);
+    assert.ok(Math.abs(st.at[k] - sum) <= 1e-9 * cost, `frame ${k}: the core's length ${st.at[k]} vs the distances' sum ${sum}`);
+  }
+  assert.ok(Math.abs(st.at[st.frames - 1] - cost) <= 1e-12 * cost, 'the last frame is at the cost');
+  assert.equal(st.waypoints.length, waypoints, 'a length for each waypoint');
+  assert.equal(st.waypoints[0], 0);
+  assert.equal(st.waypoints[waypoints - 1], st.at[st.frames - 1], 'the last waypoint is at the cost');
+}
+
 /** Type into the ghost spacing field and commit (Enter), as a person does. */
 async function typeSpacing(text) {
   await page.$eval('#path3d-spacing', (el, v) => {
@@ -103,7 +125,9 @@ test('puma-rbo-wall solved: scrubber, timeline and ghosts, linked; the raw path 
   // The timeline's curves start at the start's joint angles and end at the goal's: the data, the legend, the pixels.
   assert.deepEqual(st.first, puma.start, 'the curves start at the start');
   assert.deepEqual(st.last, puma.goal, 'the curves end at the goal');
-  assert.ok(Math.abs(st.length - result.stats.smoothed_cost) <= 1e-9 * st.length, 'the length is the planner\'s (smoothed) cost');
+  // The length shown is the core's (smoothed) cost, and the lengths along the path are the core's
+  // too: checked here against the frames' own joint-space distances, summed by the test.
+  assertCoreLengths(st, result.stats.smoothed_cost, result.smoothed.length);
   for (let j = 0; j < 6; j++) {
     const li = page.locator(`#path3d-j${j + 1}`);
     assert.equal(Number(await li.getAttribute('data-start')), puma.start[j], `joint ${j + 1}'s curve starts at the start`);
@@ -276,8 +300,7 @@ test('puma-rbo-wall solved: scrubber, timeline and ghosts, linked; the raw path 
   st = await path();
   console.log(`raw path: ${st.length.toFixed(4)} rad, ${st.frames} frames, ${st.waypoints.length} waypoints`);
   assert.equal(st.raw, true);
-  assert.ok(Math.abs(st.length - result.stats.cost) <= 1e-9 * st.length, 'the raw path\'s length is the raw cost');
-  assert.deepEqual(st.waypoints.length, result.path.length);
+  assertCoreLengths(st, result.stats.cost, result.path.length);
   assert.deepEqual(st.first, puma.start);
   assert.deepEqual(st.last, puma.goal);
   const [rawPx, smoothAfter] = await page.evaluate((c) => window.planarium.view3d.countColours(c, 8), [PALETTE.rawPath, PALETTE.smoothPath]);

@@ -1,10 +1,11 @@
-// The 3-D path panel's pure parts (www/ui/path3d.js), in Node: the frames' states and lengths read
-// from `Run.path_frames`' layout (each frame's outline skipped), and the ghost spacing's bounds.
+// The 3-D path panel's pure parts (www/ui/path3d.js), in Node: the frames' states read from
+// `Run.path_frames`' layout (each frame's outline skipped) with the core's lengths (`Run.path_lengths`),
+// and the ghost spacing's bounds.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { parseStates, readSpacing, GHOSTS } from '../../www/ui/path3d.js';
 
-test('parseStates reads each frame\'s state past its outline and sums the joint-space distance', () => {
+test('parseStates reads each frame\'s state past its outline, and takes the lengths from the core\'s array', () => {
   // dims 2, 3 frames; outlines: none, one triangle, two polygons (a point and a segment)
   const frames = Float64Array.from([
     2, 3,
@@ -12,14 +13,24 @@ test('parseStates reads each frame\'s state past its outline and sums the joint-
     3, 4, 1, 3, 9, 9, 8, 8, 7, 7,
     3, 4, 2, 1, 5, 5, 2, 6, 6, 4, 4,
   ]);
-  const p = parseStates(frames);
+  // the core's lengths ([frames, s…, waypoints, w…]): not what the states' distances would sum to,
+  // so a page that summed them would be caught
+  const lengths = Float64Array.from([3, 0, 2.5, 7, 2, 0, 7]);
+  const p = parseStates(frames, lengths);
   assert.equal(p.dims, 2);
   assert.deepEqual(Array.from(p.states), [0, 0, 3, 4, 3, 4]);
-  assert.deepEqual(Array.from(p.s), [0, 5, 5]);
-  assert.equal(parseStates(new Float64Array(0)), null);
-  assert.equal(parseStates(Float64Array.from([2, 0])), null);
-  // a truncated array keeps the frames it holds
-  assert.deepEqual(Array.from(parseStates(Float64Array.from([2, 3, 0, 0, 0, 3, 4])).states), [0, 0, 3, 4]);
+  assert.deepEqual(Array.from(p.s), [0, 2.5, 7], 'the core\'s lengths, not the page\'s sums (0, 5, 5)');
+  assert.deepEqual(p.waypoints, [0, 7]);
+  assert.equal(parseStates(new Float64Array(0), lengths), null);
+  assert.equal(parseStates(Float64Array.from([2, 0]), lengths), null);
+  // lengths that do not belong to these frames: refused
+  assert.equal(parseStates(frames, undefined), null, 'no lengths');
+  assert.equal(parseStates(frames, Float64Array.from([2, 0, 7, 2, 0, 7])), null, 'another frame count');
+  assert.equal(parseStates(frames, Float64Array.from([3, 0, 2.5, 7, 3, 0, 7])), null, 'a waypoint count the array does not hold');
+  assert.equal(parseStates(frames, Float64Array.from([3, 0, 8, 7, 2, 0, 7])), null, 'a length going back');
+  assert.equal(parseStates(frames, Float64Array.from([3, 0, NaN, 7, 2, 0, 7])), null, 'a length not a number');
+  // a truncated frame array keeps the frames it holds (and needs lengths for those)
+  assert.deepEqual(Array.from(parseStates(Float64Array.from([2, 3, 0, 0, 0, 3, 4]), Float64Array.from([2, 0, 5, 2, 0, 5])).states), [0, 0, 3, 4]);
 });
 
 test('readSpacing: 0 or within the bounds; anything else refused, naming the field and the bounds', () => {

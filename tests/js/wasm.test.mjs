@@ -94,6 +94,42 @@ test('events stream what the page needs: nodes with parents, collisions, a solut
   run.free();
 });
 
+test('path_lengths: the length along the path at each animation frame and waypoint, the last the cost', () => {
+  const run = new Run(builtinText.narrow, 'rrt-connect', '{}', 7);
+  while (run.step(100, 1e9) === 'running');
+  const result = JSON.parse(run.result_json());
+  for (const [raw, cost, way] of [[false, result.stats.smoothed_cost, result.smoothed], [true, result.stats.cost, result.path]]) {
+    const frames = run.path_frames(raw, 0.01);
+    const lengths = run.path_lengths(raw, 0.01);
+    const n = frames[1];
+    assert.equal(lengths[0], n, 'a length for each frame');
+    assert.equal(lengths[n + 1], way.length, 'then one for each waypoint');
+    assert.equal(lengths.length, n + 2 + way.length);
+    // the frames' states (a point's outline is a polygon count of 0 or a point: skipped)
+    const states = [];
+    let o = 2;
+    for (let k = 0; k < n; k++) {
+      states.push([frames[o], frames[o + 1]]);
+      o += 2;
+      const polys = frames[o++];
+      for (let q = 0; q < polys; q++) o += 1 + 2 * frames[o];
+    }
+    let sum = 0;
+    for (let k = 0; k < n; k++) {
+      if (k > 0) sum += Math.hypot(states[k][0] - states[k - 1][0], states[k][1] - states[k - 1][1]);
+      assert.ok(Math.abs(lengths[1 + k] - sum) <= 1e-9 * cost, `${raw ? 'raw' : 'smoothed'} frame ${k}: ${lengths[1 + k]} vs ${sum}`);
+    }
+    assert.equal(lengths[n], cost, 'the last frame is at the cost the stats give, exactly');
+    let w = 0;
+    for (let i = 0; i < way.length; i++) {
+      if (i > 0) w += Math.hypot(way[i][0] - way[i - 1][0], way[i][1] - way[i - 1][1]);
+      assert.ok(Math.abs(lengths[n + 2 + i] - w) <= 1e-9 * cost, `waypoint ${i}`);
+    }
+    assert.equal(lengths[lengths.length - 1], cost, 'the last waypoint is at the cost');
+  }
+  run.free();
+});
+
 test('a file is read into a Scene as the user gave it: the text limit is on the file, and runs are made from the Scene', () => {
   // 70,000 quadrilaterals with 12-digit corners: 8.3 MB as written, 21 MB pretty-printed
   const obstacles = smallQuads(70000);

@@ -35,10 +35,10 @@ export class View3dSlot {
     this.path = null;       // {tool, frames, links, stride}: the smoothed path's, from the worker
     this.rawPath = null;    // the same for the raw path
     this.raw = false;       // the arm follows the raw path
-    this.solved = null;     // {result, frames, rawFrames}: the result's animation frames, for the path panel
+    this.solved = null;     // {result, frames, rawFrames, lengths, rawLengths}: the result's animation frames and the core's lengths along them, for the path panel
     this.scrub = null;      // link frames of the pose scrubbed to (www/ui/path3d.js), or null: animate
     this.ghosts = [];       // link frames of the path's ghosts
-    /** @type {(solved: {result: any, frames: Float64Array, rawFrames: Float64Array} | null) => void} */
+    /** @type {(solved: {result: any, frames: Float64Array, rawFrames: Float64Array, lengths: Float64Array, rawLengths?: Float64Array} | null) => void} */
     this.onPath = () => {}; // the solved path is shown (or gone)
     this.showResult = false;
     this.dirty = false;
@@ -212,7 +212,7 @@ export class View3dSlot {
     const solved = !!(this.active && result?.solved && path3d);
     this.path = solved ? path3d : null;
     this.rawPath = solved && rawPath3d ? rawPath3d : null;
-    this.solved = solved ? { result, frames, rawFrames } : null;
+    this.solved = solved ? { result, frames, rawFrames, lengths: path3d.lengths, rawLengths: rawPath3d?.lengths } : null;
   }
 
   /** The path the arm follows: the raw one when chosen (and sent), else the smoothed one. */

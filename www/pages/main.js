@@ -272,6 +272,7 @@ function applyView(share) {
   ui.animRaw.checked = share.view.rawPath ?? VIEW_DEFAULTS.rawPath;
   ui.stepSize.value = String(share.view.stepSize ?? VIEW_DEFAULTS.stepSize);
   view3d.setCamera(share.view.camera ?? null);
+  pathPanel.setSpacing(share.view.ghosts); // the 3-D path's ghost spacing (its default when the link has none)
   updateOutputs();
   syncOptions();
 }
@@ -285,7 +286,7 @@ const share = wireShareHash({
     overlays: overlayOptions(),
     view: {
       speed: Number(ui.speed.value), anim: Number(ui.animSpeed.value), rawPath: ui.animRaw.checked,
-      stepSize: stepSize(), camera: view3d.camera(),
+      stepSize: stepSize(), camera: view3d.camera(), ghosts: pathPanel.spacing,
     },
   }),
   saveName: () => loaded?.name || 'scenario', download: downloadText, showError,
@@ -438,7 +439,7 @@ const boxesPanel = new BoxesPanel({ root: $('boxes3d'), editor });
 // pose panel's copy of the core (link frames, what collides and where).
 explain.setArm(() => posePanel.scene, view3d);
 // The solved path under the 3-D view (path3d.js): scrubber, ghosts, joint-angle timeline; poses from the panel's core.
-const pathPanel = new PathPanel({ root: $('path3d'), slot: view3d, linkFrames: (q) => posePanel.linkFrames(q) });
+const pathPanel = new PathPanel({ root: $('path3d'), slot: view3d, linkFrames: (q) => posePanel.linkFrames(q), onSpacing: scheduleShare });
 
 // Obstacles and bounds: drawn, moved, resized, deleted; undo/redo; saved as JSON (obstacle-editor.js)
 

@@ -86,7 +86,8 @@
  * A solved path for the 3-D view: the tool's curve through every animation frame (x, y, z…) and
  * the link frames of `count` poses (`links` × 16 numbers each): pose k is animation frame
  * min(k·stride, frames − 1).
- * @typedef {{tool: Float64Array, frames: Float64Array, count: number, links: number, stride: number}} Path3d
+ * @typedef {{tool: Float64Array, frames: Float64Array, count: number, links: number, stride: number,
+ *   lengths: Float64Array}} Path3d
  */
 
 /**

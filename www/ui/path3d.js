@@ -9,17 +9,20 @@
 // whose caps say `view3d`). The states are the result's animation frames (`Run.path_frames`, the
 // smoothed path's or, when the page's "robot follows the raw path" is on, the raw path's), as the
 // core sampled them; a pose between two frames is interpolated along the straight joint-space
-// motion the planner checked. Link frames come from the core on the page's thread (the pose
-// panel's `Scene.link_frames`). Text goes in with textContent only.
+// motion the planner checked. The lengths (the total shown, each frame's and each waypoint's) are
+// the core's (the run's stats and `Run.path_lengths`, posted by the worker); the page sums none.
+// Link frames come from the core on the page's thread (the pose panel's `Scene.link_frames`). Text
+// goes in with textContent only.
 
 import { el } from './dom.js';
 import { Timeline, JOINT_COLOURS } from '../draw/timeline.js';
 import { parseFrames } from '../draw/transform.js';
+import { GHOSTS, readSpacing } from './ghost-spacing.js';
+
+export { GHOSTS, readSpacing };
 
 /** The scrubber's steps along the path (its value is a thousandth of the length). */
 const SCRUB_STEPS = 1000;
-/** Ghost spacing, rad: the default, the bounds (0 turns them off) and the most ghosts drawn. */
-export const GHOSTS = { initial: 2, min: 0.05, max: 10, most: 60 };
 const TIMELINE_HEIGHT = 170;
 
 /** A joint's colour swatch (set through the CSS object model: the page's CSP allows no inline style). */
@@ -33,54 +36,41 @@ const deg = (rad) => `${Number(((rad * 180) / Math.PI).toFixed(1))}°`;
 
 /**
  * The states of a result's animation frames (`Run.path_frames`: dims, count, then each frame's
- * state and outline) and each one's length from the start along them (Euclidean in joint space).
+ * state and outline) with the core's length from the start at each frame and at each waypoint
+ * (`Run.path_lengths` for the same frames: [frames, s…, waypoints, w…]; the page sums nothing).
+ * Null when the two do not belong together (counts differ, a length not finite or going back).
  * @param {Float64Array} frames
- * @returns {{dims: number, states: Float64Array, s: Float64Array} | null}
+ * @param {Float64Array | undefined} lengths
+ * @returns {{dims: number, states: Float64Array, s: Float64Array, waypoints: number[]} | null}
  */
-export function parseStates(frames) {
+export function parseStates(frames, lengths) {
   const parsed = parseFrames(frames);
   const dims = frames?.[0] | 0;
   const n = parsed.length;
   if (dims < 1 || n < 1 || parsed[n - 1].state.length < dims) return null;
+  if (!lengths || lengths[0] !== n || lengths.length < n + 2) return null;
+  const w = lengths[n + 1];
+  if (!(Number.isInteger(w) && w >= 1 && lengths.length === n + 2 + w)) return null;
+  const s = Float64Array.from(lengths.subarray(1, n + 1));
+  const waypoints = Array.from(lengths.subarray(n + 2));
+  const ordered = (a) => a.every((v, k) => Number.isFinite(v) && v >= 0 && (k === 0 || v >= a[k - 1]));
+  if (!ordered(Array.from(s)) || !ordered(waypoints)) return null;
   const states = new Float64Array(dims * n);
-  const s = new Float64Array(n);
-  parsed.forEach(({ state }, k) => {
-    states.set(state, k * dims);
-    if (k > 0) {
-      let d2 = 0;
-      for (let j = 0; j < dims; j++) d2 += (state[j] - states[(k - 1) * dims + j]) ** 2;
-      s[k] = s[k - 1] + Math.sqrt(d2);
-    }
-  });
-  return { dims, states, s };
-}
-
-/**
- * A ghost spacing as typed: {value} (0: none) or {error}, naming the field and the bounds.
- * @param {string} text
- */
-export function readSpacing(text) {
-  const t = String(text ?? '').trim();
-  const name = 'Ghost spacing';
-  const bounds = `0 (no ghosts) or from ${GHOSTS.min} to ${GHOSTS.max} rad`;
-  if (t === '') return { error: `${name}: type a number of rad, ${bounds}.` };
-  const v = Number(t);
-  if (!Number.isFinite(v)) return { error: `${name}: "${t.slice(0, 20)}" is not a number; ${bounds}.` };
-  if (v < 0) return { error: `${name}: ${t.slice(0, 20)} is below 0; ${bounds}.` };
-  if (v > GHOSTS.max) return { error: `${name}: ${t.slice(0, 20)} is above ${GHOSTS.max}; ${bounds}.` };
-  if (v > 0 && v < GHOSTS.min) return { error: `${name}: ${t.slice(0, 20)} is below ${GHOSTS.min}; ${bounds}.` };
-  return { value: v };
+  parsed.forEach(({ state }, k) => states.set(state, k * dims));
+  return { dims, states, s, waypoints };
 }
 
 export class PathPanel {
   /**
    * @param {{root: HTMLElement, slot: import('../draw/view3d-slot.js').View3dSlot,
-   *   linkFrames: (q: Float64Array) => Float64Array | null}} options
+   *   linkFrames: (q: Float64Array) => Float64Array | null, onSpacing?: () => void}} options
+   * (`onSpacing`: the ghost spacing was changed by hand, for the share link).
    */
-  constructor({ root, slot, linkFrames }) {
+  constructor({ root, slot, linkFrames, onSpacing = () => {} }) {
     this.root = root;
     this.slot = slot;
     this.linkFrames = linkFrames;
+    this.onSpacing = onSpacing;
     this.solved = null;   // the slot's {result, frames, rawFrames}
     this.raw = false;
     this.path = null;     // {dims, states, s, length, waypoints}
@@ -152,18 +142,15 @@ export class PathPanel {
 
   /** Read the followed path's states and waypoints, and show them. */
   load() {
-    const parsed = this.solved ? parseStates(this.raw ? this.solved.rawFrames : this.solved.frames) : null;
+    const sv = this.solved;
+    const parsed = sv ? parseStates(this.raw ? sv.rawFrames : sv.frames, this.raw ? sv.rawLengths : sv.lengths) : null;
     this.root.hidden = !parsed;
     if (!parsed) { this.path = null; this.slot.setGhosts([]); return; }
     if (!this.built) this.build();
-    const r = this.solved.result;
-    const way = this.raw || !r.smoothed?.length ? r.path : r.smoothed;
-    const waypoints = [0];
-    for (let i = 1; i < (way?.length || 0); i++) {
-      waypoints.push(waypoints[i - 1] + Math.hypot(...way[i].map((v, j) => v - way[i - 1][j])));
-    }
-    const length = parsed.s[parsed.s.length - 1];
-    this.path = { ...parsed, length, waypoints };
+    // The length shown is the core's cost of the path followed (the run's stats, as the results show it).
+    const stats = this.solved.result.stats;
+    const length = (this.raw ? stats?.cost : stats?.smoothed_cost ?? stats?.cost) ?? parsed.s[parsed.s.length - 1];
+    this.path = { ...parsed, length };
     this.s = Math.min(this.s, length);
     this.timeline.setData(this.path);
     this.legend.replaceChildren(...Array.from({ length: parsed.dims }, (_, j) => {
@@ -283,7 +270,17 @@ export class PathPanel {
     this.spacingInput.removeAttribute('aria-invalid');
     this.spacing = r.value;
     this.syncGhosts();
+    this.onSpacing();
     return true;
+  }
+
+  /** The ghost spacing a share link gives (a value readSpacing accepted), or the default (`undefined`). */
+  setSpacing(value = GHOSTS.initial) {
+    this.spacing = value;
+    if (!this.built) return;
+    this.spacingInput.value = String(value);
+    this.spacingInput.removeAttribute('aria-invalid');
+    if (this.path) this.syncGhosts(); else this.spacingNote.textContent = '';
   }
 
   /** The ghosts at every `spacing` rad after the start, before the goal (at most GHOSTS.most). */
@@ -314,7 +311,8 @@ export class PathPanel {
       shown: !this.root.hidden, path: true, raw: this.raw, length: this.path.length, s: this.s, holding: this.holding,
       q: Array.from(this.q || this.stateAt(this.s)), first: Array.from(this.path.states.subarray(0, this.path.dims)),
       last: Array.from(this.path.states.subarray(this.path.states.length - this.path.dims)), frames: this.path.s.length,
-      waypoints: this.path.waypoints.slice(), ghosts: this.ghostCount, spacing: this.spacing, where: this.where.textContent,
+      waypoints: this.path.waypoints.slice(), at: Array.from(this.path.s), states: Array.from(this.path.states),
+      ghosts: this.ghostCount, spacing: this.spacing, where: this.where.textContent,
       note: this.spacingNote.textContent,
     };
   }

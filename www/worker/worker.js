@@ -53,8 +53,9 @@
 //                                            millions of draws cannot swamp the page
 //   result    {result, frames: Float64Array, rawFrames: Float64Array, path3d?, rawPath3d?}   path3d
 //                                            (caps.view3d, solved): {tool, frames, count, links,
-//                                            stride}: the tool's curve and the link frames of at most
-//                                            PATH_POSES_3D poses (every stride-th frame and the last);
+//                                            stride, lengths}: the tool's curve and the link frames of at most
+//                                            PATH_POSES_3D poses (every stride-th frame and the last),
+//                                            the core's lengths along the path (Run.path_lengths);
 //                                            rawPath3d the same for the raw path
 //   status    {status}
 //   ack       {ack}                          the message carrying `ack` was read
@@ -136,9 +137,9 @@ function flush(status) {
     const result = JSON.parse(run.result_json());
     const frames = result.solved ? run.path_frames(false, FRAME_SPACING) : new Float64Array(0);
     const rawFrames = result.solved ? run.path_frames(true, FRAME_SPACING) : new Float64Array(0);
-    const path3d = view3d && result.solved ? pathIn3d(frames) : undefined;
-    const rawPath3d = view3d && result.solved ? pathIn3d(rawFrames) : undefined;
-    const moved = [path3d, rawPath3d].flatMap((p) => (p ? [p.tool.buffer, p.frames.buffer] : []));
+    const path3d = view3d && result.solved ? pathIn3d(frames, run.path_lengths(false, FRAME_SPACING)) : undefined;
+    const rawPath3d = view3d && result.solved ? pathIn3d(rawFrames, run.path_lengths(true, FRAME_SPACING)) : undefined;
+    const moved = [path3d, rawPath3d].flatMap((p) => (p ? [p.tool.buffer, p.frames.buffer, p.lengths.buffer] : []));
     post({ type: 'result', run: runId, result, frames, rawFrames, path3d, rawPath3d }, [...moved, frames.buffer, rawFrames.buffer]);
   }
 }
@@ -146,11 +147,14 @@ function flush(status) {
 /**
  * For the 3-D view, a solved path from its animation frames (`Run.path_frames`: dims, count, then
  * each frame's state and outline): the tool's curve through every frame, and the link frames of at
- * most PATH_POSES_3D of them, evenly spread, for the arm's animation.
+ * most PATH_POSES_3D of them, evenly spread, for the arm's animation; and the core's lengths along
+ * the path at each frame and waypoint (`Run.path_lengths`, for the path panel: it shows the core's
+ * numbers, never its own sums).
  * @param {Float64Array} frames
+ * @param {Float64Array} lengths
  * @returns {import('../run/messages.js').Path3d}
  */
-function pathIn3d(frames) {
+function pathIn3d(frames, lengths) {
   const dims = frames[0] | 0;
   const count = frames[1] | 0;
   const stride = Math.max(1, Math.ceil(count / PATH_POSES_3D));
@@ -171,7 +175,7 @@ function pathIn3d(frames) {
   }
   const flat = new Float64Array(poses.length * links * 16);
   poses.forEach((p, i) => flat.set(p, i * links * 16));
-  return { tool: Float64Array.from(tool), frames: flat, count: poses.length, links, stride };
+  return { tool: Float64Array.from(tool), frames: flat, count: poses.length, links, stride, lengths };
 }
 
 function loop(id) {
