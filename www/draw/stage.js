@@ -134,16 +134,27 @@ export function keepInView(stage) {
 }
 
 /**
- * On a phone the cost chart (`box`) sits right under the run bar (`after`), compact, instead of
- * far below with the stats; back in its place (`home`, before `next`) on a wider screen.
+ * On a phone the cost chart and the step's caption (`boxes`, in this order) sit right under the
+ * run bar (`after`), compact, instead of far below in the explanation and the stats; back in their
+ * places on a wider screen.
  */
-export function chartUnderCanvas(box, after) {
-  const home = box.parentElement, next = box.nextElementSibling;
+export function underRunBar(boxes, after) {
+  const homes = boxes.map((box) => [box, box.parentElement, box.nextElementSibling]);
   const query = matchMedia(PHONE);
   const place = () => {
-    if (query.matches) after.after(box);
-    else home.insertBefore(box, next);
+    if (query.matches) after.after(...boxes);
+    else for (const [box, home, next] of homes) home.insertBefore(box, next);
   };
   query.addEventListener('change', place);
   place();
+}
+
+/**
+ * On a phone, scroll the least that brings `box` whole into the screen when it is not (the step's
+ * caption under the run bar after a step); the focus stays where it is.
+ */
+export function showWhole(box) {
+  if (!matchMedia(PHONE).matches) return;
+  const r = box.getBoundingClientRect();
+  if (r.top < 0 || r.bottom > innerHeight) box.scrollIntoView({ block: 'nearest', behavior: 'smooth' });
 }

@@ -21,7 +21,7 @@ import { PosePanel } from '../ui/pose3d.js';
 import { BoxesPanel } from '../ui/boxes3d.js';
 import { PathPanel } from '../ui/path3d.js';
 import { wireExports } from '../ui/exports.js';
-import { fitViews, downloadText, keepInView, PhoneStage, chartUnderCanvas } from '../draw/stage.js';
+import { fitViews, downloadText, keepInView, PhoneStage, underRunBar } from '../draw/stage.js';
 import { createPanel, taskOf } from '../ui/panel.js';
 import { Playback } from '../run/playback.js';
 import { Chart } from '../draw/chart.js';
@@ -231,7 +231,7 @@ const actions = {
   pause() { player.pause(); },
   step() { player.step(stepSize()); },
   back() { player.back(stepSize()); },
-  stepEvent() { player.stepEvent(); },
+  stepEvent() { player.stepEvent(); explain.revealNext(); }, // on a phone the caption scrolls into sight
   reset() { player.reset(); },
   cancel() { player.cancel(); },
 };
@@ -555,7 +555,7 @@ const onResize = fitViews(ui.stage, view, {
   resize(w, h, dpr) { if (cspace.active) cspace.resize(w, h, dpr); if (view3d.active) view3d.resize(w, h, dpr); },
 });
 const phoneStage = new PhoneStage(ui.stage, $('view-swap'), $('run-bar'), () => onResize());
-chartUnderCanvas(ui.chartBox, $('run-bar'));
+underRunBar([ui.chartBox, explain.now], $('run-bar')); // on a phone: the chart, the step's caption
 
 Object.defineProperty(window, 'planarium', {
   value: Object.freeze({

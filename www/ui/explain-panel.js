@@ -11,6 +11,7 @@ import { PALETTE } from '../draw/palette.js';
 import { emits } from '../draw/capabilities.js';
 import { StateMirror } from '../run/arm-states.js';
 import { ConnectSteps } from './connect-steps.js';
+import { showWhole } from '../draw/stage.js';
 
 /** The actors' colours (also in the legend): apart from the tree blue and the obstacle brown. */
 // (Purple: apart from the trees' blue and pink and from the best path's vermillion, which a paused
@@ -39,7 +40,10 @@ export class ExplainPanel {
     this.walk = new ConnectSteps((q) => { this.walkQ = q; this.show3d(); });
     this.walkQ = null;
     this.walkAt = 0;
-    root.replaceChildren(this.title, this.code, this.caption, this.walk.root, this.where);
+    // the step now: its caption and a connect's walk (on a phone under the run bar, pages/main.js)
+    this.now = el('div', { id: 'explain-now', className: 'explain-now' }, this.caption, this.walk.root);
+    this.reveal = false; // scroll the caption into sight at the next render (a phone's step)
+    root.replaceChildren(this.title, this.code, this.now, this.where);
     this.items = new Map();
     this.read = 0; // records read so far
     this.scheduled = 0;
@@ -107,7 +111,11 @@ export class ExplainPanel {
     if (msg.states) this.states.push(msg.states);
   }
 
+  /** After the next event shown, bring the step's caption into the screen on a phone. */
+  revealNext() { this.reveal = true; }
+
   clearRun() {
+    this.reveal = false;
     this.states.clear();
     this.explainer.reset();
     this.read = 0;
@@ -154,6 +162,7 @@ export class ExplainPanel {
     this.walkAt = this.read;
     this.walk.show(connect, connect ? this.arm?.scene() : null, fresh);
     this.show3d();
+    if (this.reveal && this.read) { this.reveal = false; showWhole(this.now); }
   }
 
   /**
