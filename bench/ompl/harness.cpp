@@ -226,6 +226,13 @@ class ChainSpace : public MetricSpace {
     }
     return d;
   }
+  // Planarium's extent of this metric: every link end travels at most twice its reach (so that
+  // OMPL's default range, 0.2 of it, is Planarium's).
+  double getMaximumExtent() const override {
+    double reach = 0, sum = 0;
+    for (double l : links_) sum += 2 * (reach += l);
+    return sum;
+  }
 
  private:
   std::vector<double> links_;
