@@ -6,7 +6,8 @@
 //
 // PROBLEM is a problem file that scripts/ompl.mjs writes from a scenario (whitespace-separated
 // tokens, see read_problem). PLANNER is rrt or rrt-connect. One JSON line per seed on stdout:
-// {"seed":1,"planner":"rrt","solved":true,"time_ms":0.61,"checks":8400,"nodes":120}.
+// {"seed":1,"planner":"rrt","solved":true,"time_ms":0.61,"checks":8400,"nodes":120,"deadline":false}
+// (deadline: the time limit was reached inside a motion check; see Checker).
 // time_ms is the planner's solve() alone (set-up excluded); checks counts every call of the state
 // validity checker during solve(); nodes the vertices of the planner's data (both trees).
 //
@@ -242,9 +243,16 @@ class Checker : public ob::StateValidityChecker {
  public:
   Checker(const ob::SpaceInformationPtr &si, const Problem &p) : ob::StateValidityChecker(si), p_(p) {}
   mutable unsigned long long checks = 0;
+  // Past the deadline every state is invalid, as in Planarium: OMPL's RRT-Connect checks its
+  // termination condition between iterations only, and its CONNECT loop can go on for ever when
+  // the step toward the target does not bring the nearest node closer in the metric (the chain's,
+  // whose distance is not monotone along a joint-space line); refusing every motion ends it.
+  std::chrono::steady_clock::time_point deadline;
+  mutable bool expired = false;
 
   bool isValid(const ob::State *state) const override {
     ++checks;
+    if (expired || ((checks & 255) == 0 && std::chrono::steady_clock::now() > deadline)) return !(expired = true);
     const Problem &p = p_;
     if (p.robot == "point") {
       const auto *s = state->as<ob::RealVectorStateSpace::StateType>();
@@ -358,6 +366,7 @@ static void run(const Problem &p, const std::string &planner, unsigned seed, dou
   ss.setup();
   checker->checks = 0;
   auto t0 = std::chrono::steady_clock::now();
+  checker->deadline = t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(limit));
   ob::PlannerStatus status = ss.getPlanner()->solve(ob::timedPlannerTerminationCondition(limit));
   auto t1 = std::chrono::steady_clock::now();
   unsigned long long checks = checker->checks;
@@ -365,8 +374,8 @@ static void run(const Problem &p, const std::string &planner, unsigned seed, dou
   ss.getPlanner()->getPlannerData(data);
   bool solved = status == ob::PlannerStatus::EXACT_SOLUTION;
   double ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
-  std::printf("{\"seed\":%u,\"planner\":\"%s\",\"solved\":%s,\"time_ms\":%.6f,\"checks\":%llu,\"nodes\":%u}\n", seed, planner.c_str(),
-              solved ? "true" : "false", ms, checks, data.numVertices());
+  std::printf("{\"seed\":%u,\"planner\":\"%s\",\"solved\":%s,\"time_ms\":%.6f,\"checks\":%llu,\"nodes\":%u,\"deadline\":%s}\n", seed,
+              planner.c_str(), solved ? "true" : "false", ms, checks, data.numVertices(), checker->expired ? "true" : "false");
   std::fflush(stdout);
 }
 
