@@ -132,7 +132,7 @@ for (const p of SUITE) {
     reports.push(JSON.parse(readFileSync(file, 'utf8')));
     if (withOmpl) {
       problems ??= omplProblems(p, name, reports[0].setups);
-      omplRounds.push(reports[0].setups.map((s, i) => (problems[i].file ? runHarness(omplBin, problems[i].file, s.planner, 1, runs, s.time_limit_s ?? 10) : null)));
+      omplRounds.push(reports[0].setups.map((s, i) => (problems[i].file ? runHarness(omplBin, problems[i].file, s.planner, 1, runs, Number(s.params?.time_limit ?? reports[0].time_limit_s)) : null)));
     }
     if (!withWasm) continue;
     wasmRounds.push(reports[0].setups.map((s) => {

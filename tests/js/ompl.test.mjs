@@ -4,11 +4,11 @@
 // RRT-Connect, counts its state checks, repeats a seed exactly and fails a closed wall.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { NOT_INSTALLED, buildHarness, detectOmpl, problemText, runHarness } from '../../scripts/ompl.mjs';
+import { NOT_INSTALLED, OMPL_INCLUDE, buildHarness, detectOmpl, problemText, runHarness } from '../../scripts/ompl.mjs';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
 const scenario = (id) => JSON.parse(readFileSync(join(root, 'scenarios', `${id}.json`), 'utf8'));
@@ -19,8 +19,10 @@ test('without OMPL\'s headers the suite is told "not installed", and says so in 
   assert.equal(missing.installed, false);
   assert.equal(missing.message, "OMPL not installed (Debian's libompl-dev): OMPL not measured");
   assert.equal(missing.message, NOT_INSTALLED);
-  // On this machine: installed exactly when the header is there.
-  assert.equal(found.installed, found.message.startsWith('OMPL found in'));
+  // On this machine, with the default paths: not installed exactly when the header is missing
+  // (or, with the header, when no g++ can build the harness).
+  if (!existsSync(join(OMPL_INCLUDE, 'ompl', 'geometric', 'SimpleSetup.h'))) assert.deepEqual(found, missing);
+  else assert.ok(found.installed || /no g\+\+/.test(found.message), found.message);
 });
 
 test('the problem file carries the scenario\'s bounds, resolution, range, goal bias, robot and obstacles', () => {
