@@ -87,6 +87,17 @@ const omplProblems = (p, name, setups) => {
   });
 };
 const sameOmplRun = (x, y) => x.checks === y.checks && x.nodes === y.nodes && x.solved === y.solved;
+// OMPL's runs of one set-up in one round. A set-up that solves none of its first OMPL_PROBE seeds
+// (each then costs its whole time limit, e.g. OMPL's RRT-Connect on the horn) stops there, and is
+// run in the first round only: its times are time limits, not planning times.
+const OMPL_PROBE = 5;
+const omplSeeds = (file, planner, runs, limitS, first) => {
+  if (first?.stopped) return first;
+  const head = runHarness(omplBin, file, planner, 1, Math.min(OMPL_PROBE, runs), limitS);
+  if (runs <= OMPL_PROBE) return { rows: head, stopped: false };
+  if (!head.some((x) => x.solved)) return { rows: head, stopped: true };
+  return { rows: head.concat(runHarness(omplBin, file, planner, OMPL_PROBE + 1, runs, limitS)), stopped: false };
+};
 
 // The wasm build in Node: the same set-ups and seeds, events off, as the page's benchmark workers.
 const wasmFile = join(root, 'www', 'pkg', 'planarium_bg.wasm');
@@ -132,7 +143,9 @@ for (const p of SUITE) {
     reports.push(JSON.parse(readFileSync(file, 'utf8')));
     if (withOmpl) {
       problems ??= omplProblems(p, name, reports[0].setups);
-      omplRounds.push(reports[0].setups.map((s, i) => (problems[i].file ? runHarness(omplBin, problems[i].file, s.planner, 1, runs, Number(s.params?.time_limit ?? reports[0].time_limit_s)) : null)));
+      omplRounds.push(reports[0].setups.map((s, i) => (problems[i].file
+        ? omplSeeds(problems[i].file, s.planner, runs, Number(s.params?.time_limit ?? reports[0].time_limit_s), omplRounds[0]?.[i])
+        : null)));
     }
     if (!withWasm) continue;
     wasmRounds.push(reports[0].setups.map((s) => {
@@ -155,10 +168,12 @@ for (const p of SUITE) {
   }) : null;
   const omplResult = withOmpl ? report.setups.map((s, i) => {
     if (problems[i].skip) return { label: s.label, skip: problems[i].skip };
-    const all = omplRounds.map((r) => r[i]);
+    const all = omplRounds.map((r) => r[i].rows);
     const agree = all.every((rows) => rows.every((x, j) => sameOmplRun(x, all[0][j])));
     if (!agree) console.log(`[bench] ${name} ${s.label}: the OMPL rounds DIFFER`);
-    return { label: s.label, planner: s.planner, rows: all[0], best_ms: bestOf(all), rounds_agree: agree };
+    const stopped = omplRounds[0][i].stopped;
+    if (stopped) console.log(`[bench] ${name} ${s.label}: OMPL solved none of seeds 1..${OMPL_PROBE}; its other seeds and rounds not run`);
+    return { label: s.label, planner: s.planner, rows: all[0], best_ms: bestOf(all), rounds_agree: agree, stopped };
   }) : null;
   const sides = ['natively', withOmpl && 'by OMPL', withWasm && 'in wasm'].filter(Boolean).join(', ');
   console.log(`[bench] ${name}: ${runs} seeds × ${p.setups.length} set-ups × ${rounds} round(s) ${sides} in ${((Date.now() - started) / 1000).toFixed(1)} s`);
@@ -215,7 +230,7 @@ for (const r of results) {
     const oSolved = o?.rows ? o.rows.filter((x) => x.solved).length : 0;
     const ratio = 2 * oSolved > (o?.rows?.length ?? 0) && 2 * m.solved > m.runs ? `${f(nms / oms)}×` : '— (half or more unsolved)';
     const omplCells = o?.rows
-      ? [`${oSolved}/${o.rows.length}`, f(oms), `${ratio}${o.rounds_agree ? '' : ' (rounds differ!)'}`, f(median(o.rows.map((x) => x.checks)), 0)]
+      ? [`${oSolved}/${o.rows.length}${o.stopped ? ' (stopped)' : ''}`, f(oms), `${ratio}${o.rounds_agree ? '' : ' (rounds differ!)'}`, f(median(o.rows.map((x) => x.checks)), 0)]
       : [notMeasured, notMeasured, '—', '—'];
     lines.push(`| ${r.problem} | ${s.label} | ${m.solved}/${m.runs} | ${f(nms)} | ${s.rounds > 1 ? `${f(mean(s.best_ms))} ± ${f(std(s.best_ms))}` : `${f(m.time_ms.mean)} ± ${f(m.time_ms.std)}`} | ${w ? f(wms) : '—'} | ${w ? `${f(wms / nms)}×` : '—'}${agree ? '' : ' (runs differ!)'} | ${omplCells.join(' | ')} | ${f(m.nodes.median, 1)} | ${f(m.checks.median, 0)} | ${f(m.cost.median, 4)} |`);
   });
