@@ -1,6 +1,9 @@
-// The benchmark suite (`npm run bench`): the OMPL comparison problems beside OMPL 1.5.2's figures, run
-// natively (the CLI's `bench`, seeds 1..N) and, for the problems OMPL was timed on, with the wasm
-// build in Node (the same set-ups and seeds; the counts must equal the native ones, bit for bit).
+// The benchmark suite (`npm run bench`): the OMPL comparison problems run natively (the CLI's
+// `bench`, seeds 1..N), by OMPL 1.5's own RRT and RRT-Connect through the project's harness
+// (bench/ompl/harness.cpp, scripts/ompl.mjs; the same set-ups and seeds, alternated with the native
+// runs) when OMPL is installed (Debian's libompl-dev; else the suite says "OMPL not measured" and
+// goes on), and, for the problems OMPL is compared on, with the wasm build in Node (the same
+// set-ups and seeds; the counts must equal the native ones, bit for bit).
 // Then the scaling benchmark: one state check among 10 to 100,000 obstacles for the
 // point, a rectangle and an arm (the CLI's `scaling`, and `scaling_json` in wasm).
 // Writes bench/results/suite-<UTC stamp>.json (everything) and .md (the tables).
@@ -9,14 +12,15 @@
 //
 // --only scaling: the scaling benchmark alone.
 // --quick: 5 runs and no horn-20 (a smoke run). Times are wall-clock medians of planning only.
-// The problems compared between native and wasm are run in K rounds (default 3) on each side, and
-// each seed's time is its best round: the machine's noise (±15% between identical runs here) is
-// larger than the differences measured. Every round must give the same runs, count for count.
+// The problems compared between native and wasm or OMPL are run in K rounds (default 3) on each
+// side, and each seed's time is its best round: the machine's noise (±15% between identical runs
+// here) is larger than the differences measured. Every round must give the same runs, count for count.
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, mkdtempSync, readFileSync, writeFileSync, existsSync } from 'node:fs';
 import { tmpdir, cpus } from 'node:os';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { buildHarness, detectOmpl, problemText, runHarness } from './ompl.mjs';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 const args = process.argv.slice(2);
@@ -30,20 +34,16 @@ const bestOf = (rounds) => rounds[0].map((_, j) => Math.min(...rounds.map((rows)
 const only = opt('--only', null)?.split(',');
 const ASV = join(root, 'tests', 'data', 'asv');
 
-// OMPL 1.5.2 (Debian's libompl-dev, -O3), medians over 20 seeds on this machine kind.
+// ompl: measured by OMPL's planners too (scenarios/<id>.json through the harness) when installed.
 const SUITE = [
-  { id: 'narrow', what: 'point, wall with a 0.02 gap', wasm: true,
-    setups: ['rrt: rrt --range 0.2828', 'rrt-connect: rrt-connect --range 0.2828'],
-    ompl: { rrt: '0.6 ms, 8.4k checks', 'rrt-connect': '2.4 ms, 17k checks' }, omplMs: { rrt: 0.6, 'rrt-connect': 2.4 } },
-  { id: 'ompl-rect', what: 'rigid 0.1 × 0.02 bar, 0.04 gap', wasm: true,
-    setups: ['rrt: rrt --range 0.597', 'rrt-connect: rrt-connect --range 0.597'],
-    ompl: { rrt: '23 ms, 123k checks', 'rrt-connect': '36 ms, 159k checks' }, omplMs: { rrt: 23, 'rrt-connect': 36 } },
-  { id: 'horn-10', what: 'kinematic chain in the horn, 10 links', wasm: true,
-    setups: ['rrt: rrt', 'rrt-connect: rrt-connect'],
-    ompl: { rrt: '7.3 ms', 'rrt-connect': '9.9 ms' }, omplMs: { rrt: 7.3, 'rrt-connect': 9.9 } },
-  { id: 'horn-20', what: 'kinematic chain in the horn, 20 links (10 s limit)', slow: true,
-    setups: ['rrt-connect: rrt-connect --time-limit 10', 'rrt: rrt --time-limit 10'],
-    ompl: { rrt: '83% solved in 30 s', 'rrt-connect': '33% solved in 30 s' } },
+  { id: 'narrow', what: 'point, wall with a 0.02 gap', wasm: true, ompl: true,
+    setups: ['rrt: rrt --range 0.2828', 'rrt-connect: rrt-connect --range 0.2828'] },
+  { id: 'ompl-rect', what: 'rigid 0.1 × 0.02 bar, 0.04 gap', wasm: true, ompl: true,
+    setups: ['rrt: rrt --range 0.597', 'rrt-connect: rrt-connect --range 0.597'] },
+  { id: 'horn-10', what: 'kinematic chain in the horn, 10 links', wasm: true, ompl: true,
+    setups: ['rrt: rrt', 'rrt-connect: rrt-connect'] },
+  { id: 'horn-20', what: 'kinematic chain in the horn, 20 links (10 s limit)', slow: true, ompl: true,
+    setups: ['rrt-connect: rrt-connect --time-limit 10', 'rrt: rrt --time-limit 10'] },
   { id: 'asv-7', what: 'seven vehicles and brooms (7ASV)', runs: 10, setups: ['rrt-connect: rrt-connect --time-limit 10'] },
   ...['3ASV-easy', '3ASV', '7ASV-easy', '7ASV'].map((f) => ({ id: join(ASV, `${f}.txt`), name: f, what: `official ASV file ${f}.txt`, runs: 10,
     setups: ['rrt-connect: rrt-connect --time-limit 10'], optional: true })),
@@ -58,6 +58,46 @@ console.log('[bench] cargo build --release');
 execFileSync('cargo', ['build', '--release', '--quiet'], { cwd: root, stdio: 'inherit' });
 
 const tmp = mkdtempSync(join(tmpdir(), 'planarium-suite-'));
+
+// OMPL through the project's harness, when installed (rebuilt only when its source is newer).
+const selected = (p) => (!only || only.includes(p.name ?? p.id)) && !(quick && p.slow);
+let omplBin = null;
+let omplStatus = null;
+if (SUITE.some((p) => p.ompl && selected(p))) {
+  const found = detectOmpl();
+  omplStatus = found.message;
+  console.log(`[bench] ${found.message}`);
+  if (found.installed) {
+    console.log('[bench] g++ -O3 bench/ompl/harness.cpp (when newer than target/ompl/harness)');
+    omplBin = buildHarness(root);
+  }
+}
+// A suite problem's scenario, and the harness's problem file for each of its set-ups (or why not).
+const omplProblems = (p, name, setups) => {
+  const scenario = JSON.parse(readFileSync(join(root, 'scenarios', `${p.id}.json`), 'utf8'));
+  return setups.map((s, i) => {
+    const made = problemText(scenario, s.planner, s.params ?? {});
+    if ('skip' in made) {
+      console.log(`[bench] ${name} ${s.label}: OMPL not measured (${made.skip})`);
+      return { skip: made.skip };
+    }
+    const file = join(tmp, `${name}-ompl-${i}.txt`);
+    writeFileSync(file, made.text);
+    return { file };
+  });
+};
+const sameOmplRun = (x, y) => x.checks === y.checks && x.nodes === y.nodes && x.solved === y.solved;
+// OMPL's runs of one set-up in one round. A set-up that solves none of its first OMPL_PROBE seeds
+// (each then costs its whole time limit, e.g. OMPL's RRT-Connect on the horn) stops there, and is
+// run in the first round only: its times are time limits, not planning times.
+const OMPL_PROBE = 5;
+const omplSeeds = (file, planner, runs, limitS, first) => {
+  if (first?.stopped) return first;
+  const head = runHarness(omplBin, file, planner, 1, Math.min(OMPL_PROBE, runs), limitS);
+  if (runs <= OMPL_PROBE) return { rows: head, stopped: false };
+  if (!head.some((x) => x.solved)) return { rows: head, stopped: true };
+  return { rows: head.concat(runHarness(omplBin, file, planner, OMPL_PROBE + 1, runs, limitS)), stopped: false };
+};
 
 // The wasm build in Node: the same set-ups and seeds, events off, as the page's benchmark workers.
 const wasmFile = join(root, 'www', 'pkg', 'planarium_bg.wasm');
@@ -88,16 +128,25 @@ for (const p of SUITE) {
   if (p.optional && !existsSync(p.id)) { console.log(`[bench] ${name}: ${p.id} not found, skipped`); continue; }
   const runs = Math.min(p.runs ?? runsArg, runsArg);
   const withWasm = p.wasm && wasm;
+  const withOmpl = p.ompl && omplBin;
   if (withWasm && !wasm.texts[p.id]) throw new Error(`www/pkg has no built-in "${p.id}": rebuild it (node scripts/build.mjs)`);
-  const rounds = withWasm ? roundsArg : 1;
+  const rounds = withWasm || withOmpl ? roundsArg : 1;
   const started = Date.now();
-  // Rounds alternate native and wasm, so that both sides see the machine in the same state.
+  // Rounds alternate native, OMPL and wasm, so that all sides see the machine in the same state.
   const reports = [];
   const wasmRounds = [];
+  const omplRounds = [];
+  let problems = null;
   for (let k = 0; k < rounds; k++) {
     const file = join(tmp, `${name}-${k}.json`);
     execFileSync(cli, ['bench', p.id, '--runs', String(runs), ...p.setups.flatMap((s) => ['--setup', s]), '--json-file', file], { cwd: root, stdio: ['ignore', 'ignore', 'inherit'] });
     reports.push(JSON.parse(readFileSync(file, 'utf8')));
+    if (withOmpl) {
+      problems ??= omplProblems(p, name, reports[0].setups);
+      omplRounds.push(reports[0].setups.map((s, i) => (problems[i].file
+        ? omplSeeds(problems[i].file, s.planner, runs, Number(s.params?.time_limit ?? reports[0].time_limit_s), omplRounds[0]?.[i])
+        : null)));
+    }
     if (!withWasm) continue;
     wasmRounds.push(reports[0].setups.map((s) => {
       // One untimed run first: the engine compiles the module's hot code on first use.
@@ -117,9 +166,19 @@ for (const p of SUITE) {
     const all = wasmRounds.map((r) => r[i]);
     return { label: s.label, rows: all[0], best_ms: bestOf(all), same_as_native: all.every((rows) => rows.every((x, j) => sameRun(x, s.rows[j]))) };
   }) : null;
-  console.log(`[bench] ${name}: ${runs} seeds × ${p.setups.length} set-ups × ${rounds} round(s) ${withWasm ? 'natively and in wasm' : 'natively'} in ${((Date.now() - started) / 1000).toFixed(1)} s`);
+  const omplResult = withOmpl ? report.setups.map((s, i) => {
+    if (problems[i].skip) return { label: s.label, skip: problems[i].skip };
+    const all = omplRounds.map((r) => r[i].rows);
+    const agree = all.every((rows) => rows.every((x, j) => sameOmplRun(x, all[0][j])));
+    if (!agree) console.log(`[bench] ${name} ${s.label}: the OMPL rounds DIFFER`);
+    const stopped = omplRounds[0][i].stopped;
+    if (stopped) console.log(`[bench] ${name} ${s.label}: OMPL solved none of seeds 1..${OMPL_PROBE}; its other seeds and rounds not run`);
+    return { label: s.label, planner: s.planner, rows: all[0], best_ms: bestOf(all), rounds_agree: agree, stopped };
+  }) : null;
+  const sides = ['natively', withOmpl && 'by OMPL', withWasm && 'in wasm'].filter(Boolean).join(', ');
+  console.log(`[bench] ${name}: ${runs} seeds × ${p.setups.length} set-ups × ${rounds} round(s) ${sides} in ${((Date.now() - started) / 1000).toFixed(1)} s`);
   if (wasmResult) console.log(`[bench] ${name}: wasm in Node ${wasmResult.every((w) => w.same_as_native) ? 'gives the native runs exactly' : 'DIFFERS from the native runs'}`);
-  results.push({ problem: name, what: p.what, runs, ompl: p.ompl ?? null, omplMs: p.omplMs ?? null, native: report, wasm: wasmResult, wasmScenario: withWasm ? p.id : null });
+  results.push({ problem: name, what: p.what, runs, omplCompared: Boolean(p.ompl), ompl: omplResult, native: report, wasm: wasmResult, wasmScenario: withWasm ? p.id : null });
 }
 
 // The scaling benchmark: natively, then in wasm (the same states: the valid counts must agree).
@@ -148,11 +207,14 @@ const lines = [
   `# Benchmark suite, ${new Date().toISOString().slice(0, 16).replace('T', ' ')} UTC`,
   '',
   `Machine: ${host}, Node ${process.version}. Seeds 1..N per set-up; times are medians of planning time (smoothing excluded). `
-  + `Where wasm is measured, both sides ran ${roundsArg} round(s) and each seed's time is its best round. `
-  + 'OMPL 1.5.2 figures: Debian\'s libompl-dev, -O3 (medians over 20 seeds, same machine kind). Made by `npm run bench`.',
+  + `Where wasm or OMPL is measured, every side ran ${roundsArg} round(s), alternated, and each seed's time is its best round. `
+  + (omplBin ? 'OMPL: OMPL 1.5\'s RRT and RRT-Connect (Debian\'s libompl-dev) in the project\'s harness, bench/ompl/harness.cpp, g++ -O3, the same set-ups and seeds; '
+    + 'its checks count its state validity checker\'s calls; native / OMPL is the ratio of the median times (below 1: Planarium is faster). '
+    : `${omplStatus ?? 'OMPL not measured'}. `)
+  + 'Made by `npm run bench`.',
   '',
-  '| problem | set-up | solved | median ms (native) | mean ± std ms (native) | median ms (wasm, Node) | wasm / native | OMPL | median nodes | median checks | median cost |',
-  '|---|---|---|---|---|---|---|---|---|---|---|',
+  '| problem | set-up | solved | median ms (native) | mean ± std ms (native) | median ms (wasm, Node) | wasm / native | solved (OMPL) | median ms (OMPL) | native / OMPL | median checks (OMPL) | median nodes | median checks | median cost |',
+  '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|',
 ];
 for (const r of results) {
   r.native.setups.forEach((s, k) => {
@@ -160,9 +222,17 @@ for (const r of results) {
     const w = r.wasm?.[k];
     const wms = w ? median(w.best_ms) : NaN;
     const nms = s.rounds > 1 ? median(s.best_ms) : m.time_ms.median;
-    const plannerKey = s.planner;
     const agree = (w ? w.same_as_native : true) && s.rounds_agree;
-    lines.push(`| ${r.problem} | ${s.label} | ${m.solved}/${m.runs} | ${f(nms)} | ${s.rounds > 1 ? `${f(mean(s.best_ms))} ± ${f(std(s.best_ms))}` : `${f(m.time_ms.mean)} ± ${f(m.time_ms.std)}`} | ${w ? f(wms) : '—'} | ${w ? `${f(wms / nms)}×` : '—'}${agree ? '' : ' (runs differ!)'} | ${r.ompl?.[plannerKey] ?? '—'} | ${f(m.nodes.median, 1)} | ${f(m.checks.median, 0)} | ${f(m.cost.median, 4)} |`);
+    const o = r.ompl?.[k];
+    const oms = o?.rows ? median(o.best_ms) : NaN;
+    const notMeasured = r.omplCompared ? 'not measured' : '—';
+    // A median over runs of which half or more failed is a time limit, not a planning time.
+    const oSolved = o?.rows ? o.rows.filter((x) => x.solved).length : 0;
+    const ratio = 2 * oSolved > (o?.rows?.length ?? 0) && 2 * m.solved > m.runs ? `${f(nms / oms)}×` : '— (half or more unsolved)';
+    const omplCells = o?.rows
+      ? [`${oSolved}/${o.rows.length}${o.stopped ? ' (stopped)' : ''}`, f(oms), `${ratio}${o.rounds_agree ? '' : ' (rounds differ!)'}`, f(median(o.rows.map((x) => x.checks)), 0)]
+      : [notMeasured, notMeasured, '—', '—'];
+    lines.push(`| ${r.problem} | ${s.label} | ${m.solved}/${m.runs} | ${f(nms)} | ${s.rounds > 1 ? `${f(mean(s.best_ms))} ± ${f(std(s.best_ms))}` : `${f(m.time_ms.mean)} ± ${f(m.time_ms.std)}`} | ${w ? f(wms) : '—'} | ${w ? `${f(wms / nms)}×` : '—'}${agree ? '' : ' (runs differ!)'} | ${omplCells.join(' | ')} | ${f(m.nodes.median, 1)} | ${f(m.checks.median, 0)} | ${f(m.cost.median, 4)} |`);
   });
 }
 lines.push('', 'Problems:', '');
