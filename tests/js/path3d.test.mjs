@@ -3,7 +3,8 @@
 // and the ghost spacing's bounds.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { parseStates, readSpacing, GHOSTS } from '../../www/ui/path3d.js';
+import { parseStates } from '../../www/ui/path3d.js';
+import { readSpacing, GHOSTS } from '../../www/ui/ghost-spacing.js';
 
 test('parseStates reads each frame\'s state past its outline, and takes the lengths from the core\'s array', () => {
   // dims 2, 3 frames; outlines: none, one triangle, two polygons (a point and a segment)

@@ -19,8 +19,6 @@ import { Timeline, JOINT_COLOURS } from '../draw/timeline.js';
 import { parseFrames } from '../draw/transform.js';
 import { GHOSTS, readSpacing } from './ghost-spacing.js';
 
-export { GHOSTS, readSpacing };
-
 /** The scrubber's steps along the path (its value is a thousandth of the length). */
 const SCRUB_STEPS = 1000;
 const TIMELINE_HEIGHT = 170;
