@@ -19,7 +19,7 @@ import { boxPlot, successBars, scatter, stepLines, hitDot } from '../draw/plots.
 import { downloadText } from '../draw/stage.js';
 import { plotOn, addPlotDownloads } from '../ui/plot-downloads.js';
 import { withProgress } from '../run/ompl-progress.js';
-import { resultRows, fillTable, toMarkdown, toLatex } from '../ui/results-table.js';
+import { resultRows, fillTable, toMarkdown, toLatex, FK_NOTE } from '../ui/results-table.js';
 import { el } from '../ui/dom.js';
 import { runPool } from '../ui/seed-pool.js';
 import { setupLine, setupLines, readPageState, wholeIn, checkSetups, coreError, pageHash, playgroundLink, readChosenFile, differingParams, MAX_SETUPS } from '../ui/setups.js';
@@ -226,7 +226,7 @@ function show(r) {
   ui.courseTable.hidden = false;
   const ran = seedsRun(r);
   const partial = asked && asked.done < asked.total ? ` (stopped after ${asked.done} of ${asked.total} runs)` : '';
-  ui.caption.textContent = shown(`${r.scenario}: ${ran}${partial}; means ± standard deviations and medians over all runs, costs over solved runs`);
+  ui.caption.textContent = shown(`${r.scenario}: ${ran}${partial}; means ± standard deviations and medians over all runs, costs over solved runs${tableText.head.some((h) => h.includes('(fk)')) ? `; ${FK_NOTE}` : ''}`);
   tableText.caption = ui.caption.textContent;
   ui.table.hidden = false;
   ui.copyBar.hidden = false;

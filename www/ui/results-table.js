@@ -37,12 +37,27 @@ const COLUMNS = [
 ];
 
 /**
+ * The columns in an arm course's own unit (report 004's: the norm of the stacked link-end
+ * differences, summed; `summary.cost_fk`), shown only when some set-up's runs have it.
+ * @type {Array<[string, (s: any) => string]>}
+ */
+const FK_COLUMNS = [
+  ['cost (fk) mean ± std', (s) => meanStd(s.summary.cost_fk)],
+  ['cost (fk) median', (s) => num(s.summary.cost_fk?.median)],
+  ['smoothed cost (fk) median', (s) => num(s.summary.smoothed_cost_fk?.median)],
+];
+
+/** The caption's note when the table has the fk columns. */
+export const FK_NOTE = "cost (fk): the Technion course's unit (report 004), the norm of the stacked link-end differences summed over the path";
+
+/**
  * The table's text: {head: [heading], rows: [[cell]]} of the core's exported set-ups
  * ([{label, summary}]).
  * @param {any[]} setups @returns {{head: string[], rows: string[][], caption?: string}}
  */
 export function resultRows(setups) {
-  return { head: COLUMNS.map(([h]) => h), rows: setups.map((s) => COLUMNS.map(([, cell]) => cell(s))) };
+  const cols = setups.some((s) => s.summary.cost_fk?.n > 0) ? [...COLUMNS, ...FK_COLUMNS] : COLUMNS;
+  return { head: cols.map(([h]) => h), rows: setups.map((s) => cols.map(([, cell]) => cell(s))) };
 }
 
 /** Fill `table` (its thead and tbody) with `rows`: the first cell of a row is its heading. */
