@@ -57,7 +57,22 @@ pub struct SpatialArmRobot {
     /// state): how fast it can move, in metres per radian of that joint.
     reach: Vec<Real>,
     scratch: RefCell<Scratch>,
+    tool_memo: RefCell<ToolMemo>,
 }
+
+/// The last few tool points computed, their states compared bit for bit: a recorded run projects
+/// the same node again and again (nearest, steer, collision, node added), and each projection is
+/// the chain's forward kinematics. What it returns is what the kinematics gives, so runs and
+/// their events are the same bits with it or without it.
+#[derive(Clone, Debug, Default)]
+struct ToolMemo {
+    states: Vec<Real>,
+    points: Vec<[Real; 3]>,
+    next: usize,
+}
+
+/// States the tool memo keeps.
+const TOOL_MEMO: usize = 4;
 
 impl SpatialArmRobot {
     /// The robot a scenario's `spatial-arm` block describes; an error names the part whose hull
@@ -111,7 +126,30 @@ impl SpatialArmRobot {
             },
             tool: *tool,
             scratch: RefCell::new(Scratch::default()),
+            tool_memo: RefCell::new(ToolMemo::default()),
         })
+    }
+
+    /// The tool centre point at `q` ([`Chain::point_on_last`]), from the memo when `q` is one of
+    /// the last states asked for.
+    fn tool_at(&self, q: &[Real]) -> [Real; 3] {
+        let mut m = self.tool_memo.borrow_mut();
+        let n = q.len();
+        let same = |k: usize| m.states[k * n..(k + 1) * n].iter().zip(q).all(|(a, b)| a.to_bits() == b.to_bits());
+        if let Some(k) = (0..m.points.len()).find(|&k| same(k)) {
+            return m.points[k];
+        }
+        let p = self.chain.point_on_last(q, &self.tool);
+        if m.points.len() < TOOL_MEMO {
+            m.states.extend_from_slice(q);
+            m.points.push(p);
+        } else {
+            let k = m.next;
+            m.states[k * n..(k + 1) * n].copy_from_slice(q);
+            m.points[k] = p;
+            m.next = (k + 1) % TOOL_MEMO;
+        }
+        p
     }
 
     fn within_limits(&self, q: &[Real]) -> bool {
@@ -276,7 +314,7 @@ impl Robot for SpatialArmRobot {
     }
     /// The tool centre point seen from above.
     fn project(&self, q: &[Real]) -> Vec2 {
-        let [x, y, _] = self.chain.point_on_last(q, &self.tool);
+        let [x, y, _] = self.tool_at(q);
         Vec2::new(x, y)
     }
     /// The skeleton seen from above: the link frames' origins and the tool centre point.
@@ -315,7 +353,7 @@ impl Spatial for SpatialArmRobot {
         self.skeleton_points(q)
     }
     fn tool_point(&self, q: &[Real]) -> [Real; 3] {
-        self.chain.point_on_last(q, &self.tool)
+        self.tool_at(q)
     }
     fn tool(&self) -> [Real; 3] {
         self.tool
