@@ -14,6 +14,7 @@ export const SPEED_PRESETS = Object.freeze({ 'speed-slow': 10, 'speed-normal': 3
  * @returns {() => void}
  */
 export function wireSpeedButtons(speed, changed) {
+  /** @type {[HTMLElement, number][]} */
   const buttons = Object.entries(SPEED_PRESETS).map(([id, v]) => {
     const b = document.getElementById(id);
     if (!b) throw new Error(`speed presets: the page has no #${id}`);
@@ -21,7 +22,7 @@ export function wireSpeedButtons(speed, changed) {
       speed.value = String(v);
       changed();
     });
-    return [b, v];
+    return /** @type {[HTMLElement, number]} */ ([b, v]);
   });
   return () => {
     for (const [b, v] of buttons) b.setAttribute('aria-checked', String(Number(speed.value) === v));
