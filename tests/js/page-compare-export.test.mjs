@@ -67,6 +67,27 @@ test('compare: a GIF of both lanes as a time-lapse: two lanes wide, many frames,
   assert.match(await page.textContent('#export-status'), /Saved planarium-compare\.gif, 676 × \d+, 50 frames at 10 fps, both whole runs in 5 s/);
 });
 
+test('compare: a GIF of both lanes in real time follows both runs as the page plays them', async () => {
+  await openCompare('#scenario=open-field&a=rrt-star&b=rrt&seed=1');
+  await page.click('#speed-normal'); // both runs in about 15 s: the GIF's 4 s see both trees grow
+  await page.click('#run');
+  assert.equal(await page.$eval('#export-lapse', (s) => s.value), '0', 'real time by default');
+  const gif = await download(() => page.click('#export-lanes-gif'));
+  const g = decodeGif(gif.bytes);
+  assert.equal(g.width, PAD + LANE + PAD + LANE + PAD, `two lanes wide: ${g.width}`);
+  assert.equal(g.frames.length, 40, 'real time: 4 s at 10 frames a second');
+  const first = g.frames[0].indices, last = g.frames[g.frames.length - 1].indices;
+  // each lane's picture (under its 30 px title; the open field is square), not its numbers
+  const changed = (x0) => {
+    let n = 0;
+    for (let y = PAD + 30; y < PAD + 30 + LANE; y++) for (let x = x0; x < x0 + LANE; x++) if (first[y * g.width + x] !== last[y * g.width + x]) n++;
+    return n;
+  };
+  const [a, b] = [changed(PAD), changed(2 * PAD + LANE)];
+  assert.ok(a > 100 && b > 100, `both lanes moved while the GIF was taken: A ${a}, B ${b} pixels changed`);
+  assert.match(await page.textContent('#export-status'), /Saved planarium-compare\.gif, 676 × \d+, 40 frames at 10 fps, \d+ kB/);
+});
+
 test('compare: a WebM of both lanes as a time-lapse saves by itself, two lanes wide, with a duration', async () => {
   await openCompare(HASH);
   await runBoth();
