@@ -489,7 +489,7 @@ window.addEventListener('hashchange', () => location.reload());
 ui.runSeeds.addEventListener('click', runSeeds);
 
 // Export for a slide: both lanes in one PNG, GIF or WebM, with their titles and key numbers
-const numbersOf = (s) => KEY_NUMBERS.map(([label, id]) => [label, $(`${s.key}-${id}`)?.textContent ?? '']);
+const numbersOf = (s) => KEY_NUMBERS.map(([label, id, short = (t) => t]) => [label, short($(`${s.key}-${id}`)?.textContent ?? '')]);
 wireCompareExport({
   button: $('export-lanes'), status: $('export-status'), onError: showError,
   lanes: () => sides.map((s) => ({ key: s.key, title: s.title.textContent, canvas: $(`${s.key}-${s.view3d.active ? 'view3d' : 'canvas'}`), numbers: numbersOf(s) })),
