@@ -27,6 +27,8 @@ import init, { parse_setups as parseSetups } from '../pkg/planarium.js';
 import { setupFor } from '../ui/links.js';
 import { fillSeedsTable } from '../ui/seeds-table.js';
 import { wireCompareExport, wireChartDownloads, KEY_NUMBERS } from '../ui/compare-export.js';
+import { wireLanesAnimations } from '../ui/compare-anim.js';
+import { wireSpeedButtons } from '../ui/speed-buttons.js';
 import { runPool } from '../ui/seed-pool.js';
 import { setupLine, readPageState, checkSetups, pageHash, playgroundLink, readChosenFile, differingParams } from '../ui/setups.js';
 import { shown } from '../ui/text.js';
@@ -412,9 +414,7 @@ function syncSide(s) {
   const extras = Object.entries(cfg.params).filter(([k]) => k !== 'sampler').map(([k, v]) => `${k} ${v}`);
   s.title.textContent = [p.label, sampler ? `${sampler} sampler` : null, ...extras].filter(Boolean).join(' · ');
   const kind = chartKind(p, s.playback.model);
-  const best = s.loaded?.optimum;
-  const optimum = best && best.exact && Number.isFinite(best.cost) ? best.cost : null;
-  s.chart.setKind(kind, { target: src.scenario?.inspection?.coverage ?? null, optimum });
+  s.chart.setKind(kind, { target: src.scenario?.inspection?.coverage ?? null, optimum: optimumOf(s) });
   s.chartBox.hidden = !kind;
   s.chartTitle.textContent = kind === 'cost' ? 'Best cost against iterations'
     : kind === 'coverage' ? 'Coverage of the best branch against iterations' : '';
@@ -427,7 +427,13 @@ function statusOf(s) {
   return controller.state;
 }
 
-function statsOf(s) { return s.lane.statsFor(statusOf(s), s.lane.caughtUp); }
+/** A side's stats, with its scenario's optimum (the visibility graph's, for a point or a disc robot: the Optimum row). */
+function statsOf(s) { return { ...s.lane.statsFor(statusOf(s), s.lane.caughtUp), optimum: optimumOf(s) }; }
+
+function optimumOf(s) {
+  const best = s.loaded?.optimum;
+  return best && best.exact && Number.isFinite(best.cost) ? best.cost : null;
+}
 
 function updateStats(s) { s.stats(statsOf(s)); }
 
@@ -482,13 +488,15 @@ window.addEventListener('hashchange', () => location.reload());
 
 ui.runSeeds.addEventListener('click', runSeeds);
 
-// Export for a slide: both lanes in one PNG, with their titles and key numbers
+// Export for a slide: both lanes in one PNG, GIF or WebM, with their titles and key numbers
+const numbersOf = (s) => KEY_NUMBERS.map(([label, id, short = (t) => t]) => [label, short($(`${s.key}-${id}`)?.textContent ?? '')]);
 wireCompareExport({
   button: $('export-lanes'), status: $('export-status'), onError: showError,
-  lanes: () => sides.map((s) => ({
-    key: s.key, title: s.title.textContent, canvas: $(`${s.key}-${s.view3d.active ? 'view3d' : 'canvas'}`),
-    numbers: KEY_NUMBERS.map(([label, id]) => [label, $(`${s.key}-${id}`)?.textContent ?? '']),
-  })),
+  lanes: () => sides.map((s) => ({ key: s.key, title: s.title.textContent, canvas: $(`${s.key}-${s.view3d.active ? 'view3d' : 'canvas'}`), numbers: numbersOf(s) })),
+});
+wireLanesAnimations({
+  gif: $('export-lanes-gif'), webm: $('export-lanes-webm'), lapse: $('export-lapse'), status: $('export-status'), animFps: () => animFps(ui.animSpeed),
+  lanes: () => sides.map((s) => ({ key: s.key, title: s.title.textContent, view: s.view, view3d: s.view3d.active, numbers: () => numbersOf(s) })),
 });
 ui.seedsCancel.addEventListener('click', () => stopSeeds('Cancelled.'));
 
@@ -523,7 +531,10 @@ ui.seed.addEventListener('change', () => {
 });
 
 
+// Slow / Normal / Fast / Instant: the playground's presets of the slider, for both lanes
+const syncSpeedButtons = wireSpeedButtons(ui.speed, () => updateOutputs());
 function updateOutputs() {
+  syncSpeedButtons();
   ui.speedOut.textContent = describeSpeed(ui.speed);
   ui.animOut.textContent = `${Math.round(animFps(ui.animSpeed))} frames/s`;
 }
@@ -559,6 +570,9 @@ Object.defineProperty(window, 'planarium', {
     config: (key = 'a') => (laneOf(key).panel ? structuredClone(setupOf(laneOf(key))) : null),
     scenario: () => (src.scenario ? structuredClone(src.scenario) : null),
     seed: () => seed,
+    /** The replay's pace: the slider's seconds for a whole run, and a lane's pace as its last frame used it (run/pace.js). */
+    duration: () => speedSeconds(ui.speed),
+    pace: (key = 'a') => { const p = laneOf(key).playback.pace; return { duration: p.duration, clock: p.clock, frames: p.frames }; },
     /** The last "Run 20 seeds": {first, last, lines, a, b (success, medians), better: {metric: 'a' | 'b' | null}, rows}. */
     seeds: () => (seedSummary ? structuredClone(seedSummary) : null),
     seedsRunning: () => !!seedJob,

@@ -6,8 +6,13 @@
 import { downloadBlob } from '../draw/stage.js';
 import { SvgContext, svgNode } from '../draw/svg-context.js';
 
-/** The key numbers under each lane: [label, the stats list's element id suffix]. */
-export const KEY_NUMBERS = [['status', 'status'], ['time (ms)', 'stat-time'], ['nodes', 'stat-nodes'], ['checks', 'stat-checks'], ['cost', 'stat-cost'], ['smoothed', 'stat-smoothed-cost']];
+/**
+ * The key numbers under each lane: [label, the stats list's element id suffix, and how its text is
+ * shortened for a lane's width, if it is].
+ * @type {[string, string, ((text: string) => string)?][]}
+ */
+export const KEY_NUMBERS = [['status', 'status'], ['time (ms)', 'stat-time'], ['nodes', 'stat-nodes'], ['checks', 'stat-checks'], ['cost', 'stat-cost'], ['smoothed', 'stat-smoothed-cost'],
+  ['optimum', 'stat-optimum', (t) => t.replace(' (visibility graph)', '')]];
 
 const PAD = 12; // css px around and between the lanes
 const TITLE = 30; // css px of a lane's title row
