@@ -7,7 +7,9 @@
 // - CHANGELOG.md names every golden fingerprint pinned in tests/golden/runs.json (a figure in
 //   someone's course notes changes when one does, so each change is written down);
 // - every file of the repository the README, the docs, Cargo.toml, the code's comments and the
-//   scenarios name exists (a statement about a moved file is stale).
+//   scenarios name exists (a statement about a moved file is stale);
+// - no symbolic link is tracked (a link committed from a working copy, such as node_modules
+//   pointing at another checkout, would break a fresh clone's set-up).
 import { execFileSync } from 'node:child_process';
 import { existsSync, readFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
@@ -74,6 +76,11 @@ for (const file of prose) {
       if (!ELSEWHERE.has(m[1]) && !existsSync(join(root, m[1]))) problems.push(`${file}:${i + 1}: names ${m[1]}, which is not in the repository`);
     }
   });
+}
+
+// 5. No tracked symbolic link (git's mode 120000).
+for (const line of execFileSync('git', ['ls-files', '-s'], { cwd: root, encoding: 'utf8' }).split('\n')) {
+  if (line.startsWith('120000 ')) problems.push(`${line.split('\t')[1]}: a symbolic link is tracked (git rm --cached it; set-up makes what the clone needs)`);
 }
 
 if (problems.length) {
