@@ -8,7 +8,10 @@
 // point, a rectangle and an arm (the CLI's `scaling`, and `scaling_json` in wasm).
 // Writes bench/results/suite-<UTC stamp>.json (everything) and .md (the tables).
 //
-//   node scripts/bench.mjs [--runs N] [--rounds K] [--only id,id] [--quick]
+//   node scripts/bench.mjs [--runs N] [--rounds K] [--only id,id] [--quick] [--out DIR]
+//
+// --out DIR: write the results there instead of bench/results/. PLANARIUM_OMPL=0 in the
+// environment leaves OMPL out, as on a machine without it.
 //
 // --only scaling: the scaling benchmark alone.
 // --quick: 5 runs and no horn-20 (a smoke run). Times are wall-clock medians of planning only.
@@ -248,7 +251,7 @@ if (scaling) {
     lines.push(`| ${r.robot} | ${r.obstacles} | ${f(r.ns_per_check, 1)} | ${f(r.ratio_to_10)} | ${w ? f(w.ns_per_check, 1) : '—'} | ${w ? f(w.ratio_to_10) : '—'} | ${r.valid}${w && w.valid !== r.valid ? ' (wasm differs!)' : ''} | ${f(r.build_ms)} | ${f(r.broad_phase_bytes / 1024, 0)} |`);
   });
 }
-const outDir = join(root, 'bench', 'results');
+const outDir = opt('--out', join(root, 'bench', 'results'));
 mkdirSync(outDir, { recursive: true });
 const base = join(outDir, `suite-${stamp}`);
 writeFileSync(`${base}.json`, `${JSON.stringify({ date: new Date().toISOString(), host, node: process.version, runs: runsArg, results, scaling }, null, 1)}\n`);

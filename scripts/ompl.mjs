@@ -11,12 +11,17 @@ export const OMPL_INCLUDE = '/usr/include/ompl-1.5';
 /** What the suite prints when OMPL cannot be measured here. */
 export const NOT_INSTALLED = "OMPL not installed (Debian's libompl-dev): OMPL not measured";
 
+/** What the suite prints when `PLANARIUM_OMPL=0` tells it to leave OMPL out. */
+export const SWITCHED_OFF = 'OMPL left out (PLANARIUM_OMPL=0): OMPL not measured';
+
 /**
- * Whether OMPL can be measured here: its headers and a C++ compiler.
- * @param {{ include?: string, compiler?: string }} [where]
+ * Whether OMPL can be measured here: its headers and a C++ compiler, unless the environment's
+ * `PLANARIUM_OMPL=0` leaves it out (the suite then runs as on a machine without OMPL).
+ * @param {{ include?: string, compiler?: string, env?: Record<string, string | undefined> }} [where]
  * @returns {{ installed: boolean, message: string }}
  */
-export function detectOmpl({ include = OMPL_INCLUDE, compiler = 'g++' } = {}) {
+export function detectOmpl({ include = OMPL_INCLUDE, compiler = 'g++', env = process.env } = {}) {
+  if (env.PLANARIUM_OMPL === '0') return { installed: false, message: SWITCHED_OFF };
   if (!existsSync(join(include, 'ompl', 'geometric', 'SimpleSetup.h'))) return { installed: false, message: NOT_INSTALLED };
   try {
     execFileSync(compiler, ['--version'], { stdio: 'ignore' });

@@ -4,11 +4,12 @@
 // RRT-Connect, counts its state checks, repeats a seed exactly and fails a closed wall.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { existsSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { execFileSync } from 'node:child_process';
+import { existsSync, mkdtempSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { NOT_INSTALLED, OMPL_INCLUDE, buildHarness, detectOmpl, problemText, runHarness } from '../../scripts/ompl.mjs';
+import { NOT_INSTALLED, SWITCHED_OFF, OMPL_INCLUDE, buildHarness, detectOmpl, problemText, runHarness } from '../../scripts/ompl.mjs';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
 const scenario = (id) => JSON.parse(readFileSync(join(root, 'scenarios', `${id}.json`), 'utf8'));
@@ -23,6 +24,30 @@ test('without OMPL\'s headers the suite is told "not installed", and says so in 
   // (or, with the header, when no g++ can build the harness).
   if (!existsSync(join(OMPL_INCLUDE, 'ompl', 'geometric', 'SimpleSetup.h'))) assert.deepEqual(found, missing);
   else assert.ok(found.installed || /no g\+\+/.test(found.message), found.message);
+});
+
+test('PLANARIUM_OMPL=0 leaves OMPL out: a whole suite run says so and measures Planarium alone', () => {
+  assert.deepEqual(detectOmpl({ env: { PLANARIUM_OMPL: '0' } }), { installed: false, message: SWITCHED_OFF });
+  assert.equal(detectOmpl({ include: join(tmpdir(), 'no-ompl-here'), env: { PLANARIUM_OMPL: '1' } }).message, NOT_INSTALLED);
+  // the suite itself, on the narrow passage (a smoke run: 3 seeds, one round), into a folder of its own
+  const out = mkdtempSync(join(tmpdir(), 'planarium-suite-off-'));
+  const log = execFileSync(process.execPath, [join(root, 'scripts', 'bench.mjs'), '--quick', '--runs', '3', '--only', 'narrow', '--out', out],
+    { cwd: root, encoding: 'utf8', env: { ...process.env, PLANARIUM_OMPL: '0' }, stdio: ['ignore', 'pipe', 'pipe'] });
+  assert.match(log, /\[bench\] OMPL left out \(PLANARIUM_OMPL=0\): OMPL not measured/);
+  assert.doesNotMatch(log, /g\+\+ -O3 bench\/ompl\/harness\.cpp/, 'no harness is built');
+  const md = readdirSync(out).find((f) => f.endsWith('.md'));
+  const text = readFileSync(join(out, md), 'utf8');
+  assert.ok(text.includes(`${SWITCHED_OFF}. `), 'the table\'s preamble says why OMPL is missing');
+  const rows = text.split('\n').filter((l) => l.startsWith('| narrow |'));
+  assert.equal(rows.length, 2, 'RRT and RRT-Connect on the narrow passage');
+  for (const row of rows) {
+    const cells = row.split(' | ');
+    assert.equal(cells[7], 'not measured', `OMPL's solved column: ${row}`);
+    assert.equal(cells[8], 'not measured', `OMPL's time column: ${row}`);
+    assert.match(cells[2], /^3\/3$/, `Planarium solved its 3 seeds: ${row}`);
+  }
+  const json = JSON.parse(readFileSync(join(out, md.replace(/\.md$/, '.json')), 'utf8'));
+  assert.ok(json.results[0].ompl === null || json.results[0].ompl.every((o) => !o.rows), 'no OMPL rows in the results');
 });
 
 test('the problem file carries the scenario\'s bounds, resolution, range, goal bias, robot and obstacles', () => {
