@@ -48,6 +48,14 @@ export interface PlaygroundAttributes {
   fill?: string;
 }
 
+/** `loaded`: a scenario and its planner set-up are ready to run (after each attribute change too). */
+export interface PlaygroundLoadedDetail {
+  /** The scenario's name ("Narrow passage"). */
+  scenario: string;
+  planner: string;
+  seed: number | null;
+}
+
 /** `run`: a run starts (Run, autoplay, click to start) or resumes after a pause. */
 export interface PlaygroundRunDetail {
   /** The scenario's name ("Narrow passage"). */
@@ -83,6 +91,7 @@ export interface PlaygroundSolvedDetail {
 }
 
 export interface PlaygroundEventMap {
+  loaded: CustomEvent<PlaygroundLoadedDetail>;
   run: CustomEvent<PlaygroundRunDetail>;
   step: CustomEvent<PlaygroundStepDetail>;
   solved: CustomEvent<PlaygroundSolvedDetail>;

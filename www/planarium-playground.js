@@ -18,8 +18,14 @@
 // file (a worker cannot be started across origins; use embed.html in an iframe there).
 // Read-only state for scripts and tests: el.state, el.status, el.result(), el.stats(), el.nodeCount,
 // el.shownIterations, el.controls, el.view3dState(); and el.run(), pause(), step(), back(), reset().
-// Events (CustomEvent, bubbling, composed): `run` (a run starts or resumes), `step` (a step's answer
-// is shown), `solved` (a run ended with a path); their detail types are in planarium-playground.d.ts.
+// Events (CustomEvent, bubbling, composed): `loaded` (a scenario and set-up are ready to run), `run`
+// (a run starts or resumes), `step` (a step's answer is shown), `solved` (a run ended with a path);
+// their detail types are in planarium-playground.d.ts. A planner that draws a field shows its heat
+// map unless `overlays` names it (`-show-heat`). For keyboard and screen-reader users (ui/a11y.js,
+// as the playground): the focus stays in the bar when the focused button turns off (Run → Pause);
+// one live region speaks the run at most about once a second while it plays and in full (the
+// status and the step's caption) when it is paused, stepped or done; the canvas's text names the
+// nodes drawn and the path.
 // The status line shows the iterations and nodes drawn so far, rising while the run plays; Step on a
 // finished run replays it from its start, step by step; after an autoplay run Reset is offered.
 
@@ -34,6 +40,8 @@ import { readShare, setupFor, configOf, overlayOptions, boundedProblems, DEFAULT
 import { applyPageLimits } from './run/limits.js';
 import { shown } from './ui/text.js';
 import { readSeed } from './ui/seed.js';
+import { wireA11y, StepCaption } from './ui/a11y.js';
+import { plannerCaps } from './draw/capabilities.js';
 
 const KEYS = ['scenario', 'planner', 'seed', 'speed', 'anim', 'overlays', 'step-size', 'raw-path', 'camera', 'autoplay', 'click', 'controls'];
 const FLAGS = ['raw-path', 'autoplay', 'click'];
@@ -73,6 +81,8 @@ input[type="number"] { width: 5rem; font: inherit; padding: 0.15rem 0.3rem; bord
 .message { margin: 0.35rem 0 0; padding: 0.3rem 0.5rem; border: 1px solid #a8362b; border-radius: 4px; background: #fdecea;
   color: #5a1710; font-size: 0.82rem; white-space: pre-wrap; overflow-wrap: anywhere; max-height: 12em; overflow: auto; flex: none; }
 [hidden] { display: none !important; }
+.sr-only { position: absolute; width: 1px; height: 1px; padding: 0; margin: -1px; overflow: hidden; clip: rect(0 0 0 0);
+  white-space: nowrap; border: 0; }
 `;
 
 const el = (tag, props = {}) => Object.assign(document.createElement(tag), props);
@@ -117,7 +127,12 @@ export class PlanariumPlayground extends HTMLElement {
     this.bar = el('div', { className: 'bar' });
     this.message = el('p', { className: 'message', hidden: true });
     this.message.setAttribute('role', 'alert');
-    root.append(...(style ? [style] : []), this.stage, this.bar, this.message);
+    // the one live region (ui/a11y.js): the run at most about once a second while it plays, in full
+    // (the status and the step's caption) when it is paused, stepped or done
+    this.announcer = el('p', { className: 'sr-only' });
+    this.announcer.setAttribute('role', 'status');
+    this.announcer.setAttribute('aria-atomic', 'true');
+    root.append(...(style ? [style] : []), this.stage, this.bar, this.message, this.announcer);
     this.player = null;
     this.share = null;
     this.registry = null;
@@ -135,7 +150,14 @@ export class PlanariumPlayground extends HTMLElement {
     this.playback = new Playback();
     this.view = new View(this.canvas, this.playback.store, this.playback.model);
     this.view3d = new View3dSlot(this.canvas3d, this.playback.store, PALETTE, () => { this.sizeStage?.(); this.resize?.(); });
+    this.stepCaption = new StepCaption(this.playback.store);
     this.resize = null;
+    // focus kept in the bar when the focused button turns off (Run → Pause), the live region, the
+    // canvas's text of its state: the playground's own (ui/a11y.js), in the shadow root
+    this.a11y = wireA11y({ bar: this.bar, live: this.announcer, canvas: this.canvas, root,
+      read: () => ({ state: this.state, status: this.statusText?.textContent || this.status, caption: this.stepCaption.caption,
+        name: this.scenario?.name, nodes: this.nodeCount, result: this.player?.lane.result ?? null,
+        bestCost: this.playback.model.bestCost }) });
   }
 
   connectedCallback() {
@@ -144,7 +166,7 @@ export class PlanariumPlayground extends HTMLElement {
     if (this.player) return;
     this.player = new Player({
       playback: this.playback,
-      views: [this.view, this.view3d],
+      views: [this.view, this.view3d, this.stepCaption],
       duration: () => speedSeconds(this.speedInput || { value: String(this.share?.view.speed ?? VIEW_DEFAULTS.speed), max: '100' }),
       fps: () => animFps({ value: String(this.share?.view.anim ?? VIEW_DEFAULTS.anim) }),
       hooks: {
@@ -157,10 +179,11 @@ export class PlanariumPlayground extends HTMLElement {
         frame: () => {
           this.view3d.render(performance.now(), this.player.fps());
           if (this.player?.state === 'running') this.syncStatus(); // the counts rise as the playback reveals the run
+          this.a11y.update();
         },
       },
     });
-    this.player.controller.onChange((to, from, event) => { this.sync(); this.announce(to, from, event); });
+    this.player.controller.onChange((to, from, event) => { this.sync(); this.announce(to, from, event); this.a11y.update(); });
     this.sizeStage = () => {
       if (this.hasAttribute('fill')) { this.stage.style.height = ''; return; }
       const w = this.stage.clientWidth;
@@ -297,7 +320,6 @@ export class PlanariumPlayground extends HTMLElement {
     this.scenario = msg.scenario;
     const [x0, y0, x1, y1] = msg.scenario.bounds;
     this.aspect = (x1 - x0) / (y1 - y0) || 1;
-    this.canvas.setAttribute('aria-label', shown(`${msg.scenario.name || 'Scenario'}: the planner's trees and the path`));
     this.view.setScenario(msg.scenario, msg.start, msg.goal);
     this.view3d.setCamera(this.share.view.camera ?? null); // a link's camera (once per restore)
     this.share.view.camera = null;
@@ -308,6 +330,9 @@ export class PlanariumPlayground extends HTMLElement {
     this.resize();
     const { block, problems } = setupFor(this.share, msg.scenario, this.registry);
     this.config = configOf(block);
+    // a planner that draws a field shows its heat map unless the overlays attribute says otherwise (as the playground)
+    if (!Object.hasOwn(this.share.overlays, 'showHeat')) this.view.setOptions({ showHeat: plannerCaps(this.config.planner).draws === 'field' });
+    this.stepCaption.setPlanner(this.config, msg.scenario.robot?.kind);
     if (this.seedInput) this.seedInput.value = String(this.config.seed);
     this.player.configure(this.config);
     this.player.controller.fire('loaded');
@@ -315,6 +340,7 @@ export class PlanariumPlayground extends HTMLElement {
     this.say(this.notes());
     if (this.share.autoplay && !this.started) this.autoplayWhenSeen();
     this.sync();
+    this.emit('loaded', { scenario: this.scenario?.name ?? '', planner: this.config.planner ?? '', seed: this.config.seed ?? null });
   }
 
   /**
@@ -363,7 +389,7 @@ export class PlanariumPlayground extends HTMLElement {
     const items = [];
     for (const name of names) {
       if (LABELS[name]) {
-        const b = el('button', { type: 'button', textContent: LABELS[name], title: TITLES[name] });
+        const b = el('button', { type: 'button', id: name, textContent: LABELS[name], title: TITLES[name] });
         b.dataset.control = name;
         b.setAttribute('part', `button ${name}`);
         b.addEventListener('click', () => this.act(name));
@@ -399,8 +425,7 @@ export class PlanariumPlayground extends HTMLElement {
         items.push(label);
       }
     }
-    this.statusText = el('span', { className: 'status' });
-    this.statusText.setAttribute('aria-live', 'polite');
+    this.statusText = el('span', { className: 'status' }); // not a live region: this.announcer speaks the run
     this.bar.replaceChildren(...items, this.statusText);
   }
 
@@ -456,6 +481,7 @@ export class PlanariumPlayground extends HTMLElement {
     const c = p.controller;
     const can = { run: c.can('run'), pause: c.can('pause'), step: c.can('step') || c.state === 'finished', back: p.canBack(), reset: c.can('reset') };
     for (const [name, b] of Object.entries(this.buttons || {})) b.disabled = !can[name];
+    this.a11y.refocus(); // Run → Pause: the focus stays in the bar
     if (this.seedInput) this.seedInput.disabled = c.state === 'loading';
     this.startButton.hidden = !(this.share?.click && !this.started && c.state === 'idle');
     this.offerReset(c.state);
@@ -490,7 +516,7 @@ export class PlanariumPlayground extends HTMLElement {
   offerReset(state) {
     if (!this.share?.autoplay || this.buttons?.reset || !this.bar.querySelector('[data-control]')) return;
     if (state !== 'finished') return;
-    const b = el('button', { type: 'button', textContent: LABELS.reset, title: TITLES.reset });
+    const b = el('button', { type: 'button', id: 'reset', textContent: LABELS.reset, title: TITLES.reset });
     b.dataset.control = 'reset';
     b.setAttribute('part', 'button reset');
     b.addEventListener('click', () => this.act('reset'));

@@ -72,6 +72,12 @@ test('the link grammar: every key round-trips, defaults are left out, no paramet
   // goal_bias 0.05 is RRT's default: left out; the overlays that differ, in the box's order
   assert.equal(hash, 'scenario=narrow&planner=rrt&seed=7&range=0.1&sampler=gaussian&dd_radius=0.05&max_iterations=5000'
     + '&overlays=-show-domains,+show-heat&speed=80&raw-path&step-size=25');
+  // a planner that draws a field shows its heat map by default: written only when it is off
+  const field = registry.planners.find((p) => p.caps?.draws === 'field');
+  const heat = (on) => writeShare({ scenario: { id: 'narrow' }, config: { planner: field.name, params: {}, seed: 1 },
+    overlays: { showHeat: on } }, registry);
+  assert.doesNotMatch(await heat(true), /overlays/);
+  assert.match(await heat(false), /&overlays=-show-heat$/);
   const share = await readShare(`#${hash}`, { builtins: builtinList });
   assert.deepEqual(share.problems, []);
   assert.deepEqual(share.view, { speed: 80, rawPath: true, stepSize: 25 });

@@ -1,6 +1,6 @@
 // A type test of www/planarium-playground.d.ts (tsc -p . checks it; nothing runs it): the element's
 // events carry their detail types, its methods and properties are typed, and misuse is an error.
-import type { PlanariumPlayground, PlaygroundRunDetail, PlaygroundSolvedDetail, PlaygroundStepDetail, PlaygroundState } from '../../www/planarium-playground.js';
+import type { PlanariumPlayground, PlaygroundLoadedDetail, PlaygroundRunDetail, PlaygroundSolvedDetail, PlaygroundStepDetail, PlaygroundState } from '../../www/planarium-playground.js';
 
 const el = document.querySelector('planarium-playground');
 if (el) {
@@ -22,6 +22,11 @@ if (el) {
     // @ts-expect-error the cost is a number, not text
     const sure: string = d.cost;
     void [cost, sure];
+  });
+  typed.addEventListener('loaded', (e) => {
+    const d: PlaygroundLoadedDetail = e.detail;
+    const name: string = d.scenario;
+    void name;
   });
   typed.addEventListener('click', (e) => { const x: number = e.clientX; void x; });
   const state: PlaygroundState = typed.state;

@@ -2,7 +2,11 @@
 // the run bar when the focused button turns off (Run → Pause, Pause → Run), one live region that
 // speaks the run at most about once a second while it plays and in full (the status and the
 // explain panel's caption) when it is paused, stepped or done, and the canvas's text of its state
-// ("tree 235 nodes; path 12 waypoints, cost 1.16"), refreshed at the same pace.
+// ("tree 235 nodes; path 12 waypoints, cost 1.16"), refreshed at the same pace. The embedded
+// playground (planarium-playground.js) wires the same in its shadow root, without a skip link,
+// and reads its caption from a StepCaption (it has no explain panel).
+
+import { Explainer, optionsOf } from '../run/explain.js';
 
 /** While a run plays, the live region and the canvas text change at most once per this many ms. */
 export const ANNOUNCE_MS = 1000;
@@ -47,14 +51,53 @@ export function announcement(state, status, caption) {
 }
 
 /**
- * Wire the page's accessibility. `skip`: the skip link; `bar`: the run bar (its buttons);
- * `live`: the live region; `canvas`: the workspace canvas; `read()` gives
- * {state, status, caption, name, nodes, result, bestCost} now. Returns {update(), refocus()}:
+ * The caption of the step shown, for a page without the explain panel (the embed): a view the
+ * lane feeds (lane.js: clearRun, drawRecords, setResult, finishRun) that reads the records shown
+ * with an Explainer, as the explain panel does, and draws nothing.
+ */
+export class StepCaption {
+  /** `store`: the playback's RecordStore. */
+  constructor(store) {
+    this.store = store;
+    this.explainer = new Explainer();
+    this.read = 0;
+    this.showResult = false;
+    this.dirty = false;
+  }
+
+  /** The planner set-up {planner, params} and the scenario's robot kind. */
+  setPlanner(config, robotKind = '') {
+    this.explainer = new Explainer(config?.planner || '', robotKind, optionsOf(config));
+    this.read = 0;
+  }
+
+  clearRun() { this.explainer.reset(); this.read = 0; this.showResult = false; }
+
+  drawRecords(from, to) {
+    if (from < this.read) { this.explainer.reset(); this.read = 0; }
+    this.explainer.readStore(this.store, this.read, to);
+    this.read = Math.max(this.read, to);
+  }
+
+  setResult() {}
+  finishRun() {}
+
+  /** The step's caption, '' before the first record. */
+  get caption() { return this.read ? this.explainer.caption : ''; }
+}
+
+/**
+ * Wire the page's accessibility. `skip`: the skip link (none in the embed); `bar`: the run bar
+ * (its buttons); `live`: the live region; `canvas`: the workspace canvas; `root`: the document or
+ * the shadow root the bar is in (its buttons' ids and the focus are looked up there); `read()`
+ * gives {state, status, caption, name, nodes, result, bestCost} now. Returns {update(), refocus()}:
  * update() after each frame and state change (throttled while running), refocus() after the run
  * bar's buttons were enabled or disabled.
+ * @param {{skip?: HTMLElement | null, bar: HTMLElement, live: HTMLElement, canvas: HTMLElement,
+ *   root?: Document | ShadowRoot, read: () => any}} parts
  */
-export function wireA11y({ skip, bar, live, canvas, read }) {
-  skip.addEventListener('click', (e) => {
+export function wireA11y({ skip = null, bar, live, canvas, root = document, read }) {
+  skip?.addEventListener('click', (e) => {
     e.preventDefault(); // the hash holds the share link: a fragment would be read as one
     const first = [...bar.querySelectorAll('button')].find((b) => !b.disabled && !b.hidden);
     (first || bar).focus();
@@ -72,9 +115,9 @@ export function wireA11y({ skip, bar, live, canvas, read }) {
   function refocus() {
     const b = lastInBar;
     if (!(b instanceof HTMLButtonElement) || !b.disabled) return;
-    const active = document.activeElement;
+    const active = root.activeElement;
     if (active && active !== document.body && active !== b) return; // the focus went elsewhere on purpose
-    const partner = PARTNER[b.id] && document.getElementById(PARTNER[b.id]);
+    const partner = PARTNER[b.id] && root.getElementById(PARTNER[b.id]);
     const usable = (x) => x instanceof HTMLButtonElement && !x.disabled && !x.hidden && bar.contains(x);
     const next = usable(partner) ? partner : [...bar.querySelectorAll('button')].find(usable);
     if (next) next.focus();

@@ -517,7 +517,11 @@ export async function writeShare({ scenario, config, overlays = {}, view = {}, e
       if (v !== spec.default) pairs.push([spec.name, v]);
     }
   }
-  const flips = OVERLAYS.filter((o) => Object.hasOwn(overlays, o.option) && overlays[o.option] !== o.on)
+  // a planner that draws a field shows its heat map by default (the playground's overlay box, the
+  // embed): for it the heat map is written only when it is off
+  const field = !!config && registry?.planners?.find((q) => q.name === config.planner)?.caps?.draws === 'field';
+  const byDefault = (o) => o.on || (o.option === 'showHeat' && field);
+  const flips = OVERLAYS.filter((o) => Object.hasOwn(overlays, o.option) && overlays[o.option] !== byDefault(o))
     .map((o) => `${overlays[o.option] ? '+' : '-'}${o.id}`);
   if (flips.length) pairs.push(['overlays', flips.join(',')]);
   if (view.speed !== undefined && view.speed !== VIEW_DEFAULTS.speed) pairs.push(['speed', view.speed]);
