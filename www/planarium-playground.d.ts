@@ -52,7 +52,10 @@ export interface PlaygroundAttributes {
 export interface PlaygroundLoadedDetail {
   /** The scenario's name ("Narrow passage"). */
   scenario: string;
+  /** The planner's registry name ("rrt-connect"). */
   planner: string;
+  /** The planner's label as the page shows it ("RRT-Connect"). */
+  plannerLabel: string;
   seed: number | null;
 }
 

@@ -340,7 +340,8 @@ export class PlanariumPlayground extends HTMLElement {
     this.say(this.notes());
     if (this.share.autoplay && !this.started) this.autoplayWhenSeen();
     this.sync();
-    this.emit('loaded', { scenario: this.scenario?.name ?? '', planner: this.config.planner ?? '', seed: this.config.seed ?? null });
+    const spec = this.registry?.planners?.find((/** @type {{name: string}} */ q) => q.name === this.config.planner);
+    this.emit('loaded', { scenario: this.scenario?.name ?? '', planner: this.config.planner ?? '', plannerLabel: spec?.label ?? this.config.planner ?? '', seed: this.config.seed ?? null });
   }
 
   /**

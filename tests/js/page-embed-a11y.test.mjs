@@ -34,8 +34,8 @@ const nextFrames = (page) => page.evaluate(() => new Promise((r) => requestAnima
 test('the embed: its heading names the scenario; Run from the keyboard leaves the focus on Pause, Pause on Run', async () => {
   // Slow (10 events a second): the run still plays when the focus is read
   const page = await openEmbed('scenario=narrow&planner=rrt-connect&seed=7&speed=0&controls=run,pause,step,reset');
-  assert.equal(await page.textContent('main h1'), 'Narrow passage with rrt-connect — Planarium');
-  assert.equal(await page.title(), 'Narrow passage with rrt-connect — Planarium');
+  assert.equal(await page.textContent('main h1'), 'Narrow passage with RRT-Connect — Planarium');
+  assert.equal(await page.title(), 'Narrow passage with RRT-Connect — Planarium');
   let tabs = 0;
   while (await focusedControl(page) !== 'run' && tabs < 4) { await page.keyboard.press('Tab'); tabs++; }
   assert.equal(await focusedControl(page), 'run', `${tabs} Tabs reach Run`);

@@ -26,7 +26,8 @@ if (el) {
   typed.addEventListener('loaded', (e) => {
     const d: PlaygroundLoadedDetail = e.detail;
     const name: string = d.scenario;
-    void name;
+    const label: string = d.plannerLabel;
+    void [name, label];
   });
   typed.addEventListener('click', (e) => { const x: number = e.clientX; void x; });
   const state: PlaygroundState = typed.state;

@@ -14,8 +14,8 @@ player.setAttribute('link', location.hash.replace(/^#/, ''));
 main.append(player);
 
 player.addEventListener('loaded', (e) => {
-  const { scenario, planner } = e.detail;
-  title.textContent = `${scenario || 'A scenario'}${planner ? ` with ${planner}` : ''} — Planarium`;
+  const { scenario, plannerLabel } = e.detail;
+  title.textContent = `${scenario || 'A scenario'}${plannerLabel ? ` with ${plannerLabel}` : ''} — Planarium`;
   document.title = title.textContent;
 });
 window.addEventListener('hashchange', () => player.setAttribute('link', location.hash.replace(/^#/, '')));
