@@ -7,10 +7,9 @@
 // together (the same share of each lane's steps in every frame). The GIF and WebM encoders are the
 // playground's (gif.js, webm.js). A lane showing an arm in 3-D has no top view to film: refused.
 
-import { ExportView, ExportCancelled, LIMITS, paletteColours, webmType } from './exports.js';
+import { ExportView, ExportCancelled, LIMITS, paletteColours, recordedWebm, webmType } from './exports.js';
 import { TimeLapse } from './timelapse.js';
 import { GifWriter } from './gif.js';
-import { fixWebm } from './webm.js';
 import { composeLanes } from './compare-export.js';
 import { downloadBlob } from '../draw/stage.js';
 import { shown } from './text.js';
@@ -139,22 +138,13 @@ export async function recordLanesWebm(film, { animFps, progress = null, cancelle
   return {
     width: out.width,
     height: out.height,
-    stop: () => new Promise((resolve) => {
+    stop: () => {
       clearInterval(timer);
       stopped = true;
-      rec.onstop = async () => {
-        stream.getTracks().forEach((t) => t.stop());
-        const size = { width: out.width, height: out.height };
-        const raw = new Blob(chunks, { type: 'video/webm' });
-        try {
-          const fixed = fixWebm(new Uint8Array(await raw.arrayBuffer()));
-          resolve({ blob: new Blob([fixed], { type: 'video/webm' }), ...size, note: failed ? `drawing stopped: ${failed.message}` : '' });
-        } catch (e) {
-          resolve({ blob: raw, ...size, note: `saved as recorded (no duration): ${e.message}` });
-        }
-      };
+      const done = recordedWebm(rec, stream, chunks, { width: out.width, height: out.height }, () => failed);
       rec.stop();
-    }),
+      return done;
+    },
   };
 }
 

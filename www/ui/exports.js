@@ -289,6 +289,32 @@ export function webmType() {
 }
 
 /**
+ * What a canvas recording gives once `rec` stops: its `chunks` as a WebM with its duration and
+ * cues written (fixWebm), or as recorded when that fails, at `size`; `failed()` is an error met
+ * while drawing (named in the note). The stream's tracks are stopped and `dispose` runs first.
+ * @param {MediaRecorder} rec @param {MediaStream} stream @param {Blob[]} chunks
+ * @param {{width: number, height: number}} size @param {() => Error | null | undefined} failed
+ * @param {() => void} [dispose]
+ * @returns {Promise<{blob: Blob, width: number, height: number, note: string}>}
+ */
+export function recordedWebm(rec, stream, chunks, size, failed, dispose = () => {}) {
+  return new Promise((resolve) => {
+    rec.onstop = async () => {
+      stream.getTracks().forEach((t) => t.stop());
+      dispose();
+      const raw = new Blob(chunks, { type: 'video/webm' });
+      try {
+        const fixed = fixWebm(new Uint8Array(await raw.arrayBuffer()));
+        const err = failed();
+        resolve({ blob: new Blob([fixed], { type: 'video/webm' }), ...size, note: err ? `drawing stopped: ${err.message}` : '' });
+      } catch (e) {
+        resolve({ blob: raw, ...size, note: `saved as recorded (no duration): ${e.message}` });
+      }
+    };
+  });
+}
+
+/**
  * Record the picture as WebM `width` px wide (even; height by the scene) until `stop()`: an
  * ExportView follows `view` and is drawn `fps` times a second, each drawing a frame of the
  * stream. The run so far is drawn first, in steps (`progress`, `cancelled` as runSteps's); a
@@ -348,27 +374,17 @@ export async function recordWebm(view, { width, fps = 30, animFps = () => 10, pr
   return {
     width: frameCanvas.width,
     height: frameCanvas.height,
-    stop: () => new Promise((resolve) => {
+    stop: () => {
       clearInterval(timer);
       stopped = true;
-      rec.onstop = async () => {
-        stream.getTracks().forEach((t) => t.stop());
-        const size = { width: frameCanvas.width, height: frameCanvas.height };
-        ev.dispose();
-        const raw = new Blob(chunks, { type: 'video/webm' });
-        try {
-          const fixed = fixWebm(new Uint8Array(await raw.arrayBuffer()));
-          resolve({ blob: new Blob([fixed], { type: 'video/webm' }), ...size, note: failed ? `drawing stopped: ${failed.message}` : '' });
-        } catch (e) {
-          resolve({ blob: raw, ...size, note: `saved as recorded (no duration): ${e.message}` });
-        }
-      };
+      const done = recordedWebm(rec, stream, chunks, { width: frameCanvas.width, height: frameCanvas.height }, () => failed, () => ev.dispose());
       if (!drawing) {
         ev.follow(width);
         if (!ev.owed) { ev.draw(performance.now(), animFps()); compose(); track.requestFrame(); }
       }
       rec.stop();
-    }),
+      return done;
+    },
   };
 }
 
