@@ -52,3 +52,32 @@ fn horn_10_rrt_connect_spends_no_certification_on_folds() {
     assert!(checks < 11_000, "rrt-connect: median {checks} checks");
     assert_eq!(iterations, 5_445, "rrt-connect: the same trees as before");
 }
+
+#[test]
+fn a_motion_through_a_fold_is_refused_as_one_check_of_the_folded_state() {
+    use planarium::motion::MotionValidator;
+    let p = Problem::from_scenario(&builtin("horn-10").unwrap()).unwrap();
+    let si = &p.si;
+    // From the start, joint 5 turns from 3.0 the short way round to −3.0: through π, a fold.
+    let a = p.start.clone();
+    let (mut b, mut scratch) = (a.clone(), a.clone());
+    b[5] = -3.0;
+    let mut through = a.clone();
+    through[5] = 3.0;
+    let before = si.checks();
+    assert!(si.check_motion(&through, &b, &mut scratch).is_err());
+    assert_eq!(si.checks() - before, 1, "one check, of the folded state");
+    assert!(
+        (std::f64::consts::PI - scratch[5].abs()).abs() < 1e-9,
+        "the state refused: joint 5 at ±π, not {}",
+        scratch[5]
+    );
+    assert!(!si.is_valid(&scratch), "the folded state is invalid");
+    // From the start (valid), joint 5 turning a little does not fold: checked by clearances at
+    // its states (more than one check) and free.
+    let mut c = a.clone();
+    c[5] += 0.05;
+    let before = si.checks();
+    assert!(si.check_motion(&a, &c, &mut scratch).is_ok());
+    assert!(si.checks() - before > 1, "a motion that does not fold is checked state by state");
+}
