@@ -382,6 +382,21 @@ impl MotionModel for ArmRobot {
     /// along `pa → pb`, every rate is at most `μ` times its value there (a joint still along
     /// `pa → pb` must be still along `a → b`, else `None`). For two steps of one walk along a line,
     /// `μ` is the ratio of their lengths (1 but for rounding, less for the shorter last step).
+    /// With self-collision, two neighbouring links fold when the joint between them reaches ±π:
+    /// a motion that turns a wrapping joint (not the base's) through ±π passes through that
+    /// fold. Certification would refuse it only at its bisection's depth limit, after 40 or more
+    /// clearance queries (`docs/performance.md`, "The chain's checks against OMPL's").
+    fn refused_at(&self, a: &[Real], b: &[Real]) -> Option<Real> {
+        if !self.self_collision {
+            return None;
+        }
+        (1..self.links.len()).filter(|&i| self.limits[i].is_none()).find_map(|i| {
+            let d = angle_diff(a[i], b[i]);
+            let end = a[i] + d;
+            // From a[i] in [−π, π], the unwrapped joint reaches ±π when it ends beyond it.
+            (d != 0.0 && end.abs() >= PI).then(|| ((end.signum() * PI - a[i]) / d).clamp(0.0, 1.0))
+        })
+    }
     fn motion_rate_ratio(&self, pa: &[Real], pb: &[Real], a: &[Real], b: &[Real]) -> Option<Real> {
         let mut mu: Real = 0.0;
         for i in 0..self.links.len() {

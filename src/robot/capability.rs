@@ -23,6 +23,12 @@ pub trait MotionModel {
     fn steps(&self, _a: &[Real], _b: &[Real], d: Real, resolution: Real) -> Option<usize> {
         crate::limits::steps(d, resolution, crate::limits::MAX_MOTION_STEPS)
     }
+    /// Where the straight motion `a → b` passes through a state the robot refuses whatever the
+    /// obstacles (the fraction of the motion), when the robot can tell without checking states:
+    /// such a motion is refused at once (default: `None`, nothing known).
+    fn refused_at(&self, _a: &[Real], _b: &[Real]) -> Option<Real> {
+        None
+    }
     /// An exact test of the straight motion `a → b`, when the robot has one: `Some(true)` if the
     /// swept body meets an obstacle. Used on top of the discrete checks so no motion cuts a corner.
     fn sweep_hits(&self, _ws: &Workspace, _a: &[Real], _b: &[Real]) -> Option<bool> {

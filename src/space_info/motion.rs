@@ -375,6 +375,13 @@ impl SpaceInfo {
             self.interpolate(a, b, 0.5, scratch);
             return Err(Invalid);
         };
+        // A motion through a state the robot refuses whatever the obstacles (a folded arm):
+        // refused as one state check, of that state.
+        if let Some(t) = model.refused_at(a, b) {
+            self.count_checks(1);
+            self.interpolate(a, b, t, scratch);
+            return Err(Invalid);
+        }
         // The sweep is a question a planner decides by, so it is journalled (refused, as a hit,
         // once the batch is suspended).
         let sweep = self.journalled(
