@@ -36,7 +36,7 @@ import { createTrials } from '../ui/trials.js';
 import { wireKeys, wireCellTip } from '../ui/keys.js';
 import { runStatusText } from '../ui/run-status.js';
 import { wireA11y } from '../ui/a11y.js';
-import { SPEED_PRESETS } from '../ui/speed-buttons.js';
+import { wireSpeedButtons } from '../ui/speed-buttons.js';
 import { chartKind, speedSeconds, animFps, describeSpeed, modelSummary, fillScenarioPicker, errorBox, fillLegend, removeCustomScenarios, markCustomScenario, invalidText } from '../ui/controls.js';
 import { readShare, setupFor, VIEW_DEFAULTS } from '../ui/links.js';
 import { wireShareHash } from '../ui/share-hash.js';
@@ -488,18 +488,9 @@ ui.scenario.addEventListener('change', () => {
 wireOpenFile({ input: ui.file, clearError, showError, markCustom,
   load: (text, defaults, { course, file, map }) => send('file', text, { course, file, map, defaults }) });
 
-// Slow / Normal / Fast / Instant: presets of the replay-length slider, as Compare's (speed-buttons.js)
-const SPEEDS = SPEED_PRESETS;
-function syncSpeedButtons() {
-  for (const [id, v] of Object.entries(SPEEDS)) $(id).setAttribute('aria-checked', String(Number(ui.speed.value) === v));
-}
-for (const [id, v] of Object.entries(SPEEDS)) {
-  $(id).addEventListener('click', () => {
-    ui.speed.value = String(v);
-    updateOutputs();
-    scheduleShare();
-  });
-}
+// Slow / Normal / Fast / Instant: presets of the replay-length slider, wired as Compare's
+const syncPresets = wireSpeedButtons(ui.speed, () => { updateOutputs(); scheduleShare(); });
+function syncSpeedButtons() { syncPresets(); }
 
 function updateOutputs() {
   syncSpeedButtons();
