@@ -131,7 +131,8 @@ impl SpatialArmRobot {
     }
 
     /// The tool centre point at `q` ([`Chain::point_on_last`]), from the memo when `q` is one of
-    /// the last states asked for.
+    /// the last states asked for, else from the last link's frame when the collision query's
+    /// parts are placed at `q`.
     fn tool_at(&self, q: &[Real]) -> [Real; 3] {
         let mut m = self.tool_memo.borrow_mut();
         let n = q.len();
@@ -139,7 +140,13 @@ impl SpatialArmRobot {
         if let Some(k) = (0..m.points.len()).find(|&k| same(k)) {
             return m.points[k];
         }
-        let p = self.chain.point_on_last(q, &self.tool);
+        // The parts placed at `q` (the state a check just tested): the last link's frame is there,
+        // the same bits `point_on_last` computes.
+        let placed = self.scratch.try_borrow().ok().and_then(|s| {
+            let [x, y, z] = self.tool;
+            s.frame_at(q, self.chain.joints()).map(|f| f * nalgebra::Point3::new(x, y, z)).map(|w| [w.x, w.y, w.z])
+        });
+        let p = placed.unwrap_or_else(|| self.chain.point_on_last(q, &self.tool));
         if m.points.len() < TOOL_MEMO {
             m.states.extend_from_slice(q);
             m.points.push(p);
@@ -160,8 +167,7 @@ impl SpatialArmRobot {
     /// joint limits are not checked.
     pub fn first_hit(&self, ws: &Workspace, q: &[Real]) -> Option<Hit> {
         let mut s = self.scratch.borrow_mut();
-        self.body.place(&self.chain, q, &mut s);
-        self.body.first_hit(&ws.solids, &mut s)
+        self.body.hit_at(&self.chain, &ws.solids, q, &mut s)
     }
 
     /// What a hit is, in words: "link6's bar meets the lintel", "link2 meets link5".
@@ -235,8 +241,8 @@ impl MotionModel for SpatialArmRobot {
             return Some(0.0);
         }
         let mut s = self.scratch.borrow_mut();
-        self.body.place(&self.chain, q, &mut s);
-        if self.body.first_hit(&ws.solids, &mut s).is_some() {
+        // placed and tested anew: the gaps are measured from where this test's GJK ended
+        if self.body.test(&self.chain, &ws.solids, q, &mut s).is_some() {
             return Some(0.0);
         }
         Some(self.body.clearance(&ws.solids, &s, cap))
@@ -307,7 +313,7 @@ impl Robot for SpatialArmRobot {
         }
     }
     fn is_valid(&self, ws: &Workspace, q: &[Real]) -> bool {
-        self.within_limits(q) && self.first_hit(ws, q).is_none()
+        self.within_limits(q) && self.body.test(&self.chain, &ws.solids, q, &mut self.scratch.borrow_mut()).is_none()
     }
     fn describe_collision(&self, ws: &Workspace, q: &[Real]) -> Option<String> {
         self.first_hit(ws, q).map(|h| self.describe(ws, h))
@@ -336,8 +342,7 @@ impl Spatial for SpatialArmRobot {
     /// when the arm is free (joint limits are not checked).
     fn contact(&self, ws: &Workspace, q: &[Real]) -> Option<Contact> {
         let mut s = self.scratch.borrow_mut();
-        self.body.place(&self.chain, q, &mut s);
-        let hit = self.body.first_hit(&ws.solids, &mut s)?;
+        let hit = self.body.hit_at(&self.chain, &ws.solids, q, &mut s)?;
         let at = self.body.contact_point(&ws.solids, &s, hit);
         Some(match hit {
             Hit::Scene { part, solid } => {

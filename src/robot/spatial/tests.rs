@@ -467,3 +467,42 @@ fn the_default_range_is_the_kinds() {
     let narrow = Problem::from_scenario(&crate::scenario::builtin("narrow").unwrap()).unwrap();
     assert_eq!(resolve_range(&narrow.si, 0.0), 0.2 * narrow.si.space.max_extent());
 }
+
+#[test]
+fn answers_read_back_from_the_last_placement_are_a_fresh_querys() {
+    // A recorded run asks again about the state a check just found blocked (the collision's
+    // verdict, its contact) and projects the state just checked: those read the query's placement
+    // and answer instead of computing them again, and must give what a fresh arm gives, bit for bit.
+    let p = Problem::from_scenario(&crate::scenario::builtin("puma-rbo-wall").unwrap()).unwrap();
+    let arm = SpatialArmRobot::from_spec(&p.scenario.robot).unwrap();
+    let ws = p.si.workspace();
+    let fresh = || SpatialArmRobot::from_spec(&p.scenario.robot).unwrap();
+    let mut rng = crate::rng::Rng::new(11);
+    let draw = |rng: &mut crate::rng::Rng| -> Vec<f64> {
+        arm.limits.iter().map(|[lo, hi]| lo + (hi - lo) * rng.uniform01()).collect()
+    };
+    let (mut blocked, mut free) = (0, 0);
+    for _ in 0..200 {
+        let q = draw(&mut rng);
+        let valid = arm.is_valid(ws, &q);
+        let bits = |p: [f64; 3]| p.map(f64::to_bits);
+        assert_eq!(bits(arm.tool_point(&q)), bits(fresh().chain.point_on_last(&q, &arm.tool)));
+        assert_eq!(arm.verdict(ws, &q), fresh().verdict(ws, &q));
+        assert_eq!(arm.describe_collision(ws, &q), fresh().describe_collision(ws, &q));
+        let (a, b) = (arm.contact(ws, &q), fresh().contact(ws, &q));
+        assert_eq!(a.map(|c| (c.link, c.other, c.solid, bits(c.at))), b.map(|c| (c.link, c.other, c.solid, bits(c.at))));
+        // (not the clearance: its gaps are measured from where the last tests' GJK ended)
+        if valid {
+            free += 1;
+        } else {
+            blocked += 1;
+        }
+    }
+    assert!(blocked > 10 && free > 10, "{blocked} blocked, {free} free states drawn");
+    // The answer belongs to its scene: the same state against a scene without the wall is asked anew.
+    let mut bare = ws.clone();
+    bare.solids.clear();
+    let q = (0..500).map(|_| draw(&mut rng)).find(|q| matches!(arm.verdict(ws, q), Verdict::Collision(_))).unwrap();
+    assert!(!matches!(arm.verdict(&bare, &q), Verdict::Collision(_)), "an empty scene has nothing to hit");
+    assert!(matches!(arm.verdict(ws, &q), Verdict::Collision(_)));
+}
