@@ -490,7 +490,10 @@ fn answers_read_back_from_the_last_placement_are_a_fresh_querys() {
         assert_eq!(arm.verdict(ws, &q), fresh().verdict(ws, &q));
         assert_eq!(arm.describe_collision(ws, &q), fresh().describe_collision(ws, &q));
         let (a, b) = (arm.contact(ws, &q), fresh().contact(ws, &q));
-        assert_eq!(a.map(|c| (c.link, c.other, c.solid, bits(c.at))), b.map(|c| (c.link, c.other, c.solid, bits(c.at))));
+        assert_eq!(
+            a.map(|c| (c.link, c.other, c.solid, bits(c.at))),
+            b.map(|c| (c.link, c.other, c.solid, bits(c.at)))
+        );
         // (not the clearance: its gaps are measured from where the last tests' GJK ended)
         if valid {
             free += 1;
