@@ -13,7 +13,8 @@
 // --out DIR: write the results there instead of bench/results/. PLANARIUM_OMPL=0 in the
 // environment leaves OMPL out, as on a machine without it.
 //
-// --only scaling: the scaling benchmark alone.
+// --only scaling: the scaling benchmark alone; --only rrt-star-budget: RRT* at a fixed time budget
+// (1 s and 5 s on narrow and ompl-rect, natively and by OMPL's RRT*) alone.
 // --quick: 5 runs and no horn-20 (a smoke run). Times are wall-clock medians of planning only.
 // The problems compared between native and wasm or OMPL are run in K rounds (default 3) on each
 // side, and each seed's time is its best round: the machine's noise (±15% between identical runs
@@ -66,7 +67,7 @@ const tmp = mkdtempSync(join(tmpdir(), 'planarium-suite-'));
 const selected = (p) => (!only || only.includes(p.name ?? p.id)) && !(quick && p.slow);
 let omplBin = null;
 let omplStatus = null;
-if (SUITE.some((p) => p.ompl && selected(p))) {
+if (SUITE.some((p) => p.ompl && selected(p)) || !only || only.includes('rrt-star-budget')) {
   const found = detectOmpl();
   omplStatus = found.message;
   console.log(`[bench] ${found.message}`);
@@ -184,6 +185,33 @@ for (const p of SUITE) {
   results.push({ problem: name, what: p.what, runs, omplCompared: Boolean(p.ompl), ompl: omplResult, native: report, wasm: wasmResult, wasmScenario: withWasm ? p.id : null });
 }
 
+// RRT* at a fixed time budget: the best path's cost when the time is up, natively and by OMPL's
+// RRT* (the same range, goal bias and near set; both improve until the limit), seeds 1..N each.
+// Budgets 1 s and 5 s (--quick: 0.2 s); selected by default or by --only rrt-star-budget.
+const BUDGET_PROBLEMS = [{ id: 'narrow', range: 0.2828 }, { id: 'ompl-rect', range: 0.597 }];
+const budgets = quick ? [0.2] : [1, 5];
+const budgetRows = [];
+if (!only || only.includes('rrt-star-budget')) {
+  for (const b of BUDGET_PROBLEMS) {
+    for (const limit of budgets) {
+      const started = Date.now();
+      const runs = Math.min(runsArg, quick ? 3 : runsArg);
+      const setup = `rrt-star: rrt-star --range ${b.range} --improve-for 100000000 --max-nodes 1000000 --time-limit ${limit}`;
+      const file = join(tmp, `${b.id}-star-${limit}.json`);
+      execFileSync(cli, ['bench', b.id, '--runs', String(runs), '--setup', setup, '--json-file', file], { cwd: root, stdio: ['ignore', 'ignore', 'inherit'] });
+      const s = JSON.parse(readFileSync(file, 'utf8')).setups[0];
+      let ompl = null;
+      if (omplBin) {
+        const [problem] = omplProblems(b, `${b.id}-star-${limit}`, [s]);
+        ompl = problem.skip ? { skip: problem.skip } : { rows: runHarness(omplBin, problem.file, 'rrt-star', 1, runs, limit) };
+        if (problem.skip) console.log(`[bench] ${b.id} RRT* ${limit} s: OMPL not measured (${problem.skip})`);
+      }
+      console.log(`[bench] ${b.id} RRT* at ${limit} s: ${runs} seeds ${ompl?.rows ? 'natively and by OMPL' : 'natively'} in ${((Date.now() - started) / 1000).toFixed(1)} s`);
+      budgetRows.push({ problem: b.id, budget_s: limit, runs, params: s.params, native: s.rows, ompl });
+    }
+  }
+}
+
 // The scaling benchmark: natively, then in wasm (the same states: the valid counts must agree).
 let scaling = null;
 if (!only || only.includes('scaling')) {
@@ -211,7 +239,7 @@ const lines = [
   '',
   `Machine: ${host}, Node ${process.version}. Seeds 1..N per set-up; times are medians of planning time (smoothing excluded). `
   + `Where wasm or OMPL is measured, every side ran ${roundsArg} round(s), alternated, and each seed's time is its best round. `
-  + (omplBin ? 'OMPL: OMPL 1.5\'s RRT and RRT-Connect (Debian\'s libompl-dev) in the project\'s harness, bench/ompl/harness.cpp, g++ -O3, the same set-ups and seeds; '
+  + (omplBin ? 'OMPL: OMPL 1.5\'s RRT, RRT-Connect and RRT* (Debian\'s libompl-dev) in the project\'s harness, bench/ompl/harness.cpp, g++ -O3, the same set-ups and seeds; '
     + 'its checks count its state validity checker\'s calls; native / OMPL is the ratio of the median times (below 1: Planarium is faster). '
     : `${omplStatus ?? 'OMPL not measured'}. `)
   + 'Made by `npm run bench`.',
@@ -238,8 +266,37 @@ for (const r of results) {
     lines.push(`| ${r.problem} | ${s.label} | ${m.solved}/${m.runs} | ${f(nms)} | ${s.rounds > 1 ? `${f(mean(s.best_ms))} ± ${f(std(s.best_ms))}` : `${f(m.time_ms.mean)} ± ${f(m.time_ms.std)}`} | ${w ? f(wms) : '—'} | ${w ? `${f(wms / nms)}×` : '—'}${agree ? '' : ' (runs differ!)'} | ${omplCells.join(' | ')} | ${f(m.nodes.median, 1)} | ${f(m.checks.median, 0)} | ${f(m.cost.median, 4)} |`);
   });
 }
-lines.push('', 'Problems:', '');
-for (const r of results) lines.push(`- **${r.problem}**: ${r.what}.`);
+if (results.length) {
+  lines.push('', 'Problems:', '');
+  for (const r of results) lines.push(`- **${r.problem}**: ${r.what}.`);
+} else {
+  lines.splice(lines.length - 2, 2); // no problem run: no table
+}
+if (budgetRows.length) {
+  // the quartiles of the solved runs' costs: the spread
+  const quartiles = (xs) => {
+    const v = xs.filter(Number.isFinite).sort((a, b) => a - b);
+    const q = (t) => v[Math.min(v.length - 1, Math.floor(t * (v.length - 1) + 0.5))];
+    return v.length ? `${f(q(0.25), 4)}–${f(q(0.75), 4)}` : '—';
+  };
+  const side = (rows) => {
+    const solved = rows.filter((x) => x.solved && x.cost >= 0);
+    const costs = solved.map((x) => x.cost);
+    return { solved: `${solved.length}/${rows.length}`, median: median(costs), spread: quartiles(costs), nodes: median(rows.map((x) => x.nodes)) };
+  };
+  lines.push('', '## RRT* at a fixed time budget', '',
+    'The best path\'s cost (its length in the robot\'s metric, unsmoothed) when the time is up, seeds 1..N; both planners improve until the limit, '
+    + 'with the same range, goal bias (0.05) and near set (k-nearest, rewire factor 1.1). Spread: the quartiles of the solved runs\' costs. '
+    + 'Planarium / OMPL below 1: Planarium\'s paths are shorter.', '',
+    '| problem | budget | solved | median cost | spread | median nodes | solved (OMPL) | median cost (OMPL) | spread (OMPL) | median nodes (OMPL) | Planarium / OMPL cost |',
+    '|---|---|---|---|---|---|---|---|---|---|---|');
+  for (const r of budgetRows) {
+    const n = side(r.native);
+    const o = r.ompl?.rows ? side(r.ompl.rows) : null;
+    const oCells = o ? [o.solved, f(o.median, 4), o.spread, f(o.nodes, 0), `${f(n.median / o.median, 3)}×`] : [r.ompl?.skip ? `not measured (${r.ompl.skip})` : 'not measured', '—', '—', '—', '—'];
+    lines.push(`| ${r.problem} | ${r.budget_s} s | ${n.solved} | ${f(n.median, 4)} | ${n.spread} | ${f(n.nodes, 0)} | ${oCells.join(' | ')} |`);
+  }
+}
 if (scaling) {
   lines.push('', '## Scaling: one state check among n obstacles', '',
     `A 2 × 1 map whose right half holds n small blocks in a grid; ${scaling.checks} checks of uniform states per row, best of ${roundsArg} round(s). `
@@ -254,7 +311,7 @@ if (scaling) {
 const outDir = opt('--out', join(root, 'bench', 'results'));
 mkdirSync(outDir, { recursive: true });
 const base = join(outDir, `suite-${stamp}`);
-writeFileSync(`${base}.json`, `${JSON.stringify({ date: new Date().toISOString(), host, node: process.version, runs: runsArg, results, scaling }, null, 1)}\n`);
+writeFileSync(`${base}.json`, `${JSON.stringify({ date: new Date().toISOString(), host, node: process.version, runs: runsArg, results, rrt_star_budget: budgetRows, scaling }, null, 1)}\n`);
 writeFileSync(`${base}.md`, `${lines.join('\n')}\n`);
 console.log(lines.join('\n'));
 console.log(`[bench] wrote ${base}.json and ${base}.md`);

@@ -48,6 +48,14 @@ export function buildHarness(root, { include = OMPL_INCLUDE, compiler = 'g++' } 
 
 /** Set-up parameters the harness reproduces; any other makes the set-up one OMPL has no match for. */
 const KNOWN = new Set(['range', 'goal_bias', 'time_limit']);
+/**
+ * RRT*'s too: OMPL's default near set (k-nearest, rewire factor 1.1) is Planarium's, and OMPL's
+ * RRT* improves until its time limit, which Planarium's does when `improve_for` (iterations after
+ * the first solution) is more than the limit allows. OMPL's has no node limit: a set-up's
+ * `max_nodes` must be more than the time allows (the suite's table shows the nodes made).
+ */
+const KNOWN_STAR = new Set([...KNOWN, 'improve_for', 'max_nodes']);
+const STAR_UNTIL_LIMIT = 1e8;
 
 const nums = (xs) => xs.map((v) => {
   if (!Number.isFinite(v)) throw new Error(`not a finite number: ${v}`);
@@ -65,9 +73,12 @@ const nums = (xs) => xs.map((v) => {
  * @returns {{ text: string } | { skip: string }}
  */
 export function problemText(scenario, planner, params) {
-  if (planner !== 'rrt' && planner !== 'rrt-connect') return { skip: `OMPL harness runs rrt and rrt-connect, not ${planner}` };
-  const other = Object.keys(params).filter((k) => !KNOWN.has(k));
+  if (planner !== 'rrt' && planner !== 'rrt-connect' && planner !== 'rrt-star') return { skip: `OMPL harness runs rrt, rrt-connect and rrt-star, not ${planner}` };
+  const other = Object.keys(params).filter((k) => !(planner === 'rrt-star' ? KNOWN_STAR : KNOWN).has(k));
   if (other.length) return { skip: `set-up parameters OMPL has no match for: ${other.join(', ')}` };
+  if (planner === 'rrt-star' && !(Number(params.improve_for) >= STAR_UNTIL_LIMIT)) {
+    return { skip: `OMPL's RRT* improves until its time limit: set improve_for to ${STAR_UNTIL_LIMIT} or more` };
+  }
   if (planner === 'rrt-connect' && Number(params.goal_bias ?? 0) !== 0) return { skip: "OMPL's RRT-Connect has no goal bias" };
   if (scenario.touching_allowed) return { skip: 'touching_allowed: the harness treats obstacles as closed sets' };
   const r = scenario.robot;
@@ -77,7 +88,7 @@ export function problemText(scenario, planner, params) {
     `bounds ${nums(scenario.bounds).join(' ')}`,
     `resolution ${nums([scenario.resolution ?? 0.002 * Math.max(x1 - x0, y1 - y0)])}`,
     `range ${nums([Number(params.range ?? 0)])}`,
-    `goal_bias ${nums([Number(params.goal_bias ?? (planner === 'rrt' ? 0.05 : 0))])}`,
+    `goal_bias ${nums([Number(params.goal_bias ?? (planner === 'rrt-connect' ? 0 : 0.05))])}`,
     `goal_tolerance ${nums([scenario.goal_tolerance ?? 0])}`,
     `start ${scenario.start.length} ${nums(scenario.start).join(' ')}`,
     `goal ${scenario.goal.length} ${nums(scenario.goal).join(' ')}`,
@@ -112,7 +123,7 @@ export function problemText(scenario, planner, params) {
 
 /**
  * Run the harness on a problem file for seeds first..last; one row per seed.
- * @returns {{ seed: number, planner: string, solved: boolean, time_ms: number, checks: number, nodes: number }[]}
+ * @returns {{ seed: number, planner: string, solved: boolean, time_ms: number, checks: number, nodes: number, cost: number }[]}
  */
 export function runHarness(bin, file, planner, first, last, timeLimitS) {
   const out = execFileSync(bin, [file, planner, String(first), String(last), String(timeLimitS)], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'inherit'], maxBuffer: 64 << 20 });

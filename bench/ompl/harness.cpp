@@ -1,15 +1,17 @@
-// Planarium's OMPL harness: the suite's problems planned by OMPL's own RRT and RRT-Connect, so that
+// Planarium's OMPL harness: the suite's problems planned by OMPL's own RRT, RRT-Connect and RRT*, so that
 // the benchmark suite (scripts/bench.mjs) measures OMPL beside Planarium on this machine, seed by
 // seed. Built by the suite with g++ -O3 against OMPL 1.5 (Debian's libompl-dev) when it is there.
 //
 //   harness PROBLEM PLANNER FIRST_SEED LAST_SEED TIME_LIMIT_S
 //
 // PROBLEM is a problem file that scripts/ompl.mjs writes from a scenario (whitespace-separated
-// tokens, see read_problem). PLANNER is rrt or rrt-connect. One JSON line per seed on stdout:
-// {"seed":1,"planner":"rrt","solved":true,"time_ms":0.61,"checks":8400,"nodes":120,"deadline":false}
+// tokens, see read_problem). PLANNER is rrt, rrt-connect or rrt-star (path length, improving until
+// TIME_LIMIT_S: its cost is the best path's when the time is up). One JSON line per seed on stdout:
+// {"seed":1,"planner":"rrt","solved":true,"time_ms":0.61,"checks":8400,"nodes":120,"deadline":false,"cost":1.62}
 // (deadline: the time limit was reached inside a motion check; see Checker).
 // time_ms is the planner's solve() alone (set-up excluded); checks counts every call of the state
-// validity checker during solve(); nodes the vertices of the planner's data (both trees).
+// validity checker during solve(); nodes the vertices of the planner's data (both trees); cost the
+// solution path's length in the space's metric (-1 unsolved).
 //
 // The set-up is Planarium's for the same scenario: the bounds, the obstacles (closed sets: touching
 // is a collision; exact tests), the robot (a point, a rigid polygon, or a planar chain whose joints
@@ -25,6 +27,8 @@
 #include <ompl/geometric/SimpleSetup.h>
 #include <ompl/geometric/planners/rrt/RRT.h>
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
+#include <ompl/geometric/planners/rrt/RRTstar.h>
+#include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
@@ -360,8 +364,18 @@ static void run(const Problem &p, const std::string &planner, unsigned seed, dou
     auto rc = std::make_shared<og::RRTConnect>(ss.getSpaceInformation());
     if (p.range > 0) rc->setRange(p.range);
     ss.setPlanner(rc);
+  } else if (planner == "rrt-star") {
+    // Path length, with a threshold no path meets: RRT* improves until the time limit (as
+    // Planarium's with improve_for past what the limit allows), and the cost is the best path's.
+    auto objective = std::make_shared<ob::PathLengthOptimizationObjective>(ss.getSpaceInformation());
+    objective->setCostThreshold(ob::Cost(0.0));
+    ss.setOptimizationObjective(objective);
+    auto rs = std::make_shared<og::RRTstar>(ss.getSpaceInformation());
+    if (p.range > 0) rs->setRange(p.range);
+    rs->setGoalBias(p.goal_bias);
+    ss.setPlanner(rs);
   } else {
-    fail("planner must be rrt or rrt-connect, not " + planner);
+    fail("planner must be rrt, rrt-connect or rrt-star, not " + planner);
   }
   ss.setup();
   checker->checks = 0;
@@ -374,8 +388,10 @@ static void run(const Problem &p, const std::string &planner, unsigned seed, dou
   ss.getPlanner()->getPlannerData(data);
   bool solved = status == ob::PlannerStatus::EXACT_SOLUTION;
   double ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
-  std::printf("{\"seed\":%u,\"planner\":\"%s\",\"solved\":%s,\"time_ms\":%.6f,\"checks\":%llu,\"nodes\":%u,\"deadline\":%s}\n", seed,
-              planner.c_str(), solved ? "true" : "false", ms, checks, data.numVertices(), checker->expired ? "true" : "false");
+  // The solution's length in the space's metric (the planner's path as returned, not simplified).
+  double cost = solved ? ss.getSolutionPath().length() : -1.0;
+  std::printf("{\"seed\":%u,\"planner\":\"%s\",\"solved\":%s,\"time_ms\":%.6f,\"checks\":%llu,\"nodes\":%u,\"deadline\":%s,\"cost\":%.17g}\n", seed,
+              planner.c_str(), solved ? "true" : "false", ms, checks, data.numVertices(), checker->expired ? "true" : "false", cost);
   std::fflush(stdout);
 }
 

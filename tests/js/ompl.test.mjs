@@ -69,6 +69,11 @@ test('the problem file carries the scenario\'s bounds, resolution, range, goal b
   assert.match(problemText(scenario('narrow'), 'prm', {}).skip, /not prm/);
   assert.match(problemText(scenario('narrow'), 'rrt', { extend: 'connect' }).skip, /extend/);
   assert.match(problemText(scenario('narrow'), 'rrt-connect', { goal_bias: 0.1 }).skip, /no goal bias/);
+  // RRT*: only improving until the time limit, as OMPL's does; its default goal bias is RRT's.
+  assert.match(problemText(scenario('narrow'), 'rrt-star', { range: 0.2828 }).skip, /improves until its time limit/);
+  const star = problemText(scenario('narrow'), 'rrt-star', { range: 0.2828, improve_for: 1e8, max_nodes: 1e6, time_limit: 1 });
+  assert.ok(star.text.includes('\nrange 0.2828\ngoal_bias 0.05\n'), star.text);
+  assert.match(problemText(scenario('narrow'), 'rrt-star', { improve_for: 1e8, rewire: 'radius' }).skip, /rewire/);
   const round = { ...scenario('narrow'), obstacles: [{ circle: [0.5, 0.5, 0.1] }] };
   assert.match(problemText(round, 'rrt', {}).skip, /circle/);
 });
@@ -92,4 +97,49 @@ test('OMPL installed: the harness solves the narrow passage with RRT-Connect, co
   const [blocked] = runHarness(bin, file, 'rrt-connect', 1, 1, 0.2);
   assert.equal(blocked.solved, false);
   assert.ok(blocked.checks > 0);
+});
+
+test('OMPL installed: its RRT* improves until the time limit, and its cost is the length of a path the gap allows', { skip: !found.installed && found.message }, () => {
+  const bin = buildHarness(root);
+  const dir = mkdtempSync(join(tmpdir(), 'planarium-ompl-star-'));
+  const file = join(dir, 'narrow.txt');
+  writeFileSync(file, problemText(scenario('narrow'), 'rrt-star', { range: 0.2828, improve_for: 1e8 }).text);
+  const rows = runHarness(bin, file, 'rrt-star', 1, 2, 0.3);
+  for (const r of rows) {
+    assert.equal(r.solved, true, `seed ${r.seed}`);
+    // it used its whole budget (a lower bound: a busy machine only makes it later)
+    assert.ok(r.time_ms >= 290, `RRT* stopped at ${r.time_ms} ms, before its 0.3 s`);
+    // (0.1, 0.1) to (0.9, 0.9) through the 0.02 gap at x 0.45..0.55, y 0.49..0.51: no path is
+    // shorter than through the gap's corners (1.1500, the visibility graph's), nor far longer here
+    assert.ok(r.cost >= 1.15 - 1e-9 && r.cost < 2, `cost ${r.cost}`);
+  }
+  // RRT and RRT-Connect report their path's length too
+  writeFileSync(file, problemText(scenario('narrow'), 'rrt', { range: 0.2828 }).text);
+  const [rrt] = runHarness(bin, file, 'rrt', 1, 1, 10);
+  assert.ok(rrt.solved && rrt.cost >= 1.15 - 1e-9, JSON.stringify(rrt));
+});
+
+test('the suite\'s RRT* at a fixed budget: both sides on narrow and ompl-rect, the table read back against the JSON', { skip: !found.installed && found.message }, () => {
+  const out = mkdtempSync(join(tmpdir(), 'planarium-suite-star-'));
+  execFileSync(process.execPath, [join(root, 'scripts', 'bench.mjs'), '--quick', '--only', 'rrt-star-budget', '--out', out],
+    { cwd: root, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  const md = readdirSync(out).find((f) => f.endsWith('.md'));
+  const text = readFileSync(join(out, md), 'utf8');
+  const json = JSON.parse(readFileSync(join(out, md.replace(/\.md$/, '.json')), 'utf8'));
+  assert.deepEqual(json.rrt_star_budget.map((r) => [r.problem, r.budget_s, r.native.length, r.ompl.rows.length]), [['narrow', 0.2, 3, 3], ['ompl-rect', 0.2, 3, 3]]);
+  const rows = text.split('\n').filter((l) => /^\| (narrow|ompl-rect) \| 0\.2 s \|/.test(l));
+  assert.equal(rows.length, 2, text);
+  const median = (xs) => { const v = [...xs].sort((a, b) => a - b); return v.length % 2 ? v[(v.length - 1) / 2] : (v[v.length / 2 - 1] + v[v.length / 2]) / 2; };
+  json.rrt_star_budget.forEach((r, i) => {
+    const cells = rows[i].split(' | ');
+    for (const [side, list, at] of [['Planarium', r.native, 3], ['OMPL', r.ompl.rows, 7]]) {
+      const costs = list.filter((x) => x.solved && x.cost >= 0).map((x) => x.cost);
+      assert.equal(cells[at - 1], `${costs.length}/3`, `${side}'s solved count on ${r.problem}`);
+      if (costs.length) assert.equal(Number(cells[at]), Number(median(costs).toFixed(4)), `${side}'s median cost on ${r.problem}`);
+      // narrow: no path is shorter than the visibility graph's 1.1500
+      if (r.problem === 'narrow') assert.ok(costs.every((c) => c >= 1.15 - 1e-9), `${side}: ${costs}`);
+    }
+    // Planarium's runs used the budget: each stopped at its time limit, not before
+    assert.ok(r.native.every((x) => x.time_ms >= 190), `Planarium's RRT* on ${r.problem} stopped early`);
+  });
 });
