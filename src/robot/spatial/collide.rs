@@ -187,6 +187,21 @@ fn gjk<G1: SupportMap, G2: SupportMap>(
     intersection_test_support_map_support_map_with_params(pos12, g1, g2, &mut VoronoiSimplex::new(), start)
 }
 
+/// `v` scaled to length 1, or `None` for a zero or non-finite vector: glam's `try_normalize`, the
+/// same operations in the same order, with the processor's square root. IEEE 754 rounds a square
+/// root exactly, so the bits are the same as libm's, which glam calls when built with `libm` (as
+/// parry's `enhanced-determinism` builds it); in wasm that is a software root (all its calls took 7%
+/// of a Puma run's time in chromium, these about a third), where `f64::sqrt` is one `f64.sqrt`.
+#[inline(always)]
+fn unit(v: Vector) -> Option<Vector> {
+    let rcp = 1.0 / v.dot(v).sqrt();
+    if rcp.is_finite() && rcp > 0.0 {
+        Some(v * rcp)
+    } else {
+        None
+    }
+}
+
 /// Whether two placed solids meet: GJK on their support maps, started along `warm`'s direction (in
 /// the first solid's frame) when there is one, else along the direction from the first's box
 /// centre to the second's (`ca`, `cb`, in the world), each hull's climbs from `warm`'s vertices;
@@ -200,7 +215,7 @@ fn intersects(p1: &Pose, s1: &Solid, p2: &Pose, s2: &Solid, ca: &[Real; 3], cb: 
     let Warm { dir, hints } = warm;
     let start = dir.or_else(|| {
         let world = Vector::new(cb[0] - ca[0], cb[1] - ca[1], cb[2] - ca[2]);
-        (p1.rotation.inverse() * world).try_normalize()
+        unit(p1.rotation.inverse() * world)
     });
     let [h1, h2] = hints;
     let climber = |hull, hint| Climber { hull, hint: Cell::from_mut(hint) };
@@ -212,7 +227,7 @@ fn intersects(p1: &Pose, s1: &Solid, p2: &Pose, s2: &Solid, ca: &[Real; 3], cb: 
         (Convex::Cuboid(a), Convex::Hull(b)) => gjk(&pos12, a, &climber(b, h2), warm, start),
         (Convex::Cuboid(a), Convex::Cuboid(b)) => gjk(&pos12, a, b, warm, start),
     };
-    *dir = if hit { None } else { end.try_normalize() };
+    *dir = if hit { None } else { unit(end) };
     hit
 }
 
@@ -233,11 +248,11 @@ fn gap<G1: SupportMap, G2: SupportMap>(pos12: &Pose, g1: &G1, g2: &G2, warm: Opt
             return cap;
         }
     }
-    let start = warm.or_else(|| pos12.translation.try_normalize()).unwrap_or(Vector::X);
+    let start = warm.or_else(|| unit(pos12.translation)).unwrap_or(Vector::X);
     let mut simplex = VoronoiSimplex::new();
     simplex.reset(CsoPoint::from_shapes(pos12, g1, g2, start));
     match closest_points(pos12, g1, g2, Real::MAX, true, &mut simplex) {
-        GJKResult::ClosestPoints(p1, p2, _) => (p2 - p1).try_normalize().map_or(0.0, |n| along(n).clamp(0.0, cap)),
+        GJKResult::ClosestPoints(p1, p2, _) => unit(p2 - p1).map_or(0.0, |n| along(n).clamp(0.0, cap)),
         _ => 0.0,
     }
 }
