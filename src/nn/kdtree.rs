@@ -20,6 +20,9 @@ pub struct KdTree {
     /// the chain metric far more tightly than joint-angle boxes do, and each stored state is
     /// embedded once instead of at every comparison.
     embedded: bool,
+    /// Whether the space is Euclidean without wrapping dimensions (and keys are states): distances
+    /// and box bounds then skip asking each dimension whether it wraps.
+    plain: bool,
     /// Flat keys, `kd` per point, in insertion order.
     keys: Vec<Real>,
     ids: Vec<u32>,
@@ -88,7 +91,9 @@ impl KdTree {
     fn box_bound(&self, space: &StateSpace, qk: &[Real], c: usize) -> Real {
         let kd = self.kd;
         let (lo, hi) = (&self.lo[c * kd..(c + 1) * kd], &self.hi[c * kd..(c + 1) * kd]);
-        if self.embedded {
+        if self.plain {
+            crate::space::plain_box_lower_bound(qk, lo, hi)
+        } else if self.embedded {
             space.embedded_box_lower_bound(qk, lo, hi)
         } else {
             space.box_lower_bound(qk, lo, hi)
@@ -98,7 +103,9 @@ impl KdTree {
     /// The distance from the query (key `qk`) to point `i`.
     #[inline(always)]
     fn dist(&self, space: &StateSpace, qk: &[Real], i: usize) -> Real {
-        if self.embedded {
+        if self.plain {
+            crate::space::plain_distance(qk, self.key(i))
+        } else if self.embedded {
             space.embedded_distance(qk, self.key(i))
         } else {
             space.distance(qk, self.key(i))
@@ -121,6 +128,7 @@ impl KdTree {
         if n == 0 {
             let elen = space.embedding_len();
             self.embedded = elen > 0;
+            self.plain = !self.embedded && space.plain_euclidean();
             self.kd = if self.embedded { elen } else { self.dims };
         }
         let at = self.keys.len();

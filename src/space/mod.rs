@@ -118,6 +118,13 @@ impl StateSpace {
         }
     }
 
+    /// Whether the metric is Euclidean and no dimension wraps: then [`plain_distance`] and
+    /// [`plain_box_lower_bound`] give [`distance`](Self::distance) and
+    /// [`box_lower_bound`](Self::box_lower_bound), bit for bit, without asking each dimension.
+    pub fn plain_euclidean(&self) -> bool {
+        matches!(self.metric, Metric::Euclidean) && !self.dims.iter().any(|d| d.wraps)
+    }
+
     /// Numbers in a state's embedding (see [`embed`](Self::embed)): the chain metrics' link-end
     /// points; 0 for metrics computed from the states directly.
     pub fn embedding_len(&self) -> usize {
@@ -283,3 +290,31 @@ pub fn chain_moves<'a>(links: &'a [Real], a: &'a [Real], b: &'a [Real]) -> impl 
 
 #[cfg(test)]
 mod tests;
+
+/// The Euclidean distance between `a` and `b` in a space whose dimensions do not wrap
+/// ([`StateSpace::plain_euclidean`]): the same operations in the same order as
+/// [`StateSpace::distance`], so the same bits. The nearest-neighbour search's inner loop.
+#[inline(always)]
+pub fn plain_distance(a: &[Real], b: &[Real]) -> Real {
+    a.iter().zip(b).map(|(x, y)| (y - x).powi(2)).sum::<Real>().sqrt()
+}
+
+/// [`StateSpace::box_lower_bound`] in a space whose dimensions do not wrap, the same bits.
+#[inline(always)]
+pub fn plain_box_lower_bound(q: &[Real], lo: &[Real], hi: &[Real]) -> Real {
+    q.iter()
+        .zip(lo)
+        .zip(hi)
+        .map(|((v, l), h)| {
+            let gap = if *v >= *l && *v <= *h {
+                0.0
+            } else if *v < *l {
+                l - v
+            } else {
+                v - h
+            };
+            gap.powi(2)
+        })
+        .sum::<Real>()
+        .sqrt()
+}

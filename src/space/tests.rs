@@ -78,3 +78,26 @@ fn chain_embeddings_give_the_distance_bit_for_bit() {
     let plane = StateSpace { dims: vec![Dim { lo: 0.0, hi: 1.0, wraps: false }; 2], metric: Metric::Euclidean };
     assert_eq!(plane.embedding_len(), 0);
 }
+
+#[test]
+fn plain_euclidean_distance_and_bound_are_the_general_ones_bit_for_bit() {
+    let joints = |wraps: bool| StateSpace {
+        dims: (0..6).map(|k| Dim { lo: -2.0 - k as Real, hi: 2.5 + k as Real, wraps: wraps && k == 3 }).collect(),
+        metric: Metric::Euclidean,
+    };
+    let s = joints(false);
+    assert!(s.plain_euclidean());
+    assert!(!joints(true).plain_euclidean(), "a wrapping dimension is not plain");
+    assert!(!se2(0.5).plain_euclidean());
+    let mut rng = crate::rng::Rng::new(9);
+    let mut draw = || -> Vec<Real> { s.dims.iter().map(|d| d.lo + (d.hi - d.lo) * rng.uniform01()).collect() };
+    for _ in 0..5000 {
+        let (a, b, c) = (draw(), draw(), draw());
+        assert_eq!(plain_distance(&a, &b).to_bits(), s.distance(&a, &b).to_bits());
+        let lo: Vec<Real> = b.iter().zip(&c).map(|(x, y)| x.min(*y)).collect();
+        let hi: Vec<Real> = b.iter().zip(&c).map(|(x, y)| x.max(*y)).collect();
+        assert_eq!(plain_box_lower_bound(&a, &lo, &hi).to_bits(), s.box_lower_bound(&a, &lo, &hi).to_bits());
+        // a point inside its own box is at no distance from it
+        assert_eq!(plain_box_lower_bound(&lo, &lo, &hi), 0.0);
+    }
+}
