@@ -243,14 +243,10 @@ impl StateSpace {
     pub fn box_lower_bound(&self, q: &[Real], lo: &[Real], hi: &[Real]) -> Real {
         #[inline(always)]
         fn gap_in(d: &Dim, v: Real, lo: Real, hi: Real) -> Real {
-            if v >= lo && v <= hi {
-                0.0
-            } else if d.wraps {
+            if d.wraps && !(v >= lo && v <= hi) {
                 angle_diff(v, lo).abs().at_most(angle_diff(v, hi).abs())
-            } else if v < lo {
-                lo - v
             } else {
-                v - hi
+                gap_outside(v, lo, hi)
             }
         }
         let gap = |i: usize| gap_in(&self.dims[i], q[i], lo[i], hi[i]);
@@ -288,9 +284,6 @@ pub fn chain_moves<'a>(links: &'a [Real], a: &'a [Real], b: &'a [Real]) -> impl 
     })
 }
 
-#[cfg(test)]
-mod tests;
-
 /// The Euclidean distance between `a` and `b` in a space whose dimensions do not wrap
 /// ([`StateSpace::plain_euclidean`]): the same operations in the same order as
 /// [`StateSpace::distance`], so the same bits. The nearest-neighbour search's inner loop.
@@ -302,19 +295,20 @@ pub fn plain_distance(a: &[Real], b: &[Real]) -> Real {
 /// [`StateSpace::box_lower_bound`] in a space whose dimensions do not wrap, the same bits.
 #[inline(always)]
 pub fn plain_box_lower_bound(q: &[Real], lo: &[Real], hi: &[Real]) -> Real {
-    q.iter()
-        .zip(lo)
-        .zip(hi)
-        .map(|((v, l), h)| {
-            let gap = if *v >= *l && *v <= *h {
-                0.0
-            } else if *v < *l {
-                l - v
-            } else {
-                v - h
-            };
-            gap.powi(2)
-        })
-        .sum::<Real>()
-        .sqrt()
+    q.iter().zip(lo).zip(hi).map(|((v, l), h)| gap_outside(*v, *l, *h).powi(2)).sum::<Real>().sqrt()
 }
+
+/// How far `v` lies outside `[lo, hi]` on a line that does not wrap (0 inside).
+#[inline(always)]
+fn gap_outside(v: Real, lo: Real, hi: Real) -> Real {
+    if v >= lo && v <= hi {
+        0.0
+    } else if v < lo {
+        lo - v
+    } else {
+        v - hi
+    }
+}
+
+#[cfg(test)]
+mod tests;
