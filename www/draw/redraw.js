@@ -27,7 +27,7 @@ export function drawAll(steps) {
  */
 export function* treeLayerSteps(view, batch = Infinity, to = view.store.length) {
   const { ctx } = view.treeLayer;
-  const L = view.layout;
+  const L = view.drawn;
   ctx.clearRect(0, 0, L.width, L.height);
   view.attemptSeen = view.model ? view.model.cells.attempt : -1;
   yield* treeSteps(ctx, L, view, batch);
@@ -60,9 +60,10 @@ export function* redrawSteps(view, batch = Infinity, to = view.store.length) {
   view.markers = [];
   view.flashes = [];
   view.queryPath = null;
-  for (const n of treeLayerSteps(view, batch, to)) { done += n; yield done / total; }
-  const L = view.layout;
+  const L = view.drawn;
   view.underLayer.ctx.clearRect(0, 0, L.width, L.height);
+  view.overLayer.ctx.clearRect(0, 0, L.width, L.height);
+  for (const n of treeLayerSteps(view, batch, to)) { done += n; yield done / total; }
   view.pendingSample = null;
   for (const [r0, r1] of ranges(to, batch)) {
     view.drawUnder(r0, r1);
@@ -70,7 +71,6 @@ export function* redrawSteps(view, batch = Infinity, to = view.store.length) {
     yield done / total;
   }
   if (view.showResult) view.finishRun();
-  view.overLayer.ctx.clearRect(0, 0, L.width, L.height);
   if (view.options.showCollisions) {
     for (const [r0, r1] of ranges(to, batch)) {
       view.drawOver(r0, r1);

@@ -7,19 +7,37 @@ import { PALETTE, STYLE } from './palette.js';
 
 const MARGIN = 10; // css px around the bounds
 
-/** World ↔ screen (device pixels of the canvas backing store). */
+/** The most the plane's view zooms in (times the fitted scale). */
+export const MAX_ZOOM = 256;
+
+/**
+ * World ↔ screen (device pixels of the canvas backing store). Without `viewport` the bounds fit
+ * the canvas; with {zoom, cx, cy} the fitted scale is multiplied by `zoom` (1 … MAX_ZOOM) and
+ * world point (cx, cy) is the canvas's centre.
+ */
 export class Layout {
-  constructor(bounds, cssWidth, cssHeight, dpr) {
+  constructor(bounds, cssWidth, cssHeight, dpr, viewport = null) {
     const [x0, y0, x1, y1] = bounds;
     this.bounds = bounds;
     this.dpr = dpr;
     this.width = Math.max(1, Math.round(cssWidth * dpr));
     this.height = Math.max(1, Math.round(cssHeight * dpr));
     const m = MARGIN * dpr;
-    this.scale = Math.min((this.width - 2 * m) / (x1 - x0), (this.height - 2 * m) / (y1 - y0));
+    this.fitScale = Math.min((this.width - 2 * m) / (x1 - x0), (this.height - 2 * m) / (y1 - y0));
+    this.scale = this.fitScale;
     // centre the bounds; screen y grows downward, world y upward
     this.ox = (this.width - this.scale * (x1 - x0)) / 2 - this.scale * x0;
     this.oy = (this.height + this.scale * (y1 - y0)) / 2 + this.scale * y0;
+    this.viewport = viewport;
+    if (viewport) {
+      this.scale = this.fitScale * viewport.zoom;
+      this.ox = this.width / 2 - this.scale * viewport.cx;
+      this.oy = this.height / 2 + this.scale * viewport.cy;
+    }
+  }
+  /** Whether two layouts put every world point at the same device pixel. */
+  same(o) {
+    return !!o && o.width === this.width && o.height === this.height && o.scale === this.scale && o.ox === this.ox && o.oy === this.oy;
   }
   /** The css size that keeps the bounds' aspect ratio inside a box of `w` × `h` css px. */
   static fit(bounds, w, h) {

@@ -24,16 +24,25 @@ import { EventKind, STRIDE } from '../run/events.js';
 import { footprintRadius } from './robots.js';
 import { PALETTE, STYLE, OVERLAY_DEFAULTS } from './palette.js';
 import { dragsHeading, robotDrawing, treeLegend } from './capabilities.js';
-import { Layout, parseOutline, parseFrames, makeLayer, drawExhausted } from './transform.js';
+import { Layout, MAX_ZOOM, parseOutline, parseFrames, makeLayer, drawExhausted } from './transform.js';
 import { CellsDrawing } from './cells.js';
 import { addQueryEdge, drawGraphEdges, drawRoadmap } from './graphs.js';
-import { drawAll, redrawSteps, treeLayerSteps } from './redraw.js';
+import { drawAll, redrawSteps, redrawWork, treeLayerSteps } from './redraw.js';
 import { drawAccepted, drawCollisions, drawDomains, drawSamples } from './layers.js';
 import { PICTURE, bestOf } from './picture.js';
 
 const MAX_FLASHES = 80;      // the most flashes shown at once (a burst keeps only the latest)
 const BIG_TREE = 20000;      // above this many nodes, a rewired tree is redrawn at most every…
 const BIG_TREE_MS = 250;     // …this many ms
+// Zooming and panning the plane: while the viewport moves, the layers' last pictures are moved
+// and scaled with it (a few image copies a frame, whatever the run's size); SETTLE_MS after the
+// last move they are redrawn at the new transform: at once when the work is at most SYNC_WORK
+// (redraw.js redrawWork's units: nodes and records), else in steps of REDRAW_BATCH, at most
+// REDRAW_MS of each frame, the moved pictures shown until the new ones are whole.
+const SETTLE_MS = 150;
+const SYNC_WORK = 60000;
+const REDRAW_BATCH = 10000;
+const REDRAW_MS = 10;
 
 export class View {
   /**
@@ -55,7 +64,24 @@ export class View {
     /** The offscreen layers by the names picture.js gives them. */
     this.layers = { scene: this.sceneLayer, cells: this.cellsLayer, under: this.underLayer, domain: this.domainLayer,
       tree: this.treeLayer, over: this.overLayer };
+    /** @type {Layout | null} what the canvas shows: the world ↔ device-pixel transform */
     this.layout = null;
+    /** @type {Layout | null} the transform the offscreen layers are drawn at (the shown one but
+     * while the plane is being zoomed or panned, and until its redraw is done) */
+    this.drawn = null;
+    /** @type {{zoom: number, cx: number, cy: number} | null} zoom and centre, null: the bounds fitted */
+    this.viewport = null;
+    this.movedAt = 0;       // when the viewport last changed (performance.now())
+    /** @type {{zoom: number, cx: number, cy: number} | null | undefined} the viewport the next
+     * scenario opens at (a share link's), undefined: fitted */
+    this.pendingViewport = undefined;
+    /** @type {{steps: Generator, to: number} | null} a big run's layers being redrawn in steps */
+    this.redrawing = null;
+    /** @type {{canvases: Record<string, HTMLCanvasElement>, layout: Layout} | null} the last whole
+     * picture of the layers, shown (moved to the shown transform) while they are redrawn */
+    this.stale = null;
+    /** @type {Record<string, HTMLCanvasElement> | null} the canvases `stale` keeps, made once */
+    this.staleCanvases = null;
     this.css = [300, 300];
     this.dpr = 1;
     this.scenario = null;
@@ -69,6 +95,8 @@ export class View {
     this.overlayHooks = [];                      // (ctx, layout) => void, drawn above the scene
     /** @type {(() => void) | null} called when a new query's answer comes or goes (its legend entry) */
     this.onLegend = null;
+    /** @type {(() => void) | null} called when the plane's zoom or centre changes */
+    this.onViewport = null;
     this.topHooks = [];                          // (ctx, layout) => void, drawn last, over the robot
                                                  // (ghost.js: the linked views' ghost arm)
     this.clearRun();
@@ -105,7 +133,15 @@ export class View {
     this.treeDrawnAt = 0;
     this.attemptSeen = -1; // hex-potential: the attempt whose tree is drawn in full (older ones faint)
     this.cells?.reset();
-    if (this.layout) for (const l of this.runLayers) l.ctx.clearRect(0, 0, this.layout.width, this.layout.height);
+    if (this.layout) {
+      for (const l of this.runLayers) l.ctx.clearRect(0, 0, this.layout.width, this.layout.height);
+      if (this.redrawing || this.stale || this.drawn !== this.layout) { // empty layers fit any transform
+        this.redrawing = null;
+        this.stale = null;
+        this.drawn = this.layout;
+        this.drawScene();
+      }
+    }
     this.dirty = true;
   }
 
@@ -115,12 +151,19 @@ export class View {
    * @param {any} scenario @param {Float64Array | number[]} [start] @param {Float64Array | number[]} [goal]
    */
   setScenario(scenario, start, goal) {
+    // another scenario opens fitted (an edit of this one keeps its name and bounds, and the zoom)
+    const key = (sc) => (sc ? `${sc.name}|${sc.bounds}` : '');
+    if (key(scenario) !== key(this.scenario)) this.viewport = null;
     this.scenario = scenario;
     this.start = scenario ? parseOutline(start).polys : [];
     this.goal = scenario && goal && goal.length ? parseOutline(goal).polys : [];
     this.preview = { start: null, goal: null };
     this.clearRun();
     this.relayout();
+    const asked = this.pendingViewport;
+    this.pendingViewport = undefined;
+    if (asked !== undefined && scenario) { this.setViewport(asked); this.movedAt = 0; } // drawn at the next frame
+    this.onViewport?.();
   }
 
   /** The css box available for the canvas changed (or the device pixel ratio did). */
@@ -134,7 +177,11 @@ export class View {
     if (!this.box) return;
     const bounds = this.scenario ? this.scenario.bounds : [0, 0, 1, 1];
     this.css = Layout.fit(bounds, this.box[0], this.box[1]);
-    this.layout = new Layout(bounds, this.css[0], this.css[1], this.dpr);
+    if (this.viewport && !this.scenario) this.viewport = null;
+    this.layout = new Layout(bounds, this.css[0], this.css[1], this.dpr, this.viewport);
+    this.drawn = this.layout;
+    this.redrawing = null;
+    this.stale = null;
     const { width, height } = this.layout;
     for (const c of [this.canvas, this.sceneLayer.canvas, ...this.runLayers.map((l) => l.canvas)]) {
       c.width = width;
@@ -201,7 +248,7 @@ export class View {
   /** The scene layer: background, free space, `obstacles`, bounds (picture.js's 'scene' layers). */
   paintScene(obstacles) {
     const { ctx } = this.sceneLayer;
-    const L = this.layout;
+    const L = this.drawn;
     for (const e of PICTURE) {
       if (e.layer === 'scene' && (this.scenario || e.id === 'background')) e.draw(ctx, L, this, { obstacles });
     }
@@ -213,7 +260,7 @@ export class View {
    * changed, not a map of 100,000 obstacles at every pointer move.
    */
   drawSceneIn(box, obstacles) {
-    const L = this.layout;
+    const L = this.drawn;
     if (!L || !this.scenario) return;
     const { ctx } = this.sceneLayer;
     const pad = Math.ceil(L.px(2));
@@ -232,9 +279,8 @@ export class View {
   /** Draw stored records [from, to) onto the layers; remember markers. */
   drawRecords(from, to) {
     if (!this.layout || to <= from) return;
-    this.drawTreeRecords(from, to);
-    this.drawUnder(from, to);
-    this.drawOver(from, to);
+    if (!this.redrawing) this.drawLayers(from, to); // else the redraw's catch-up draws them
+
     const flash = this.options.showRewires;
     const now = performance.now();
     // markers: few, kept as world coordinates and drawn on top every frame
@@ -249,10 +295,17 @@ export class View {
     this.dirty = true;
   }
 
+  /** Records [from, to) onto the offscreen layers (at the layout they are drawn at). */
+  drawLayers(from, to) {
+    this.drawTreeRecords(from, to);
+    this.drawUnder(from, to);
+    this.drawOver(from, to);
+  }
+
   /** Tree edges and nodes of NODE_ADDED records, exhausted nodes greyed (incremental). */
   drawTreeRecords(from, to) {
     const { ctx } = this.treeLayer;
-    const L = this.layout;
+    const L = this.drawn;
     const edge = STYLE[EventKind.NODE_ADDED];
     const node = Math.max(1, Math.round(L.px(edge.size)));
     // one path per colour: O(new records) work, a handful of stroke calls
@@ -279,7 +332,7 @@ export class View {
       }
       drawExhausted(ctx, L, pts);
     }
-    if (this.roadmap) drawRoadmap(this.treeLayer.ctx, this.layout, this.store, from, to, false);
+    if (this.roadmap) drawRoadmap(this.treeLayer.ctx, L, this.store, from, to, false);
   }
 
   /** Whether the run drew a roadmap (its layer is then redrawn from the records). */
@@ -290,26 +343,28 @@ export class View {
 
   /** The whole tree layer from the model's mirror (after a rewire, a toggle or a resize). */
   redrawTreeLayer() {
-    if (this.layout) drawAll(treeLayerSteps(this));
+    if (this.redrawing) this.beginRedraw();
+    else if (this.layout) drawAll(treeLayerSteps(this));
   }
 
   /** The colour of tree `k`'s records: 0 or 1 (hex-potential's trees are its attempts: all 0). */
   treeGroup(k) { return k > 0 && !(this.model?.cells.regions.length) ? 1 : 0; }
 
   /** @param {CanvasRenderingContext2D} ctx @param {number[]} at the sample's point */
-  drawAccepted(ctx, at) { drawAccepted(ctx, this.layout, at); }
+  drawAccepted(ctx, at) { drawAccepted(ctx, this.drawn, at); }
 
   /**
    * Samples and raw tries of records [from, to) (layers.js drawSamples: a sample is drawn once the
    * next one or its rejection is revealed, or when the run is over), and the visibility graph's edges.
    */
   drawUnder(from, to) {
-    drawSamples(this.underLayer.ctx, this.layout, this.store, from, to, this.options, this);
-    drawGraphEdges(this.underLayer.ctx, this.layout, this.store, from, to);
+    drawSamples(this.underLayer.ctx, this.drawn, this.store, from, to, this.options, this);
+    drawGraphEdges(this.underLayer.ctx, this.drawn, this.store, from, to);
   }
 
   redrawUnder() {
     if (!this.layout) return;
+    if (this.redrawing) { this.beginRedraw(); return; }
     this.underLayer.ctx.clearRect(0, 0, this.layout.width, this.layout.height);
     this.pendingSample = null;
     this.drawUnder(0, this.store.length);
@@ -319,11 +374,12 @@ export class View {
 
   /** Blocked motions of records [from, to). */
   drawOver(from, to) {
-    if (this.options.showCollisions) drawCollisions(this.overLayer.ctx, this.layout, this.store, from, to);
+    if (this.options.showCollisions) drawCollisions(this.overLayer.ctx, this.drawn, this.store, from, to);
   }
 
   redrawOver() {
     if (!this.layout) return;
+    if (this.redrawing) { this.beginRedraw(); return; }
     this.overLayer.ctx.clearRect(0, 0, this.layout.width, this.layout.height);
     this.drawOver(0, this.store.length);
     this.dirty = true;
@@ -333,7 +389,7 @@ export class View {
   redrawDomains() {
     if (!this.layout) return;
     const { ctx } = this.domainLayer;
-    const L = this.layout;
+    const L = this.drawn;
     ctx.clearRect(0, 0, L.width, L.height);
     this.domainSeen = this.model ? this.model.domainVersion : 0;
     if (this.options.showDomains && this.model && this.scenario) drawDomains(ctx, L, this.model, this.scenario.bounds);
@@ -342,19 +398,123 @@ export class View {
 
   /** Every run layer again, from the records and the model (redraw.js: an export does it in steps). */
   redrawTree() {
-    if (this.layout) drawAll(redrawSteps(this));
+    if (this.redrawing) this.beginRedraw();
+    else if (this.layout) drawAll(redrawSteps(this));
   }
 
   /** Bring the model-drawn layers up to date (at most once a frame; big trees less often). */
   syncModelLayers(time) {
-    if (!this.model) return;
+    if (!this.model || this.redrawing) return;
     if (this.model.domainVersion !== this.domainSeen) this.redrawDomains();
-    if (this.cells.sync(this.layout, this.options, time, this.showResult)) this.dirty = true;
+    if (this.cells.sync(this.drawn, this.options, time, this.showResult)) this.dirty = true;
     if (this.model.cells.attempt !== this.attemptSeen) this.redrawTreeLayer();
     if (this.model.treeVersion !== this.treeSeen) {
       const nodes = this.model.trees.reduce((s, t) => s + t.n, 0);
       if (nodes < BIG_TREE || time - this.treeDrawnAt >= BIG_TREE_MS || this.showResult) this.redrawTreeLayer();
     }
+  }
+
+  /** The zoom shown: 1 when the bounds are fitted. */
+  get zoom() { return this.viewport ? this.viewport.zoom : 1; }
+
+  /**
+   * Show the plane at `viewport` ({zoom, cx, cy}, the zoom clamped to 1 … MAX_ZOOM and the centre
+   * to the bounds; zoom 1 fits the bounds again) or null (fitted). The layers follow SETTLE_MS
+   * after the last change; the shown transform (`layout`, what pointer positions map through)
+   * changes at once.
+   */
+  setViewport(viewport) {
+    if (!this.layout || !this.scenario) return;
+    const [x0, y0, x1, y1] = this.scenario.bounds;
+    let vp = null;
+    if (viewport && Number.isFinite(viewport.zoom) && viewport.zoom > 1 + 1e-9) {
+      const clamp = (v, lo, hi) => (Number.isFinite(v) ? Math.min(hi, Math.max(lo, v)) : (lo + hi) / 2);
+      vp = { zoom: Math.min(MAX_ZOOM, viewport.zoom), cx: clamp(viewport.cx, x0, x1), cy: clamp(viewport.cy, y0, y1) };
+    }
+    this.viewport = vp;
+    this.layout = new Layout(this.scenario.bounds, this.css[0], this.css[1], this.dpr, vp);
+    this.movedAt = performance.now();
+    this.dirty = true;
+    this.onViewport?.();
+  }
+
+  /** Zoom by `factor` about device point (px, py): the world point there stays under it. */
+  zoomAt(factor, px, py) {
+    const L = this.layout;
+    if (!L || !this.scenario) return;
+    const zoom = Math.min(MAX_ZOOM, Math.max(1, this.zoom * factor));
+    const scale = L.fitScale * zoom;
+    const wx = L.wx(px), wy = L.wy(py);
+    this.setViewport({ zoom, cx: wx - (px - L.width / 2) / scale, cy: wy + (py - L.height / 2) / scale });
+  }
+
+  /** Move the picture by (dx, dy) device px (a drag). */
+  panBy(dx, dy) {
+    const L = this.layout;
+    if (!L || !this.viewport) return;
+    const { zoom, cx, cy } = this.viewport;
+    this.setViewport({ zoom, cx: cx - dx / L.scale, cy: cy + dy / L.scale });
+  }
+
+  /** Bring the layers to the shown transform once the viewport has rested; step a redraw in progress. */
+  followViewport() {
+    const L = this.layout;
+    if (!this.drawn.same(L) && performance.now() - this.movedAt >= SETTLE_MS) {
+      if (!this.redrawing && redrawWork(this) <= SYNC_WORK) {
+        this.drawn = L;
+        this.stale = null;
+        this.drawScene();
+        drawAll(redrawSteps(this));
+      } else this.beginRedraw();
+    }
+    if (this.redrawing && this.drawn.same(L)) this.stepRedraw();
+  }
+
+  /**
+   * Redraw every layer at the shown transform in steps (again from the start when one is in
+   * progress): the layers' last whole picture is kept to be shown meanwhile, new records wait.
+   */
+  beginRedraw() {
+    if (!this.stale) {
+      const canvases = this.staleCanvases ??= Object.fromEntries(Object.keys(this.layers).map((k) => [k, document.createElement('canvas')]));
+      for (const [k, layer] of Object.entries(this.layers)) {
+        const c = canvases[k];
+        c.width = layer.canvas.width;
+        c.height = layer.canvas.height;
+        c.getContext('2d').drawImage(layer.canvas, 0, 0);
+      }
+      this.stale = { canvases, layout: this.drawn };
+    }
+    this.drawn = this.layout;
+    this.drawScene();
+    this.redrawing = { steps: redrawSteps(this, REDRAW_BATCH, this.store.length), to: this.store.length };
+    this.stepRedraw(); // its first step forgets the markers before more records come
+  }
+
+  stepRedraw() {
+    const r = this.redrawing;
+    const until = performance.now() + REDRAW_MS;
+    let s;
+    do s = r.steps.next(); while (!s.done && performance.now() < until);
+    if (!s.done) return;
+    this.redrawing = null;
+    this.stale = null;
+    this.drawLayers(r.to, this.store.length); // what came while it was redrawn
+    this.dirty = true;
+  }
+
+  /** The offscreen layers onto `ctx`, moved from the transform they were drawn at to the shown one. */
+  compositeLayer(ctx, name) {
+    const L = this.layout;
+    const from = this.stale ? this.stale.layout : this.drawn;
+    const canvas = this.stale ? this.stale.canvases[name] : this.layers[name].canvas;
+    if (from.same(L)) { ctx.drawImage(canvas, 0, 0); return; }
+    const s = L.scale / from.scale;
+    if (name === 'scene') { // outside the old picture: the background
+      ctx.fillStyle = PALETTE.background;
+      ctx.fillRect(0, 0, L.width, L.height);
+    }
+    ctx.drawImage(canvas, L.ox - from.ox * s, L.oy - from.oy * s, from.width * s, from.height * s);
   }
 
   /**
@@ -363,6 +523,7 @@ export class View {
    */
   render(time, animFps) {
     if (!this.layout) return;
+    this.followViewport();
     const animating = this.showResult && this.frames.length > 0;
     if (!animating) this.robotState = null;
     this.syncModelLayers(time);
@@ -382,7 +543,7 @@ export class View {
     let composited = null;
     for (const e of PICTURE) {
       if (e.layer) {
-        if (e.layer !== composited) ctx.drawImage(this.layers[e.layer].canvas, 0, 0);
+        if (e.layer !== composited) this.compositeLayer(ctx, e.layer);
         composited = e.layer;
       } else if (this.scenario) e.draw(ctx, L, this, f);
     }

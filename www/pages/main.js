@@ -31,6 +31,7 @@ import { createStats } from '../ui/stats.js';
 import { createOverlays } from '../draw/overlays.js';
 import { cellLegend, cellSummary } from '../draw/cells.js';
 import { linkViews } from '../draw/linked.js';
+import { wirePlaneZoom } from '../ui/plane-zoom.js';
 import { ExplainPanel } from '../ui/explain-panel.js';
 import { createTrials } from '../ui/trials.js';
 import { wireKeys, wireCellTip } from '../ui/keys.js';
@@ -273,6 +274,7 @@ function applyView(share) {
   ui.animRaw.checked = share.view.rawPath ?? VIEW_DEFAULTS.rawPath;
   ui.stepSize.value = String(share.view.stepSize ?? VIEW_DEFAULTS.stepSize);
   view3d.setCamera(share.view.camera ?? null);
+  view.pendingViewport = share.view.zoom ?? null; // the plane's zoom, once the link's scenario is shown
   pathPanel.setSpacing(share.view.ghosts); // the 3-D path's ghost spacing (its default when the link has none)
   updateOutputs();
   syncOptions();
@@ -287,7 +289,7 @@ const share = wireShareHash({
     overlays: overlayOptions(),
     view: {
       speed: Number(ui.speed.value), anim: Number(ui.animSpeed.value), rawPath: ui.animRaw.checked,
-      stepSize: stepSize(), camera: view3d.camera(), ghosts: pathPanel.spacing,
+      stepSize: stepSize(), camera: view3d.camera(), zoom: view.viewport, ghosts: pathPanel.spacing,
     },
   }),
   saveName: () => loaded?.name || 'scenario', download: downloadText, showError,
@@ -537,6 +539,9 @@ createTrials({
 // Linked views (linked.js): the arm's c-space ↔ workspace under the pointer; the heat map's scale.
 linkViews({ view, cspace, canvas: ui.canvas, cspaceCanvas: ui.cspace, stage: ui.stage, model: playback.model });
 
+// Zoom and pan on the plane: wheel, middle drag, pinch, the bar's buttons (ui/plane-zoom.js).
+wirePlaneZoom({ canvas: ui.canvas, view, bar: $('plane-zoom'), onChange: () => scheduleShare() });
+
 // Size: the views follow the stage (and the device pixel ratio).
 // The second view is the c-space's or the 3-D view's (never both: a spatial arm has no c-space view).
 // The 3-D view takes the larger share of the stage: the top view of a spatial arm is a sketch.
@@ -576,6 +581,9 @@ Object.defineProperty(window, 'planarium', {
     query: () => (view.query ? structuredClone(view.query) : null),
     /** Css px within the workspace canvas of the world point (x, y), or null. */
     toCanvas: (x, y) => (view.layout ? [view.layout.sx(x) / view.layout.dpr, view.layout.sy(y) / view.layout.dpr] : null),
+    /** The plane's zoom and centre (null: fitted), and whether its layers are drawn at what it shows. */
+    viewport: () => ({ zoom: view.zoom, viewport: view.viewport && { ...view.viewport },
+      settled: !!view.drawn && view.drawn.same(view.layout) && !view.redrawing && !view.stale }),
     /** The 3-D view, for tests (view3d-slot.js). */
     view3d: view3dHooks(view3d, { pose: posePanel, boxes: boxesPanel, path: pathPanel }),
   }),

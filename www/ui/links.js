@@ -22,6 +22,8 @@
 //   camera     the 3-D view's camera (a spatial arm's scene): tx,ty,tz,yaw,pitch,distance, its orbit
 //              target in metres, yaw and pitch in radians (pitch -1.45 … 1.55), distance 0.001 … 10000
 //              metres (ui/camera-link.js); written only once the camera was turned or zoomed
+//   zoom       the view from above zoomed in: zoom,cx,cy, the zoom 1 … 256 times the fitted scale
+//              and the world point at the view's centre (ui/plane-zoom.js); written only when zoomed
 //   ghosts     the 3-D path's ghost spacing in rad: 0 (none) or 0.05 … 10 (default 2; ui/ghost-spacing.js)
 // embed.html and <planarium-playground> only:
 //   autoplay   run as soon as the scenario is loaded
@@ -43,6 +45,7 @@ import { OVERLAYS } from '../draw/palette.js';
 import { shown } from './text.js';
 import { readSeed, blockSeedProblem } from './seed.js';
 import { readCamera, writeCamera } from './camera-link.js';
+import { readZoom, writeZoom } from './plane-zoom.js';
 import { GHOSTS, readSpacing } from './ghost-spacing.js';
 
 export const VIEW_DEFAULTS = Object.freeze({ speed: 33, anim: 50, rawPath: false, stepSize: 1 });
@@ -50,7 +53,7 @@ export const CONTROLS = Object.freeze(['run', 'pause', 'step', 'back', 'reset', 
 export const DEFAULT_CONTROLS = Object.freeze(['run', 'pause', 'step', 'back', 'reset']);
 /** Keys that are not planner parameters (a parameter of that name could not be shared). */
 export const RESERVED = Object.freeze(['scenario', 'planner', 'seed', 'overlays', 'speed', 'anim', 'raw-path',
-  'step-size', 'camera', 'ghosts', 'autoplay', 'click', 'controls']);
+  'step-size', 'camera', 'zoom', 'ghosts', 'autoplay', 'click', 'controls']);
 
 /** The largest scenario (UTF-8 bytes of its JSON, decompressed) a link may carry: no built-in is near it. */
 export const MAX_SCENARIO_BYTES = 4 << 20;
@@ -291,7 +294,7 @@ function overlayById(name) {
 /**
  * Read a link's hash (with or without `#`). `builtins`: [{id, name, ...}] to check a built-in's id
  * against (optional). Returns {scenario: {id} | {text} | null, planner, seed, params: [[key, text]],
- * overlays: {option: bool} (only those named), view: {speed?, anim?, rawPath?, stepSize?, camera?, ghosts?},
+ * overlays: {option: bool} (only those named), view: {speed?, anim?, rawPath?, stepSize?, camera?, zoom?, ghosts?},
  * autoplay, click, controls: [names] | null, problems: [text]}.
  */
 export async function readShare(hash, { builtins = null } = {}) {
@@ -358,6 +361,13 @@ export async function readShare(hash, { builtins = null } = {}) {
         const r = readCamera(value);
         if (r.why) problems.push(`camera=${cut(value)}: ${r.why}; the view is framed on the problem.`);
         else share.view.camera = r.camera;
+        break;
+      }
+      case 'zoom': {
+        if (!needs(key, value)) break;
+        const r = readZoom(value);
+        if (r.why) problems.push(`zoom=${cut(value)}: ${r.why}; the view from above shows the whole workspace.`);
+        else share.view.zoom = r.viewport;
         break;
       }
       case 'ghosts': {
@@ -482,12 +492,13 @@ export function overlayOptions(overlays = {}) {
 /**
  * The hash (without `#`) for a state: `scenario` {id} or {text} (the JSON of an edited or opened
  * scenario), `config` {planner, params, seed} (the panel's), `overlays` {option: bool}, `view`
- * {speed, anim, rawPath, stepSize, camera, ghosts}; `registry` to leave out parameters at their defaults. `extra`:
+ * {speed, anim, rawPath, stepSize, camera, zoom, ghosts}; `registry` to leave out parameters at their defaults. `extra`:
  * more [key, value | null] pairs (embed options). `encoded`: a cache (Map) of scenario texts'
  * encodings.
  * @param {{scenario: {id?: string, text?: string}, config?: any, overlays?: Record<string, boolean>,
  *   view?: {speed?: number, anim?: number, rawPath?: boolean, stepSize?: number,
- *     camera?: {target: number[], yaw: number, pitch: number, distance: number} | null, ghosts?: number},
+ *     camera?: {target: number[], yaw: number, pitch: number, distance: number} | null,
+ *     zoom?: {zoom: number, cx: number, cy: number} | null, ghosts?: number},
  *   extra?: Array<[string, any]>}} state
  * @param {any} registry
  * @param {Map<string, string> | null} [encoded]
@@ -529,6 +540,7 @@ export async function writeShare({ scenario, config, overlays = {}, view = {}, e
   if (view.rawPath) pairs.push(['raw-path', null]);
   if (view.stepSize !== undefined && view.stepSize !== VIEW_DEFAULTS.stepSize) pairs.push(['step-size', view.stepSize]);
   if (view.camera) pairs.push(['camera', writeCamera(view.camera)]);
+  if (view.zoom) pairs.push(['zoom', writeZoom(view.zoom)]);
   if (view.ghosts !== undefined && view.ghosts !== GHOSTS.initial) pairs.push(['ghosts', view.ghosts]);
   pairs.push(...extra);
   return pairs.map(([k, v]) => (v === null ? encodeValue(k) : `${encodeValue(k)}=${encodeValue(v)}`)).join('&');

@@ -1,0 +1,127 @@
+// Zoom and pan on the plane (the view from above): the wheel zooms about the pointer, a drag with
+// the middle button pans, two fingers on a touch screen pinch and pan, and the bar's buttons zoom
+// about the centre or fit the workspace's bounds again (also the keys + − 0 while the pointer is
+// over the canvas or a button of the bar has the focus). The view (draw/view.js setViewport) moves
+// its layers' last pictures at once and redraws them at the new scale once the viewport rests, so
+// a gesture costs the same few image copies a frame over a tree of ten nodes or of a million.
+
+import { MAX_ZOOM } from '../draw/transform.js';
+
+const WHEEL = 0.0015; // zoom factor per pixel of wheel travel: exp(−deltaY · WHEEL)
+const LINE = 40;      // pixels per line when the wheel reports lines
+const STEP = 1.5;     // a button's or key's zoom factor
+const MAX_CENTRE = 1e6; // |cx|, |cy| a link may give (a scenario's bounds are within ±1e6)
+
+/**
+ * A share link's `zoom=z,cx,cy` (the plane's zoom, 1 … MAX_ZOOM times the fitted scale, and the
+ * world point at the view's centre) → {viewport: {zoom, cx, cy}} or {why} in words. The view
+ * keeps the centre within the scenario's bounds.
+ */
+export function readZoom(text) {
+  const s = String(text ?? '');
+  if (s.length > 80) return { why: `it is ${s.length} characters long (three numbers need at most 80)` };
+  const parts = s.split(',');
+  if (parts.length !== 3) return { why: `it needs three numbers zoom,cx,cy, found ${parts.length}` };
+  const names = ['zoom', 'cx', 'cy'];
+  const v = [];
+  for (let i = 0; i < 3; i++) {
+    const t = parts[i].trim();
+    const x = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i.test(t) ? Number(t) : NaN;
+    if (!Number.isFinite(x)) return { why: `${names[i]} is not a number` };
+    v.push(x);
+  }
+  if (v[0] < 1 || v[0] > MAX_ZOOM) return { why: `zoom must be from 1 to ${MAX_ZOOM}` };
+  if (Math.abs(v[1]) > MAX_CENTRE || Math.abs(v[2]) > MAX_CENTRE) return { why: `cx and cy must be within ±${MAX_CENTRE.toExponential()}` };
+  return { viewport: { zoom: v[0], cx: v[1], cy: v[2] } };
+}
+
+/** A viewport {zoom, cx, cy} as a link's value (10 significant digits; what readZoom reads back). */
+export function writeZoom(vp) {
+  return [vp.zoom, vp.cx, vp.cy].map((x) => String(Number(x.toPrecision(10)))).join(',');
+}
+
+/**
+ * `canvas` the plane's canvas, `view` its draw/view.js View, `bar` the group of buttons #zoom-out,
+ * #zoom-fit, #zoom-in (found inside it by their ids' ends); `onChange` is called when the zoom or
+ * centre changes (the share link).
+ */
+export function wirePlaneZoom({ canvas, view, bar, onChange = () => {} }) {
+  const button = (end) => /** @type {HTMLButtonElement} */ (bar.querySelector(`[id$="${end}"]`));
+  const out = button('zoom-out'), fit = button('zoom-fit'), zin = button('zoom-in');
+  const centre = () => [view.layout.width / 2, view.layout.height / 2];
+  const dpr = () => view.layout?.dpr ?? 1;
+  const sync = () => {
+    const z = view.zoom;
+    fit.disabled = z <= 1;
+    out.disabled = z <= 1;
+    fit.textContent = z > 1 ? `Fit (${z < 10 ? z.toFixed(1) : Math.round(z)}×)` : 'Fit';
+  };
+  view.onViewport = () => { sync(); onChange(); };
+  const zoomBy = (f) => { if (view.layout) view.zoomAt(f, ...centre()); };
+  zin.addEventListener('click', () => zoomBy(STEP));
+  out.addEventListener('click', () => zoomBy(1 / STEP));
+  fit.addEventListener('click', () => view.setViewport(null));
+
+  canvas.addEventListener('wheel', (e) => {
+    if (!view.layout || !view.scenario) return;
+    e.preventDefault();
+    const px = e.deltaMode === 1 ? LINE : e.deltaMode === 2 ? canvas.clientHeight : 1;
+    view.zoomAt(Math.exp(-e.deltaY * px * WHEEL), e.offsetX * dpr(), e.offsetY * dpr());
+  }, { passive: false });
+
+  // Panning: the middle button, or two touches (which also pinch)
+  /** @type {Map<number, [number, number]>} */
+  const touches = new Map();
+  let drag = null; // {x, y} of the middle button's last position
+  const mid = () => {
+    const [[ax, ay], [bx, by]] = [...touches.values()];
+    return { x: (ax + bx) / 2, y: (ay + by) / 2, d: Math.hypot(ax - bx, ay - by) };
+  };
+  let pinch = null;
+  canvas.addEventListener('pointerdown', (e) => {
+    if (e.pointerType === 'touch') {
+      touches.set(e.pointerId, [e.offsetX, e.offsetY]);
+      if (touches.size === 2) pinch = mid();
+    } else if (e.button === 1 && view.zoom > 1) {
+      e.preventDefault(); // no auto-scroll
+      drag = { x: e.offsetX, y: e.offsetY };
+      canvas.setPointerCapture(e.pointerId);
+    }
+  });
+  canvas.addEventListener('pointermove', (e) => {
+    if (drag) {
+      view.panBy((e.offsetX - drag.x) * dpr(), (e.offsetY - drag.y) * dpr());
+      drag = { x: e.offsetX, y: e.offsetY };
+    } else if (touches.has(e.pointerId)) {
+      touches.set(e.pointerId, [e.offsetX, e.offsetY]);
+      if (touches.size !== 2 || !pinch) return;
+      const now = mid();
+      if (pinch.d > 0 && now.d > 0) view.zoomAt(now.d / pinch.d, pinch.x * dpr(), pinch.y * dpr());
+      view.panBy((now.x - pinch.x) * dpr(), (now.y - pinch.y) * dpr());
+      pinch = now;
+    }
+  });
+  const end = (e) => {
+    touches.delete(e.pointerId);
+    if (touches.size < 2) pinch = null;
+    if (drag && e.button === 1 || e.type === 'pointercancel') drag = null;
+  };
+  canvas.addEventListener('pointerup', end);
+  canvas.addEventListener('pointercancel', end);
+
+  // Keys over the canvas or the bar
+  let over = false;
+  canvas.addEventListener('pointerenter', () => { over = true; });
+  canvas.addEventListener('pointerleave', () => { over = false; });
+  document.addEventListener('keydown', (e) => {
+    if (e.ctrlKey || e.metaKey || e.altKey || !view.scenario) return;
+    if (!over && !(document.activeElement && bar.contains(document.activeElement))) return;
+    if (e.key === '+' || e.key === '=') zoomBy(STEP);
+    else if (e.key === '-' || e.key === '−') zoomBy(1 / STEP);
+    else if (e.key === '0') view.setViewport(null);
+    else return;
+    e.preventDefault();
+  });
+  sync();
+  return { sync };
+}
