@@ -34,6 +34,8 @@ export interface PlaygroundAttributes {
   'raw-path'?: string;
   /** A spatial arm's 3-D camera: `tx,ty,tz,yaw,pitch,distance`. */
   camera?: string;
+  /** The top view zoomed in: `zoom,cx,cy` (zoom 1 … 256 times the fitted scale, the world point at its centre). */
+  zoom?: string;
   /** Run once at least half the element is on screen. */
   autoplay?: string;
   /** A ▶ Run button over the canvas; the run starts on the first click. */
@@ -124,6 +126,8 @@ export class PlanariumPlayground extends HTMLElement {
   /** The status line's numbers and the worker's stats. */
   stats(): Record<string, unknown> | null;
   view3dState(): PlaygroundView3dState;
+  /** The top view's zoom and centre, null while the workspace is fitted. */
+  readonly zoom: { zoom: number; cx: number; cy: number } | null;
   /** Each returns whether it acted (false when the state does not allow it). */
   run(): boolean;
   pause(): boolean;

@@ -5,7 +5,7 @@
 //   </planarium-playground>
 //
 // Attributes (the share-link grammar of ui/links.js, one key per attribute): scenario, planner, seed,
-// speed, anim, overlays, step-size, raw-path, camera, autoplay, click, controls; `params` for planner
+// speed, anim, overlays, step-size, raw-path, camera, zoom, autoplay, click, controls; `params` for planner
 // parameters in link form ("range=0.1&goal_bias=0.2"); `link` for a whole share link's hash (the
 // other attributes win over it); `fill` to fill the element's height (embed.html) instead of
 // taking the height the scenario's aspect ratio gives the element's width.
@@ -41,9 +41,10 @@ import { applyPageLimits } from './run/limits.js';
 import { shown } from './ui/text.js';
 import { readSeed } from './ui/seed.js';
 import { wireA11y, StepCaption } from './ui/a11y.js';
+import { wirePlaneZoom, zoomBar } from './ui/plane-zoom.js';
 import { plannerCaps } from './draw/capabilities.js';
 
-const KEYS = ['scenario', 'planner', 'seed', 'speed', 'anim', 'overlays', 'step-size', 'raw-path', 'camera', 'autoplay', 'click', 'controls'];
+const KEYS = ['scenario', 'planner', 'seed', 'speed', 'anim', 'overlays', 'step-size', 'raw-path', 'camera', 'zoom', 'autoplay', 'click', 'controls'];
 const FLAGS = ['raw-path', 'autoplay', 'click'];
 const LABELS = { run: 'Run', pause: 'Pause', step: 'Step', back: 'Step back', reset: 'Reset' };
 const TITLES = {
@@ -81,6 +82,8 @@ input[type="number"] { width: 5rem; font: inherit; padding: 0.15rem 0.3rem; bord
 .message { margin: 0.35rem 0 0; padding: 0.3rem 0.5rem; border: 1px solid #a8362b; border-radius: 4px; background: #fdecea;
   color: #5a1710; font-size: 0.82rem; white-space: pre-wrap; overflow-wrap: anywhere; max-height: 12em; overflow: auto; flex: none; }
 [hidden] { display: none !important; }
+.plane-zoom { position: absolute; left: 4px; bottom: 4px; z-index: 1; display: flex; gap: 3px; }
+.plane-zoom button { font-size: 0.8rem; padding: 0.1rem 0.45rem; min-width: 1.8rem; background: rgba(243, 245, 248, 0.92); }
 .sr-only { position: absolute; width: 1px; height: 1px; padding: 0; margin: -1px; overflow: hidden; clip: rect(0 0 0 0);
   white-space: nowrap; border: 0; }
 `;
@@ -123,7 +126,10 @@ export class PlanariumPlayground extends HTMLElement {
     this.canvas3d.setAttribute('role', 'img');
     this.canvas3d.setAttribute('part', 'view3d');
     this.canvas3d.setAttribute('aria-label', 'The arm in 3-D: drag to turn, wheel or pinch to zoom, double-click to frame the problem');
-    this.stage.append(this.canvas, this.startButton); // the 3-D canvas joins only for a scene that has one
+    // zoom and pan on the top view (ui/plane-zoom.js): the wheel and keys once the embed has the focus
+    this.zoomBar = zoomBar();
+    this.zoomBar.addEventListener('click', (e) => e.stopPropagation()); // not the stage's click-to-run
+    this.stage.append(this.canvas, this.startButton, this.zoomBar); // the 3-D canvas joins only for a scene that has one
     this.bar = el('div', { className: 'bar' });
     this.message = el('p', { className: 'message', hidden: true });
     this.message.setAttribute('role', 'alert');
@@ -149,6 +155,8 @@ export class PlanariumPlayground extends HTMLElement {
     this.stage.addEventListener('click', () => this.startOnClick());
     this.playback = new Playback();
     this.view = new View(this.canvas, this.playback.store, this.playback.model);
+    wirePlaneZoom({ canvas: this.canvas, view: this.view, bar: this.zoomBar, keys: this, keysWhen: () => true,
+      wheelWhen: () => document.activeElement === this });
     this.view3d = new View3dSlot(this.canvas3d, this.playback.store, PALETTE, () => { this.sizeStage?.(); this.resize?.(); });
     this.stepCaption = new StepCaption(this.playback.store);
     this.resize = null;
@@ -320,6 +328,8 @@ export class PlanariumPlayground extends HTMLElement {
     this.scenario = msg.scenario;
     const [x0, y0, x1, y1] = msg.scenario.bounds;
     this.aspect = (x1 - x0) / (y1 - y0) || 1;
+    this.view.pendingViewport = this.share.view.zoom ?? null; // a link's zoom (once per restore)
+    this.share.view.zoom = null;
     this.view.setScenario(msg.scenario, msg.start, msg.goal);
     this.view3d.setCamera(this.share.view.camera ?? null); // a link's camera (once per restore)
     this.share.view.camera = null;
@@ -568,6 +578,8 @@ export class PlanariumPlayground extends HTMLElement {
     return { active: this.view3d.active, ready: !!(this.view3d.active && v?.matrices), camera: v ? v.camera.state() : null };
   }
   stats() { return this.player ? this.player.stats() : null; }
+  /** The top view's zoom and centre ({zoom, cx, cy}), null while the workspace is fitted. */
+  get zoom() { return this.view.viewport ? { ...this.view.viewport } : null; }
   run() { return this.act('run'); }
   pause() { return this.act('pause'); }
   step() { return this.act('step'); }

@@ -210,3 +210,28 @@ test('the zoom goes into the share link; the link reopens zoomed on the same poi
     await other.close();
   }
 });
+
+test('the embed opens at a link\'s zoom; its wheel waits for the focus; its Fit shows the whole workspace', async () => {
+  const p = await fx.env.browser.newPage({ viewport: { width: 600, height: 560 } });
+  try {
+    await p.goto(`${fx.env.base}embed.html#scenario=narrow&zoom=6,0.5,0.5&speed=100&autoplay`);
+    const host = p.locator('planarium-playground');
+    await p.waitForFunction(() => /** @type {any} */ (document.querySelector('planarium-playground'))?.state === 'finished', null, { timeout: 60000 });
+    const zoom = () => p.evaluate(() => /** @type {any} */ (document.querySelector('planarium-playground')).zoom);
+    assert.deepEqual(await zoom(), { zoom: 6, cx: 0.5, cy: 0.5 });
+    await p.screenshot({ path: join(SHOTS, 'embed-zoom.png') });
+    const box = await host.locator('canvas').first().boundingBox();
+    await p.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    await p.mouse.wheel(0, -400);
+    await p.waitForTimeout(200);
+    assert.equal((await zoom()).zoom, 6, 'without the focus the wheel is the page\'s');
+    await host.locator('canvas').first().click();
+    await p.mouse.wheel(0, -400);
+    await p.waitForFunction(() => /** @type {any} */ (document.querySelector('planarium-playground')).zoom?.zoom > 6);
+    await host.locator('[data-zoom="fit"]').click();
+    assert.equal(await zoom(), null);
+    assert.equal(await p.evaluate(() => /** @type {any} */ (document.querySelector('planarium-playground')).state), 'finished', 'a click on the bar runs nothing');
+  } finally {
+    await p.close();
+  }
+});

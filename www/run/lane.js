@@ -6,6 +6,7 @@
 // page is in (the controller) stays with the page: hooks ask it.
 
 import { WorkerSession } from './session.js';
+import { REVEAL_PER_FRAME, nextRevealCap } from './limits.js';
 
 export class Lane {
   /**
@@ -39,6 +40,8 @@ export class Lane {
       seed: (seed) => hooks.seed?.(seed),
       stopped: (message, fatal, why) => { this.clearRun(); hooks.stopped?.(message, fatal, why); },
     });
+    /** Records a frame may reveal (limits.js nextRevealCap), learnt from the frames drawn */
+    this.revealCap = REVEAL_PER_FRAME / 4;
     this.clearRun(false);
   }
 
@@ -156,8 +159,17 @@ export class Lane {
     this.hooks.revealed?.();
   }
 
-  /** Reveal what the pace owes: the whole run in `duration` seconds (0: at once), `dt` seconds on. */
-  tick(duration, dt) { if (this.playback.pending > 0) this.reveal(this.playback.tick(duration, dt)); }
+  /**
+   * Reveal what the pace owes: the whole run in `duration` seconds (0: at once), `dt` seconds on;
+   * at most as many records as this machine draws in limits.js's REVEAL_MS (`revealCap`).
+   */
+  tick(duration, dt) {
+    if (this.playback.pending <= 0) return;
+    const t0 = performance.now();
+    const range = this.playback.tick(duration, dt, this.revealCap);
+    this.reveal(range);
+    this.revealCap = nextRevealCap(this.revealCap, range[1] - range[0], performance.now() - t0);
+  }
 
   /** The planner stopped and every event it sent is shown. */
   get caughtUp() { return this.done && this.playback.pending === 0; }

@@ -353,12 +353,12 @@ export class Playback {
 
   /**
    * Reveal what the pace owes after `dt` seconds when the whole run should take `duration`
-   * seconds (0: everything queued), at most REVEAL_PER_FRAME (limits.js) records in one call: the
-   * page calls it once a frame.
+   * seconds (0: everything queued), at most `cap` and REVEAL_PER_FRAME (limits.js) records in one
+   * call: the page calls it once a frame.
    */
-  tick(duration, dt) {
+  tick(duration, dt, cap = REVEAL_PER_FRAME) {
     const n = this.pace.owe(this.pendingSteps, duration, dt);
-    return this.revealUpTo(REVEAL_PER_FRAME, n);
+    return this.revealUpTo(Math.min(cap, REVEAL_PER_FRAME), n);
   }
 
   /** The pacing plan so far, for tests and the console (window.planarium.pace()). */

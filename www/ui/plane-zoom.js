@@ -1,7 +1,8 @@
 // Zoom and pan on the plane (the view from above): the wheel zooms about the pointer, a drag with
 // the middle button pans, two fingers on a touch screen pinch and pan, and the bar's buttons zoom
-// about the centre or fit the workspace's bounds again (also the keys + − 0 while the pointer is
-// over the canvas or a button of the bar has the focus). The view (draw/view.js setViewport) moves
+// about the centre or fit the workspace's bounds again (also the keys + − 0: in the playground
+// while the pointer is over the canvas or a button of the bar has the focus; in the embed while it
+// has the focus, which the wheel waits for too, so a course page scrolls past an embed). The view (draw/view.js setViewport) moves
 // its layers' last pictures at once and redraws them at the new scale once the viewport rests, so
 // a gesture costs the same few image copies a frame over a tree of ten nodes or of a million.
 
@@ -35,6 +36,27 @@ export function readZoom(text) {
   return { viewport: { zoom: v[0], cx: v[1], cy: v[2] } };
 }
 
+/** The bar's three buttons (− Fit +) in a group, for a page that builds its own (the embed). */
+export function zoomBar(className = 'plane-zoom') {
+  const bar = document.createElement('div');
+  bar.className = className;
+  bar.setAttribute('role', 'group');
+  bar.setAttribute('aria-label', 'Zoom the view from above');
+  const make = (which, text, label, title) => {
+    const b = document.createElement('button');
+    b.type = 'button';
+    b.dataset.zoom = which;
+    b.textContent = text;
+    if (label) b.setAttribute('aria-label', label);
+    b.title = title;
+    return b;
+  };
+  bar.append(make('out', '−', 'Zoom out', 'Zoom out (−; or the wheel over the map)'),
+    make('fit', 'Fit', '', 'Fit the workspace\'s bounds (0); when zoomed in, drag with the middle button or two fingers to pan'),
+    make('in', '+', 'Zoom in', 'Zoom in (+; or the wheel over the map)'));
+  return bar;
+}
+
 /** A viewport {zoom, cx, cy} as a link's value (10 significant digits; what readZoom reads back). */
 export function writeZoom(vp) {
   return [vp.zoom, vp.cx, vp.cy].map((x) => String(Number(x.toPrecision(10)))).join(',');
@@ -43,11 +65,14 @@ export function writeZoom(vp) {
 /**
  * `canvas` the plane's canvas, `view` its draw/view.js View, `bar` the group of buttons #zoom-out,
  * #zoom-fit, #zoom-in (found inside it by their ids' ends); `onChange` is called when the zoom or
- * centre changes (the share link).
+ * centre changes (the share link). `keys`: the element whose keydown events are read, and `keysWhen()`
+ * whether one is meant for the map; `wheelWhen()` whether the wheel zooms now.
+ * @param {{canvas: HTMLCanvasElement, view: any, bar: HTMLElement, onChange?: () => void,
+ *   keys?: EventTarget, keysWhen?: () => boolean, wheelWhen?: () => boolean}} options
  */
-export function wirePlaneZoom({ canvas, view, bar, onChange = () => {} }) {
-  const button = (end) => /** @type {HTMLButtonElement} */ (bar.querySelector(`[id$="${end}"]`));
-  const out = button('zoom-out'), fit = button('zoom-fit'), zin = button('zoom-in');
+export function wirePlaneZoom({ canvas, view, bar, onChange = () => {}, keys = document, keysWhen = null, wheelWhen = () => true }) {
+  const button = (end) => /** @type {HTMLButtonElement} */ (bar.querySelector(`[data-zoom="${end}"]`));
+  const out = button('out'), fit = button('fit'), zin = button('in');
   const centre = () => [view.layout.width / 2, view.layout.height / 2];
   const dpr = () => view.layout?.dpr ?? 1;
   const sync = () => {
@@ -63,7 +88,7 @@ export function wirePlaneZoom({ canvas, view, bar, onChange = () => {} }) {
   fit.addEventListener('click', () => view.setViewport(null));
 
   canvas.addEventListener('wheel', (e) => {
-    if (!view.layout || !view.scenario) return;
+    if (!view.layout || !view.scenario || !wheelWhen()) return;
     e.preventDefault();
     const px = e.deltaMode === 1 ? LINE : e.deltaMode === 2 ? canvas.clientHeight : 1;
     view.zoomAt(Math.exp(-e.deltaY * px * WHEEL), e.offsetX * dpr(), e.offsetY * dpr());
@@ -113,14 +138,17 @@ export function wirePlaneZoom({ canvas, view, bar, onChange = () => {} }) {
   let over = false;
   canvas.addEventListener('pointerenter', () => { over = true; });
   canvas.addEventListener('pointerleave', () => { over = false; });
-  document.addEventListener('keydown', (e) => {
-    if (e.ctrlKey || e.metaKey || e.altKey || !view.scenario) return;
-    if (!over && !(document.activeElement && bar.contains(document.activeElement))) return;
+  const meant = keysWhen ?? (() => over || !!(document.activeElement && bar.contains(document.activeElement)));
+  keys.addEventListener('keydown', (/** @type {KeyboardEvent} */ e) => {
+    if (e.ctrlKey || e.metaKey || e.altKey || !view.scenario || !meant()) return;
+    const t = e.composedPath()[0];
+    if (t instanceof Element && t.closest('input, select, textarea, [contenteditable]')) return;
     if (e.key === '+' || e.key === '=') zoomBy(STEP);
     else if (e.key === '-' || e.key === '−') zoomBy(1 / STEP);
     else if (e.key === '0') view.setViewport(null);
     else return;
     e.preventDefault();
+    e.stopPropagation(); // an embed's host page keeps its own keys otherwise
   });
   sync();
   return { sync };
