@@ -280,7 +280,6 @@ export class View {
   drawRecords(from, to) {
     if (!this.layout || to <= from) return;
     if (!this.redrawing) this.drawLayers(from, to); // else the redraw's catch-up draws them
-
     const flash = this.options.showRewires;
     const now = performance.now();
     // markers: few, kept as world coordinates and drawn on top every frame
