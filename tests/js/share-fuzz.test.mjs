@@ -12,6 +12,7 @@ import {
   MAX_PAIRS, MAX_PROBLEMS, MAX_HASH_CHARS, MAX_SCENARIO_BYTES, VIEW_DEFAULTS,
 } from '../../www/ui/links.js';
 import { CAMERA, readCamera, writeCamera, roundCamera } from '../../www/ui/camera-link.js';
+import { readZoom, writeZoom } from '../../www/ui/plane-zoom.js';
 import { mulberry32 } from './seeded.mjs';
 
 const SEED = 0x5eed13;
@@ -253,4 +254,29 @@ test('the camera in a link: six numbers within the orbit camera\'s bounds, else 
   assert.equal(back.camera.pitch, CAMERA.maxPitch);
   assert.equal(back.camera.distance, CAMERA.maxDistance);
   assert.ok(Math.abs(back.camera.yaw) <= Math.PI);
+});
+
+test('the plane\'s zoom in a link: three numbers, the zoom 1 … 256, else a problem naming the number and the whole workspace', async () => {
+  const ok = await readShare('#scenario=narrow&zoom=3.5,0.25,-1e2');
+  assert.deepEqual(ok.problems, []);
+  assert.deepEqual(ok.view.zoom, { zoom: 3.5, cx: 0.25, cy: -100 });
+  const cases = [
+    ['2,0.5', /three numbers zoom,cx,cy, found 2/],
+    ['0.5,0,0', /zoom must be from 1 to 256/],
+    ['257,0,0', /zoom must be from 1 to 256/],
+    ['2,2e6,0', /cx and cy must be within/],
+    ['2,0,NaN', /cy is not a number/],
+    ['Infinity,0,0', /zoom is not a number/],
+    [`${'1'.repeat(90)},0,0`, /characters long \(three numbers need at most 80\)/],
+  ];
+  for (const [value, why] of cases) {
+    const r = await readShare(`#zoom=${encodeURIComponent(value)}`);
+    assert.equal(r.view.zoom, undefined, value);
+    assert.equal(r.problems.length, 1, value);
+    assert.match(r.problems[0], why, value);
+    assert.match(r.problems[0], /the view from above shows the whole workspace\.$/);
+  }
+  // what the page writes reads back
+  const vp = { zoom: 2.117000017, cx: 0.5488549488, cy: 0.5325699659 };
+  assert.deepEqual(readZoom(writeZoom(vp)).viewport, vp);
 });

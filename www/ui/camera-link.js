@@ -29,18 +29,9 @@ export function wrapAngle(a) {
  * naming the number that is out of bounds).
  */
 export function readCamera(text) {
-  const s = String(text ?? '');
-  if (s.length > MAX_CHARS) return { why: `it is ${s.length} characters long (six numbers need at most ${MAX_CHARS})` };
-  const parts = s.split(',');
-  if (parts.length !== 6) return { why: `it needs six numbers tx,ty,tz,yaw,pitch,distance, found ${parts.length}` };
-  const names = ['tx', 'ty', 'tz', 'yaw', 'pitch', 'distance'];
-  const v = [];
-  for (let i = 0; i < 6; i++) {
-    const t = parts[i].trim();
-    const x = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i.test(t) ? Number(t) : NaN;
-    if (!Number.isFinite(x)) return { why: `${names[i]} is not a number` };
-    v.push(x);
-  }
+  const r = readNumbers(text, ['tx', 'ty', 'tz', 'yaw', 'pitch', 'distance'], MAX_CHARS);
+  if (r.why !== undefined) return { why: r.why };
+  const v = r.values, names = ['tx', 'ty', 'tz'];
   const C = CAMERA;
   for (let i = 0; i < 3; i++) {
     if (Math.abs(v[i]) > C.maxTarget) return { why: `${names[i]} must be within ±${C.maxTarget.toExponential()} metres` };
@@ -49,6 +40,31 @@ export function readCamera(text) {
   if (v[4] < C.minPitch || v[4] > C.maxPitch) return { why: `pitch must be from ${C.minPitch} to ${C.maxPitch} radians` };
   if (v[5] < C.minDistance || v[5] > C.maxDistance) return { why: `distance must be from ${C.minDistance} to ${C.maxDistance} metres` };
   return { camera: { target: v.slice(0, 3), yaw: wrapAngle(v[3]), pitch: v[4], distance: v[5] } };
+}
+
+const WORDS = ['no', 'one', 'two', 'three', 'four', 'five', 'six', 'seven', 'eight'];
+
+/**
+ * A link's value of comma-separated numbers named `names` (at most `maxChars` characters, each a
+ * plain decimal, an exponent allowed) → {values} or {why} in words, naming the first that is not
+ * a number. The camera's and the plane's zoom (ui/plane-zoom.js) read their values with it.
+ * @param {unknown} text @param {string[]} names @param {number} maxChars
+ * @returns {{values: number[], why?: undefined} | {why: string, values?: undefined}}
+ */
+export function readNumbers(text, names, maxChars) {
+  const s = String(text ?? '');
+  const n = WORDS[names.length] ?? String(names.length);
+  if (s.length > maxChars) return { why: `it is ${s.length} characters long (${n} numbers need at most ${maxChars})` };
+  const parts = s.split(',');
+  if (parts.length !== names.length) return { why: `it needs ${n} numbers ${names.join(',')}, found ${parts.length}` };
+  const values = [];
+  for (let i = 0; i < names.length; i++) {
+    const t = parts[i].trim();
+    const x = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i.test(t) ? Number(t) : NaN;
+    if (!Number.isFinite(x)) return { why: `${names[i]} is not a number` };
+    values.push(x);
+  }
+  return { values };
 }
 
 /** A number as written in a link: 10 significant digits, no trailing zeros. */

@@ -7,6 +7,7 @@
 // a gesture costs the same few image copies a frame over a tree of ten nodes or of a million.
 
 import { MAX_ZOOM } from '../draw/transform.js';
+import { readNumbers } from './camera-link.js';
 
 const WHEEL = 0.0015; // zoom factor per pixel of wheel travel: exp(−deltaY · WHEEL)
 const LINE = 40;      // pixels per line when the wheel reports lines
@@ -17,20 +18,13 @@ const MAX_CENTRE = 1e6; // |cx|, |cy| a link may give (a scenario's bounds are w
  * A share link's `zoom=z,cx,cy` (the plane's zoom, 1 … MAX_ZOOM times the fitted scale, and the
  * world point at the view's centre) → {viewport: {zoom, cx, cy}} or {why} in words. The view
  * keeps the centre within the scenario's bounds.
+ * @param {unknown} text
+ * @returns {{viewport: {zoom: number, cx: number, cy: number}, why?: undefined} | {why: string, viewport?: undefined}}
  */
 export function readZoom(text) {
-  const s = String(text ?? '');
-  if (s.length > 80) return { why: `it is ${s.length} characters long (three numbers need at most 80)` };
-  const parts = s.split(',');
-  if (parts.length !== 3) return { why: `it needs three numbers zoom,cx,cy, found ${parts.length}` };
-  const names = ['zoom', 'cx', 'cy'];
-  const v = [];
-  for (let i = 0; i < 3; i++) {
-    const t = parts[i].trim();
-    const x = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i.test(t) ? Number(t) : NaN;
-    if (!Number.isFinite(x)) return { why: `${names[i]} is not a number` };
-    v.push(x);
-  }
+  const r = readNumbers(text, ['zoom', 'cx', 'cy'], 80);
+  if (r.why !== undefined) return { why: r.why };
+  const v = r.values;
   if (v[0] < 1 || v[0] > MAX_ZOOM) return { why: `zoom must be from 1 to ${MAX_ZOOM}` };
   if (Math.abs(v[1]) > MAX_CENTRE || Math.abs(v[2]) > MAX_CENTRE) return { why: `cx and cy must be within ±${MAX_CENTRE.toExponential()}` };
   return { viewport: { zoom: v[0], cx: v[1], cy: v[2] } };
