@@ -165,6 +165,17 @@ test('the zoom bar: buttons zoom about the centre and say the zoom; a new scenar
   await page.click('#zoom-out');
   await settled();
   assert.ok(Math.abs((await page.evaluate(() => window.planarium.viewport().zoom)) - 1.5) < 1e-9);
+  // the keys, with the pointer over the map (the help lists them)
+  const box = await page.locator('#canvas').boundingBox();
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.keyboard.press('=');
+  assert.ok(Math.abs((await page.evaluate(() => window.planarium.viewport().zoom)) - 2.25) < 1e-9, '= zooms in');
+  await page.keyboard.press('-');
+  assert.ok(Math.abs((await page.evaluate(() => window.planarium.viewport().zoom)) - 1.5) < 1e-9, '- zooms out');
+  await page.keyboard.press('0');
+  assert.equal((await page.evaluate(() => window.planarium.viewport())).viewport, null, '0 fits');
+  await page.keyboard.press('+');
+  await settled();
   const other = await page.$$eval('#scenario option', (os) => os.map((o) => /** @type {HTMLOptionElement} */ (o).value));
   const name = await page.textContent('#scenario-name');
   const current = await page.$eval('#scenario', (el) => /** @type {HTMLSelectElement} */ (el).value);

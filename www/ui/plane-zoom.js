@@ -1,6 +1,6 @@
 // Zoom and pan on the plane (the view from above): the wheel zooms about the pointer, a drag with
 // the middle button pans, two fingers on a touch screen pinch and pan, and the bar's buttons zoom
-// about the centre or fit the workspace's bounds again (also the keys + − 0: in the playground
+// about the centre or fit the workspace's bounds again (also the keys + (or =) - 0: in the playground
 // while the pointer is over the canvas or a button of the bar has the focus; in the embed while it
 // has the focus, which the wheel waits for too, so a course page scrolls past an embed). The view (draw/view.js setViewport) moves
 // its layers' last pictures at once and redraws them at the new scale once the viewport rests, so
@@ -45,7 +45,7 @@ export function zoomBar(className = 'plane-zoom') {
     b.title = title;
     return b;
   };
-  bar.append(make('out', '−', 'Zoom out', 'Zoom out (−; or the wheel over the map)'),
+  bar.append(make('out', '−', 'Zoom out', 'Zoom out (-; or the wheel over the map)'),
     make('fit', 'Fit', '', 'Fit the workspace\'s bounds (0); when zoomed in, drag with the middle button or two fingers to pan'),
     make('in', '+', 'Zoom in', 'Zoom in (+; or the wheel over the map)'));
   return bar;
@@ -138,7 +138,7 @@ export function wirePlaneZoom({ canvas, view, bar, onChange = () => {}, keys = d
     const t = e.composedPath()[0];
     if (t instanceof Element && t.closest('input, select, textarea, [contenteditable]')) return;
     if (e.key === '+' || e.key === '=') zoomBy(STEP);
-    else if (e.key === '-' || e.key === '−') zoomBy(1 / STEP);
+    else if (e.key === '-') zoomBy(1 / STEP);
     else if (e.key === '0') view.setViewport(null);
     else return;
     e.preventDefault();
