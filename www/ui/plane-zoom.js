@@ -71,6 +71,9 @@ export function wirePlaneZoom({ canvas, view, bar, onChange = () => {}, keys = d
   const dpr = () => view.layout?.dpr ?? 1;
   const sync = () => {
     const z = view.zoom;
+    // shown once zoomed in: over the fitted map the bar would cover a corner, where a start or a
+    // goal often sits (the wheel, a pinch or the keys zoom in)
+    bar.hidden = z <= 1;
     fit.disabled = z <= 1;
     out.disabled = z <= 1;
     fit.textContent = z > 1 ? `Fit (${z < 10 ? z.toFixed(1) : Math.round(z)}×)` : 'Fit';
