@@ -9,7 +9,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { pageFixture, ROOT, SHOTS } from './browser.mjs';
-import { encodeScenario } from '../../www/ui/links.js';
+import { encodeScenario } from '../../www/ui/scenario-codec.js';
 
 const fx = await pageFixture();
 const builtin = (id) => JSON.parse(readFileSync(join(ROOT, 'scenarios', `${id}.json`), 'utf8'));

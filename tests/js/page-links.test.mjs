@@ -11,7 +11,8 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { startBrowser, ROOT, SHOTS } from './browser.mjs';
-import { encodeScenario, MAX_LINK_CHARS } from '../../www/ui/links.js';
+import { MAX_LINK_CHARS } from '../../www/ui/links.js';
+import { encodeScenario } from '../../www/ui/scenario-codec.js';
 import { shown } from '../../www/ui/text.js';
 
 let env;

@@ -9,7 +9,8 @@ import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { pageFixture, ROOT as root, SHOTS as shots } from './browser.mjs';
 import { initSync, planners, builtins } from '../../www/pkg/planarium.js';
-import { readShare, writeShare, setupFor, configOf, RESERVED, encodeScenario, decodeScenario, VIEW_DEFAULTS } from '../../www/ui/links.js';
+import { readShare, writeShare, setupFor, configOf, RESERVED, VIEW_DEFAULTS } from '../../www/ui/links.js';
+import { encodeScenario, decodeScenario } from '../../www/ui/scenario-codec.js';
 import { OVERLAYS } from '../../www/draw/palette.js';
 
 const fx = await pageFixture();
@@ -214,7 +215,7 @@ test('a bad link shows a message, falls back to defaults, and the page still wor
     await other.close();
   }
   // a scenario that decodes but is not valid: the core's message, then the first built-in
-  const broken = await (await import('../../www/ui/links.js')).encodeScenario('{"format": "planarium-scenario/1", "name": "Broken"}');
+  const broken = await (await import('../../www/ui/scenario-codec.js')).encodeScenario('{"format": "planarium-scenario/1", "name": "Broken"}');
   const third = await openPage(`${fx.env.base}#scenario=${broken}&planner=rrt-connect`);
   try {
     await third.waitForSelector('#error', { state: 'visible' });

@@ -7,10 +7,8 @@
 // inputs on every run.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import {
-  readShare, writeShare, decodeScenario, encodeScenario, parsePairs, toBase64url, boundedProblems,
-  MAX_PAIRS, MAX_PROBLEMS, MAX_HASH_CHARS, MAX_SCENARIO_BYTES, VIEW_DEFAULTS,
-} from '../../www/ui/links.js';
+import { readShare, writeShare, parsePairs, boundedProblems, MAX_PAIRS, MAX_PROBLEMS, VIEW_DEFAULTS } from '../../www/ui/links.js';
+import { decodeScenario, encodeScenario, toBase64url, MAX_HASH_CHARS, MAX_SCENARIO_BYTES } from '../../www/ui/scenario-codec.js';
 import { CAMERA, readCamera, writeCamera, roundCamera } from '../../www/ui/camera-link.js';
 import { readZoom, writeZoom } from '../../www/ui/plane-zoom.js';
 import { mulberry32 } from './seeded.mjs';

@@ -35,14 +35,15 @@
 //
 // Limits (docs/embedding.md, "Link limits"): a link the page writes is at most MAX_LINK_CHARS
 // characters long, whole URL, and its scenario at most MAX_SCENARIO_BYTES when decompressed
-// (checkLink() says why not, and the page offers the scenario as a file instead). The reader reads
+// (scenario-codec.js; checkLink() says why not, and the page offers the scenario as a file instead). The reader reads
 // hashes up to MAX_HASH_CHARS (Chromium's own URL limit), the first MAX_PAIRS pairs, decodes only the
 // last `scenario=` it sees, and gives back at most MAX_PROBLEMS problems: identical ones once, with
-// how many more were like it, every key or value echoed cut to ECHO_CHARS characters.
+// how many more were like it, every key or value echoed cut to text.js's ECHO_CHARS characters.
 
 import { parseParam, plannerFits, taskOf } from './panel.js';
 import { OVERLAYS } from '../draw/palette.js';
-import { shown } from './text.js';
+import { cut } from './text.js';
+import { MAX_HASH_CHARS, MAX_SCENARIO_BYTES, decodeScenario, encodeScenario } from './scenario-codec.js';
 import { readSeed, blockSeedProblem } from './seed.js';
 import { readCamera, writeCamera } from './camera-link.js';
 import { readZoom, writeZoom } from './plane-zoom.js';
@@ -55,8 +56,6 @@ export const DEFAULT_CONTROLS = Object.freeze(['run', 'pause', 'step', 'back', '
 export const RESERVED = Object.freeze(['scenario', 'planner', 'seed', 'overlays', 'speed', 'anim', 'raw-path',
   'step-size', 'camera', 'zoom', 'ghosts', 'autoplay', 'click', 'controls']);
 
-/** The largest scenario (UTF-8 bytes of its JSON, decompressed) a link may carry: no built-in is near it. */
-export const MAX_SCENARIO_BYTES = 4 << 20;
 /**
  * The longest link (whole URL) the page writes: Chromium opens up to 2 MB, but a link is pasted
  * into chats, forums, e-mails and course pages, whose fields hold far less (Slack's API cuts a message at
@@ -64,26 +63,10 @@ export const MAX_SCENARIO_BYTES = 4 << 20;
  * edited built-in takes at most about 2,100).
  */
 export const MAX_LINK_CHARS = 32000;
-/** The longest hash the reader reads: Chromium's URL limit (2 MiB); a longer one is refused whole. */
-export const MAX_HASH_CHARS = 2 * 1024 * 1024;
 /** Pairs read from one hash (a link the page writes has fewer than 50); the rest are counted only. */
 export const MAX_PAIRS = 1000;
-/** Problems given back (distinct texts), and how much of a key or value a problem echoes. */
+/** Problems given back (distinct texts). */
 export const MAX_PROBLEMS = 30;
-export const ECHO_CHARS = 60;
-
-/**
- * `text` as a message echoes it: bidirectional controls shown as [U+202E] (text.js shown: an
- * override in a link cannot turn the message around), cut to `n` characters (code points kept
- * whole) with an ellipsis when cut.
- */
-export function cut(text, n = ECHO_CHARS) {
-  const s = shown(text);
-  if (s.length <= n) return s;
-  let end = n - 1;
-  if (/[\uD800-\uDBFF]/.test(s[end - 1])) end--; // never half a surrogate pair
-  return `${s.slice(0, end)}…`;
-}
 
 /**
  * A bounded list of problems: `push(text)` as on an array; identical texts are kept once and
@@ -186,89 +169,6 @@ export function parsePairs(hash, problems = []) {
     out.push([key.trim(), value]);
   }
   return out;
-}
-
-// base64url and deflate-raw
-
-export function toBase64url(bytes) {
-  let bin = '';
-  for (let i = 0; i < bytes.length; i += 0x8000) bin += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
-  return btoa(bin).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
-}
-
-/** base64url text → bytes; throws Error(why, in words) on anything else (never atob's own exception). */
-export function fromBase64url(text) {
-  const bad = /[^A-Za-z0-9_-]/.exec(text);
-  if (bad) {
-    const c = bad[0].codePointAt(0);
-    const shown = c > 32 && c < 127 ? `"${bad[0]}"` : `U+${c.toString(16).toUpperCase().padStart(4, '0')}`;
-    throw new Error(`it has ${shown} at character ${bad.index + 1}, which base64url text never has`);
-  }
-  if (text.length % 4 === 1) throw new Error('its base64url text stops in the middle of a character group');
-  const b64 = text.replace(/-/g, '+').replace(/_/g, '/') + '='.repeat((4 - (text.length % 4)) % 4);
-  let bin;
-  try { bin = atob(b64); } catch { throw new Error('its base64url text does not decode'); }
-  const out = new Uint8Array(bin.length);
-  for (let i = 0; i < bin.length; i++) out[i] = bin.charCodeAt(i);
-  return out;
-}
-
-async function pipeBytes(bytes, transform) {
-  const stream = new Blob([bytes]).stream().pipeThrough(transform);
-  const reader = stream.getReader();
-  const chunks = [];
-  let size = 0;
-  for (;;) {
-    const { done, value } = await reader.read();
-    if (done) break;
-    size += value.length;
-    if (size > MAX_SCENARIO_BYTES) { reader.cancel().catch(() => {}); throw new Error('it is too large'); }
-    chunks.push(value);
-  }
-  const out = new Uint8Array(size);
-  let at = 0;
-  for (const c of chunks) { out.set(c, at); at += c.length; }
-  return out;
-}
-
-function hasStream(Type) {
-  try { new globalThis[Type]('deflate-raw'); return true; } catch { return false; }
-}
-
-/** A scenario's JSON text as a link value: `deflate:…`, or `base64:…` without CompressionStream. */
-export async function encodeScenario(text) {
-  const bytes = new TextEncoder().encode(text);
-  if (hasStream('CompressionStream')) {
-    return `deflate:${toBase64url(await pipeBytes(bytes, new CompressionStream('deflate-raw')))}`;
-  }
-  return `base64:${toBase64url(bytes)}`;
-}
-
-/**
- * A link's `deflate:` / `base64:` value → the scenario's JSON text; throws Error(why, in words),
- * with `damaged` (the why alone) when the value is cut short or corrupted.
- */
-export async function decodeScenario(value) {
-  const text = String(value);
-  const colon = text.indexOf(':');
-  const kind = colon < 0 ? '' : text.slice(0, colon);
-  if (kind !== 'deflate' && kind !== 'base64') throw new Error(`"${cut(kind || text, 20)}:" is not a known encoding (deflate: or base64:)`);
-  const damaged = (why) => Object.assign(new Error(`it is cut short or damaged: ${why}`), { damaged: why });
-  if (text.length - colon - 1 > MAX_HASH_CHARS) throw new Error('it is too large');
-  let bytes;
-  try { bytes = fromBase64url(text.slice(colon + 1)); } catch (e) { throw damaged(e.message); }
-  let out;
-  if (kind === 'deflate') {
-    if (!hasStream('DecompressionStream')) throw new Error('this browser cannot decompress it (no DecompressionStream)');
-    try { out = await pipeBytes(bytes, new DecompressionStream('deflate-raw')); } catch (e) {
-      throw /too large/.test(e?.message) ? new Error(`it is too large (over ${MAX_SCENARIO_BYTES >> 20} MB decompressed)`)
-        : damaged('its compressed data does not decompress');
-    }
-  } else {
-    if (bytes.length > MAX_SCENARIO_BYTES) throw new Error(`it is too large (over ${MAX_SCENARIO_BYTES >> 20} MB)`);
-    out = bytes;
-  }
-  try { return new TextDecoder('utf-8', { fatal: true }).decode(out); } catch { throw damaged('it is not UTF-8 text'); }
 }
 
 // Reading a link
@@ -568,34 +468,4 @@ export async function checkLink(url, scenarioText = null) {
   if (back.problems.length) return `the link does not read back (${back.problems[0]})`;
   if (scenarioText !== null && back.scenario?.text !== scenarioText) return 'the link does not read back the same scenario';
   return null;
-}
-
-/**
- * The playground's Copy link button: `link()` writes the state's link (a promise); it is copied
- * only when it reads back as it is (the reader's limits, `scenarioText()` for a scenario carried
- * in it) and survives pasting (its length). Otherwise `status` says why and `saveJson` (the
- * scenario as a file) is offered instead; without a clipboard the link is selected in `url`.
- */
-export function wireCopyLink({ button, url, status, saveJson, link, scenarioText }) {
-  button.addEventListener('click', async () => {
-    status.textContent = '';
-    saveJson.hidden = true;
-    const href = await link();
-    const why = await checkLink(href, scenarioText());
-    if (why) {
-      url.value = '';
-      status.textContent = `No link copied: ${why}. Save the scenario as a JSON file instead and share the file `
-        + '(Open file… opens it).';
-      saveJson.hidden = false;
-      return;
-    }
-    url.value = href;
-    try {
-      await navigator.clipboard.writeText(href);
-      status.textContent = 'Copied.';
-    } catch {
-      url.select();
-      status.textContent = 'Copy the selected link (the clipboard is not available here).';
-    }
-  });
 }

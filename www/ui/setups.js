@@ -11,7 +11,8 @@
 // page brings its scenario, and its planner set-up as a set-up. Bad values are problems in words
 // (the page shows them) and defaults are used; nothing here throws on what a link says.
 
-import { readShare, writeShare, paramSpecs, cut, MAX_LINK_CHARS } from './links.js';
+import { readShare, writeShare, paramSpecs, MAX_LINK_CHARS } from './links.js';
+import { cut } from './text.js';
 
 /** Set-ups a link or the benchmark may hold: the core's own limit (docs/limits.md). */
 export const MAX_SETUPS = 16;

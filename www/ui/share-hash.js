@@ -4,7 +4,9 @@
 // the Compare / Benchmark links, which open on the same state. A link opened with problems stays in
 // the address bar as pasted (and its problems are shown with it, cut) until the state shown changes.
 
-import { writeShare, wireCopyLink, boundedProblems, cut, MAX_HASH_CHARS, MAX_LINK_CHARS, MAX_SCENARIO_BYTES } from './links.js';
+import { writeShare, checkLink, boundedProblems, MAX_LINK_CHARS } from './links.js';
+import { MAX_HASH_CHARS, MAX_SCENARIO_BYTES } from './scenario-codec.js';
+import { cut } from './text.js';
 
 /**
  * Wire the hash writer. `writable()`: whether the state shown may be written now (the first state
@@ -98,4 +100,34 @@ export function wireShareHash({ ui, bench, writable, ready, source, scenarioText
     get lastHash() { return lastHash; },
     set lastHash(v) { lastHash = v; },
   };
+}
+
+/**
+ * The playground's Copy link button: `link()` writes the state's link (a promise); it is copied
+ * only when it reads back as it is (the reader's limits, `scenarioText()` for a scenario carried
+ * in it) and survives pasting (its length). Otherwise `status` says why and `saveJson` (the
+ * scenario as a file) is offered instead; without a clipboard the link is selected in `url`.
+ */
+export function wireCopyLink({ button, url, status, saveJson, link, scenarioText }) {
+  button.addEventListener('click', async () => {
+    status.textContent = '';
+    saveJson.hidden = true;
+    const href = await link();
+    const why = await checkLink(href, scenarioText());
+    if (why) {
+      url.value = '';
+      status.textContent = `No link copied: ${why}. Save the scenario as a JSON file instead and share the file `
+        + '(Open file… opens it).';
+      saveJson.hidden = false;
+      return;
+    }
+    url.value = href;
+    try {
+      await navigator.clipboard.writeText(href);
+      status.textContent = 'Copied.';
+    } catch {
+      url.select();
+      status.textContent = 'Copy the selected link (the clipboard is not available here).';
+    }
+  });
 }
