@@ -28,7 +28,6 @@ export class Layout {
     // centre the bounds; screen y grows downward, world y upward
     this.ox = (this.width - this.scale * (x1 - x0)) / 2 - this.scale * x0;
     this.oy = (this.height + this.scale * (y1 - y0)) / 2 + this.scale * y0;
-    this.viewport = viewport;
     if (viewport) {
       this.scale = this.fitScale * viewport.zoom;
       this.ox = this.width / 2 - this.scale * viewport.cx;

@@ -416,6 +416,9 @@ export class View {
   /** The zoom shown: 1 when the bounds are fitted. */
   get zoom() { return this.viewport ? this.viewport.zoom : 1; }
 
+  /** Whether the layers are whole and drawn at the transform shown (no move or redraw pending). */
+  get settled() { return !!this.drawn && this.drawn.same(this.layout) && !this.redrawing && !this.stale; }
+
   /**
    * Show the plane at `viewport` ({zoom, cx, cy}, the zoom clamped to 1 … MAX_ZOOM and the centre
    * to the bounds; zoom 1 fits the bounds again) or null (fitted). The layers follow SETTLE_MS

@@ -583,7 +583,7 @@ Object.defineProperty(window, 'planarium', {
     toCanvas: (x, y) => (view.layout ? [view.layout.sx(x) / view.layout.dpr, view.layout.sy(y) / view.layout.dpr] : null),
     /** The plane's zoom and centre (null: fitted), and whether its layers are drawn at what it shows. */
     viewport: () => ({ zoom: view.zoom, viewport: view.viewport && { ...view.viewport },
-      settled: !!view.drawn && view.drawn.same(view.layout) && !view.redrawing && !view.stale }),
+      settled: view.settled }),
     /** The 3-D view, for tests (view3d-slot.js). */
     view3d: view3dHooks(view3d, { pose: posePanel, boxes: boxesPanel, path: pathPanel }),
   }),

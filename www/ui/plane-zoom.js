@@ -31,9 +31,9 @@ export function readZoom(text) {
 }
 
 /** The bar's three buttons (− Fit +) in a group, for a page that builds its own (the embed). */
-export function zoomBar(className = 'plane-zoom') {
+export function zoomBar() {
   const bar = document.createElement('div');
-  bar.className = className;
+  bar.className = 'plane-zoom';
   bar.setAttribute('role', 'group');
   bar.setAttribute('aria-label', 'Zoom the view from above');
   const make = (which, text, label, title) => {
@@ -57,8 +57,8 @@ export function writeZoom(vp) {
 }
 
 /**
- * `canvas` the plane's canvas, `view` its draw/view.js View, `bar` the group of buttons #zoom-out,
- * #zoom-fit, #zoom-in (found inside it by their ids' ends); `onChange` is called when the zoom or
+ * `canvas` the plane's canvas, `view` its draw/view.js View, `bar` the group of its three buttons
+ * (found inside it by their `data-zoom`: out, fit, in; shown only once zoomed in); `onChange` is called when the zoom or
  * centre changes (the share link). `keys`: the element whose keydown events are read, and `keysWhen()`
  * whether one is meant for the map; `wheelWhen()` whether the wheel zooms now.
  * @param {{canvas: HTMLCanvasElement, view: any, bar: HTMLElement, onChange?: () => void,
@@ -74,9 +74,7 @@ export function wirePlaneZoom({ canvas, view, bar, onChange = () => {}, keys = d
     // shown once zoomed in: over the fitted map the bar would cover a corner, where a start or a
     // goal often sits (the wheel, a pinch or the keys zoom in)
     bar.hidden = z <= 1;
-    fit.disabled = z <= 1;
-    out.disabled = z <= 1;
-    fit.textContent = z > 1 ? `Fit (${z < 10 ? z.toFixed(1) : Math.round(z)}×)` : 'Fit';
+    fit.textContent = `Fit (${z < 10 ? z.toFixed(1) : Math.round(z)}×)`;
   };
   view.onViewport = () => { sync(); onChange(); };
   const zoomBy = (f) => { if (view.layout) view.zoomAt(f, ...centre()); };
@@ -148,5 +146,4 @@ export function wirePlaneZoom({ canvas, view, bar, onChange = () => {}, keys = d
     e.stopPropagation(); // an embed's host page keeps its own keys otherwise
   });
   sync();
-  return { sync };
 }
