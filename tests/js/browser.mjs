@@ -93,7 +93,7 @@ export async function pageFixture() {
   /** The page position (css px) of world point (x, y) on the workspace canvas (as draw/transform.js's Layout). */
   fx.toPage = async (x, y) => {
     const box = await fx.page.locator('#canvas').boundingBox();
-    const [x0, y0, x1, y1] = (await fx.page.evaluate(() => window.planarium.scenario())).bounds;
+    const [x0, y0, x1, y1] = await fx.page.evaluate(() => window.planarium.scenario().bounds);
     const margin = 10;
     const scale = Math.min((box.width - 2 * margin) / (x1 - x0), (box.height - 2 * margin) / (y1 - y0));
     const ox = (box.width - scale * (x1 - x0)) / 2 - scale * x0;
