@@ -39,16 +39,21 @@ const groups = (text) => page.evaluate((t) => {
 
 const hasContent = (g) => !!g && (g.subpaths > 0 || g.images > 0 || g.texts > 0 || g.paths > 0);
 
-/** The canvas's pixels. */
-const pixels = () => page.evaluate(() => {
-  const c = document.getElementById('canvas');
-  return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data);
+/** Keep the canvas's pixels in the page, to compare later ones with (kept there: a canvas's pixels
+ * carried out to Node as numbers cost seconds a picture). */
+const keepPixels = () => page.evaluate(() => {
+  const c = /** @type {HTMLCanvasElement} */ (document.getElementById('canvas'));
+  /** @type {any} */ (window).__kept = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
 });
-const changed = (a, b) => {
+/** How many of the canvas's pixels differ from the kept ones by more than 24 in the sum of R, G and B. */
+const changedPixels = () => page.evaluate(() => {
+  const c = /** @type {HTMLCanvasElement} */ (document.getElementById('canvas'));
+  const a = /** @type {any} */ (window).__kept, b = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+  if (a.length !== b.length) return a.length + b.length;
   let n = 0;
   for (let i = 0; i < a.length; i += 4) if (Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]) > 24) n++;
   return n;
-};
+});
 
 test("EST paused mid-run: the SVG has the density overlay the canvas shows (cells shaded, the pick outlined)", async () => {
   await pickScenario('zigzag', 'Zigzag of walls');
@@ -123,14 +128,14 @@ test('ten planners: every overlay the canvas draws is in the SVG, in its group, 
     const on = await groups(await svgText());
     assert.ok(on, `${planner}: the SVG parses`);
     for (const layer of layers) assert.ok(hasContent(on[layer]), `${planner}: the SVG has layer ${layer} with content: ${JSON.stringify(on[layer])}`);
-    const before = await pixels();
+    await keepPixels();
     const report = [];
     for (const box of boxes) {
       const want = OVERLAY_GROUPS[box];
       if (!want) continue;
       await page.uncheck(`#${box}`);
       await nextFrames();
-      const px = changed(before, await pixels());
+      const px = await changedPixels();
       if (px > 0) {
         const off = await groups(await svgText());
         const moved = want.filter((g) => hasContent(on[g]) && JSON.stringify(on[g]) !== JSON.stringify(off[g]));
