@@ -127,11 +127,16 @@ async function pixelsOf(images, w, h) {
       c.width = w; c.height = h;
       const ctx = c.getContext('2d');
       ctx.drawImage(img, 0, 0, w, h);
-      out.push({ natural: [img.naturalWidth, img.naturalHeight], data: Array.from(ctx.getImageData(0, 0, w, h).data) });
+      // the pixels as base64: an array of numbers this size takes seconds to carry out of the page
+      const px = ctx.getImageData(0, 0, w, h).data;
+      let bin = '';
+      for (let i = 0; i < px.length; i += 0x8000) bin += String.fromCharCode.apply(null, Array.from(px.subarray(i, i + 0x8000)));
+      out.push({ natural: [img.naturalWidth, img.naturalHeight], b64: btoa(bin) });
       URL.revokeObjectURL(url);
     }
     return out;
-  }, { images: images.map(({ bytes, type }) => ({ b64: Buffer.from(bytes).toString('base64'), type })), w, h });
+  }, { images: images.map(({ bytes, type }) => ({ b64: Buffer.from(bytes).toString('base64'), type })), w, h })
+    .then((out) => out.map(({ natural, b64 }) => ({ natural, data: new Uint8Array(Buffer.from(b64, 'base64')) })));
 }
 
 const rgb = (hex) => [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16));
@@ -151,9 +156,9 @@ async function saveSideBySide(name, pics, w, h) {
     const c = document.createElement('canvas');
     c.width = pics.length * (w + 4); c.height = h;
     const ctx = c.getContext('2d');
-    pics.forEach((p, k) => ctx.putImageData(new ImageData(Uint8ClampedArray.from(p), w, h), k * (w + 4), 0));
+    pics.forEach((p, k) => ctx.putImageData(new ImageData(Uint8ClampedArray.from(atob(p), (ch) => ch.charCodeAt(0)), w, h), k * (w + 4), 0));
     return c.toDataURL('image/png').split(',')[1];
-  }, { pics, w, h });
+  }, { pics: pics.map((p) => Buffer.from(Uint8Array.from(p)).toString('base64')), w, h });
   writeFileSync(join(SHOTS, name), Buffer.from(b64, 'base64'));
 }
 
