@@ -147,6 +147,21 @@ export async function pageFixture() {
 }
 
 /**
+ * The pixels of the canvas `id` on `page`: {w, h, data} (RGBA, device px). They come out of the
+ * page as base64: an array of numbers of a canvas's size takes seconds to carry.
+ */
+export async function canvasPixels(page, id = 'canvas') {
+  const { w, h, b64 } = await page.evaluate((id) => {
+    const c = /** @type {HTMLCanvasElement} */ (document.getElementById(id));
+    const px = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let bin = '';
+    for (let i = 0; i < px.length; i += 0x8000) bin += String.fromCharCode.apply(null, Array.from(px.subarray(i, i + 0x8000)));
+    return { w: c.width, h: c.height, b64: btoa(bin) };
+  }, id);
+  return { w, h, data: new Uint8Array(Buffer.from(b64, 'base64')) };
+}
+
+/**
  * A scenario whose goal sits in a closed box, so RRT grows until its node limit: `planner` sets
  * the node and time limits.
  */

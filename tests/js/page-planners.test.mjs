@@ -6,7 +6,7 @@ import { test, beforeEach } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
 import { execFileSync } from 'node:child_process';
-import { pageFixture, ROOT, SHOTS as shots } from './browser.mjs';
+import { canvasPixels, pageFixture, ROOT, SHOTS as shots } from './browser.mjs';
 import { PALETTE } from '../../www/draw/palette.js';
 
 const fx = await pageFixture();
@@ -140,10 +140,7 @@ test('EST on the zigzag: the density grid shades the picking tree\'s cells and o
   await page.click('#step');
   await waitState('paused');
   await nextFrames();
-  const pixels = () => page.evaluate(() => {
-    const c = document.getElementById('canvas');
-    return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data);
-  });
+  const pixels = async () => (await canvasPixels(page)).data;
   const on = await pixels();
   const [outline] = await countColours('canvas', [PALETTE.densityPick], 10);
   await page.screenshot({ path: join(shots, 'page-est-density.png') });

@@ -7,7 +7,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { pageFixture, SHOTS, walledIn } from './browser.mjs';
+import { canvasPixels, pageFixture, SHOTS, walledIn } from './browser.mjs';
 import { STYLE } from '../../www/draw/palette.js';
 import { EventKind } from '../../www/run/events.js';
 
@@ -16,10 +16,7 @@ const NODES = Number(process.env.PLANARIUM_ZOOM_NODES) || 60000;
 const TREE = STYLE[EventKind.NODE_ADDED].colors[0];
 
 /** The workspace canvas's pixels (RGBA, device px). */
-const pixels = () => fx.page.evaluate(() => {
-  const c = /** @type {HTMLCanvasElement} */ (document.getElementById('canvas'));
-  return { w: c.width, h: c.height, data: Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data) };
-});
+const pixels = () => canvasPixels(fx.page);
 const settled = () => fx.page.waitForFunction(() => window.planarium.viewport().settled, null, { timeout: 60000 });
 const near = (px, hex, tol = 40) => [1, 3, 5].every((i, k) => Math.abs(px[k] - parseInt(hex.slice(i, i + 2), 16)) <= tol);
 const count = (img, hex) => {
@@ -207,10 +204,7 @@ test('the zoom goes into the share link; the link reopens zoomed on the same poi
     await other.waitForFunction(() => window.planarium?.state() === 'idle' && window.planarium.viewport().settled, null, { timeout: 30000 });
     const read = await other.evaluate(() => window.planarium.viewport().viewport);
     for (const k of ['zoom', 'cx', 'cy']) assert.ok(Math.abs(read[k] - viewport[k]) <= 1e-9 * Math.max(1, Math.abs(viewport[k])), `${k}: ${read[k]} against ${viewport[k]}`);
-    const again = await other.evaluate(() => {
-      const c = /** @type {HTMLCanvasElement} */ (document.getElementById('canvas'));
-      return { w: c.width, h: c.height, data: Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data) };
-    });
+    const again = await canvasPixels(other);
     assert.equal(again.w, before.w);
     assert.ok(differing(before, again) < before.w * before.h * 0.002, 'the same picture');
     await other.goto(link.replace(/zoom=[^&]*/, 'zoom=300,0.5,0.5'));
