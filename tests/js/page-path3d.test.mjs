@@ -292,6 +292,26 @@ test('puma-rbo-wall solved: scrubber, timeline and ghosts, linked; the raw path 
   await page.waitForFunction((v) => document.getElementById('path3d-scrub').value !== v, v0, { timeout: 10000 });
   assert.equal((await path()).holding, false);
 
+  // While it plays, the faded trees come from the backdrop's layer, drawn once for the resting
+  // camera (not once a frame), and the layer looks like the trees drawn directly.
+  const painted = await page.evaluate(() => window.planarium.view3d.backdropPainted());
+  const playFrames = await page.evaluate(() => new Promise((resolve) => {
+    let n = 0;
+    const f = () => (++n >= 20 ? resolve(n) : requestAnimationFrame(f));
+    requestAnimationFrame(f);
+  }));
+  const paintedAfter = await page.evaluate(() => window.planarium.view3d.backdropPainted());
+  const scrubbed = await page.locator('#path3d-scrub').inputValue();
+  assert.notEqual(scrubbed, v0, 'the arm moved meanwhile');
+  assert.ok(paintedAfter - painted <= 1, `the faded trees' layer drawn ${paintedAfter - painted} times in ${playFrames} frames of playback`);
+  // (both multisampled and rounded to 8 bits a blend, in different orders: a pixel where many
+  // lines cross differs by some 20 in R+G+B; a layer misplaced, stale or blended wrongly by far more)
+  const agree = await page.evaluate(() => window.planarium.view3d.backdropAgreement(12));
+  console.log(`the faded trees' layer against drawing them: ${JSON.stringify(agree)} (pixels differing by more than 12 in R+G+B, pixels the trees change, the largest difference, the sums of what the trees change)`);
+  assert.ok(agree.trees > 20000, `the faded trees change ${agree.trees} pixels`);
+  assert.ok(agree.most <= 30, `a pixel differs by ${agree.most} in R+G+B`);
+  assert.ok(Math.abs(agree.inkLayer - agree.inkDirect) <= 0.1 * agree.inkDirect, `the trees change the picture by ${agree.inkLayer} from the layer, ${agree.inkDirect} drawn directly`);
+
   // The raw path: its length (the raw cost), the same ends, its tool curve in the raw path's colour.
   const [smoothPx] = await page.evaluate((c) => window.planarium.view3d.countColours(c, 8), [PALETTE.smoothPath]);
   await page.click('#anim-raw');

@@ -313,6 +313,9 @@ export function view3dHooks(slot, panels) {
     orbitFrameTimes: (n) => slot.view?.orbitFrameTimes(n) ?? Promise.resolve([]),
     /** One whole frame's time (ms), the trees in full as when the camera rests. */
     fullFrameMs: () => slot.view?.fullFrameMs() ?? null,
+    /** The faded trees from the backdrop's layer against drawn directly (draw3d/backdrop.js); how often the layer was drawn. */
+    backdropAgreement: (tol) => slot.view?.backdropAgreement(tol) ?? null,
+    backdropPainted: () => slot.view?.backdrop.painted ?? null,
     /** Whether the last frame drew the trees through a subset (the camera moving: draw3d/lod.js). */
     treesThinned: () => !!slot.view && slot.view.lod.thin,
     /** Add `edges` synthetic tree edges (straight, `steps` points each) round the tool: the frame-time measure's load. */

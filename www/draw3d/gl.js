@@ -125,7 +125,7 @@ out vec4 outColour;
 void main() { outColour = vec4(colour, alpha); }`;
 
 /** Compile and link a program; throws with the driver's log. */
-function program(gl, vs, fs) {
+export function program(gl, vs, fs) {
   const p = gl.createProgram();
   for (const [type, src] of [[gl.VERTEX_SHADER, vs], [gl.FRAGMENT_SHADER, fs]]) {
     const s = gl.createShader(type);

@@ -17,11 +17,12 @@ import { programs, meshBuffers, LineBuffer, identity, transformPoint, project, r
 import { OrbitCamera } from './camera.js';
 import { PathCurve, drawGhosts } from './ghosts.js';
 import { TreeLod } from './lod.js';
+import { Backdrop, premultipliedBlend } from './backdrop.js';
 
 /** Parts of the last link (the tool's) are drawn this much darker, so the tool stands out. */
 const TOOL_SHADE = 0.6;
 /** The trees' opacity once a path is shown. */
-const TREE_FADED = 0.04;
+const TREE_FADED = 0.02;
 const GRID = '#c3c8cf';
 /** @type {Array<[string, number[]]>} the axes' colours and directions (x red, y green, z blue) */
 const AXES = [['#d62728', [1, 0, 0]], ['#2ca02c', [0, 1, 0]], ['#1f77b4', [0, 0, 1]]];
@@ -37,6 +38,8 @@ export class View3D {
     this.progs = programs(gl);
     // While the camera moves, the trees are drawn through a subset of their segments (lod.js).
     this.lod = new TreeLod(gl, this.progs.line);
+    // Once solved, the faded trees drawn once into a layer reused while the camera rests (backdrop.js).
+    this.backdrop = new Backdrop(gl);
     this.camera = new OrbitCamera(canvas, () => {
       this.lod.moved(() => this.requestRender());
       this.requestRender();
@@ -55,6 +58,8 @@ export class View3D {
     this.manual = null;   // the pose set by hand (www/ui/pose3d.js): {frames, colour, ghost}, or null
     this.size = [1, 1, 1];
     this.pending = false;
+    this.backdropOff = false; // tests: the faded trees drawn directly, as without backdrop.js
+    this.treesHidden = false; // tests: the faded trees not drawn
     this.onFrame = null;  // (time) => void, after each frame drawn (tests and the frame-time log)
     /** @type {import('./actors3d.js').Actors3D | null} the explain panel's actors (actors3d.js), drawn by its hooks */
     this.actors = null;
@@ -135,6 +140,7 @@ export class View3D {
   clearRun() {
     for (const b of [...this.trees, ...this.nodes, this.path]) b.clear();
     this.lod.clear();
+    this.backdrop.invalidate();
     this.pose = null;
     this.ghosts = [];
     this.requestRender();
@@ -148,6 +154,7 @@ export class View3D {
     const t = tree === 1 ? 1 : 0;
     for (let k = 0; k + 1 < n; k++) this.trees[t].push(pts, at + 3 * k, at + 3 * k + 6);
     this.nodes[t].push(pts, at + 3 * (n - 1), at + 3 * n);
+    this.backdrop.invalidate();
     this.requestRender();
   }
 
@@ -230,8 +237,9 @@ export class View3D {
     const P = this.palette;
     // Once a path is shown the trees fade (a solved course run has some 14,000 nodes: they would
     // bury the arm) and go under everything else: drawn first, writing no depth.
-    const faded = this.path.length > 0;
-    if (faded) this.drawTrees(lines, TREE_FADED);
+    const faded = this.path.length > 0 && !this.treesHidden;
+    if (faded && (this.lod.thin || this.backdropOff)) this.drawTrees(lines, TREE_FADED);
+    else if (faded) this.backdrop.draw(this.backdropKey(view, proj), () => { gl.useProgram(line.p); this.drawTrees(lines, TREE_FADED, true); });
     // The arm: at the animated path pose once solved, else as posed by hand, else at the start;
     // the goal as a ghost (and the start, when the arm is posed elsewhere).
     gl.useProgram(mesh.p);
@@ -259,7 +267,7 @@ export class View3D {
     // behind the wall keeps its tree's colour; the opaque arm still hides what is behind it.
     gl.useProgram(line.p);
     gl.disable(gl.BLEND);
-    if (!faded) this.drawTrees(lines, 1);
+    if (!faded && !this.treesHidden) this.drawTrees(lines, 1);
     gl.depthMask(true);
     gl.disable(gl.DEPTH_TEST);
     // The path, the tool's curve, over everything (ghosts.js).
@@ -268,13 +276,17 @@ export class View3D {
     gl.bindVertexArray(null);
   }
 
-  /** The trees' edges and nodes at opacity `a` (< 1: blended, no depth written), line program in use. */
-  drawTrees(lines, a) {
+  /**
+   * The trees' edges and nodes at opacity `a` (< 1: blended, no depth written; `premultiplied`:
+   * into the backdrop's layer), line program in use.
+   */
+  drawTrees(lines, a, premultiplied = false) {
     const gl = this.gl;
     const P = this.palette;
     if (a < 1) {
       gl.enable(gl.BLEND);
-      gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
+      if (premultiplied) premultipliedBlend(gl);
+      else gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
       gl.depthMask(false);
     }
     const [e0, e1] = this.lod.edges(this.trees);
@@ -284,6 +296,13 @@ export class View3D {
     if (this.lod.points(this.nodes[1].length)) lines(this.nodes[1], P.tree1, gl.POINTS, a);
     gl.depthMask(true);
     gl.disable(gl.BLEND);
+  }
+
+  /** What the backdrop's layer depends on: the camera, the canvas, the trees and their colours. */
+  backdropKey(view, proj) {
+    const P = this.palette;
+    const sizes = [...this.trees, ...this.nodes].map((b) => b.length);
+    return `${this.canvas.width}x${this.canvas.height} ${view.join()} ${proj.join()} ${sizes.join()} ${P.tree0} ${P.tree1} ${window.devicePixelRatio || 1}`;
   }
 
   drawMesh(buffers, model, colour, alpha) {
@@ -325,12 +344,43 @@ export class View3D {
   fullFrameMs() {
     const [off, changed] = [this.lod.off, this.lod.changed];
     this.lod.off = true;
+    this.backdrop.invalidate();
     const t0 = performance.now();
     this.render();
     this.gl.readPixels(0, 0, 1, 1, this.gl.RGBA, this.gl.UNSIGNED_BYTE, new Uint8Array(4));
     const ms = performance.now() - t0;
     [this.lod.off, this.lod.changed] = [off, changed];
     return ms;
+  }
+
+  /**
+   * The faded trees laid from the backdrop's layer against drawn directly (each frame read back):
+   * how many pixels differ by more than `tol` (summed over red, green and blue), how many the trees
+   * change at all (against a frame without them), and the largest difference.
+   */
+  backdropAgreement(tol) {
+    const gl = this.gl;
+    const frame = (off, hidden) => {
+      [this.backdropOff, this.treesHidden] = [off, hidden];
+      this.lod.off = true;
+      this.render();
+      const px = new Uint8Array(this.canvas.width * this.canvas.height * 4);
+      gl.readPixels(0, 0, this.canvas.width, this.canvas.height, gl.RGBA, gl.UNSIGNED_BYTE, px);
+      return px;
+    };
+    const [layer, direct, none] = [frame(false, false), frame(true, false), frame(false, true)];
+    [this.backdropOff, this.treesHidden, this.lod.off] = [false, false, false];
+    const diff = (a, b, i) => Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]);
+    let differ = 0, trees = 0, most = 0, inkLayer = 0, inkDirect = 0;
+    for (let i = 0; i < layer.length; i += 4) {
+      const d = diff(layer, direct, i);
+      most = Math.max(most, d);
+      if (d > tol) differ++;
+      if (diff(direct, none, i) > 0) trees++;
+      inkLayer += diff(layer, none, i);
+      inkDirect += diff(direct, none, i);
+    }
+    return { differ, trees, most, inkLayer, inkDirect };
   }
 
   /** Css px within the canvas of world point `p`, with the camera of the last frame drawn. */
