@@ -184,6 +184,32 @@ test('the zoom bar: keys and buttons zoom about the centre and say the zoom; a n
   assert.deepEqual(fx.errors, []);
 });
 
+test('keyboard only: Tab reaches the map, which shows its focus, and + - 0 zoom it there', async () => {
+  const page = fx.page;
+  await page.mouse.move(1, 1); // the pointer away from the map: only the focus says where the keys go
+  await page.focus('#scenario');
+  await page.keyboard.press('Escape');
+  await page.evaluate(() => /** @type {HTMLElement} */ (document.activeElement)?.blur());
+  await page.keyboard.press('+');
+  assert.equal((await page.evaluate(() => window.planarium.viewport())).viewport, null, 'nothing focused, the pointer away: + is not the map\'s');
+  let reached = false;
+  for (let i = 0; i < 80 && !reached; i++) {
+    await page.keyboard.press('Tab');
+    reached = await page.evaluate(() => document.activeElement?.id === 'canvas');
+  }
+  assert.ok(reached, 'Tab reaches the map');
+  assert.notEqual(await page.evaluate(() => getComputedStyle(/** @type {Element} */ (document.activeElement)).outlineStyle), 'none', 'a focus ring on the map');
+  await page.keyboard.press('+');
+  assert.ok(Math.abs((await page.evaluate(() => window.planarium.viewport().zoom)) - 1.5) < 1e-9, '+ zooms in');
+  assert.equal(await page.isVisible('#plane-zoom'), true, 'the bar shows once zoomed in');
+  await page.keyboard.press('-');
+  assert.ok(Math.abs((await page.evaluate(() => window.planarium.viewport().zoom)) - 1) < 1e-9, '- zooms out');
+  await page.keyboard.press('=');
+  await page.keyboard.press('0');
+  assert.equal((await page.evaluate(() => window.planarium.viewport())).viewport, null, '0 fits');
+  assert.equal(await page.evaluate(() => document.activeElement?.id), 'canvas', 'the focus stays on the map');
+});
+
 test('the zoom goes into the share link; the link reopens zoomed on the same point; a bad zoom is named', async () => {
   const page = fx.page;
   await fx.pickScenario('narrow', 'Narrow passage');

@@ -1,8 +1,9 @@
 // Zoom and pan on the plane (the view from above): the wheel zooms about the pointer, a drag with
 // the middle button pans, two fingers on a touch screen pinch and pan, and the bar's buttons zoom
 // about the centre or fit the workspace's bounds again (also the keys + (or =) - 0: in the playground
-// while the pointer is over the canvas or a button of the bar has the focus; in the embed while it
-// has the focus, which the wheel waits for too, so a course page scrolls past an embed). The view (draw/view.js setViewport) moves
+// while the pointer is over the canvas, the canvas has the focus (Tab reaches it) or a button of the
+// bar has; in the embed while it has the focus, which the wheel waits for too, so a course page
+// scrolls past an embed). The view (draw/view.js setViewport) moves
 // its layers' last pictures at once and redraws them at the new scale once the viewport rests, so
 // a gesture costs the same few image copies a frame over a tree of ten nodes or of a million.
 
@@ -129,11 +130,11 @@ export function wirePlaneZoom({ canvas, view, bar, onChange = () => {}, keys = d
   canvas.addEventListener('pointerup', end);
   canvas.addEventListener('pointercancel', end);
 
-  // Keys over the canvas or the bar
+  // Keys over the canvas, or with the canvas or the bar focused
   let over = false;
   canvas.addEventListener('pointerenter', () => { over = true; });
   canvas.addEventListener('pointerleave', () => { over = false; });
-  const meant = keysWhen ?? (() => over || !!(document.activeElement && bar.contains(document.activeElement)));
+  const meant = keysWhen ?? (() => over || document.activeElement === canvas || !!(document.activeElement && bar.contains(document.activeElement)));
   keys.addEventListener('keydown', (/** @type {KeyboardEvent} */ e) => {
     if (e.ctrlKey || e.metaKey || e.altKey || !view.scenario || !meant()) return;
     const t = e.composedPath()[0];
