@@ -59,7 +59,7 @@ export class View3D {
     this.size = [1, 1, 1];
     this.pending = false;
     this.backdropOff = false; // tests: the faded trees drawn directly, as without backdrop.js
-    this.treesHidden = false; // tests: the faded trees not drawn
+    this.treesHidden = false; // tests: no trees drawn (faded or not)
     this.onFrame = null;  // (time) => void, after each frame drawn (tests and the frame-time log)
     /** @type {import('./actors3d.js').Actors3D | null} the explain panel's actors (actors3d.js), drawn by its hooks */
     this.actors = null;
@@ -356,7 +356,8 @@ export class View3D {
   /**
    * The faded trees laid from the backdrop's layer against drawn directly (each frame read back):
    * how many pixels differ by more than `tol` (summed over red, green and blue), how many the trees
-   * change at all (against a frame without them), and the largest difference.
+   * change at all (against a frame without them), the largest difference, and the sums of what
+   * the trees change either way.
    */
   backdropAgreement(tol) {
     const gl = this.gl;
@@ -368,8 +369,10 @@ export class View3D {
       gl.readPixels(0, 0, this.canvas.width, this.canvas.height, gl.RGBA, gl.UNSIGNED_BYTE, px);
       return px;
     };
+    const off = this.lod.off;
     const [layer, direct, none] = [frame(false, false), frame(true, false), frame(false, true)];
-    [this.backdropOff, this.treesHidden, this.lod.off] = [false, false, false];
+    [this.backdropOff, this.treesHidden, this.lod.off] = [false, false, off];
+    this.render(); // the canvas as it was, trees and all
     const diff = (a, b, i) => Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]);
     let differ = 0, trees = 0, most = 0, inkLayer = 0, inkDirect = 0;
     for (let i = 0; i < layer.length; i += 4) {
