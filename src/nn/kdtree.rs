@@ -234,7 +234,15 @@ impl KdTree {
     pub fn nearest_where(&mut self, space: &StateSpace, q: &[Real], keep: impl Fn(u32) -> bool) -> Option<(u32, Real)> {
         self.prepare(space, q);
         let mut stack = std::mem::take(&mut self.stack);
-        let best = self.search_nearest(space, self.qkey(q), keep, &mut stack);
+        let best = match (self.plain && self.root != NONE, self.kd) {
+            // The robots' usual sizes (a point, a rigid body, a six-joint arm) with their loops
+            // unrolled; any other size by the same code with the size read at run time.
+            (true, 2) => self.search_plain::<2>(q, keep, &mut stack),
+            (true, 3) => self.search_plain::<3>(q, keep, &mut stack),
+            (true, 6) => self.search_plain::<6>(q, keep, &mut stack),
+            (true, _) => self.search_plain::<0>(q, keep, &mut stack),
+            (false, _) => self.search_nearest(space, self.qkey(q), keep, &mut stack),
+        };
         self.stack = stack;
         best
     }
@@ -252,7 +260,7 @@ impl KdTree {
         }
     }
 
-    fn search_nearest(
+    pub(super) fn search_nearest(
         &self,
         space: &StateSpace,
         qk: &[Real],
@@ -297,6 +305,69 @@ impl KdTree {
             // bounds it too, and computing its own would rarely prune it.
             if near != NONE {
                 stack.push((near, bound));
+            }
+        }
+        best
+    }
+
+    /// [`search_nearest`](Self::search_nearest) in a plain Euclidean space with its tree built,
+    /// keys of `D` numbers (0: `self.kd`, read at run time): the same answer, bit for bit, by the
+    /// same visits. It compares the sums under the square roots (a root is monotone, so a sum at
+    /// most another's never has the greater root) and takes a root only where the comparison is
+    /// not decided by [`root_certainly_above`] or a new best is kept. The stack holds the squared
+    /// bounds, whose roots are the bounds `search_nearest` would hold.
+    fn search_plain<const D: usize>(
+        &self,
+        q: &[Real],
+        keep: impl Fn(u32) -> bool,
+        stack: &mut Vec<(u32, Real)>,
+    ) -> Option<(u32, Real)> {
+        use crate::space::{plain_box_lower_bound_sq, plain_distance_sq, root_certainly_above};
+        let kd = if D > 0 { D } else { self.kd };
+        let q = &q[..kd];
+        let mut best: Option<(u32, Real)> = None;
+        let (mut best_i, mut best_sq) = (usize::MAX, Real::INFINITY);
+        stack.clear();
+        stack.push((self.root, 0.0));
+        while let Some((node, bound_sq)) = stack.pop() {
+            let i = node as usize;
+            if let Some((_, bd)) = best {
+                // `bound > bd`
+                if bound_sq > best_sq && (root_certainly_above(bound_sq, best_sq) || bound_sq.sqrt() > bd) {
+                    continue;
+                }
+            }
+            if keep(self.ids[i]) {
+                let d_sq = plain_distance_sq(q, &self.keys[i * kd..i * kd + kd]);
+                if best.is_none() || !root_certainly_above(d_sq, best_sq) {
+                    let dist = d_sq.sqrt();
+                    let before = best_i;
+                    self.consider(i, dist, &mut best, &mut best_i);
+                    if best_i != before {
+                        best_sq = d_sq;
+                    }
+                }
+            }
+            let s = self.split[i] as usize;
+            let (near, far) = if q[s] < self.keys[i * kd + s] {
+                (self.left[i], self.right[i])
+            } else {
+                (self.right[i], self.left[i])
+            };
+            if far != NONE {
+                let c = far as usize;
+                let b_sq = plain_box_lower_bound_sq(q, &self.lo[c * kd..c * kd + kd], &self.hi[c * kd..c * kd + kd]);
+                // `b <= bd`
+                let push = match best {
+                    None => true,
+                    Some((_, bd)) => b_sq <= best_sq || (!root_certainly_above(b_sq, best_sq) && b_sq.sqrt() <= bd),
+                };
+                if push {
+                    stack.push((far, b_sq));
+                }
+            }
+            if near != NONE {
+                stack.push((near, bound_sq));
             }
         }
         best

@@ -141,3 +141,80 @@ fn embedded_box_bound_never_exceeds_the_distance_to_a_point_inside() {
         }
     }
 }
+
+/// The plain search (squared sums, roots only where needed) gives the general search's answer
+/// bit for bit: the same id and distance for every query, with and without a filter, on
+/// clustered points, exact ties (points on a coarse grid, repeated) and distances so close that
+/// their squares differ while their roots round alike; in each unrolled size and the run-time one.
+#[test]
+fn plain_search_is_the_general_search_bit_for_bit() {
+    for (dims, seed) in [(2usize, 11u64), (3, 12), (6, 13), (4, 14), (1, 15)] {
+        let s = StateSpace { dims: vec![Dim { lo: -1.0, hi: 1.0, wraps: false }; dims], metric: Metric::Euclidean };
+        assert!(s.plain_euclidean());
+        let mut rng = Rng::new(seed);
+        let mut t = KdTree::new(dims);
+        let draw = |rng: &mut Rng, grid: bool| -> Vec<Real> {
+            (0..dims)
+                .map(|_| {
+                    let v = rng.uniform01() * 2.0 - 1.0;
+                    if grid {
+                        (v * 4.0).round() / 4.0
+                    } else {
+                        v
+                    }
+                })
+                .collect()
+        };
+        let mut pts: Vec<Vec<Real>> = Vec::new();
+        for i in 0..2500u32 {
+            let p = match i % 5 {
+                0 | 1 => draw(&mut rng, true),
+                // A point whose distance to a grid point differs from another's by an ulp or so.
+                2 if !pts.is_empty() => {
+                    let mut p = pts[rng.below(pts.len())].clone();
+                    p[0] = Real::from_bits(p[0].to_bits() + 1 + rng.below(3) as u64);
+                    p
+                }
+                _ => draw(&mut rng, false),
+            };
+            t.add(&s, &p, i);
+            pts.push(p);
+            if i >= 40 && i % 7 == 0 {
+                let q = draw(&mut rng, i % 2 == 0);
+                for filtered in [false, true] {
+                    let keep = |id: u32| !filtered || id % 3 != 1;
+                    let fast = t.nearest_where(&s, &q, keep);
+                    let mut stack = Vec::new();
+                    let slow = t.search_nearest(&s, &q, keep, &mut stack);
+                    let bits = |r: Option<(u32, Real)>| r.map(|(id, d)| (id, d.to_bits()));
+                    assert_eq!(bits(fast), bits(slow), "{dims} dims, {i} points, query {q:?}");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn root_certainly_above_never_claims_what_rounding_undoes() {
+    use crate::space::root_certainly_above;
+    let mut rng = Rng::new(3);
+    for _ in 0..200_000 {
+        let y = match rng.below(4) {
+            0 => rng.uniform01(),
+            1 => rng.uniform01() * 1e-310,
+            2 => rng.uniform01() * 1e300,
+            _ => 0.0,
+        };
+        let x = match rng.below(3) {
+            0 => Real::from_bits(y.to_bits() + rng.below(1 << 20) as u64),
+            1 => y * (1.0 + rng.uniform01() * 1e-11),
+            _ => y + rng.uniform01() * 1e-290,
+        };
+        if root_certainly_above(x, y) {
+            assert!(x.sqrt() > y.sqrt(), "{x:e} over {y:e}");
+        }
+    }
+    assert!(root_certainly_above(4.0, 1.0));
+    assert!(!root_certainly_above(1.0, 1.0));
+    assert!(!root_certainly_above(Real::NAN, 1.0));
+}

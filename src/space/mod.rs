@@ -289,13 +289,34 @@ pub fn chain_moves<'a>(links: &'a [Real], a: &'a [Real], b: &'a [Real]) -> impl 
 /// [`StateSpace::distance`], so the same bits. The nearest-neighbour search's inner loop.
 #[inline(always)]
 pub fn plain_distance(a: &[Real], b: &[Real]) -> Real {
-    a.iter().zip(b).map(|(x, y)| (y - x).powi(2)).sum::<Real>().sqrt()
+    plain_distance_sq(a, b).sqrt()
+}
+
+/// The sum under [`plain_distance`]'s square root (the squared distance), the same bits.
+#[inline(always)]
+pub fn plain_distance_sq(a: &[Real], b: &[Real]) -> Real {
+    a.iter().zip(b).map(|(x, y)| (y - x).powi(2)).sum::<Real>()
 }
 
 /// [`StateSpace::box_lower_bound`] in a space whose dimensions do not wrap, the same bits.
 #[inline(always)]
 pub fn plain_box_lower_bound(q: &[Real], lo: &[Real], hi: &[Real]) -> Real {
-    q.iter().zip(lo).zip(hi).map(|((v, l), h)| gap_outside(*v, *l, *h).powi(2)).sum::<Real>().sqrt()
+    plain_box_lower_bound_sq(q, lo, hi).sqrt()
+}
+
+/// The sum under [`plain_box_lower_bound`]'s square root, the same bits.
+#[inline(always)]
+pub fn plain_box_lower_bound_sq(q: &[Real], lo: &[Real], hi: &[Real]) -> Real {
+    q.iter().zip(lo).zip(hi).map(|((v, l), h)| gap_outside(*v, *l, *h).powi(2)).sum::<Real>()
+}
+
+/// Whether the square root of `x` certainly exceeds the square root of `y` once both are
+/// rounded: `x` is past `y` by far more than the four units in the last place two correctly
+/// rounded roots can close (and past 1e-300, so that a subnormal `y`'s coarse spacing does not
+/// matter). A `false` decides nothing: the caller takes the roots and compares them.
+#[inline(always)]
+pub fn root_certainly_above(x: Real, y: Real) -> bool {
+    x > y * (1.0 + 1e-12) + 1e-300
 }
 
 /// How far `v` lies outside `[lo, hi]` on a line that does not wrap (0 inside).
