@@ -473,6 +473,7 @@ export class PlanariumPlayground extends HTMLElement {
 
   onKey(e) {
     if (e.ctrlKey || e.metaKey || e.altKey || (e.repeat && e.key !== 'ArrowRight')) return;
+    if (e.shiftKey && e.key.startsWith('Arrow')) return; // shift + an arrow pans the map
     const t = e.composedPath()[0];
     if (t instanceof Element && t.closest('input, select, textarea, [contenteditable]')) return;
     const has = (n) => this.shown.includes(n);

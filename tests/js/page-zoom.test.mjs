@@ -202,6 +202,20 @@ test('keyboard only: Tab reaches the map, which shows its focus, and + - 0 zoom 
   await page.keyboard.press('+');
   assert.ok(Math.abs((await page.evaluate(() => window.planarium.viewport().zoom)) - 1.5) < 1e-9, '+ zooms in');
   assert.equal(await page.isVisible('#plane-zoom'), true, 'the bar shows once zoomed in');
+  // shift + the arrows pan (the run does not step): right looks further right, up further up
+  const progress = () => page.evaluate(() => [window.planarium.shownIterations(), window.planarium.nodeCount()]);
+  const events = await progress();
+  const at = (await page.evaluate(() => window.planarium.viewport())).viewport;
+  await page.keyboard.press('Shift+ArrowRight');
+  await page.keyboard.press('Shift+ArrowUp');
+  const moved = (await page.evaluate(() => window.planarium.viewport())).viewport;
+  assert.ok(moved.cx > at.cx + 1e-6 && moved.cy > at.cy + 1e-6, `shift + → and ↑ look right and up: (${at.cx}, ${at.cy}) → (${moved.cx}, ${moved.cy})`);
+  await page.keyboard.press('Shift+ArrowLeft');
+  await page.keyboard.press('Shift+ArrowDown');
+  const back = (await page.evaluate(() => window.planarium.viewport())).viewport;
+  assert.ok(Math.abs(back.cx - at.cx) < 1e-9 && Math.abs(back.cy - at.cy) < 1e-9, 'shift + ← and ↓ come back');
+  assert.deepEqual(await progress(), events, 'shift + an arrow does not step the run');
+  assert.equal(await page.evaluate(() => window.planarium.state()), 'idle', 'nor start it');
   await page.keyboard.press('-');
   assert.ok(Math.abs((await page.evaluate(() => window.planarium.viewport().zoom)) - 1) < 1e-9, '- zooms out');
   await page.keyboard.press('=');

@@ -13,6 +13,7 @@ export function wireKeys({ actions, running, help, open, close }) {
   close.addEventListener('click', () => help.close());
   document.addEventListener('keydown', (e) => {
     if (e.ctrlKey || e.metaKey || e.altKey || e.repeat && e.key !== 'ArrowRight') return;
+    if (e.shiftKey && e.key.startsWith('Arrow')) return; // shift + an arrow pans the map (plane-zoom.js)
     const t = e.target;
     if (t instanceof Element && t.closest('input, select, textarea, [contenteditable]')) return;
     if (e.key === ' ') {

@@ -1,6 +1,7 @@
 // Zoom and pan on the plane (the view from above): the wheel zooms about the pointer, a drag with
 // the middle button pans, two fingers on a touch screen pinch and pan, and the bar's buttons zoom
-// about the centre or fit the workspace's bounds again (also the keys + (or =) - 0: in the playground
+// about the centre or fit the workspace's bounds again (also the keys + (or =) - 0, and shift + the
+// arrows pan once zoomed in: in the playground
 // while the pointer is over the canvas, the canvas has the focus (Tab reaches it) or a button of the
 // bar has; in the embed while it has the focus, which the wheel waits for too, so a course page
 // scrolls past an embed). The view (draw/view.js setViewport) moves
@@ -13,6 +14,9 @@ import { readNumbers } from './camera-link.js';
 const WHEEL = 0.0015; // zoom factor per pixel of wheel travel: exp(−deltaY · WHEEL)
 const LINE = 40;      // pixels per line when the wheel reports lines
 const STEP = 1.5;     // a button's or key's zoom factor
+const PAN_STEP = 0.1; // shift + an arrow pans by this share of the map's shorter side
+/** shift + an arrow: which way the picture moves (to look right, it moves left) */
+const PAN = { ArrowRight: [-1, 0], ArrowLeft: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] };
 const MAX_CENTRE = 1e6; // |cx|, |cy| a link may give (a scenario's bounds are within ±1e6)
 
 /**
@@ -142,7 +146,10 @@ export function wirePlaneZoom({ canvas, view, bar, onChange = () => {}, keys = d
     if (e.key === '+' || e.key === '=') zoomBy(STEP);
     else if (e.key === '-') zoomBy(1 / STEP);
     else if (e.key === '0') view.setViewport(null);
-    else return;
+    else if (e.shiftKey && e.key in PAN && view.zoom > 1 && view.layout) {
+      const s = PAN_STEP * Math.min(view.layout.width, view.layout.height);
+      view.panBy(PAN[e.key][0] * s, PAN[e.key][1] * s);
+    } else return;
     e.preventDefault();
     e.stopPropagation(); // an embed's host page keeps its own keys otherwise
   });
