@@ -56,6 +56,14 @@ test('phone width: nothing overflows sideways, the canvas fits, a run works', as
   await page.click('#run');
   await fx.waitStatus('solved');
   await page.screenshot({ path: join(SHOTS, 'page-phone.png'), fullPage: false });
+  // The keyboard help reads on a phone: every description as wide as the dialog's text, not a
+  // column a letter wide beside the longest keys.
+  await page.click('#help-button');
+  await page.waitForFunction(() => document.getElementById('help').open);
+  const cells = await page.evaluate(() => [...document.querySelectorAll('#help .keys-table td')].map((td) => td.getBoundingClientRect().width));
+  assert.ok(cells.length >= 8 && Math.min(...cells) >= 250, `the help's descriptions ${cells.map(Math.round).join(', ')} px wide`);
+  await page.screenshot({ path: join(SHOTS, 'page-phone-help.png'), fullPage: false });
+  await page.click('#help-close');
 });
 
 test('planning stays off the main thread: the page never loads the core, and keeps drawing while a big tree grows', async () => {
