@@ -146,7 +146,7 @@ export function wirePlaneZoom({ canvas, view, bar, onChange = () => {}, keys = d
     if (e.key === '+' || e.key === '=') zoomBy(STEP);
     else if (e.key === '-') zoomBy(1 / STEP);
     else if (e.key === '0') view.setViewport(null);
-    else if (e.shiftKey && e.key in PAN && view.zoom > 1 && view.layout) {
+    else if (e.shiftKey && Object.hasOwn(PAN, e.key) && view.zoom > 1 && view.layout) {
       const s = PAN_STEP * Math.min(view.layout.width, view.layout.height);
       view.panBy(PAN[e.key][0] * s, PAN[e.key][1] * s);
     } else return;
