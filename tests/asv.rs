@@ -477,3 +477,27 @@ fn a_fifteen_vehicle_course_file_gets_the_settings_that_solve_it() {
         solve_and_recheck(&sc, params, seed);
     }
 }
+
+/// A problem whose start is its goal: the run is solved at once with a one-state path, and its
+/// solution file is that configuration twice (one step of length 0), which reads back and passes
+/// the course's checker. (A fuzz input found the file refused: "the path needs at least two states".)
+#[test]
+fn a_start_that_is_the_goal_writes_a_two_line_solution() {
+    let sc = planarium::io::asv::import_problem(
+        "3\n0.150 0.225 0.150 0.275 0.200 0.275\n0.150 0.225 0.150 0.275 0.200 0.275\n0\n",
+        "start-is-goal",
+    )
+    .unwrap();
+    // The path a planner returns when its start is in the goal: the start alone.
+    let problem = Problem::from_scenario(&sc).unwrap();
+    let text = solution_text(&problem, std::slice::from_ref(&problem.start)).unwrap();
+    let configs = read_solution(&text).unwrap();
+    assert_eq!(configs.len(), 2, "{text}");
+    assert_eq!(configs[0], sc.start);
+    assert_eq!(configs[1], sc.start);
+    check_solution(&sc, &configs).unwrap();
+    // Any planner's run of it gives a file the checker takes.
+    let configs = read_solution(&solve(&sc, 1)).unwrap();
+    check_solution(&sc, &configs).unwrap();
+    assert!(solution_text(&problem, &[]).is_err(), "no state: no file");
+}
