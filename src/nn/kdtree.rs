@@ -260,6 +260,8 @@ impl KdTree {
         }
     }
 
+    /// The nearest point passing `keep`, by the tree's own distances: a scan below
+    /// [`LEAF_SCAN`] points, else the tree's traversal with [`Exact`].
     pub(super) fn search_nearest(
         &self,
         space: &StateSpace,
@@ -267,9 +269,9 @@ impl KdTree {
         keep: impl Fn(u32) -> bool,
         stack: &mut Vec<(u32, Real)>,
     ) -> Option<(u32, Real)> {
-        let mut best: Option<(u32, Real)> = None;
-        let mut best_i = usize::MAX;
         if self.root == NONE {
+            let mut best: Option<(u32, Real)> = None;
+            let mut best_i = usize::MAX;
             for i in 0..self.ids.len() {
                 if keep(self.ids[i]) {
                     self.consider(i, self.dist(space, qk, i), &mut best, &mut best_i);
@@ -277,97 +279,79 @@ impl KdTree {
             }
             return best;
         }
-        stack.clear();
-        stack.push((self.root, 0.0));
-        while let Some((node, bound)) = stack.pop() {
-            let i = node as usize;
-            if let Some((_, bd)) = best {
-                if bound > bd {
-                    continue;
-                }
-            }
-            if keep(self.ids[i]) {
-                self.consider(i, self.dist(space, qk, i), &mut best, &mut best_i);
-            }
-            let s = self.split[i] as usize;
-            let (near, far) = if qk[s] < self.keys[i * self.kd + s] {
-                (self.left[i], self.right[i])
-            } else {
-                (self.right[i], self.left[i])
-            };
-            if far != NONE {
-                let b = self.box_bound(space, qk, far as usize);
-                if best.is_none_or(|(_, bd)| b <= bd) {
-                    stack.push((far, b));
-                }
-            }
-            // The near side is searched next: its box lies in this node's, so this node's bound
-            // bounds it too, and computing its own would rarely prune it.
-            if near != NONE {
-                stack.push((near, bound));
-            }
-        }
-        best
+        self.traverse(&Exact { tree: self, space, qk }, qk, self.kd, keep, stack)
     }
 
     /// [`search_nearest`](Self::search_nearest) in a plain Euclidean space with its tree built,
-    /// keys of `D` numbers (0: `self.kd`, read at run time): the same answer, bit for bit, by the
-    /// same visits. It compares the sums under the square roots (a root is monotone, so a sum at
-    /// most another's never has the greater root) and takes a root only where the comparison is
-    /// not decided by [`root_certainly_above`] or a new best is kept. The stack holds the squared
-    /// bounds, whose roots are the bounds `search_nearest` would hold.
+    /// keys of `D` numbers (0: `self.kd`, read at run time): the same traversal with
+    /// [`Squared`] distances, so the same answer, bit for bit, by the same visits.
     fn search_plain<const D: usize>(
         &self,
         q: &[Real],
         keep: impl Fn(u32) -> bool,
         stack: &mut Vec<(u32, Real)>,
     ) -> Option<(u32, Real)> {
-        use crate::space::{plain_box_lower_bound_sq, plain_distance_sq, root_certainly_above};
         let kd = if D > 0 { D } else { self.kd };
         let q = &q[..kd];
+        self.traverse(&Squared::<D> { tree: self, q, kd }, q, kd, keep, stack)
+    }
+
+    /// The nearest-point traversal of the built tree, measuring with `m`: a node is visited
+    /// when its bound is not past the best distance, the far side pushed first when its box's
+    /// bound is not past it, the near side next with this node's bound (its box lies in this
+    /// node's, so this bound bounds it too, and computing its own would rarely prune it). The
+    /// stack holds measures; a root is taken only where [`Measure::certainly_above`] does not
+    /// decide a comparison, or a new best is kept.
+    #[inline(always)]
+    fn traverse<M: Measure>(
+        &self,
+        m: &M,
+        qk: &[Real],
+        kd: usize,
+        keep: impl Fn(u32) -> bool,
+        stack: &mut Vec<(u32, Real)>,
+    ) -> Option<(u32, Real)> {
         let mut best: Option<(u32, Real)> = None;
-        let (mut best_i, mut best_sq) = (usize::MAX, Real::INFINITY);
+        let (mut best_i, mut best_m) = (usize::MAX, Real::INFINITY);
         stack.clear();
         stack.push((self.root, 0.0));
-        while let Some((node, bound_sq)) = stack.pop() {
+        while let Some((node, bound_m)) = stack.pop() {
             let i = node as usize;
             if let Some((_, bd)) = best {
                 // `bound > bd`
-                if bound_sq > best_sq && (root_certainly_above(bound_sq, best_sq) || bound_sq.sqrt() > bd) {
+                if bound_m > best_m && (m.certainly_above(bound_m, best_m) || m.root(bound_m) > bd) {
                     continue;
                 }
             }
             if keep(self.ids[i]) {
-                let d_sq = plain_distance_sq(q, &self.keys[i * kd..i * kd + kd]);
-                if best.is_none() || !root_certainly_above(d_sq, best_sq) {
-                    let dist = d_sq.sqrt();
+                let d_m = m.point(i);
+                if best.is_none() || !m.certainly_above(d_m, best_m) {
                     let before = best_i;
-                    self.consider(i, dist, &mut best, &mut best_i);
+                    self.consider(i, m.root(d_m), &mut best, &mut best_i);
                     if best_i != before {
-                        best_sq = d_sq;
+                        best_m = d_m;
                     }
                 }
             }
             let s = self.split[i] as usize;
-            let (near, far) = if q[s] < self.keys[i * kd + s] {
+            let (near, far) = if qk[s] < self.keys[i * kd + s] {
                 (self.left[i], self.right[i])
             } else {
                 (self.right[i], self.left[i])
             };
             if far != NONE {
-                let c = far as usize;
-                let b_sq = plain_box_lower_bound_sq(q, &self.lo[c * kd..c * kd + kd], &self.hi[c * kd..c * kd + kd]);
+                let b_m = m.node_box(far as usize);
                 // `b <= bd`
                 let push = match best {
                     None => true,
-                    Some((_, bd)) => b_sq <= best_sq || (!root_certainly_above(b_sq, best_sq) && b_sq.sqrt() <= bd),
+                    Some((_, bd)) => b_m <= best_m || (!m.certainly_above(b_m, best_m) && m.root(b_m) <= bd),
                 };
                 if push {
-                    stack.push((far, b_sq));
+                    stack.push((far, b_m));
                 }
             }
             if near != NONE {
-                stack.push((near, bound_sq));
+                stack.push((near, bound_m));
             }
         }
         best
@@ -446,5 +430,80 @@ impl KdTree {
             }
         }
         found
+    }
+}
+
+/// How [`KdTree::traverse`] measures distances from its query: by a measure monotone in the
+/// distance (the distance itself, or its square), with the distance from a measure and a test
+/// that decides a comparison of two distances from their measures when it can.
+trait Measure {
+    /// The measure of the distance to point `i`.
+    fn point(&self, i: usize) -> Real;
+    /// The measure of the lower bound on the distance to any point under node `c`.
+    fn node_box(&self, c: usize) -> Real;
+    /// The distance whose measure is `m`.
+    fn root(&self, m: Real) -> Real;
+    /// Whether the distance of measure `x` is certainly past that of `y` (`false` decides nothing).
+    fn certainly_above(&self, x: Real, y: Real) -> bool;
+}
+
+/// The tree's own distances and box bounds, whatever its space: the measure is the distance.
+struct Exact<'a> {
+    tree: &'a KdTree,
+    space: &'a StateSpace,
+    qk: &'a [Real],
+}
+
+impl Measure for Exact<'_> {
+    #[inline(always)]
+    fn point(&self, i: usize) -> Real {
+        self.tree.dist(self.space, self.qk, i)
+    }
+    #[inline(always)]
+    fn node_box(&self, c: usize) -> Real {
+        self.tree.box_bound(self.space, self.qk, c)
+    }
+    #[inline(always)]
+    fn root(&self, m: Real) -> Real {
+        m
+    }
+    #[inline(always)]
+    fn certainly_above(&self, x: Real, y: Real) -> bool {
+        x > y
+    }
+}
+
+/// Squared Euclidean distances in a plain space, keys of `D` numbers (0: `kd`): a root is
+/// monotone, so a sum at most another's never has the greater root, and two sums far enough
+/// apart ([`root_certainly_above`](crate::space::root_certainly_above)) have roots in the same
+/// order once rounded.
+struct Squared<'a, const D: usize> {
+    tree: &'a KdTree,
+    q: &'a [Real],
+    kd: usize,
+}
+
+impl<const D: usize> Measure for Squared<'_, D> {
+    #[inline(always)]
+    fn point(&self, i: usize) -> Real {
+        let kd = if D > 0 { D } else { self.kd };
+        crate::space::plain_distance_sq(self.q, &self.tree.keys[i * kd..i * kd + kd])
+    }
+    #[inline(always)]
+    fn node_box(&self, c: usize) -> Real {
+        let kd = if D > 0 { D } else { self.kd };
+        crate::space::plain_box_lower_bound_sq(
+            self.q,
+            &self.tree.lo[c * kd..c * kd + kd],
+            &self.tree.hi[c * kd..c * kd + kd],
+        )
+    }
+    #[inline(always)]
+    fn root(&self, m: Real) -> Real {
+        m.sqrt()
+    }
+    #[inline(always)]
+    fn certainly_above(&self, x: Real, y: Real) -> bool {
+        crate::space::root_certainly_above(x, y)
     }
 }
