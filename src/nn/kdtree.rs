@@ -374,12 +374,21 @@ impl KdTree {
         }
         self.prepare(space, q);
         let mut stack = std::mem::take(&mut self.stack);
-        let found = self.search_collect(space, self.qkey(q), k, r, &mut stack);
+        let found = match (self.plain && self.root != NONE, self.kd) {
+            (true, 2) => self.collect_plain::<2>(q, k, r, &mut stack),
+            (true, 3) => self.collect_plain::<3>(q, k, r, &mut stack),
+            (true, 6) => self.collect_plain::<6>(q, k, r, &mut stack),
+            (true, _) => self.collect_plain::<0>(q, k, r, &mut stack),
+            (false, _) => self.search_collect(space, self.qkey(q), k, r, &mut stack),
+        };
         self.stack = stack;
         found.into_iter().map(|(dist, i)| (self.ids[i], dist)).collect()
     }
 
-    fn search_collect(
+    /// At most `k` points within `r` by the tree's own distances, as `(distance, insertion
+    /// index)`, nearest first: a scan below [`LEAF_SCAN`] points, else the tree's traversal with
+    /// [`Exact`].
+    pub(super) fn search_collect(
         &self,
         space: &StateSpace,
         qk: &[Real],
@@ -387,44 +396,80 @@ impl KdTree {
         r: Real,
         stack: &mut Vec<(u32, Real)>,
     ) -> Vec<(Real, usize)> {
-        // (distance, insertion index), kept sorted; the bound is the k-th distance once full.
-        let mut found: Vec<(Real, usize)> = Vec::new();
-        let bound = |found: &Vec<(Real, usize)>| if found.len() >= k { found[k - 1].0 } else { r };
-        let offer = |dist: Real, i: usize, found: &mut Vec<(Real, usize)>| {
-            if dist <= r && (found.len() < k || (dist, i) < found[k - 1]) {
-                let at = found.partition_point(|e| *e < (dist, i));
-                found.insert(at, (dist, i));
-                found.truncate(k);
-            }
-        };
+        let m = Exact { tree: self, space, qk };
         if self.root == NONE {
+            let mut found = Vec::new();
             for i in 0..self.ids.len() {
-                offer(self.dist(space, qk, i), i, &mut found);
+                offer(&m, m.point(i), i, k, r, r, &mut found);
             }
             return found;
         }
+        self.traverse_collect(&m, qk, self.kd, k, r, stack)
+    }
+
+    /// [`search_collect`](Self::search_collect) in a plain Euclidean space with its tree built,
+    /// by [`Squared`] distances: the same points in the same order with the same distance bits.
+    fn collect_plain<const D: usize>(
+        &self,
+        q: &[Real],
+        k: usize,
+        r: Real,
+        stack: &mut Vec<(u32, Real)>,
+    ) -> Vec<(Real, usize)> {
+        let kd = if D > 0 { D } else { self.kd };
+        let q = &q[..kd];
+        let found = self.traverse_collect(&Squared::<D> { tree: self, q, kd }, q, kd, k, r, stack);
+        found.into_iter().map(|(d_sq, i)| (d_sq.sqrt(), i)).collect()
+    }
+
+    /// The k-nearest traversal of the built tree, measuring with `m`: as
+    /// [`traverse`](Self::traverse), the bound the k-th point's distance once `k` are held, else
+    /// `r`. Returns `(measure, insertion index)` in the order of `(distance, insertion index)`.
+    #[inline(always)]
+    fn traverse_collect<M: Measure>(
+        &self,
+        m: &M,
+        qk: &[Real],
+        kd: usize,
+        k: usize,
+        r: Real,
+        stack: &mut Vec<(u32, Real)>,
+    ) -> Vec<(Real, usize)> {
+        let mut found: Vec<(Real, usize)> = Vec::new();
+        // `r` as a measure: not always one whose distance is `r` (a square is rounded), so it
+        // only decides comparisons `at_most` can decide from measures past its margin.
+        let r_m = m.measure_of(r);
+        // Whether a measure's distance is at most the bound's.
+        let within_bound = |x: Real, found: &Vec<(Real, usize)>| {
+            if found.len() >= k {
+                let b = found[k - 1].0;
+                at_most(m, x, b, || m.root(b))
+            } else {
+                at_most(m, x, r_m, || r)
+            }
+        };
         stack.clear();
         stack.push((self.root, 0.0));
         while let Some((node, b)) = stack.pop() {
-            if b > bound(&found) {
+            if !within_bound(b, &found) {
                 continue;
             }
             let i = node as usize;
-            offer(self.dist(space, qk, i), i, &mut found);
+            offer(m, m.point(i), i, k, r_m, r, &mut found);
             // Far side pushed first, so the near side is searched first and tightens the bound.
             let s = self.split[i] as usize;
-            let (near, far) = if qk[s] < self.keys[i * self.kd + s] {
+            let (near, far) = if qk[s] < self.keys[i * kd + s] {
                 (self.left[i], self.right[i])
             } else {
                 (self.right[i], self.left[i])
             };
             if far != NONE {
-                let cb = self.box_bound(space, qk, far as usize);
-                if cb <= bound(&found) {
+                let cb = m.node_box(far as usize);
+                if within_bound(cb, &found) {
                     stack.push((far, cb));
                 }
             }
-            // The near side, next, with this node's bound (as in `search_nearest`).
+            // The near side, next, with this node's bound (as in `traverse`).
             if near != NONE {
                 stack.push((near, b));
             }
@@ -444,7 +489,44 @@ trait Measure {
     /// The distance whose measure is `m`.
     fn root(&self, m: Real) -> Real;
     /// Whether the distance of measure `x` is certainly past that of `y` (`false` decides nothing).
+    /// It must also decide rightly against [`measure_of`](Self::measure_of) a distance, as a
+    /// measure whose distance may differ from that distance in its last place.
     fn certainly_above(&self, x: Real, y: Real) -> bool;
+    /// A measure for distance `d` (its distance is `d`, or `d` to within its last place).
+    fn measure_of(&self, d: Real) -> Real;
+}
+
+/// Whether the distance of measure `x` is at most that of measure `b`, whose distance is
+/// `bd()` (taken only when the measures do not decide it).
+#[inline(always)]
+fn at_most<M: Measure>(m: &M, x: Real, b: Real, bd: impl FnOnce() -> Real) -> bool {
+    !m.certainly_above(x, b) && (m.certainly_above(b, x) || m.root(x) <= bd())
+}
+
+/// Whether `(x, i)` comes before `(y, j)` in the order of `(distance, insertion index)`, for
+/// measures `x` and `y`.
+#[inline(always)]
+fn before<M: Measure>(m: &M, (x, i): (Real, usize), (y, j): (Real, usize)) -> bool {
+    if x == y {
+        i < j
+    } else if m.certainly_above(y, x) {
+        true
+    } else if m.certainly_above(x, y) {
+        false
+    } else {
+        (m.root(x), i) < (m.root(y), j)
+    }
+}
+
+/// Keep point `i` (at measure `x`) among the `k` nearest held in `found`, sorted, if its
+/// distance is at most `r` (measure `r_m`) and it comes before the k-th.
+#[inline(always)]
+fn offer<M: Measure>(m: &M, x: Real, i: usize, k: usize, r_m: Real, r: Real, found: &mut Vec<(Real, usize)>) {
+    if at_most(m, x, r_m, || r) && (found.len() < k || before(m, (x, i), found[k - 1])) {
+        let at = found.partition_point(|e| before(m, *e, (x, i)));
+        found.insert(at, (x, i));
+        found.truncate(k);
+    }
 }
 
 /// The tree's own distances and box bounds, whatever its space: the measure is the distance.
@@ -470,6 +552,10 @@ impl Measure for Exact<'_> {
     #[inline(always)]
     fn certainly_above(&self, x: Real, y: Real) -> bool {
         x > y
+    }
+    #[inline(always)]
+    fn measure_of(&self, d: Real) -> Real {
+        d
     }
 }
 
@@ -505,5 +591,12 @@ impl<const D: usize> Measure for Squared<'_, D> {
     #[inline(always)]
     fn certainly_above(&self, x: Real, y: Real) -> bool {
         crate::space::root_certainly_above(x, y)
+    }
+    /// The rounded square: its root is `d` to within a unit in the last place, and
+    /// [`root_certainly_above`](crate::space::root_certainly_above)'s margin of 1e-12 holds
+    /// against it in both directions (`d²` rounded is within 2⁻⁵³ of `d²`).
+    #[inline(always)]
+    fn measure_of(&self, d: Real) -> Real {
+        d * d
     }
 }

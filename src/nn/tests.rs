@@ -189,6 +189,23 @@ fn plain_search_is_the_general_search_bit_for_bit() {
                     let bits = |r: Option<(u32, Real)>| r.map(|(id, d)| (id, d.to_bits()));
                     assert_eq!(bits(fast), bits(slow), "{dims} dims, {i} points, query {q:?}");
                 }
+                // k nearest and within r, the plain traversal against the general one: r at a
+                // grid step (exact ties at r), at a point's own distance, and at infinity
+                let general = |t: &KdTree, k: usize, r: Real| {
+                    let mut stack = Vec::new();
+                    let found = t.search_collect(&s, &q, k, r, &mut stack);
+                    found.into_iter().map(|(d, j)| (j as u32, d.to_bits())).collect::<Vec<_>>()
+                };
+                let bits = |v: Vec<(u32, Real)>| v.into_iter().map(|(id, d)| (id, d.to_bits())).collect::<Vec<_>>();
+                let own = s.distance(&q, &pts[rng.below(pts.len())]);
+                for k in [1, 2, 7, 40] {
+                    let slow = general(&t, k, Real::INFINITY);
+                    assert_eq!(bits(t.k_nearest(&s, &q, k)), slow, "{dims} dims, {i} points, {k} nearest");
+                }
+                for r in [0.25, 0.5, own, 0.0] {
+                    let slow = general(&t, usize::MAX, r);
+                    assert_eq!(bits(t.within(&s, &q, r)), slow, "{dims} dims, {i} points, within {r}");
+                }
             }
         }
     }
