@@ -435,7 +435,8 @@ impl KdTree {
         r: Real,
         stack: &mut Vec<(u32, Real)>,
     ) -> Vec<(Real, usize)> {
-        let mut found: Vec<(Real, usize)> = Vec::new();
+        // Room for the k held and the one offered past them (a radius alone: a start).
+        let mut found: Vec<(Real, usize)> = Vec::with_capacity(k.min(self.ids.len()).min(256) + 1);
         // `r` as a measure: not always one whose distance is `r` (a square is rounded), so it
         // only decides comparisons `at_most` can decide from measures past its margin.
         let r_m = m.measure_of(r);
