@@ -7,7 +7,7 @@ import assert from 'node:assert/strict';
 import { join } from 'node:path';
 import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { pageFixture, ROOT, SHOTS as shots } from './browser.mjs';
+import { canvasPixels, pageFixture, ROOT, SHOTS as shots } from './browser.mjs';
 import { PALETTE } from '../../www/draw/palette.js';
 import { initSync, planners } from '../../www/pkg/planarium.js';
 
@@ -165,6 +165,77 @@ test('compare keeps scenario, both set-ups and the seed in the URL: a reload res
   await openCompare('#scenario=narrow&planner=rrt&seed=4&goal_bias=0.3');
   assert.deepEqual(await page.evaluate(() => window.planarium.config('a')), { planner: 'rrt', params: { goal_bias: 0.3 }, seed: 4 });
   assert.equal(await page.isVisible('#error'), false);
+});
+
+test('compare: the wheel over one lane zooms both about the same world point, a middle drag pans both, the link carries the zoom, Fit in the other lane fits both', async () => {
+  await openCompare('#scenario=narrow&a=rrt&b=rrt-connect&seed=3');
+  await setSpeed('max');
+  await page.click('#run');
+  await waitState('finished', 120000);
+  await fx.nextFrames();
+  const lanePoint = async (key, x, y) => {
+    const box = await page.locator(`#${key}-canvas`).boundingBox();
+    const [cx, cy] = await page.evaluate(([x, y, key]) => window.planarium.toCanvas(x, y, key), [x, y, key]);
+    return [box.x + cx, box.y + cy];
+  };
+  const settled = () => page.waitForFunction(() => ['a', 'b'].every((k) => window.planarium.viewport(k).settled), null, { timeout: 30000 });
+  const before = await canvasPixels(page, 'b-canvas');
+  assert.equal(await page.isVisible('#a-stage .plane-zoom'), false, 'no bar over a fitted lane');
+
+  // the wheel over the gap in lane A
+  const at = await lanePoint('a', 0.5, 0.5);
+  await page.mouse.move(...at);
+  await page.mouse.wheel(0, -800); // exp(800 · 0.0015) = 3.3×
+  await settled();
+  const [va, vb] = await page.evaluate(() => [window.planarium.viewport('a'), window.planarium.viewport('b')]);
+  assert.ok(va.zoom > 3 && va.zoom < 3.5, `lane A zoomed 3.3× (${va.zoom})`);
+  assert.deepEqual(vb.viewport, va.viewport, 'lane B shows the same region');
+  const [ax, ay] = await lanePoint('a', 0.5, 0.5);
+  // within 1.5 px: the lane's canvas sits at a fractional page position, and a wheel event's
+  // offsetX and offsetY are whole pixels
+  assert.ok(Math.abs(ax - at[0]) < 1.5 && Math.abs(ay - at[1]) < 1.5, `the point under the pointer stays there: (${ax}, ${ay}) against (${at[0]}, ${at[1]})`);
+  const inA = await page.evaluate(() => window.planarium.toCanvas(0.45, 0.55, 'a'));
+  const inB = await page.evaluate(() => window.planarium.toCanvas(0.45, 0.55, 'b'));
+  assert.ok(Math.hypot(inA[0] - inB[0], inA[1] - inB[1]) < 1e-6, `a world point sits at the same place in both lanes: ${inA} and ${inB}`);
+  assert.equal(await page.isVisible('#a-stage .plane-zoom'), true);
+  assert.match(await page.textContent('#b-stage [data-zoom="fit"]'), /^Fit \(3\.\d×\)$/);
+  const zoomed = await canvasPixels(page, 'b-canvas');
+  let changed = 0;
+  for (let i = 0; i < zoomed.data.length; i += 4) if (Math.abs(zoomed.data[i] - before.data[i]) > 60) changed++;
+  assert.ok(changed > zoomed.w * zoomed.h * 0.02, `lane B's picture is zoomed (${changed} pixels changed)`);
+  await page.screenshot({ path: join(shots, 'page-compare-zoom.png') });
+
+  // a middle drag in lane B pans both
+  const from = await lanePoint('b', 0.5, 0.5);
+  await page.mouse.move(...from);
+  await page.mouse.down({ button: 'middle' });
+  for (let i = 1; i <= 4; i++) await page.mouse.move(from[0] + 10 * i, from[1] + 5 * i);
+  await page.mouse.up({ button: 'middle' });
+  await settled();
+  const [pa, pb] = await page.evaluate(() => [window.planarium.viewport('a'), window.planarium.viewport('b')]);
+  assert.ok(pa.viewport.cx < va.viewport.cx && pa.viewport.cy > va.viewport.cy, 'dragged right and down, both look left and up');
+  assert.deepEqual(pb.viewport, pa.viewport);
+
+  // the link carries it: a fresh page opens both lanes at the same zoom and centre
+  // (written 200 ms after the last move)
+  await page.waitForFunction(() => {
+    const m = /[#&]zoom=([^&]*)/.exec(location.hash);
+    const v = window.planarium.viewport('a').viewport;
+    return m && v && decodeURIComponent(m[1]).split(',').every((x, i) => Math.abs(Number(x) - [v.zoom, v.cx, v.cy][i]) < 1e-9);
+  });
+  const link = await page.evaluate(() => location.hash);
+  await openCompare(link);
+  await page.waitForFunction(() => window.planarium.viewport('b').viewport !== null);
+  for (const key of ['a', 'b']) {
+    const v = (await page.evaluate((k) => window.planarium.viewport(k), key)).viewport;
+    for (const k of ['zoom', 'cx', 'cy']) assert.ok(Math.abs(v[k] - pa.viewport[k]) < 1e-9, `lane ${key} reopened at ${k} ${v[k]} (was ${pa.viewport[k]})`);
+  }
+
+  // Fit in lane B fits both
+  await page.click('#b-stage [data-zoom="fit"]');
+  assert.deepEqual(await page.evaluate(() => [window.planarium.viewport('a').viewport, window.planarium.viewport('b').viewport]), [null, null]);
+  await page.waitForFunction(() => !/[#&]zoom=/.test(location.hash));
+  assert.equal(await page.isVisible('#b-stage .plane-zoom'), false);
 });
 
 test('compare: the playground\'s link to an opened scenario opens here and in Benchmark; Open file… loads a file in both lanes, the link carries it, a reload keeps it; a bad file is named', async () => {

@@ -34,6 +34,7 @@ import { setupLine, readPageState, checkSetups, pageHash, playgroundLink, readCh
 import { shown } from '../ui/text.js';
 import { MAX_SEED, readSeed, blockSeedProblem } from '../ui/seed.js';
 import { ScenarioSource } from '../run/scenario-source.js';
+import { wirePlaneZoom, zoomBar } from '../ui/plane-zoom.js';
 
 /**
  * The page's element `id`. Its kind is the HTML's (input, select, button, canvas, dialog…), so it
@@ -108,6 +109,9 @@ function makeSide(key) {
   });
   // the canvas follows its box
   const stage = $(`${key}-stage`);
+  // the plane's zoom bar (− Fit +), shown once zoomed in (wired with the other lane's below)
+  side.zoomBar = zoomBar();
+  stage.append(side.zoomBar);
   const fit = () => {
     const r = stage.getBoundingClientRect();
     $(`${key}-canvas`).hidden = view3d.active;
@@ -123,6 +127,28 @@ function makeSide(key) {
 }
 
 const sides = [makeSide('a'), makeSide('b')];
+
+// Zoom and pan on the plane (ui/plane-zoom.js: wheel, middle drag, pinch, − Fit +, keys over a
+// lane), both lanes together: the same region of the same scenario side by side, in the link.
+let linking = false;
+let zoomHash = 0;
+for (const s of sides) {
+  wirePlaneZoom({
+    canvas: $(`${s.key}-canvas`), view: s.view, bar: s.zoomBar,
+    onChange: () => {
+      if (!linking) {
+        linking = true;
+        try {
+          for (const o of sides) if (o !== s) o.view.setViewport(s.view.viewport);
+        } finally {
+          linking = false;
+        }
+      }
+      clearTimeout(zoomHash);
+      zoomHash = setTimeout(writeHash, 200);
+    },
+  });
+}
 
 function onReady(side, msg) {
   side.ready = true;
@@ -231,6 +257,7 @@ function applyRestore({ share, own }, scenario) {
     seed = share.seed;
     ui.seed.value = String(seed);
   }
+  if (share.view.zoom) sides[0].view.setViewport(share.view.zoom); // the other lane follows
   if (problems.length) showError(`This link has problems:\n${problems.join('\n')}`);
 }
 
@@ -273,7 +300,7 @@ async function writeHash() {
   const gen = ++hashGen;
   const from = src.linkSource();
   const [a, b] = sides.map(lineOf);
-  const hash = await pageHash(from, [['a', a], ['b', b], ['seed', seed]], registry, encoded);
+  const hash = await pageHash(from, [['a', a], ['b', b], ['seed', seed]], registry, encoded, { zoom: sides[0].view.viewport });
   const bench = await pageHash(from, [['setups', `A: ${a}\nB: ${b}`], ['runs', SEEDS]], registry, encoded);
   const play = await playgroundLink(from, setupOf(sides[0]), registry, encoded);
   if (gen !== hashGen) return;
@@ -579,6 +606,10 @@ Object.defineProperty(window, 'planarium', {
     /** A lane's 3-D view: {active, ready, error}; how many of its pixels are near each colour. */
     view3d: (key = 'a') => { const v = laneOf(key).view3d; return { active: v.active, ready: !!v.view?.matrices, error: v.error }; },
     view3dColours: (key, colours, tol) => laneOf(key).view3d.view?.countColours(colours, tol) ?? null,
+    /** Css px within a lane's canvas of the world point (x, y), or null. */
+    toCanvas: (x, y, key = 'a') => { const L = laneOf(key).view.layout; return L ? [L.sx(x) / L.dpr, L.sy(y) / L.dpr] : null; },
+    /** A lane's plane zoom and centre (null: fitted), and whether its layers are drawn at what it shows. */
+    viewport: (key = 'a') => { const v = laneOf(key).view; return { zoom: v.zoom, viewport: v.viewport && { ...v.viewport }, settled: v.settled }; },
   }),
   writable: false,
   configurable: false,

@@ -119,15 +119,17 @@ export function coreError(e) {
 }
 
 /**
- * The page's hash: `scenario` ({id} or {text}) and the page's own pairs `extra` [[key, value]].
+ * The page's hash: `scenario` ({id} or {text}), the page's own pairs `extra` [[key, value]] and
+ * what the views show `view` (the playground's grammar: the plane's `zoom`).
  * @param {{id?: string, text?: string}} scenario
  * @param {[string, string | number][]} extra
  * @param {object} registry
  * @param {Map<string, string>} [cache] encoded scenario texts
+ * @param {{zoom?: {zoom: number, cx: number, cy: number} | null}} [view]
  * @returns {Promise<string>}
  */
-export function pageHash(scenario, extra, registry, cache) {
-  return writeShare({ scenario, extra }, registry, cache);
+export function pageHash(scenario, extra, registry, cache, view = {}) {
+  return writeShare({ scenario, extra, view }, registry, cache);
 }
 
 /**
