@@ -34,7 +34,7 @@ import { setupLine, readPageState, checkSetups, pageHash, playgroundLink, readCh
 import { shown } from '../ui/text.js';
 import { MAX_SEED, readSeed, blockSeedProblem } from '../ui/seed.js';
 import { ScenarioSource } from '../run/scenario-source.js';
-import { wirePlaneZoom, zoomBar } from '../ui/plane-zoom.js';
+import { wireLinkedZoom, wireLaneTabs } from '../ui/lanes.js';
 
 /**
  * The page's element `id`. Its kind is the HTML's (input, select, button, canvas, dialog…), so it
@@ -109,9 +109,6 @@ function makeSide(key) {
   });
   // the canvas follows its box
   const stage = $(`${key}-stage`);
-  // the plane's zoom bar (− Fit +), shown once zoomed in (wired with the other lane's below)
-  side.zoomBar = zoomBar();
-  stage.append(side.zoomBar);
   const fit = () => {
     const r = stage.getBoundingClientRect();
     $(`${key}-canvas`).hidden = view3d.active;
@@ -128,27 +125,8 @@ function makeSide(key) {
 
 const sides = [makeSide('a'), makeSide('b')];
 
-// Zoom and pan on the plane (ui/plane-zoom.js: wheel, middle drag, pinch, − Fit +, keys over a
-// lane), both lanes together: the same region of the same scenario side by side, in the link.
-let linking = false;
-let zoomHash = 0;
-for (const s of sides) {
-  wirePlaneZoom({
-    canvas: $(`${s.key}-canvas`), view: s.view, bar: s.zoomBar,
-    onChange: () => {
-      if (!linking) {
-        linking = true;
-        try {
-          for (const o of sides) if (o !== s) o.view.setViewport(s.view.viewport);
-        } finally {
-          linking = false;
-        }
-      }
-      clearTimeout(zoomHash);
-      zoomHash = setTimeout(writeHash, 200);
-    },
-  });
-}
+// Zoom and pan on the plane, both lanes together, in the link (ui/lanes.js)
+wireLinkedZoom(sides.map((s) => ({ canvas: $(`${s.key}-canvas`), view: s.view, stage: $(`${s.key}-stage`) })), () => writeHash());
 
 function onReady(side, msg) {
   side.ready = true;
@@ -527,22 +505,8 @@ wireLanesAnimations({
 });
 ui.seedsCancel.addEventListener('click', () => stopSeeds('Cancelled.'));
 
-// A phone: the lanes as tabs A / B
-function showTab(key) {
-  ui.lanes.dataset.tab = key;
-  ui.tabA.setAttribute('aria-selected', String(key === 'a'));
-  ui.tabB.setAttribute('aria-selected', String(key === 'b'));
-}
-ui.tabA.addEventListener('click', () => showTab('a'));
-ui.tabB.addEventListener('click', () => showTab('b'));
-for (const tab of [ui.tabA, ui.tabB]) {
-  tab.addEventListener('keydown', (e) => {
-    if (e.key !== 'ArrowLeft' && e.key !== 'ArrowRight') return;
-    const next = tab === ui.tabA ? ui.tabB : ui.tabA;
-    showTab(next === ui.tabA ? 'a' : 'b');
-    next.focus();
-  });
-}
+// A phone: the lanes as tabs A / B (ui/lanes.js)
+wireLaneTabs({ lanes: ui.lanes, tabA: ui.tabA, tabB: ui.tabB });
 
 ui.seed.addEventListener('change', () => {
   const r = readSeed(ui.seed.value);
