@@ -152,12 +152,26 @@ impl Problem {
     /// so an edge is drawn as the curve the tool really sweeps; empty for other robots or a motion
     /// of more than [`limits::MAX_MOTION_STEPS`] steps.
     pub fn tool_steps(&self, a: &[Real], b: &[Real]) -> Vec<[Real; 3]> {
+        self.tool_steps_spread(a, b, usize::MAX)
+    }
+
+    /// [`tool_steps`](Problem::tool_steps), at most `most` of them (at least 1), evenly spread:
+    /// of the `len` steps, step `k·(len − 1)/(most − 1)` rounded down for `k` in `0..most`, so
+    /// both ends are kept. Only those steps' kinematics are computed.
+    pub fn tool_steps_spread(&self, a: &[Real], b: &[Real], most: usize) -> Vec<[Real; 3]> {
         let Some(sp) = self.robot.spatial() else { return Vec::new() };
         let d = self.si.distance(a, b);
         let Some(n) = limits::steps(d, self.si.resolution, limits::MAX_MOTION_STEPS) else { return Vec::new() };
+        let len = n + 1;
+        let kept = len.min(most.max(1));
         let mut q = vec![0.0; a.len()];
-        (0..=n)
-            .map(|k| {
+        (0..kept)
+            .map(|j| {
+                let k = match kept {
+                    1 => n,
+                    _ if kept == len => j,
+                    _ => (j as u64 * n as u64 / (kept - 1) as u64) as usize,
+                };
                 let t = if k == n || d == 0.0 { 1.0 } else { (k as Real * self.si.resolution / d).min(1.0) };
                 self.si.interpolate(a, b, t, &mut q);
                 sp.tool_point(&q)
@@ -199,14 +213,11 @@ impl Problem {
         let mut out = Vec::new();
         for e in log.data.chunks_exact(stride) {
             let (q, pq) = (&e[4..4 + dims], &e[4 + dims..]);
-            let pts = if e[3] < 0.0 { vec![sp.tool_point(q)] } else { self.tool_steps(pq, q) };
+            let pts = if e[3] < 0.0 { vec![sp.tool_point(q)] } else { self.tool_steps_spread(pq, q, most) };
             let pts = if pts.is_empty() { vec![sp.tool_point(q)] } else { pts };
-            let n = pts.len().min(most);
-            out.extend_from_slice(&[e[1], e[2], n as Real]);
-            for k in 0..n {
-                // k·(len − 1)/(n − 1), rounded down: 0 first, the last point last.
-                let i = if n == 1 { pts.len() - 1 } else { k * (pts.len() - 1) / (n - 1) };
-                out.extend_from_slice(&pts[i]);
+            out.extend_from_slice(&[e[1], e[2], pts.len() as Real]);
+            for p in &pts {
+                out.extend_from_slice(p);
             }
         }
         out

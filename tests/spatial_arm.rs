@@ -110,6 +110,30 @@ fn tool_steps_follow_the_connect() {
     assert!(n.tool_steps(&[0.1, 0.5], &[0.2, 0.5]).is_empty() && n.robot.spatial().is_none());
 }
 
+/// The 3-D view's edges keep at most a few of a motion's steps: those computed alone are the very
+/// points of the whole curve at `k·(len − 1)/(most − 1)`, both ends kept, bit for bit.
+#[test]
+fn tool_steps_spread_are_the_curves_own_points() {
+    let (sc, p) = puma("puma-rbo-wall");
+    let goal = sc.goal.clone().unwrap();
+    let mid: Vec<f64> = sc.start.iter().zip(&goal).map(|(a, b)| a + 0.013 * (b - a)).collect();
+    for (a, b) in [(&sc.start, &goal), (&sc.start, &mid), (&goal, &sc.start)] {
+        let all = p.tool_steps(a, b);
+        let len = all.len();
+        assert!(len > 1);
+        for most in [1, 2, 3, 7, 32, len - 1, len, len + 5] {
+            let kept = p.tool_steps_spread(a, b, most);
+            let want: Vec<[f64; 3]> = if most == 1 {
+                vec![all[len - 1]]
+            } else {
+                let n = most.min(len);
+                (0..n).map(|k| all[k * (len - 1) / (n - 1)]).collect()
+            };
+            assert_eq!(kept, want, "{most} of {len}");
+        }
+    }
+}
+
 /// The checker's kinematics (its own 4×4 matrices) puts the Puma's link frames where rl's display
 /// file does at q = 0, agrees with the product's skeleton at random states, and puts the course's
 /// tool in front of the wall at the start and behind it at the goal; the checker calls both

@@ -101,6 +101,22 @@ const ready = init().then(() => {
          eventKinds: JSON.parse(event_kinds()), robotKinds: JSON.parse(robot_kinds()) });
 });
 
+/**
+ * Run `f` as the worker's next task, once it has read the messages already queued: a message on a
+ * channel of its own, not `setTimeout(f, 0)`, which browsers clamp to 4 ms once timers nest five
+ * deep, so every 12 ms batch of a run waited 4 ms idle (measured in headless chromium: 100 batches
+ * of 12 ms took 1.6 s by timers, 1.21 s by the channel; a page's message still waits at most one
+ * batch, both being message tasks).
+ * @type {(f: () => void) => void}
+ */
+const nextTask = (() => {
+  const channel = new MessageChannel();
+  /** @type {Array<() => void>} */
+  const queue = [];
+  channel.port1.onmessage = () => { queue.shift()?.(); };
+  return (f) => { queue.push(f); channel.port2.postMessage(null); };
+})();
+
 /** @param {WorkerOut} msg @param {Transferable[]} [transfer] */
 function post(msg, transfer = []) {
   self.postMessage(msg, transfer);
@@ -183,7 +199,7 @@ function loop(id) {
   guarded(() => {
     const status = run.step(1e9, BATCH_MS);
     flush(status);
-    if (status === 'running') setTimeout(() => loop(id), 0);
+    if (status === 'running') nextTask(() => loop(id));
   });
 }
 
@@ -199,7 +215,7 @@ function stepLoop(token) {
     const status = run.step(Math.max(0, stepping.target - before), BATCH_MS);
     const after = JSON.parse(run.stats_json()).iterations;
     if (status === 'running' && after < stepping.target) {
-      setTimeout(() => stepLoop(token), 0);
+      nextTask(() => stepLoop(token));
       return;
     }
     stepping = null;
@@ -307,7 +323,7 @@ function handle(msg) {
       if (!running) {
         running = true;
         const id = runId;
-        setTimeout(() => loop(id), 0);
+        nextTask(() => loop(id));
       }
       return;
     case 'pause':
