@@ -7,7 +7,9 @@
 //! the next best thing, which is exact because planners are deterministic:
 //!
 //! 1. At the start of a bounded batch the session keeps a snapshot of everything an iteration
-//!    changes (the planner, the generator, the sampler, the event count, the check count).
+//!    changes (the planner, the generator, the sampler, the event count, the check count). The
+//!    planner's is its [`Checkpoint`](crate::planners::Checkpoint): a copy, or, for RRT and
+//!    RRT-Connect, whose trees only grow, a mark of each tree that it can rewind to.
 //! 2. While the batch runs, every expensive question the planner asks [`SpaceInfo`] (a state
 //!    check, a clearance, a sight line, a robot's own sample, a whole motion check) is *recorded*
 //!    here with its answer.

@@ -1,8 +1,11 @@
 use crate::math::{MinMax, Real};
 use crate::space::StateSpace;
 
+mod mark;
 mod measure;
 
+use mark::Journal;
+pub use mark::KdMark;
 use measure::{at_most, offer, Exact, Measure, Squared};
 
 const NONE: u32 = u32::MAX;
@@ -42,6 +45,8 @@ pub struct KdTree {
     stack: Vec<(u32, Real)>,
     /// The query's embedding (when keys are embeddings).
     qemb: Vec<Real>,
+    /// What changed since [`KdTree::mark`], while marked (to go back to it: `mark.rs`).
+    journal: Option<Box<Journal>>,
 }
 
 impl KdTree {
@@ -149,6 +154,7 @@ impl KdTree {
         self.right.push(NONE);
         self.split.push(0);
         if n + 1 >= self.next_rebuild {
+            self.keep_links_before_rebuild();
             self.rebuild(space);
             self.next_rebuild = (n + 1) * 2;
             return;
@@ -168,6 +174,9 @@ impl KdTree {
             let go_left = self.keys[at + s] < self.keys[cur * d + s];
             let child = if go_left { self.left[cur] } else { self.right[cur] };
             if child == NONE {
+                if let Some(j) = &mut self.journal {
+                    j.linked.push(cur as u32);
+                }
                 self.split[n] = ((s + 1) % d) as u8;
                 if go_left {
                     self.left[cur] = n as u32;

@@ -10,7 +10,7 @@
 
 mod kdtree;
 
-pub use kdtree::KdTree;
+pub use kdtree::{KdMark, KdTree};
 
 #[cfg(test)]
 mod tests;

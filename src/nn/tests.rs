@@ -235,3 +235,43 @@ fn root_certainly_above_never_claims_what_rounding_undoes() {
     assert!(!root_certainly_above(1.0, 1.0));
     assert!(!root_certainly_above(Real::NAN, 1.0));
 }
+
+/// A tree marked, grown past the mark (across rebuilds, or not), and rewound answers every query
+/// as a tree of the points before the mark does: the same ids at the same distances, bit for bit,
+/// and it goes on growing as that tree would.
+#[test]
+fn a_tree_rewound_to_its_mark_answers_as_the_tree_it_was() {
+    let s = StateSpace { dims: vec![Dim { lo: 0.0, hi: 1.0, wraps: false }; 3], metric: Metric::Euclidean };
+    let mut rng = Rng::new(7);
+    let point = |rng: &mut Rng| {
+        let mut q = vec![0.0; 3];
+        s.sample_uniform(rng, &mut q);
+        q
+    };
+    // marks before the first rebuild (scan mode), just before a rebuild, and in between
+    for (before, after) in [(10, 100), (63, 2), (63, 300), (100, 5), (100, 1000), (1500, 1)] {
+        let (mut t, mut fresh) = (KdTree::new(3), KdTree::new(3));
+        for i in 0..before {
+            let q = point(&mut rng);
+            t.add(&s, &q, i);
+            fresh.add(&s, &q, i);
+        }
+        let mark = t.mark();
+        for i in 0..after {
+            t.add(&s, &point(&mut rng), before + i);
+        }
+        t.rewind(mark);
+        assert_eq!(t.len(), before as usize);
+        // both grow on by the same points after the rewind; the same answers all along
+        for i in 0..200u32 {
+            let q = point(&mut rng);
+            assert_eq!(t.nearest(&s, &q), fresh.nearest(&s, &q), "{before} + {after}: nearest");
+            assert_eq!(t.k_nearest(&s, &q, 5), fresh.k_nearest(&s, &q, 5), "{before} + {after}: 5 nearest");
+            assert_eq!(t.within(&s, &q, 0.2), fresh.within(&s, &q, 0.2), "{before} + {after}: within 0.2");
+            if i % 2 == 0 {
+                t.add(&s, &q, before + 10_000 + i);
+                fresh.add(&s, &q, before + 10_000 + i);
+            }
+        }
+    }
+}

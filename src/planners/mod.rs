@@ -207,6 +207,14 @@ pub struct RoadmapCounts {
     pub edges: u64,
 }
 
+/// What a bounded batch keeps to go back to ([`Planner::checkpoint`]).
+pub enum Checkpoint {
+    /// A copy of the whole planner.
+    Whole(Box<dyn Planner>),
+    /// The planner's own mark, for its [`Planner::rewind`].
+    Mark(Box<dyn std::any::Any>),
+}
+
 /// A planner, advanced one iteration at a time.
 pub trait Planner {
     /// Run one iteration; `Some(path)` when it found a solution (start first, goal last).
@@ -214,6 +222,18 @@ pub trait Planner {
     /// A copy of the planner as it stands (the session keeps one at the start of a bounded batch,
     /// to go back to when the batch is suspended: see [`crate::journal`]).
     fn snapshot(&self) -> Box<dyn Planner>;
+    /// What a bounded batch keeps at its start to go back to: by default a [`snapshot`](Self::snapshot);
+    /// a planner whose state between iterations only grows may mark itself instead, noting what
+    /// changes, and go back by [`rewind`](Self::rewind), far cheaper than a copy of its trees.
+    fn checkpoint(&mut self) -> Checkpoint {
+        Checkpoint::Whole(self.snapshot())
+    }
+    /// Back to the state of this planner's own [`Checkpoint::Mark`], the last it made.
+    fn rewind(&mut self, _mark: Box<dyn std::any::Any>) {
+        unreachable!("a planner that marks itself rewinds itself")
+    }
+    /// The batch ended without going back: forget the mark (a planner that marks itself).
+    fn release(&mut self) {}
     /// Nodes in all trees.
     fn node_count(&self) -> usize;
     /// Roadmap planners: the edges checked and those in the roadmap (`None` for the others).

@@ -25,8 +25,10 @@
 //! through the same [`Tree::select`] and books.
 
 mod last_free;
+mod mark;
 
 pub use last_free::{LastFreeSteps, MAX_LAST_FREE_STEPS};
+pub use mark::TreeMark;
 
 use super::{Context, ParamGroup, ParamSpec, Params};
 use crate::events::EventKind;
@@ -127,6 +129,8 @@ pub struct Tree {
     ladder_buf: Vec<Real>,
     /// Whether the last growth step was a ladder step.
     slid: bool,
+    /// While marked ([`Tree::mark`]): the parents re-attached since, with their parents before.
+    reattached: Option<Vec<(u32, u32)>>,
 }
 
 /// The most steps one CONNECT takes (every step makes progress; this bounds an iteration's time).
@@ -157,6 +161,7 @@ impl Tree {
             dist: Vec::new(),
             ladder_buf: Vec::new(),
             slid: false,
+            reattached: None,
         };
         t.add(cx, root, ROOT);
         cx.nodes_left = cx.nodes_left.saturating_sub(1);
@@ -256,6 +261,9 @@ impl Tree {
     }
     /// Re-attach node `i` under `parent` (rewiring; the caller keeps the tree acyclic).
     pub fn set_parent(&mut self, i: u32, parent: u32) {
+        if let Some(log) = &mut self.reattached {
+            log.push((i, self.parents[i as usize]));
+        }
         self.parents[i as usize] = parent;
     }
     /// A node's dynamic-domain radius (∞ when it has none or domains are off).

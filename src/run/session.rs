@@ -3,7 +3,7 @@ use crate::events::EventLog;
 use crate::limits::MAX_RUN_BYTES;
 use crate::math::Real;
 use crate::planners::{
-    self, smoothing, Context, InspectionTask, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind,
+    self, smoothing, Checkpoint, Context, InspectionTask, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind,
 };
 use crate::problem::Problem;
 use crate::rng::Rng;
@@ -43,7 +43,7 @@ pub const RISKY_BATCHES: u32 = 64;
 
 /// What a bounded batch changes, kept at its start to go back to when it is suspended.
 struct Snapshot {
-    planner: Box<dyn Planner>,
+    planner: Checkpoint,
     rng: Rng,
     sampler: Sampler,
     events: usize,
@@ -252,7 +252,7 @@ impl Session {
             return status;
         }
         let kept = Snapshot {
-            planner: self.planner.snapshot(),
+            planner: self.planner.checkpoint(),
             rng: self.rng.clone(),
             sampler: self.sampler.clone(),
             events: self.events.len(),
@@ -272,7 +272,10 @@ impl Session {
         };
         if suspended {
             // Back to the batch's start; the next batch replays it from the journal.
-            self.planner = kept.planner;
+            match kept.planner {
+                Checkpoint::Whole(planner) => self.planner = planner,
+                Checkpoint::Mark(mark) => self.planner.rewind(mark),
+            }
             self.rng = kept.rng;
             self.sampler = kept.sampler;
             self.events.truncate(kept.events);
@@ -287,6 +290,9 @@ impl Session {
             self.repaired = None;
             self.suspensions += 1;
             return self.status;
+        }
+        if let Checkpoint::Mark(_) = kept.planner {
+            self.planner.release();
         }
         status
     }

@@ -13,8 +13,10 @@ use crate::events::EventKind;
 use crate::math::Real;
 use crate::planners::caps::{self, Capabilities, Draws, Family};
 use crate::planners::tree::MAX_CONNECT_STEPS;
-use crate::planners::tree::{TreeOptions, TREE_GROUP};
-use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
+use crate::planners::tree::{TreeMark, TreeOptions, TREE_GROUP};
+use crate::planners::{
+    Checkpoint, Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree,
+};
 use crate::sampler::SAMPLER_GROUP;
 use crate::space_info::SpaceInfo;
 use crate::status::Grow;
@@ -92,6 +94,27 @@ impl Rrt {
 impl Planner for Rrt {
     fn snapshot(&self) -> Box<dyn Planner> {
         Box::new(self.clone())
+    }
+    /// Its few numbers copied, its tree marked (it only grows: [`Tree::mark`]).
+    fn checkpoint(&mut self) -> Checkpoint {
+        let tree = self.tree.take();
+        let rest = self.clone();
+        self.tree = tree;
+        Checkpoint::Mark(Box::new((rest, self.tree.as_mut().map(Tree::mark))))
+    }
+    fn rewind(&mut self, mark: Box<dyn std::any::Any>) {
+        let (rest, mark) = *mark.downcast::<(Rrt, Option<TreeMark>)>().expect("RRT's own mark");
+        let tree = match (self.tree.take(), mark) {
+            (Some(mut tree), Some(mark)) => {
+                tree.rewind(mark);
+                Some(tree)
+            }
+            _ => None, // made in the batch: not there at its start
+        };
+        *self = Rrt { tree, ..rest };
+    }
+    fn release(&mut self) {
+        self.tree.iter_mut().for_each(Tree::release);
     }
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         let opts = self.opts;

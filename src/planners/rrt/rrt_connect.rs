@@ -30,8 +30,10 @@ use super::{resolve_range, RANGE};
 use crate::events::EventKind;
 use crate::math::Real;
 use crate::planners::caps::{self, Capabilities, Draws, Family};
-use crate::planners::tree::{TreeOptions, CONNECT_TREE_GROUP};
-use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
+use crate::planners::tree::{TreeMark, TreeOptions, CONNECT_TREE_GROUP};
+use crate::planners::{
+    Checkpoint, Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree,
+};
 use crate::sampler::SAMPLER_GROUP;
 use crate::space_info::SpaceInfo;
 use crate::status::Grow;
@@ -135,6 +137,26 @@ impl RrtConnect {
 impl Planner for RrtConnect {
     fn snapshot(&self) -> Box<dyn Planner> {
         Box::new(self.clone())
+    }
+    /// Its few numbers copied, its trees marked (they only grow: [`Tree::mark`]).
+    fn checkpoint(&mut self) -> Checkpoint {
+        let trees = std::mem::take(&mut self.trees);
+        let rest = self.clone();
+        self.trees = trees;
+        let marks: Vec<TreeMark> = self.trees.iter_mut().map(Tree::mark).collect();
+        Checkpoint::Mark(Box::new((rest, marks)))
+    }
+    fn rewind(&mut self, mark: Box<dyn std::any::Any>) {
+        let (rest, marks) = *mark.downcast::<(RrtConnect, Vec<TreeMark>)>().expect("RRT-Connect's own mark");
+        let mut trees = std::mem::take(&mut self.trees);
+        trees.truncate(marks.len());
+        for (tree, mark) in trees.iter_mut().zip(marks) {
+            tree.rewind(mark);
+        }
+        *self = RrtConnect { trees, ..rest };
+    }
+    fn release(&mut self) {
+        self.trees.iter_mut().for_each(Tree::release);
     }
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         if self.trees.is_empty() {
