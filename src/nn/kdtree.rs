@@ -33,20 +33,26 @@ pub struct KdTree {
     /// Flat keys, `kd` per point, in insertion order.
     keys: Vec<Real>,
     ids: Vec<u32>,
-    /// Per point: split dimension, children.
-    split: Vec<u8>,
-    left: Vec<u32>,
-    right: Vec<u32>,
-    /// Per point: bounding box of its subtree, in key coordinates (flat, `kd` per point).
-    lo: Vec<Real>,
-    hi: Vec<Real>,
-    root: u32,
+    /// The tree over the points.
+    links: Links,
     next_rebuild: usize,
     stack: Vec<(u32, Real)>,
     /// The query's embedding (when keys are embeddings).
     qemb: Vec<Real>,
     /// What changed since [`KdTree::mark`], while marked (to go back to it: `mark.rs`).
     journal: Option<Box<Journal>>,
+}
+
+/// The tree over a [`KdTree`]'s points: per point its split dimension, children, and the bounding
+/// box of its subtree (in key coordinates, flat, `kd` per point); and the root.
+#[derive(Clone, Debug, Default)]
+struct Links {
+    split: Vec<u8>,
+    left: Vec<u32>,
+    right: Vec<u32>,
+    lo: Vec<Real>,
+    hi: Vec<Real>,
+    root: u32,
 }
 
 impl KdTree {
@@ -56,15 +62,20 @@ impl KdTree {
         use crate::limits::bytes_of;
         bytes_of(&self.keys)
             + bytes_of(&self.ids)
-            + bytes_of(&self.split)
-            + bytes_of(&self.left)
-            + bytes_of(&self.right)
-            + bytes_of(&self.lo)
-            + bytes_of(&self.hi)
+            + bytes_of(&self.links.split)
+            + bytes_of(&self.links.left)
+            + bytes_of(&self.links.right)
+            + bytes_of(&self.links.lo)
+            + bytes_of(&self.links.hi)
     }
     /// An empty tree of `dims`-dimensional states.
     pub fn new(dims: usize) -> Self {
-        KdTree { dims, root: NONE, next_rebuild: LEAF_SCAN, ..Default::default() }
+        KdTree {
+            dims,
+            links: Links { root: NONE, ..Default::default() },
+            next_rebuild: LEAF_SCAN,
+            ..Default::default()
+        }
     }
     /// Number of points.
     pub fn len(&self) -> usize {
@@ -99,7 +110,7 @@ impl KdTree {
     #[inline(always)]
     fn box_bound(&self, space: &StateSpace, qk: &[Real], c: usize) -> Real {
         let kd = self.kd;
-        let (lo, hi) = (&self.lo[c * kd..(c + 1) * kd], &self.hi[c * kd..(c + 1) * kd]);
+        let (lo, hi) = (&self.links.lo[c * kd..(c + 1) * kd], &self.links.hi[c * kd..(c + 1) * kd]);
         if self.plain {
             crate::space::plain_box_lower_bound(qk, lo, hi)
         } else if self.embedded {
@@ -148,40 +159,40 @@ impl KdTree {
             self.keys.extend_from_slice(q);
         }
         self.ids.push(id);
-        self.lo.extend_from_slice(&self.keys[at..]);
-        self.hi.extend_from_slice(&self.keys[at..]);
-        self.left.push(NONE);
-        self.right.push(NONE);
-        self.split.push(0);
+        self.links.lo.extend_from_slice(&self.keys[at..]);
+        self.links.hi.extend_from_slice(&self.keys[at..]);
+        self.links.left.push(NONE);
+        self.links.right.push(NONE);
+        self.links.split.push(0);
         if n + 1 >= self.next_rebuild {
             self.keep_links_before_rebuild();
             self.rebuild(space);
             self.next_rebuild = (n + 1) * 2;
             return;
         }
-        if self.root == NONE {
+        if self.links.root == NONE {
             return; // still in linear-scan mode
         }
         let d = self.kd;
-        let mut cur = self.root as usize;
+        let mut cur = self.links.root as usize;
         loop {
             for k in 0..d {
                 let v = self.keys[at + k];
-                self.lo[cur * d + k] = self.lo[cur * d + k].at_most(v);
-                self.hi[cur * d + k] = self.hi[cur * d + k].at_least(v);
+                self.links.lo[cur * d + k] = self.links.lo[cur * d + k].at_most(v);
+                self.links.hi[cur * d + k] = self.links.hi[cur * d + k].at_least(v);
             }
-            let s = self.split[cur] as usize;
+            let s = self.links.split[cur] as usize;
             let go_left = self.keys[at + s] < self.keys[cur * d + s];
-            let child = if go_left { self.left[cur] } else { self.right[cur] };
+            let child = if go_left { self.links.left[cur] } else { self.links.right[cur] };
             if child == NONE {
                 if let Some(j) = &mut self.journal {
                     j.linked.push(cur as u32);
                 }
-                self.split[n] = ((s + 1) % d) as u8;
+                self.links.split[n] = ((s + 1) % d) as u8;
                 if go_left {
-                    self.left[cur] = n as u32;
+                    self.links.left[cur] = n as u32;
                 } else {
-                    self.right[cur] = n as u32;
+                    self.links.right[cur] = n as u32;
                 }
                 return;
             }
@@ -191,7 +202,7 @@ impl KdTree {
 
     fn rebuild(&mut self, space: &StateSpace) {
         let mut order: Vec<u32> = (0..self.ids.len() as u32).collect();
-        self.root = self.build(space, &mut order);
+        self.links.root = self.build(space, &mut order);
     }
 
     fn build(&mut self, space: &StateSpace, idx: &mut [u32]) -> u32 {
@@ -229,11 +240,11 @@ impl KdTree {
         let (left, rest) = idx.split_at_mut(mid);
         let l = self.build(space, left);
         let r = self.build(space, &mut rest[1..]);
-        self.split[m] = s as u8;
-        self.left[m] = l;
-        self.right[m] = r;
-        self.lo[m * d..(m + 1) * d].copy_from_slice(&lo);
-        self.hi[m * d..(m + 1) * d].copy_from_slice(&hi);
+        self.links.split[m] = s as u8;
+        self.links.left[m] = l;
+        self.links.right[m] = r;
+        self.links.lo[m * d..(m + 1) * d].copy_from_slice(&lo);
+        self.links.hi[m * d..(m + 1) * d].copy_from_slice(&hi);
         m as u32
     }
 
@@ -247,7 +258,7 @@ impl KdTree {
     pub fn nearest_where(&mut self, space: &StateSpace, q: &[Real], keep: impl Fn(u32) -> bool) -> Option<(u32, Real)> {
         self.prepare(space, q);
         let mut stack = std::mem::take(&mut self.stack);
-        let best = match (self.plain && self.root != NONE, self.kd) {
+        let best = match (self.plain && self.links.root != NONE, self.kd) {
             // The robots' usual sizes (a point, a rigid body, a six-joint arm) with their loops
             // unrolled; any other size by the same code with the size read at run time.
             (true, 2) => self.search_plain::<2>(q, keep, &mut stack),
@@ -282,7 +293,7 @@ impl KdTree {
         keep: impl Fn(u32) -> bool,
         stack: &mut Vec<(u32, Real)>,
     ) -> Option<(u32, Real)> {
-        if self.root == NONE {
+        if self.links.root == NONE {
             let mut best: Option<(u32, Real)> = None;
             let mut best_i = usize::MAX;
             for i in 0..self.ids.len() {
@@ -327,7 +338,7 @@ impl KdTree {
         let mut best: Option<(u32, Real)> = None;
         let (mut best_i, mut best_m) = (usize::MAX, Real::INFINITY);
         stack.clear();
-        stack.push((self.root, 0.0));
+        stack.push((self.links.root, 0.0));
         while let Some((node, bound_m)) = stack.pop() {
             let i = node as usize;
             if let Some((_, bd)) = best {
@@ -346,11 +357,11 @@ impl KdTree {
                     }
                 }
             }
-            let s = self.split[i] as usize;
+            let s = self.links.split[i] as usize;
             let (near, far) = if qk[s] < self.keys[i * kd + s] {
-                (self.left[i], self.right[i])
+                (self.links.left[i], self.links.right[i])
             } else {
-                (self.right[i], self.left[i])
+                (self.links.right[i], self.links.left[i])
             };
             if far != NONE {
                 let b_m = m.node_box(far as usize);
@@ -387,7 +398,7 @@ impl KdTree {
         }
         self.prepare(space, q);
         let mut stack = std::mem::take(&mut self.stack);
-        let found = match (self.plain && self.root != NONE, self.kd) {
+        let found = match (self.plain && self.links.root != NONE, self.kd) {
             (true, 2) => self.collect_plain::<2>(q, k, r, &mut stack),
             (true, 3) => self.collect_plain::<3>(q, k, r, &mut stack),
             (true, 6) => self.collect_plain::<6>(q, k, r, &mut stack),
@@ -410,7 +421,7 @@ impl KdTree {
         stack: &mut Vec<(u32, Real)>,
     ) -> Vec<(Real, usize)> {
         let m = Exact { tree: self, space, qk };
-        if self.root == NONE {
+        if self.links.root == NONE {
             let mut found = Vec::new();
             for i in 0..self.ids.len() {
                 offer(&m, m.point(i), i, k, r, r, &mut found);
@@ -463,7 +474,7 @@ impl KdTree {
             }
         };
         stack.clear();
-        stack.push((self.root, 0.0));
+        stack.push((self.links.root, 0.0));
         while let Some((node, b)) = stack.pop() {
             if !within_bound(b, &found) {
                 continue;
@@ -471,11 +482,11 @@ impl KdTree {
             let i = node as usize;
             offer(m, m.point(i), i, k, r_m, r, &mut found);
             // Far side pushed first, so the near side is searched first and tightens the bound.
-            let s = self.split[i] as usize;
+            let s = self.links.split[i] as usize;
             let (near, far) = if qk[s] < self.keys[i * kd + s] {
-                (self.left[i], self.right[i])
+                (self.links.left[i], self.links.right[i])
             } else {
-                (self.right[i], self.left[i])
+                (self.links.right[i], self.links.left[i])
             };
             if far != NONE {
                 let cb = m.node_box(far as usize);

@@ -10,8 +10,7 @@
 //! is the nearest by (distance, insertion order), whatever the tree's shape or boxes, so the run
 //! after a rewind is the same, bit for bit (`tests/determinism.rs`, runs in suspended batches).
 
-use super::{KdTree, NONE};
-use crate::math::Real;
+use super::{KdTree, Links, NONE};
 
 /// Where a [`KdTree`] stood when marked ([`KdTree::mark`]).
 #[derive(Clone, Debug)]
@@ -26,20 +25,9 @@ pub struct KdMark {
 pub(super) struct Journal {
     /// Points whose child link was set (to a point added since the mark), in order.
     pub(super) linked: Vec<u32>,
-    /// The links and boxes as they were before the first rebuild since the mark.
-    before_rebuild: Option<Links>,
-}
-
-/// Every point's links and box, the root, and how many links had been noted when they were kept.
-#[derive(Clone, Debug)]
-struct Links {
-    split: Vec<u8>,
-    left: Vec<u32>,
-    right: Vec<u32>,
-    lo: Vec<Real>,
-    hi: Vec<Real>,
-    root: u32,
-    noted: usize,
+    /// The links and boxes as they were before the first rebuild since the mark, and how many
+    /// links had been noted then.
+    before_rebuild: Option<(Links, usize)>,
 }
 
 impl KdTree {
@@ -47,7 +35,7 @@ impl KdTree {
     /// [`release`](Self::release)) what insertions change is noted.
     pub fn mark(&mut self) -> KdMark {
         self.journal = Some(Box::default());
-        KdMark { len: self.ids.len(), root: self.root, next_rebuild: self.next_rebuild }
+        KdMark { len: self.ids.len(), root: self.links.root, next_rebuild: self.next_rebuild }
     }
 
     /// Forget the mark (nothing is noted any more).
@@ -60,33 +48,31 @@ impl KdTree {
     pub fn rewind(&mut self, mark: KdMark) {
         let journal = self.journal.take().unwrap_or_default();
         let mut noted = &journal.linked[..];
-        if let Some(links) = journal.before_rebuild {
-            noted = &journal.linked[..links.noted];
-            (self.split, self.left, self.right, self.lo, self.hi) =
-                (links.split, links.left, links.right, links.lo, links.hi);
-            self.root = links.root;
+        if let Some((links, linked)) = journal.before_rebuild {
+            noted = &journal.linked[..linked];
+            self.links = links;
         }
         let n = mark.len;
         for &p in noted {
             let p = p as usize;
             if p < n {
                 // a link to a point past the mark (NONE is past it too, and stays NONE)
-                if self.left[p] as usize >= n {
-                    self.left[p] = NONE;
-                }
-                if self.right[p] as usize >= n {
-                    self.right[p] = NONE;
+                for child in [&mut self.links.left[p], &mut self.links.right[p]] {
+                    if *child as usize >= n {
+                        *child = NONE;
+                    }
                 }
             }
         }
         self.keys.truncate(n * self.kd);
         self.ids.truncate(n);
-        self.split.truncate(n);
-        self.left.truncate(n);
-        self.right.truncate(n);
-        self.lo.truncate(n * self.kd);
-        self.hi.truncate(n * self.kd);
-        self.root = mark.root;
+        let links = &mut self.links;
+        links.split.truncate(n);
+        links.left.truncate(n);
+        links.right.truncate(n);
+        links.lo.truncate(n * self.kd);
+        links.hi.truncate(n * self.kd);
+        links.root = mark.root;
         self.next_rebuild = mark.next_rebuild;
     }
 
@@ -94,15 +80,7 @@ impl KdTree {
     pub(super) fn keep_links_before_rebuild(&mut self) {
         if let Some(j) = &mut self.journal {
             if j.before_rebuild.is_none() {
-                j.before_rebuild = Some(Links {
-                    split: self.split.clone(),
-                    left: self.left.clone(),
-                    right: self.right.clone(),
-                    lo: self.lo.clone(),
-                    hi: self.hi.clone(),
-                    root: self.root,
-                    noted: j.linked.len(),
-                });
+                j.before_rebuild = Some((self.links.clone(), j.linked.len()));
             }
         }
     }

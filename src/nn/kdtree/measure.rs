@@ -117,8 +117,8 @@ impl<const D: usize> Measure for Squared<'_, D> {
         let kd = if D > 0 { D } else { self.kd };
         crate::space::plain_box_lower_bound_sq(
             self.q,
-            &self.tree.lo[c * kd..c * kd + kd],
-            &self.tree.hi[c * kd..c * kd + kd],
+            &self.tree.links.lo[c * kd..c * kd + kd],
+            &self.tree.links.hi[c * kd..c * kd + kd],
         )
     }
     #[inline(always)]
