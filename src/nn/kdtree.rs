@@ -60,13 +60,14 @@ impl KdTree {
     /// [`Planner::stored_bytes`](crate::planners::Planner::stored_bytes)).
     pub fn bytes(&self) -> usize {
         use crate::limits::bytes_of;
+        let Links { split, left, right, lo, hi, .. } = &self.links;
         bytes_of(&self.keys)
             + bytes_of(&self.ids)
-            + bytes_of(&self.links.split)
-            + bytes_of(&self.links.left)
-            + bytes_of(&self.links.right)
-            + bytes_of(&self.links.lo)
-            + bytes_of(&self.links.hi)
+            + bytes_of(split)
+            + bytes_of(left)
+            + bytes_of(right)
+            + bytes_of(lo)
+            + bytes_of(hi)
     }
     /// An empty tree of `dims`-dimensional states.
     pub fn new(dims: usize) -> Self {

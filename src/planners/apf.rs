@@ -59,6 +59,7 @@ use crate::journal::Entry;
 use crate::math::Real;
 use crate::motion::MotionValidator;
 use crate::planners::caps::{Capabilities, Draws, EventSet, Family, LegendItem};
+use crate::planners::Checkpoint;
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::space::Metric;
 use crate::space_info::SpaceInfo;
@@ -536,8 +537,8 @@ fn clearance(si: &SpaceInfo, q: &[Real], cap: Real) -> Real {
 }
 
 impl Planner for PotentialField {
-    fn snapshot(&self) -> Box<dyn Planner> {
-        Box::new(self.clone())
+    fn checkpoint(&mut self) -> Checkpoint {
+        Checkpoint::copy_of(self)
     }
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         if self.reason.is_some() {

@@ -21,6 +21,7 @@ use crate::events::EventKind;
 use crate::math::Real;
 use crate::motion::MotionValidator;
 use crate::planners::caps::{self, Capabilities, Draws, EventSet, Family};
+use crate::planners::Checkpoint;
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::space_info::SpaceInfo;
 use std::collections::HashMap;
@@ -248,8 +249,8 @@ impl Est {
 }
 
 impl Planner for Est {
-    fn snapshot(&self) -> Box<dyn Planner> {
-        Box::new(self.clone())
+    fn checkpoint(&mut self) -> Checkpoint {
+        Checkpoint::copy_of(self)
     }
 
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {

@@ -30,6 +30,7 @@ use crate::geometry::{cell_blocked, Aabb, Workspace};
 use crate::math::{Real, Vec2};
 use crate::motion::MotionValidator;
 use crate::planners::caps::{self, Capabilities, Draws, EventSet, Family, LegendItem};
+use crate::planners::Checkpoint;
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::space_info::SpaceInfo;
 
@@ -394,8 +395,8 @@ impl GridSearch {
 }
 
 impl Planner for GridSearch {
-    fn snapshot(&self) -> Box<dyn Planner> {
-        Box::new(self.clone())
+    fn checkpoint(&mut self) -> Checkpoint {
+        Checkpoint::copy_of(self)
     }
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         if self.failure.is_some() {

@@ -215,19 +215,23 @@ pub enum Checkpoint {
     Mark(Box<dyn std::any::Any>),
 }
 
+impl Checkpoint {
+    /// A copy of `planner` as it stands.
+    pub fn copy_of<P: Planner + Clone + 'static>(planner: &P) -> Self {
+        Checkpoint::Whole(Box::new(planner.clone()))
+    }
+}
+
 /// A planner, advanced one iteration at a time.
 pub trait Planner {
     /// Run one iteration; `Some(path)` when it found a solution (start first, goal last).
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>>;
-    /// A copy of the planner as it stands (the session keeps one at the start of a bounded batch,
-    /// to go back to when the batch is suspended: see [`crate::journal`]).
-    fn snapshot(&self) -> Box<dyn Planner>;
-    /// What a bounded batch keeps at its start to go back to: by default a [`snapshot`](Self::snapshot);
-    /// a planner whose state between iterations only grows may mark itself instead, noting what
-    /// changes, and go back by [`rewind`](Self::rewind), far cheaper than a copy of its trees.
-    fn checkpoint(&mut self) -> Checkpoint {
-        Checkpoint::Whole(self.snapshot())
-    }
+    /// What the session keeps at the start of a bounded batch, to go back to when the batch is
+    /// suspended (see [`crate::journal`]): a copy of the planner as it stands
+    /// ([`Checkpoint::copy_of`]), or, for a planner whose state between iterations only grows,
+    /// a mark of itself that it notes changes against and goes back to by
+    /// [`rewind`](Self::rewind), far cheaper than a copy of its trees.
+    fn checkpoint(&mut self) -> Checkpoint;
     /// Back to the state of this planner's own [`Checkpoint::Mark`], the last it made.
     fn rewind(&mut self, _mark: Box<dyn std::any::Any>) {
         unreachable!("a planner that marks itself rewinds itself")

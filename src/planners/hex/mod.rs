@@ -44,6 +44,7 @@ use self::step::{disc_blocked, step_test};
 use crate::events::EventKind;
 use crate::geometry::Workspace;
 use crate::math::{wrap_angle, Real, Vec2};
+use crate::planners::Checkpoint;
 use crate::planners::{Context, Params, Planner, PlannerData, Task, Tree};
 use crate::space_info::SpaceInfo;
 use std::collections::VecDeque;
@@ -496,8 +497,8 @@ fn emit_cell(cx: &mut Context, dec: &Decomposition, i: usize) {
 }
 
 impl Planner for HexPotential {
-    fn snapshot(&self) -> Box<dyn Planner> {
-        Box::new(self.clone())
+    fn checkpoint(&mut self) -> Checkpoint {
+        Checkpoint::copy_of(self)
     }
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         if self.failure.is_some() {

@@ -52,6 +52,7 @@ use super::rrt::{resolve_range, RANGE};
 use crate::events::EventKind;
 use crate::math::Real;
 use crate::planners::caps::{self, Capabilities, Draws, EventSet, Family};
+use crate::planners::Checkpoint;
 use crate::planners::{
     Context, InspectionTask, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree,
 };
@@ -231,8 +232,8 @@ impl Inspection {
 }
 
 impl Planner for Inspection {
-    fn snapshot(&self) -> Box<dyn Planner> {
-        Box::new(self.clone())
+    fn checkpoint(&mut self) -> Checkpoint {
+        Checkpoint::copy_of(self)
     }
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         let mut tree = match self.tree.take() {

@@ -25,6 +25,7 @@ use super::graph::{EdgeState, Roadmap};
 use crate::events::EventKind;
 use crate::math::Real;
 use crate::motion::MotionValidator;
+use crate::planners::Checkpoint;
 use crate::planners::{Context, Planner, PlannerData, Task};
 use crate::space::StateSpace;
 
@@ -315,8 +316,8 @@ impl RoadmapPlanner {
 }
 
 impl Planner for RoadmapPlanner {
-    fn snapshot(&self) -> Box<dyn Planner> {
-        Box::new(self.clone())
+    fn checkpoint(&mut self) -> Checkpoint {
+        Checkpoint::copy_of(self)
     }
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         let first = self.graph.is_empty();

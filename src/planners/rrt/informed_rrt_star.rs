@@ -29,6 +29,7 @@ use super::rrt_star::{self, RrtStar, PARAMS};
 use crate::events::EventKind;
 use crate::math::{Real, Vec2};
 use crate::planners::caps::Capabilities;
+use crate::planners::Checkpoint;
 use crate::planners::{Context, Planner, PlannerData, PlannerSpec, TaskKind};
 use crate::sampler::SAMPLER_GROUP;
 use crate::space::Metric;
@@ -206,8 +207,8 @@ impl InformedRrtStar {
 }
 
 impl Planner for InformedRrtStar {
-    fn snapshot(&self) -> Box<dyn Planner> {
-        Box::new(self.clone())
+    fn checkpoint(&mut self) -> Checkpoint {
+        Checkpoint::copy_of(self)
     }
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         let set = &self.set;

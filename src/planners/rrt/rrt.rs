@@ -92,9 +92,6 @@ impl Rrt {
 }
 
 impl Planner for Rrt {
-    fn snapshot(&self) -> Box<dyn Planner> {
-        Box::new(self.clone())
-    }
     /// Its few numbers copied, its tree marked (it only grows: [`Tree::mark`]).
     fn checkpoint(&mut self) -> Checkpoint {
         let tree = self.tree.take();

@@ -135,9 +135,6 @@ impl RrtConnect {
 }
 
 impl Planner for RrtConnect {
-    fn snapshot(&self) -> Box<dyn Planner> {
-        Box::new(self.clone())
-    }
     /// Its few numbers copied, its trees marked (they only grow: [`Tree::mark`]).
     fn checkpoint(&mut self) -> Checkpoint {
         let trees = std::mem::take(&mut self.trees);

@@ -30,6 +30,7 @@ use crate::events::EventKind;
 use crate::math::Real;
 use crate::motion::MotionValidator;
 use crate::planners::caps::{self, Capabilities, Draws, Family};
+use crate::planners::Checkpoint;
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::sampler::SAMPLER_GROUP;
 use crate::space_info::SpaceInfo;
@@ -358,8 +359,8 @@ impl RrtStar {
 }
 
 impl Planner for RrtStar {
-    fn snapshot(&self) -> Box<dyn Planner> {
-        Box::new(self.clone())
+    fn checkpoint(&mut self) -> Checkpoint {
+        Checkpoint::copy_of(self)
     }
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         self.iterate_with(cx, |cx, out| cx.sample(0, out))

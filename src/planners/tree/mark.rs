@@ -49,3 +49,59 @@ impl Tree {
         (self.radius, self.fails, self.rejected, self.slid) = (mark.radius, mark.fails, mark.rejected, mark.slid);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::events::EventLog;
+    use crate::planners::{find, Context, Params, Tree};
+    use crate::problem::Problem;
+    use crate::rng::Rng;
+    use crate::sampler::Sampler;
+    use crate::scenario::builtin;
+
+    /// A tree marked, grown past the mark (across the k-d tree's rebuilds), with older nodes
+    /// re-attached, then rewound, is the tree it was: its states and parents, and its nearest
+    /// answers, bit for bit.
+    #[test]
+    fn a_tree_rewound_to_its_mark_is_the_tree_it_was() {
+        let p = Problem::from_scenario(&builtin("narrow").unwrap()).unwrap();
+        let params = Params::from_json(find("rrt").unwrap(), &serde_json::json!({})).unwrap();
+        let mut sampler = Sampler::from_params(&p.si, None, &params);
+        let (mut rng, mut events) = (Rng::new(5), EventLog::default());
+        let mut cx = Context {
+            si: &p.si,
+            rng: &mut rng,
+            events: &mut events,
+            nodes_left: 10_000,
+            bytes_left: usize::MAX,
+            sampler: &mut sampler,
+            iteration: 0,
+        };
+        let point = |cx: &mut Context| {
+            let mut q = vec![0.0; 2];
+            cx.si.space.sample_uniform(cx.rng, &mut q);
+            q
+        };
+        let mut t = Tree::new(&mut cx, &[0.1, 0.1], 0);
+        for i in 0..100u32 {
+            let q = point(&mut cx);
+            t.add(&cx, &q, i / 2);
+        }
+        let before = t.clone();
+        let mark = t.mark();
+        for i in 0..300u32 {
+            let q = point(&mut cx);
+            t.add(&cx, &q, i);
+        }
+        for (i, parent) in [(5, 90), (5, 250), (7, 150), (250, 3)] {
+            t.set_parent(i, parent);
+        }
+        t.rewind(mark);
+        assert_eq!((t.len(), &t.states, &t.parents), (before.len(), &before.states, &before.parents));
+        let mut before = before;
+        for _ in 0..200 {
+            let q = point(&mut cx);
+            assert_eq!(t.nearest(&cx, &q), before.nearest(&cx, &q));
+        }
+    }
+}

@@ -60,6 +60,7 @@ use crate::journal::Entry as Recorded;
 use crate::math::{angle_diff, wrap_angle, Real, Vec2};
 use crate::motion::MotionValidator;
 use crate::planners::caps::{Capabilities, Draws, EventSet, Family, LegendItem};
+use crate::planners::Checkpoint;
 use crate::planners::{Context, ParamSpec, Params, Planner, PlannerData, PlannerSpec, Task, TaskKind, Tree};
 use crate::space_info::SpaceInfo;
 use std::cmp::Ordering;
@@ -444,8 +445,8 @@ impl Planner for VisibilityGraph {
             Phase::Search => self.search(cx),
         }
     }
-    fn snapshot(&self) -> Box<dyn Planner> {
-        Box::new(self.clone())
+    fn checkpoint(&mut self) -> Checkpoint {
+        Checkpoint::copy_of(self)
     }
     fn node_count(&self) -> usize {
         self.points.len()
