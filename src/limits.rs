@@ -105,8 +105,8 @@ pub const MAX_MAP_PIXELS: usize = 4_000_000;
 /// Animation frames the worker sends for one path (the spacing grows to stay within it).
 pub const MAX_PATH_FRAMES: usize = 100_000;
 
-/// Tool points drawn along one tree edge in the 3-D view (`Problem::tool_tree`): an edge of more
-/// steps is drawn through this many, evenly spread, ends kept. The Puma's course edges take a few
+/// Tool points drawn along one tree edge in the 3-D view (`Problem::tool_tree`): an edge is drawn
+/// through as many evenly spread points as it has steps (and its end), at most this many, ends kept. The Puma's course edges take a few
 /// dozen steps; a node then sends at most 99 numbers.
 pub const MAX_TOOL_POINTS_PER_EDGE: usize = 32;
 

@@ -149,29 +149,16 @@ impl Problem {
 
     /// For a robot in 3-D: its tool centre point at every step of the straight motion `a → b` as
     /// the course's connect takes it (`k·resolution` along it, in the space's metric, then `b`),
-    /// so an edge is drawn as the curve the tool really sweeps; empty for other robots or a motion
-    /// of more than [`limits::MAX_MOTION_STEPS`] steps.
+    /// each from the arm's own kinematics ([`Spatial::tool_point`](crate::robot::Spatial::tool_point));
+    /// empty for other robots or a motion of more than [`limits::MAX_MOTION_STEPS`] steps. (The
+    /// 3-D view's trees take fewer points, more cheaply: [`tool_tree`](Problem::tool_tree).)
     pub fn tool_steps(&self, a: &[Real], b: &[Real]) -> Vec<[Real; 3]> {
-        self.tool_steps_spread(a, b, usize::MAX)
-    }
-
-    /// [`tool_steps`](Problem::tool_steps), at most `most` of them (at least 1), evenly spread:
-    /// of the `len` steps, step `k·(len − 1)/(most − 1)` rounded down for `k` in `0..most`, so
-    /// both ends are kept. Only those steps' kinematics are computed.
-    pub fn tool_steps_spread(&self, a: &[Real], b: &[Real], most: usize) -> Vec<[Real; 3]> {
         let Some(sp) = self.robot.spatial() else { return Vec::new() };
         let d = self.si.distance(a, b);
         let Some(n) = limits::steps(d, self.si.resolution, limits::MAX_MOTION_STEPS) else { return Vec::new() };
-        let len = n + 1;
-        let kept = len.min(most.max(1));
         let mut q = vec![0.0; a.len()];
-        (0..kept)
-            .map(|j| {
-                let k = match kept {
-                    1 => n,
-                    _ if kept == len => j,
-                    _ => (j as u64 * n as u64 / (kept - 1) as u64) as usize,
-                };
+        (0..=n)
+            .map(|k| {
                 let t = if k == n || d == 0.0 { 1.0 } else { (k as Real * self.si.resolution / d).min(1.0) };
                 self.si.interpolate(a, b, t, &mut q);
                 sp.tool_point(&q)
@@ -203,18 +190,29 @@ impl Problem {
 
     /// The trees as a spatial arm's tool sweeps them, from a run's node log
     /// ([`crate::run::Session::drain_nodes`]): per node, flat, `[tree, id, n, x, y, z, …]`: the
-    /// tool centre point at `n` steps of the motion from its parent (as [`tool_steps`](Problem::tool_steps),
-    /// at most [`limits::MAX_TOOL_POINTS_PER_EDGE`] of them, evenly spread, both ends kept), the
-    /// node's own last; a root (no parent) is its one point. Empty for other robots.
+    /// tool centre point at `n` states of the straight motion from its parent, evenly spread, both
+    /// ends kept ([`Spatial::tool_sweep`](crate::robot::Spatial::tool_sweep)): as many as the
+    /// motion has `resolution` steps and its end, at most [`limits::MAX_TOOL_POINTS_PER_EDGE`]; a
+    /// root (no parent) is its one point. Empty for other robots.
     pub fn tool_tree(&self, log: &crate::events::NodeLog) -> Vec<Real> {
         let Some(sp) = self.robot.spatial() else { return Vec::new() };
         let (dims, stride) = (log.dims, log.stride());
-        let most = limits::MAX_TOOL_POINTS_PER_EDGE;
+        let mut delta = vec![0.0; dims];
         let mut out = Vec::new();
         for e in log.data.chunks_exact(stride) {
             let (q, pq) = (&e[4..4 + dims], &e[4 + dims..]);
-            let pts = if e[3] < 0.0 { vec![sp.tool_point(q)] } else { self.tool_steps_spread(pq, q, most) };
-            let pts = if pts.is_empty() { vec![sp.tool_point(q)] } else { pts };
+            let steps = if e[3] < 0.0 {
+                None
+            } else {
+                limits::steps(self.si.distance(pq, q), self.si.resolution, limits::MAX_MOTION_STEPS)
+            };
+            let pts = match steps {
+                Some(n) => {
+                    self.si.space.difference(pq, q, &mut delta);
+                    sp.tool_sweep(pq, &delta, (n + 1).min(limits::MAX_TOOL_POINTS_PER_EDGE))
+                }
+                None => vec![sp.tool_point(q)],
+            };
             out.extend_from_slice(&[e[1], e[2], pts.len() as Real]);
             for p in &pts {
                 out.extend_from_slice(p);

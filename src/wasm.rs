@@ -352,6 +352,23 @@ impl Scene {
             _ => Vec::new(),
         }
     }
+    /// For a robot in 3-D: the tool centre point at each of `states` (scenario states one after
+    /// another, flat), flat `[x, y, z, ...]`, in one call (a path's curve); empty for other
+    /// robots, or when `states` is not a whole number of states or one is not a state.
+    pub fn tool_points(&self, states: &[f64]) -> Vec<f64> {
+        let (Some(sp), dims) = (self.inner.robot.spatial(), self.inner.robot.external_dims()) else {
+            return Vec::new();
+        };
+        if dims == 0 || states.len() % dims != 0 {
+            return Vec::new();
+        }
+        let mut out = Vec::with_capacity(states.len() / dims * 3);
+        for q in states.chunks_exact(dims) {
+            let Some(q) = self.state(q) else { return Vec::new() };
+            out.extend_from_slice(&sp.tool_point(&q));
+        }
+        out
+    }
     /// What scenario state `q` collides with, in words ("link6's bar meets the lintel"), or ""
     /// when it is free or the robot cannot say. Not counted.
     pub fn collision(&self, q: &[f64]) -> String {

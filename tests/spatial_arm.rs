@@ -110,27 +110,37 @@ fn tool_steps_follow_the_connect() {
     assert!(n.tool_steps(&[0.1, 0.5], &[0.2, 0.5]).is_empty() && n.robot.spatial().is_none());
 }
 
-/// The 3-D view's edges keep at most a few of a motion's steps: those computed alone are the very
-/// points of the whole curve at `k·(len − 1)/(most − 1)`, both ends kept, bit for bit.
+/// The 3-D view's edges are drawn through the tool's sweep: its points, stepped by one rotation
+/// per joint from the last, are where the arm's own kinematics puts the tool at the same states
+/// (to 1e-12 m, over motions of up to 3 rad a joint and 2,000 points), both ends included.
 #[test]
-fn tool_steps_spread_are_the_curves_own_points() {
+fn the_tool_sweep_is_the_tools_own_curve() {
     let (sc, p) = puma("puma-rbo-wall");
     let goal = sc.goal.clone().unwrap();
+    let sp = p.robot.spatial().unwrap();
     let mid: Vec<f64> = sc.start.iter().zip(&goal).map(|(a, b)| a + 0.013 * (b - a)).collect();
-    for (a, b) in [(&sc.start, &goal), (&sc.start, &mid), (&goal, &sc.start)] {
-        let all = p.tool_steps(a, b);
-        let len = all.len();
-        assert!(len > 1);
-        for most in [1, 2, 3, 7, 32, len - 1, len, len + 5] {
-            let kept = p.tool_steps_spread(a, b, most);
-            let want: Vec<[f64; 3]> = if most == 1 {
-                vec![all[len - 1]]
-            } else {
-                let n = most.min(len);
-                (0..n).map(|k| all[k * (len - 1) / (n - 1)]).collect()
-            };
-            assert_eq!(kept, want, "{most} of {len}");
+    let far: Vec<f64> = sc.start.iter().enumerate().map(|(k, a)| a + if k % 2 == 0 { 3.0 } else { -2.5 }).collect();
+    let mut q = vec![0.0; sc.start.len()];
+    let mut delta = vec![0.0; sc.start.len()];
+    for (a, b) in [(&sc.start, &goal), (&sc.start, &mid), (&goal, &sc.start), (&goal, &far)] {
+        p.si.space.difference(a, b, &mut delta);
+        for points in [1, 2, 3, 7, 32, 2000] {
+            let sweep = sp.tool_sweep(a, &delta, points);
+            assert_eq!(sweep.len(), points);
+            for (j, s) in sweep.iter().enumerate() {
+                let t = if points == 1 { 1.0 } else { j as f64 / (points - 1) as f64 };
+                p.si.interpolate(a, b, t, &mut q);
+                let want = sp.tool_point(&q);
+                let off = (0..3).map(|k| (s[k] - want[k]).abs()).fold(0.0, f64::max);
+                assert!(off < 1e-12, "{points} points, point {j}: {s:?} against {want:?}");
+            }
         }
+    }
+    // A motion that does not move: its one place, as often as asked.
+    delta.fill(0.0);
+    let here = sp.tool_point(&goal);
+    for s in sp.tool_sweep(&goal, &delta, 5) {
+        assert!((0..3).all(|k| (s[k] - here[k]).abs() < 1e-12));
     }
 }
 

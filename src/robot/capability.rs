@@ -141,6 +141,11 @@ pub trait Spatial {
     fn skeleton(&self, q: &[Real]) -> Vec<[Real; 3]>;
     /// The tool centre point at `q`, in the world.
     fn tool_point(&self, q: &[Real]) -> [Real; 3];
+    /// The tool centre point at `points` evenly spread states of the straight motion from `a` by
+    /// `delta` (per joint, as the space interpolates), both ends included (`a + delta` alone when
+    /// `points` is 1): the curve the tool sweeps, for drawing (within 1e-12 m of
+    /// [`tool_point`](Spatial::tool_point) at the same states, computed more cheaply).
+    fn tool_sweep(&self, a: &[Real], delta: &[Real], points: usize) -> Vec<[Real; 3]>;
     /// The tool centre point in the last link's frame.
     fn tool(&self) -> [Real; 3];
     /// Every part the arm collides as (its links' hulls and boxes) as a triangle mesh in its

@@ -77,6 +77,14 @@ impl StateSpace {
         self.dims.len()
     }
 
+    /// Write `b − a` per dimension into `out` (the shortest way round for wrapping dimensions):
+    /// [`interpolate`](Self::interpolate) moves along it.
+    pub fn difference(&self, a: &[Real], b: &[Real], out: &mut [Real]) {
+        for (((o, x), y), d) in out.iter_mut().zip(a).zip(b).zip(&self.dims) {
+            *o = Self::delta_in(d, *x, *y);
+        }
+    }
+
     /// Per-dimension difference `b − a` (the shortest way round for wrapping dimensions).
     #[inline]
     fn delta(&self, i: usize, a: Real, b: Real) -> Real {

@@ -91,7 +91,6 @@ let running = false;
 let dead = false;
 let tries = { seen: 0, sent: 0 }; // the current run's raw tries: drawn by the core, sent to the page
 let view3d = false;     // the scene has a 3-D view (caps.view3d): runs log their nodes for its trees
-let toolOffset = [0, 0, 0]; // its tool centre point in the last link's frame
 let stepping = null;    // a `step` in progress: {token, target} (it runs in bounded batches too)
 let stepToken = 0;
 
@@ -174,24 +173,25 @@ function pathIn3d(frames, lengths) {
   const dims = frames[0] | 0;
   const count = frames[1] | 0;
   const stride = Math.max(1, Math.ceil(count / PATH_POSES_3D));
-  const tool = [];
-  const poses = [];
-  let links = 0;
+  const states = new Float64Array(count * dims);
+  let n = 0;
   let at = 2;
-  for (let f = 0; f < count && at + dims <= frames.length; f++) {
-    const lf = scene.link_frames(frames.subarray(at, at + dims));
-    links = lf.length / 16;
-    const m = lf.subarray(lf.length - 16); // the last link's frame takes the tool centre point to the world
-    const [x, y, z] = toolOffset;
-    for (let r = 0; r < 3; r++) tool.push(m[r] * x + m[4 + r] * y + m[8 + r] * z + m[12 + r]);
-    if (f % stride === 0 || f === count - 1) poses.push(lf);
+  for (; n < count && at + dims <= frames.length; n++) {
+    states.set(frames.subarray(at, at + dims), n * dims);
     at += dims;
     const polys = frames[at++] | 0; // the outline: [n_polygons, n_1, x, y…, …]
     for (let p = 0; p < polys; p++) at += 1 + 2 * (frames[at] | 0);
   }
+  const poses = [];
+  for (let f = 0; f < n; f++) {
+    if (f % stride === 0 || f === n - 1) poses.push(scene.link_frames(states.subarray(f * dims, (f + 1) * dims)));
+  }
+  const links = poses.length ? poses[0].length / 16 : 0;
   const flat = new Float64Array(poses.length * links * 16);
   poses.forEach((p, i) => flat.set(p, i * links * 16));
-  return { tool: Float64Array.from(tool), frames: flat, count: poses.length, links, stride, lengths };
+  // The tool's curve through every frame, from the core in one call.
+  const tool = scene.tool_points(states.subarray(0, n * dims));
+  return { tool, frames: flat, count: poses.length, links, stride, lengths };
 }
 
 function loop(id) {
@@ -280,7 +280,6 @@ function load(make) {
     const goalFrames = sc.goal ? scene.link_frames(new Float64Array(sc.goal)) : new Float64Array(0);
     const startFrames = scene.link_frames(new Float64Array(sc.start));
     msg.spatial = { ...JSON.parse(scene.spatial_json()), start: startFrames, goal: goalFrames };
-    toolOffset = msg.spatial.tool;
     transfer.push(startFrames.buffer, goalFrames.buffer);
   }
   post(msg, transfer);

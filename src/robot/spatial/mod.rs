@@ -360,6 +360,9 @@ impl Spatial for SpatialArmRobot {
     fn tool_point(&self, q: &[Real]) -> [Real; 3] {
         self.tool_at(q)
     }
+    fn tool_sweep(&self, a: &[Real], delta: &[Real], points: usize) -> Vec<[Real; 3]> {
+        self.chain.sweep(a, delta, points, &self.tool)
+    }
     fn tool(&self) -> [Real; 3] {
         self.tool
     }
