@@ -130,6 +130,33 @@ test('path_lengths: the length along the path at each animation frame and waypoi
   run.free();
 });
 
+test("Scene.tool_points: a path's tool curve in one call, where each state's link frames put the tool; bad input gives none", () => {
+  const scene = new Scene(builtinText['puma-rbo-wall']);
+  const { tool } = JSON.parse(scene.spatial_json());
+  const sc = JSON.parse(builtinText['puma-rbo-wall']);
+  const dims = sc.start.length;
+  const states = [];
+  for (let k = 0; k <= 10; k++) for (let j = 0; j < dims; j++) states.push(sc.start[j] + (k / 10) * (sc.goal[j] - sc.start[j]));
+  const pts = scene.tool_points(Float64Array.from(states));
+  assert.equal(pts.length, 3 * 11);
+  for (let k = 0; k <= 10; k++) {
+    const lf = scene.link_frames(Float64Array.from(states.slice(k * dims, (k + 1) * dims)));
+    const m = lf.subarray(lf.length - 16);
+    for (let r = 0; r < 3; r++) {
+      const want = m[r] * tool[0] + m[4 + r] * tool[1] + m[8 + r] * tool[2] + m[12 + r];
+      assert.ok(Math.abs(pts[3 * k + r] - want) < 1e-12, `state ${k}, axis ${r}: ${pts[3 * k + r]} vs ${want}`);
+    }
+  }
+  // not a whole number of states, a number that is not finite, a plane robot: nothing
+  assert.equal(scene.tool_points(Float64Array.from(states.slice(0, dims + 1))).length, 0);
+  assert.equal(scene.tool_points(Float64Array.from([...states.slice(0, dims - 1), NaN])).length, 0);
+  assert.equal(scene.tool_points(new Float64Array(0)).length, 0);
+  const plane = new Scene(builtinText.narrow);
+  assert.equal(plane.tool_points(Float64Array.from([0.1, 0.5])).length, 0);
+  scene.free();
+  plane.free();
+});
+
 test('a file is read into a Scene as the user gave it: the text limit is on the file, and runs are made from the Scene', () => {
   // 70,000 quadrilaterals with 12-digit corners: 8.3 MB as written, 21 MB pretty-printed
   const obstacles = smallQuads(70000);
