@@ -86,6 +86,9 @@ pub struct Session {
     iterations: u64,
     elapsed_ms: f64,
     smoothing_ms: f64,
+    /// Time smoothing spent in bounded batches that were then suspended (their smoothing is done
+    /// again, its checks answered from the journal): counted in the smoothing time that is shown.
+    smoothing_tried_ms: f64,
     /// State checks spent planning, all and free, frozen when solved (smoothing's checks are not
     /// the planner's).
     planning_checks: Option<(u64, u64)>,
@@ -174,6 +177,7 @@ impl Session {
             iterations: 0,
             elapsed_ms: setup_ms,
             smoothing_ms: 0.0,
+            smoothing_tried_ms: 0.0,
             planning_checks: None,
             path: Vec::new(),
             smoothed: Vec::new(),
@@ -285,6 +289,7 @@ impl Session {
             self.planning_checks = None;
             self.path.clear();
             self.smoothed.clear();
+            self.smoothing_tried_ms += self.smoothing_ms;
             self.smoothing_ms = 0.0;
             self.reason = None;
             self.repaired = None;
@@ -443,7 +448,7 @@ impl Session {
             }
             _ => smoothing::shortcut(&self.problem.si, &path, attempts, &mut rng),
         };
-        self.smoothing_ms = t.elapsed().as_secs_f64() * 1000.0;
+        self.smoothing_ms = std::mem::take(&mut self.smoothing_tried_ms) + t.elapsed().as_secs_f64() * 1000.0;
         self.path = path;
         self.status = Status::Solved;
     }
