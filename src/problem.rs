@@ -147,25 +147,6 @@ impl Problem {
         check_state(self.robot.as_ref(), &self.si.space, self.si.workspace(), &self.scenario, name, q)
     }
 
-    /// For a robot in 3-D: its tool centre point at every step of the straight motion `a → b` as
-    /// the course's connect takes it (`k·resolution` along it, in the space's metric, then `b`),
-    /// each from the arm's own kinematics ([`Spatial::tool_point`](crate::robot::Spatial::tool_point));
-    /// empty for other robots or a motion of more than [`limits::MAX_MOTION_STEPS`] steps. (The
-    /// 3-D view's trees take fewer points, more cheaply: [`tool_tree`](Problem::tool_tree).)
-    pub fn tool_steps(&self, a: &[Real], b: &[Real]) -> Vec<[Real; 3]> {
-        let Some(sp) = self.robot.spatial() else { return Vec::new() };
-        let d = self.si.distance(a, b);
-        let Some(n) = limits::steps(d, self.si.resolution, limits::MAX_MOTION_STEPS) else { return Vec::new() };
-        let mut q = vec![0.0; a.len()];
-        (0..=n)
-            .map(|k| {
-                let t = if k == n || d == 0.0 { 1.0 } else { (k as Real * self.si.resolution / d).min(1.0) };
-                self.si.interpolate(a, b, t, &mut q);
-                sp.tool_point(&q)
-            })
-            .collect()
-    }
-
     /// The configurations a last-free connect (the Robotics Library's, in report 001's course)
     /// from `from` toward `target` tests, in order, the first `count` of them (at most
     /// [`MAX_LAST_FREE_STEPS`](crate::planners::tree::MAX_LAST_FREE_STEPS)): the connect's own

@@ -288,14 +288,6 @@ impl Scene {
             _ => Vec::new(),
         }
     }
-    /// For a robot in 3-D: its tool centre point at every step of the motion `a → b` the course's
-    /// connect takes (`Problem::tool_steps`), flat `[x, y, z, ...]`.
-    pub fn tool_steps(&self, a: &[f64], b: &[f64]) -> Vec<f64> {
-        match (self.state(a), self.state(b)) {
-            (Some(a), Some(b)) => self.inner.tool_steps(&a, &b).concat(),
-            _ => Vec::new(),
-        }
-    }
     /// The configurations a last-free connect from `from` toward `target` tests, the first
     /// `count` (`Problem::connect_configs`), flat, a state after another (as the state log's,
     /// `Run.drain_states`): the explain panel's steps through a connect.

@@ -88,26 +88,30 @@ fn query_cost_is_printed() {
     assert!(free > 0 && free < states.len());
 }
 
-/// The tool's curve along a motion: one point per `delta` step (then the end), on the arm's own
-/// kinematics, ready for a 3-D view to draw an edge as the tool sweeps it.
+/// The tool's curve along a motion, a point per `delta` step as the 3-D view's trees take it
+/// (evenly spread, both ends the tool's own points), is fine enough that no chord between two
+/// neighbours stands for much of the sweep.
 #[test]
-fn tool_steps_follow_the_connect() {
+fn the_tool_sweep_follows_the_connect() {
     let (sc, p) = puma("puma-rbo-wall");
     let goal = sc.goal.clone().unwrap();
-    let pts = p.tool_steps(&sc.start, &goal);
     let d = p.si.distance(&sc.start, &goal);
-    assert_eq!(pts.len(), (d / sc.resolution).ceil() as usize + 1);
+    let steps = (d / sc.resolution).ceil() as usize;
+    let mut delta = vec![0.0; sc.start.len()];
+    p.si.space.difference(&sc.start, &goal, &mut delta);
     let sp = p.robot.spatial().unwrap();
-    assert_eq!(pts[0], sp.tool_point(&sc.start));
-    assert_eq!(*pts.last().unwrap(), sp.tool_point(&goal));
+    let pts = sp.tool_sweep(&sc.start, &delta, steps + 1);
+    let near = |a: [f64; 3], b: [f64; 3]| (0..3).all(|k| (a[k] - b[k]).abs() < 1e-12);
+    assert!(near(pts[0], sp.tool_point(&sc.start)));
+    assert!(near(*pts.last().unwrap(), sp.tool_point(&goal)));
     // Neighbouring steps are close: the tool is at most 1.3 m from the base axis, so it moves at
     // most about 1.3 × 6 × δ... far less in practice; a chord would cut through the wall.
     let longest =
         pts.windows(2).map(|w| (0..3).map(|k| (w[1][k] - w[0][k]).powi(2)).sum::<f64>().sqrt()).fold(0.0, f64::max);
     assert!(longest < 0.05, "{longest}");
-    // A planar robot has none.
+    // A planar robot has no tool to sweep.
     let n = Problem::from_scenario(&builtin("narrow").unwrap()).unwrap();
-    assert!(n.tool_steps(&[0.1, 0.5], &[0.2, 0.5]).is_empty() && n.robot.spatial().is_none());
+    assert!(n.robot.spatial().is_none());
 }
 
 /// The 3-D view's edges are drawn through the tool's sweep: its points, stepped by one rotation
