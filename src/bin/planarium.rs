@@ -1,5 +1,5 @@
-//! The native command line: `plan`, `bench`, `merge`, `scaling`, `validate`, `export-map` and
-//! `list`.
+//! The native command line: `plan`, `bench`, `merge`, `scaling`, `validate`, `check-path`,
+//! `export-map` and `list`.
 //!
 //! Every planner parameter is a flag (`--goal-bias 0.2`, `--extend connect`), generated from the
 //! planner registry, so a new parameter needs no CLI code.
@@ -14,6 +14,8 @@ use std::process::ExitCode;
 #[path = "planarium/input.rs"]
 mod input;
 use input::*;
+#[path = "planarium/check.rs"]
+mod check;
 #[path = "planarium/merge.rs"]
 mod merge;
 #[path = "planarium/plan.rs"]
@@ -72,10 +74,15 @@ fn with_param_flags(mut cmd: Command) -> Command {
     cmd
 }
 
-fn cli() -> Command {
-    let scenario_arg = Arg::new("scenario")
+/// The scenario argument every subcommand that reads one takes.
+fn scenario_arg() -> Arg {
+    Arg::new("scenario")
         .required(true)
-        .help("Scenario JSON file, a course file (Technion map JSON, ASV problem text), an occupancy map (map_server's map.yaml naming its image, or a plain .pgm/.png image: dark is occupied), or the id of a built-in scenario (see `list`)");
+        .help("Scenario JSON file, a course file (Technion map JSON, ASV problem text), an occupancy map (map_server's map.yaml naming its image, or a plain .pgm/.png image: dark is occupied), or the id of a built-in scenario (see `list`)")
+}
+
+fn cli() -> Command {
+    let scenario_arg = scenario_arg();
     Command::new("planarium")
         .version(env!("CARGO_PKG_VERSION"))
         .about("Motion-planning playground core: plan, benchmark and validate scenarios")
@@ -174,6 +181,7 @@ fn cli() -> Command {
         )
         .subcommand(merge::command())
         .subcommand(Command::new("validate").about("Check a scenario and print it normalised").arg(scenario_arg.clone()))
+        .subcommand(check::command())
         .subcommand(
             Command::new("export-map")
                 .about("Rasterise a scenario's obstacles as an occupancy map: PREFIX.pgm and PREFIX.yaml in map_server's form (and PREFIX.png with --png)")
@@ -435,6 +443,11 @@ fn main() -> ExitCode {
             println!("{}", sc.to_json());
             Ok(())
         }),
+        Some(("check-path", m)) => match check::run(m) {
+            Ok(true) => Ok(()),
+            Ok(false) => return ExitCode::from(1),
+            Err(e) => Err(e),
+        },
         Some(("export-map", m)) => export_map(m),
         Some(("list", _)) => {
             println!("Built-in scenarios:");

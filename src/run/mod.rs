@@ -8,6 +8,7 @@
 
 pub mod bench;
 mod certify;
+mod check_path;
 pub mod course_grade;
 mod fingerprint;
 mod optimum;
@@ -17,6 +18,7 @@ pub mod scaling;
 mod session;
 pub mod summary;
 
+pub use check_path::{check_path, PathCheck, Refusal, MAX_DESCRIBED};
 pub use fingerprint::{fingerprint, fingerprint_in_batches, fnv1a, Fingerprint, FNV_OFFSET};
 pub use optimum::{optimum, optimum_within, Optimum};
 pub use report::{BenchReport, SetupReport};
