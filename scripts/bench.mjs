@@ -19,7 +19,7 @@
 // The problems compared between native and wasm or OMPL are run in K rounds (default 3) on each
 // side, and each seed's time is its best round: the machine's noise (±15% between identical runs
 // here) is larger than the differences measured. Every round must give the same runs, count for count.
-import { execFileSync } from 'node:child_process';
+import { execFileSync, spawnSync } from 'node:child_process';
 import { mkdirSync, mkdtempSync, readFileSync, writeFileSync, existsSync } from 'node:fs';
 import { tmpdir, cpus } from 'node:os';
 import { dirname, join } from 'node:path';
@@ -97,10 +97,27 @@ const sameOmplRun = (x, y) => x.checks === y.checks && x.nodes === y.nodes && x.
 const OMPL_PROBE = 5;
 const omplSeeds = (file, planner, runs, limitS, first) => {
   if (first?.stopped) return first;
-  const head = runHarness(omplBin, file, planner, 1, Math.min(OMPL_PROBE, runs), limitS);
+  // The first round keeps OMPL's solution paths, for check-path (below).
+  const opts = { paths: !first };
+  const head = runHarness(omplBin, file, planner, 1, Math.min(OMPL_PROBE, runs), limitS, opts);
   if (runs <= OMPL_PROBE) return { rows: head, stopped: false };
   if (!head.some((x) => x.solved)) return { rows: head, stopped: true };
-  return { rows: head.concat(runHarness(omplBin, file, planner, OMPL_PROBE + 1, runs, limitS)), stopped: false };
+  return { rows: head.concat(runHarness(omplBin, file, planner, OMPL_PROBE + 1, runs, limitS, opts)), stopped: false };
+};
+// OMPL's solution paths judged by Planarium's rule (`planarium check-path`: every motion certified
+// free all along at the scenario's resolution; OMPL checks a motion's states a resolution apart and
+// nothing between them). The paths are dropped from the rows after.
+const omplPathsChecked = (scenarioFile, rows, name) => {
+  const solved = rows.filter((x) => x.path);
+  if (!solved.length) return null;
+  const file = join(tmp, `${name}-ompl-paths.jsonl`);
+  writeFileSync(file, solved.map((x) => JSON.stringify({ seed: x.seed, path: x.path })).join('\n') + '\n');
+  const out = spawnSync(cli, ['check-path', scenarioFile, file, '--json'], { encoding: 'utf8', maxBuffer: 64 << 20 });
+  if (out.status !== 0 && out.status !== 1) throw new Error(`check-path ${scenarioFile}: ${out.stderr}`);
+  const j = JSON.parse(out.stdout);
+  for (const x of rows) delete x.path;
+  return { paths: solved.length, refused: j.refused, motions: j.motions, motions_refused: j.motions_refused,
+    refused_seeds: j.paths.filter((x) => !x.valid).map((x) => x.seed) };
 };
 
 // The wasm build in Node: the same set-ups and seeds, events off, as the page's benchmark workers.
@@ -177,7 +194,9 @@ for (const p of SUITE) {
     if (!agree) console.log(`[bench] ${name} ${s.label}: the OMPL rounds DIFFER`);
     const stopped = omplRounds[0][i].stopped;
     if (stopped) console.log(`[bench] ${name} ${s.label}: OMPL solved none of seeds 1..${OMPL_PROBE}; its other seeds and rounds not run`);
-    return { label: s.label, planner: s.planner, rows: all[0], best_ms: bestOf(all), rounds_agree: agree, stopped };
+    const paths_checked = omplPathsChecked(join(root, 'scenarios', `${p.id}.json`), all[0], `${name}-${i}`);
+    if (paths_checked) console.log(`[bench] ${name} ${s.label}: check-path refuses ${paths_checked.refused} of OMPL's ${paths_checked.paths} paths (${paths_checked.motions_refused} of ${paths_checked.motions} motions)`);
+    return { label: s.label, planner: s.planner, rows: all[0], best_ms: bestOf(all), rounds_agree: agree, stopped, paths_checked };
   }) : null;
   const sides = ['natively', withOmpl && 'by OMPL', withWasm && 'in wasm'].filter(Boolean).join(', ');
   console.log(`[bench] ${name}: ${runs} seeds × ${p.setups.length} set-ups × ${rounds} round(s) ${sides} in ${((Date.now() - started) / 1000).toFixed(1)} s`);
@@ -240,12 +259,13 @@ const lines = [
   `Machine: ${host}, Node ${process.version}. Seeds 1..N per set-up; times are medians of planning time (smoothing excluded). `
   + `Where wasm or OMPL is measured, every side ran ${roundsArg} round(s), alternated, and each seed's time is its best round. `
   + (omplBin ? 'OMPL: OMPL 1.5\'s RRT, RRT-Connect and RRT* (Debian\'s libompl-dev) in the project\'s harness, bench/ompl/harness.cpp, g++ -O3, the same set-ups and seeds; '
-    + 'its checks count its state validity checker\'s calls; native / OMPL is the ratio of the median times (below 1: Planarium is faster). '
+    + 'its checks count its state validity checker\'s calls; native / OMPL is the ratio of the median times (below 1: Planarium is faster); '
+    + 'OMPL paths refused: its solutions that `planarium check-path` refuses (a motion not free all along at the scenario\'s resolution: OMPL checks a motion\'s states a resolution apart, Planarium certifies the whole motion). '
     : `${omplStatus ?? 'OMPL not measured'}. `)
   + 'Made by `npm run bench`.',
   '',
-  '| problem | set-up | solved | median ms (native) | mean ± std ms (native) | median ms (wasm, Node) | wasm / native | solved (OMPL) | median ms (OMPL) | native / OMPL | median checks (OMPL) | median nodes | median checks | median cost |',
-  '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|',
+  '| problem | set-up | solved | median ms (native) | mean ± std ms (native) | median ms (wasm, Node) | wasm / native | solved (OMPL) | median ms (OMPL) | native / OMPL | median checks (OMPL) | OMPL paths refused | median nodes | median checks | median cost |',
+  '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|',
 ];
 for (const r of results) {
   r.native.setups.forEach((s, k) => {
@@ -261,8 +281,9 @@ for (const r of results) {
     const oSolved = o?.rows ? o.rows.filter((x) => x.solved).length : 0;
     const ratio = 2 * oSolved > (o?.rows?.length ?? 0) && 2 * m.solved > m.runs ? `${f(nms / oms)}×` : '— (half or more unsolved)';
     const omplCells = o?.rows
-      ? [`${oSolved}/${o.rows.length}${o.stopped ? ' (stopped)' : ''}`, f(oms), `${ratio}${o.rounds_agree ? '' : ' (rounds differ!)'}`, f(median(o.rows.map((x) => x.checks)), 0)]
-      : [notMeasured, notMeasured, '—', '—'];
+      ? [`${oSolved}/${o.rows.length}${o.stopped ? ' (stopped)' : ''}`, f(oms), `${ratio}${o.rounds_agree ? '' : ' (rounds differ!)'}`, f(median(o.rows.map((x) => x.checks)), 0),
+        o.paths_checked ? `${o.paths_checked.refused}/${o.paths_checked.paths} (${o.paths_checked.motions_refused} of ${o.paths_checked.motions} motions)` : '—']
+      : [notMeasured, notMeasured, '—', '—', '—'];
     lines.push(`| ${r.problem} | ${s.label} | ${m.solved}/${m.runs} | ${f(nms)} | ${s.rounds > 1 ? `${f(mean(s.best_ms))} ± ${f(std(s.best_ms))}` : `${f(m.time_ms.mean)} ± ${f(m.time_ms.std)}`} | ${w ? f(wms) : '—'} | ${w ? `${f(wms / nms)}×` : '—'}${agree ? '' : ' (runs differ!)'} | ${omplCells.join(' | ')} | ${f(m.nodes.median, 1)} | ${f(m.checks.median, 0)} | ${f(m.cost.median, 4)} |`);
   });
 }

@@ -122,11 +122,12 @@ export function problemText(scenario, planner, params) {
 }
 
 /**
- * Run the harness on a problem file for seeds first..last; one row per seed.
- * @returns {{ seed: number, planner: string, solved: boolean, time_ms: number, checks: number, nodes: number, cost: number }[]}
+ * Run the harness on a problem file for seeds first..last; one row per seed. With `paths`, a solved
+ * seed's row also has its solution's states (`path`), for `planarium check-path`.
+ * @returns {{ seed: number, planner: string, solved: boolean, time_ms: number, checks: number, nodes: number, cost: number, path?: number[][] }[]}
  */
-export function runHarness(bin, file, planner, first, last, timeLimitS) {
-  const out = execFileSync(bin, [file, planner, String(first), String(last), String(timeLimitS)], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'inherit'], maxBuffer: 64 << 20 });
+export function runHarness(bin, file, planner, first, last, timeLimitS, { paths = false } = {}) {
+  const out = execFileSync(bin, [file, planner, String(first), String(last), String(timeLimitS), ...(paths ? ['--paths'] : [])], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'inherit'], maxBuffer: 64 << 20 });
   const rows = out.trim().split('\n').map((l) => JSON.parse(l));
   if (rows.length !== last - first + 1) throw new Error(`OMPL harness: ${rows.length} runs for seeds ${first}..${last}`);
   return rows;

@@ -2,7 +2,7 @@
 // the benchmark suite (scripts/bench.mjs) measures OMPL beside Planarium on this machine, seed by
 // seed. Built by the suite with g++ -O3 against OMPL 1.5 (Debian's libompl-dev) when it is there.
 //
-//   harness PROBLEM PLANNER FIRST_SEED LAST_SEED TIME_LIMIT_S
+//   harness PROBLEM PLANNER FIRST_SEED LAST_SEED TIME_LIMIT_S [--paths]
 //
 // PROBLEM is a problem file that scripts/ompl.mjs writes from a scenario (whitespace-separated
 // tokens, see read_problem). PLANNER is rrt, rrt-connect or rrt-star (path length, improving until
@@ -11,7 +11,8 @@
 // (deadline: the time limit was reached inside a motion check; see Checker).
 // time_ms is the planner's solve() alone (set-up excluded); checks counts every call of the state
 // validity checker during solve(); nodes the vertices of the planner's data (both trees); cost the
-// solution path's length in the space's metric (-1 unsolved).
+// solution path's length in the space's metric (-1 unsolved). With --paths, a solved seed's line also
+// has "path": the solution's states, as OMPL returns them.
 //
 // The set-up is Planarium's for the same scenario: the bounds, the obstacles (closed sets: touching
 // is a collision; exact tests), the robot (a point, a rigid polygon, or a planar chain whose joints
@@ -343,7 +344,7 @@ static void set_state(const ob::StateSpacePtr &space, ob::ScopedState<> &st, con
 }
 
 // One run: everything built after the seed is set, so that each seed's run is reproducible.
-static void run(const Problem &p, const std::string &planner, unsigned seed, double limit) {
+static void run(const Problem &p, const std::string &planner, unsigned seed, double limit, bool paths) {
   ompl::RNG::setSeed(seed);
   auto space = make_space(p);
   space->setup();
@@ -390,14 +391,30 @@ static void run(const Problem &p, const std::string &planner, unsigned seed, dou
   double ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
   // The solution's length in the space's metric (the planner's path as returned, not simplified).
   double cost = solved ? ss.getSolutionPath().length() : -1.0;
-  std::printf("{\"seed\":%u,\"planner\":\"%s\",\"solved\":%s,\"time_ms\":%.6f,\"checks\":%llu,\"nodes\":%u,\"deadline\":%s,\"cost\":%.17g}\n", seed,
+  std::printf("{\"seed\":%u,\"planner\":\"%s\",\"solved\":%s,\"time_ms\":%.6f,\"checks\":%llu,\"nodes\":%u,\"deadline\":%s,\"cost\":%.17g", seed,
               planner.c_str(), solved ? "true" : "false", ms, checks, data.numVertices(), checker->expired ? "true" : "false", cost);
+  // With paths: the solution's states as OMPL returns them (in the problem file's coordinates), so
+  // that Planarium's motion validator can judge OMPL's paths by its own rule (scripts/ompl-paths.mjs).
+  if (paths && solved) {
+    std::printf(",\"path\":[");
+    const auto &states = ss.getSolutionPath().getStates();
+    for (std::size_t i = 0; i < states.size(); ++i) {
+      std::vector<double> v;
+      space->copyToReals(v, states[i]);
+      std::printf(i ? ",[" : "[");
+      for (std::size_t k = 0; k < v.size(); ++k) std::printf(k ? ",%.17g" : "%.17g", v[k]);
+      std::printf("]");
+    }
+    std::printf("]");
+  }
+  std::printf("}\n");
   std::fflush(stdout);
 }
 
 int main(int argc, char **argv) {
-  if (argc != 6) {
-    std::fprintf(stderr, "usage: %s PROBLEM PLANNER FIRST_SEED LAST_SEED TIME_LIMIT_S\n", argv[0]);
+  bool paths = argc == 7 && std::string(argv[6]) == "--paths";
+  if (argc != 6 && !paths) {
+    std::fprintf(stderr, "usage: %s PROBLEM PLANNER FIRST_SEED LAST_SEED TIME_LIMIT_S [--paths]\n", argv[0]);
     return 2;
   }
   try {
@@ -407,7 +424,7 @@ int main(int argc, char **argv) {
     double limit = std::stod(argv[5]);
     if (first < 1 || last < first || last - first > 100000) fail("seeds: FIRST_SEED 1 or more, LAST_SEED at least FIRST_SEED");
     if (!(limit > 0 && limit <= 3600)) fail("TIME_LIMIT_S must be in (0, 3600]");
-    for (long s = first; s <= last; ++s) run(p, argv[2], static_cast<unsigned>(s), limit);
+    for (long s = first; s <= last; ++s) run(p, argv[2], static_cast<unsigned>(s), limit, paths);
   } catch (const std::exception &e) {
     std::fprintf(stderr, "harness: %s\n", e.what());
     return 1;

@@ -4,7 +4,7 @@
 // RRT-Connect, counts its state checks, repeats a seed exactly and fails a closed wall.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
+import { execFileSync, spawnSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join } from 'node:path';
@@ -91,6 +91,18 @@ test('OMPL installed: the harness solves the narrow passage with RRT-Connect, co
   }
   const again = runHarness(bin, file, 'rrt-connect', 2, 2, 10);
   assert.deepEqual([again[0].checks, again[0].nodes], [rows[1].checks, rows[1].nodes]);
+  // With --paths: the same runs, each with its path from the start to the goal, which check-path
+  // reads (every path judged, each one's seed given back).
+  const withPaths = runHarness(bin, file, 'rrt-connect', 1, 3, 10, { paths: true });
+  assert.deepEqual(withPaths.map((r) => [r.checks, r.nodes]), rows.map((r) => [r.checks, r.nodes]));
+  for (const r of withPaths) assert.deepEqual([r.path[0], r.path.at(-1)], [[0.1, 0.1], [0.9, 0.9]], `seed ${r.seed}`);
+  const paths = join(dir, 'paths.jsonl');
+  writeFileSync(paths, withPaths.map((r) => JSON.stringify({ seed: r.seed, path: r.path })).join('\n'));
+  const checked = spawnSync(join(root, 'target', 'release', 'planarium'), ['check-path', join(root, 'scenarios', 'narrow.json'), paths, '--json'], { encoding: 'utf8' });
+  assert.ok(checked.status === 0 || checked.status === 1, checked.stderr);
+  const verdicts = JSON.parse(checked.stdout);
+  assert.deepEqual(verdicts.paths.map((v) => v.seed), [1, 2, 3]);
+  assert.equal(verdicts.valid + verdicts.refused, 3);
   // Close the gap: the validity checker sees the wall, so nothing is found within the limit.
   const closed = { ...scenario('narrow'), obstacles: [{ rect: [0.45, 0, 0.55, 1] }] };
   writeFileSync(file, problemText(closed, 'rrt-connect', { range: 0.2828 }).text);
