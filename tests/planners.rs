@@ -145,6 +145,13 @@ fn every_planner_solves_every_builtin_with_valid_paths() {
                     // The run's deadline no longer applies: past it, every motion check refuses
                     // (a busy machine re-checking thousands of roadmap edges reached it).
                     si.set_deadline(Deadline::NONE);
+                    // The result's paths pass `check-path` (the rule a path from elsewhere is judged by).
+                    if r.solved {
+                        for (which, path) in [("raw", &r.path), ("smoothed", &r.smoothed)] {
+                            let c = planarium::run::check_path(s.problem(), path);
+                            assert!(c.valid, "{what}: {which} path refused by check_path: {:?}", c.refusals);
+                        }
+                    }
                     let mut scratch = vec![0.0; si.dims()];
                     let data = s.planner_data();
                     let most = if budget.is_some() { 7 * 150 } else { usize::MAX };
