@@ -101,3 +101,53 @@ fn the_command_reads_paths_as_files_give_them_and_says_which_it_refuses() {
         assert!(err.contains(says) && err.contains("bad.json"), "{text}: {err}");
     }
 }
+
+/// Hostile paths on every built-in (every robot kind, the Puma's included): states of the wrong
+/// size, huge, tiny and out-of-bounds numbers, repeated states, a single state. `check_path` never
+/// panics, refuses every path with a state out of bounds or of the wrong size, and a path it
+/// accepts starts at the start.
+#[test]
+fn hostile_paths_are_refused_without_a_panic() {
+    let mut rng = planarium::rng::Rng::new(7);
+    for id in planarium::scenario::builtin_names() {
+        let sc = planarium::scenario::builtin(id).unwrap();
+        let problem = Problem::from_scenario(&sc).unwrap();
+        let dims = sc.start.len();
+        for case in 0..40 {
+            let n = 1 + rng.below(4);
+            let mut path: Vec<Vec<f64>> = Vec::new();
+            let mut broken = false;
+            for k in 0..n {
+                let len = match rng.below(8) {
+                    0 => dims + 1,
+                    1 => dims.saturating_sub(1),
+                    _ => dims,
+                };
+                let q: Vec<f64> = (0..len)
+                    .map(|i| match rng.below(10) {
+                        0 => 1e300,
+                        1 => -1e300,
+                        2 => 1e9,
+                        3 => 1e-300,
+                        4 => sc.bounds[2] + 1.0,
+                        5..=6 => sc.start.get(i).copied().unwrap_or(0.0),
+                        _ => sc.goal.as_ref().and_then(|g| g.get(i)).copied().unwrap_or(0.0),
+                    })
+                    .collect();
+                broken |= len != dims || (k == 0 && q != sc.start);
+                path.push(q);
+            }
+            let c = check_path(&problem, &path);
+            assert_eq!((c.states, c.motions), (n, n - 1), "{id} case {case}");
+            if broken {
+                assert!(!c.valid, "{id} case {case}: accepted {path:?}");
+            }
+            assert!(c.refusals.len() <= planarium::run::MAX_DESCRIBED);
+            if !c.valid {
+                assert!(!c.refusals.is_empty(), "{id} case {case}: refused without a reason");
+            }
+        }
+        // No state at all.
+        assert!(!check_path(&problem, &[]).valid, "{id}: the empty path");
+    }
+}
