@@ -98,29 +98,32 @@ pub fn check_path(problem: &Problem, path: &[Vec<Real>]) -> PathCheck {
         }
         out.motions_refused += 1;
         let ws = si.workspace();
-        // The state the validator stopped at; when that one is free (an exact segment test, a
-        // clearance too small to certify), the first state of the motion that is not, a quarter
-        // of the resolution apart.
-        if problem.robot.verdict(ws, &scratch) == Verdict::Valid {
-            first_invalid(problem, a, b, &mut scratch);
+        // What blocked it, as the explain panel says it (`SpaceInfo::blocked_at`: the obstacle at
+        // the state the validator stopped at, or the one an exact sweep meets); when neither is
+        // known (a clearance too small to certify), the first state of the motion that is not
+        // free, a quarter of the resolution apart.
+        let mut blocked = si.blocked_at(a, b, &scratch).0;
+        if blocked == -1 && first_invalid(problem, a, b, &mut scratch) {
+            blocked = si.blocked_at(a, b, &scratch).0;
         }
-        let why = match problem.robot.verdict(ws, &scratch) {
-            Verdict::Valid => {
+        let named = |i: i64| match problem.scenario.obstacles3d.is_empty() {
+            true => format!("it meets obstacles[{i}]"),
+            false => format!("it meets obstacles3d[{i}]"),
+        };
+        let why = match (blocked, problem.robot.verdict(ws, &scratch)) {
+            (-1, _) => {
                 "it passes too near an obstacle, or touches one, between its states: it cannot be certified free"
                     .to_string()
             }
-            verdict => {
-                let at = problem.robot.decode(&scratch);
+            // A free state, and the sweep between the states meets obstacle `i`.
+            (i, Verdict::Valid) => format!("between its states {}", named(i)),
+            (i, verdict) => {
                 let what = problem.robot.describe_collision(ws, &scratch).unwrap_or_else(|| match verdict {
-                    Verdict::Collision(i) if problem.scenario.obstacles3d.is_empty() => {
-                        format!("it meets obstacles[{i}]")
-                    }
-                    Verdict::Collision(i) => format!("it meets obstacles3d[{i}]"),
-                    Verdict::OutOfBounds(_) => "it leaves the bounds".into(),
                     Verdict::Invalid(why) => why.into(),
-                    Verdict::Valid => unreachable!(),
+                    _ if i == -2 => "it leaves the bounds".into(),
+                    _ => named(i),
                 });
-                format!("at {at:?}: {what}")
+                format!("at {:?}: {what}", problem.robot.decode(&scratch))
             }
         };
         refuse(&mut out, k, "motion", why);
@@ -130,18 +133,20 @@ pub fn check_path(problem: &Problem, path: &[Vec<Real>]) -> PathCheck {
 }
 
 /// Into `out`, the first state of the motion `a → b`, a quarter of the resolution apart, that is
-/// not valid; `out` is left as it is when there is none (or the motion is too long to walk).
-fn first_invalid(problem: &Problem, a: &[Real], b: &[Real], out: &mut [Real]) {
+/// not valid, and `true`; `false` (and `out` as it was) when there is none or the motion is too
+/// long to walk.
+fn first_invalid(problem: &Problem, a: &[Real], b: &[Real], out: &mut [Real]) -> bool {
     let si = &problem.si;
     let Some(n) = crate::limits::steps(si.distance(a, b), si.resolution / 4.0, crate::limits::MAX_MOTION_STEPS) else {
-        return;
+        return false;
     };
     let mut q = a.to_vec();
     for i in 1..=n {
         si.interpolate(a, b, i as Real / n as Real, &mut q);
         if problem.robot.verdict(si.workspace(), &q) != Verdict::Valid {
             out.copy_from_slice(&q);
-            return;
+            return true;
         }
     }
+    false
 }
