@@ -39,8 +39,8 @@ fn a_motion_through_a_corner_only_is_refused_and_the_way_around_passes() {
     assert!(!c.valid);
     assert_eq!((c.motions, c.motions_refused), (1, 1));
     assert_eq!((c.refusals[0].what, c.refusals[0].at), ("motion", 0));
-    // Both states are free: the obstacle is named from the exact sweep, as the explain panel's.
-    assert_eq!(c.refusals[0].why, "between its states it meets obstacles[0]");
+    // The obstacle is named (the corner itself, where the validator stopped).
+    assert_eq!(c.refusals[0].why, "at [0.5, 0.5]: it meets obstacles[0]");
     // The independent checker's exact segment test agrees.
     assert!(common::path_problem(&sc, &through).is_some());
     let around = vec![vec![0.375, 0.625], vec![0.625, 0.625], vec![0.625, 0.375]];
