@@ -71,7 +71,7 @@ impl<'a> Obj<'a> {
         for k in self.map.keys() {
             if !self.used.iter().any(|u| u == k) {
                 let mut known: Vec<&str> = self.used.clone();
-                known.sort_unstable();
+                crate::math::sort_short(&mut known);
                 return Err(ScenarioError::at(
                     join(&self.path, &limits::cut(k, 100)),
                     format!("unknown key (known keys here: {})", known.join(", ")),

@@ -226,7 +226,7 @@ pub(super) fn spatial_arm(o: &mut Obj) -> Result<RobotSpec> {
                 ignore.push(pair);
             }
         }
-        ignore.sort_unstable();
+        crate::math::sort_short(&mut ignore);
     }
     let mut exempt = Vec::new();
     if let Some((v, p)) = o.get("exempt") {
@@ -236,7 +236,7 @@ pub(super) fn spatial_arm(o: &mut Obj) -> Result<RobotSpec> {
                 exempt.push(k);
             }
         }
-        exempt.sort_unstable();
+        crate::math::sort_short(&mut exempt);
     }
     let tool = match o.get("tool") {
         Some((v, p)) => point3(v, &p)?,

@@ -232,7 +232,7 @@ impl Decomposition {
                     }
                 }
             }
-            seen.sort_unstable();
+            crate::math::sort_short(&mut seen);
             for m in seen {
                 let j = cells[m];
                 if self.cells[j].bbox.intersects(&b) && share_edge(&self.cells[i].outline, &self.cells[j].outline) {

@@ -213,8 +213,8 @@ impl Planner for InformedRrtStar {
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
         let set = &self.set;
         let found = match self.star.best_cost() {
-            None => self.star.iterate_with(cx, |cx, out| cx.sample(0, out)),
-            Some(c) => self.star.iterate_with(cx, |cx, out| set.sample(cx, c, out)),
+            None => self.star.iterate_with(cx, &mut |cx, out| cx.sample(0, out)),
+            Some(c) => self.star.iterate_with(cx, &mut |cx, out| set.sample(cx, c, out)),
         };
         if let Some(c) = self.star.best_cost() {
             if self.shown.is_none_or(|s| c < s) {

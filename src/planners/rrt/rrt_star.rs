@@ -202,7 +202,7 @@ impl RrtStar {
     }
 
     /// One RRT* step: sample (by `draw`), steer, choose a parent, insert, rewire.
-    fn grow(&mut self, cx: &mut Context, draw: impl FnOnce(&mut Context, &mut [Real]) -> bool) {
+    fn grow(&mut self, cx: &mut Context, draw: &mut dyn FnMut(&mut Context, &mut [Real]) -> bool) {
         if !draw(cx, &mut self.sample) {
             return;
         }
@@ -333,11 +333,11 @@ impl RrtStar {
 impl RrtStar {
     /// One iteration whose sample is drawn by `draw` (which writes a state and returns `false`
     /// when it gave up): the run's sampler for RRT*, another rule for its variants (Informed
-    /// RRT*).
+    /// RRT*). A `dyn` rule, so that the iteration's code is built once, not once a rule.
     pub fn iterate_with(
         &mut self,
         cx: &mut Context,
-        draw: impl FnOnce(&mut Context, &mut [Real]) -> bool,
+        draw: &mut dyn FnMut(&mut Context, &mut [Real]) -> bool,
     ) -> Option<Vec<Vec<Real>>> {
         if self.tree.is_none() {
             let tree = Tree::new(cx, &self.task.start, 0);
@@ -363,7 +363,7 @@ impl Planner for RrtStar {
         Checkpoint::copy_of(self)
     }
     fn iterate(&mut self, cx: &mut Context) -> Option<Vec<Vec<Real>>> {
-        self.iterate_with(cx, |cx, out| cx.sample(0, out))
+        self.iterate_with(cx, &mut |cx, out| cx.sample(0, out))
     }
 
     fn node_count(&self) -> usize {

@@ -188,15 +188,17 @@ fn motion_bound(l: Real, a: &[Real], b: &[Real], radii: &[Real]) -> Real {
     for k in 1..n - 1 {
         dh[k] = dh[k - 1] + (b[2 + k] - a[2 + k]);
     }
+    // Sorted by the total order, stably: the same order as an unstable sort (equal keys are the
+    // same number), and the same code as the run summaries' sort.
     let mut sorted = [0.0; STACK];
     let median = if n <= STACK {
         let s = &mut sorted[..n - 1];
         s.copy_from_slice(dh);
-        s.sort_unstable_by(Real::total_cmp);
+        s.sort_by(Real::total_cmp);
         s[(n - 1) / 2]
     } else {
         let mut s = dh.to_vec();
-        s.sort_unstable_by(Real::total_cmp);
+        s.sort_by(Real::total_cmp);
         s[(n - 1) / 2]
     };
     let nf = n as Real;
